@@ -1,0 +1,27 @@
+#pragma once
+/// @file
+/// One row of a convergence study: what was solved at one refinement level and how well.
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace iga {
+
+struct LevelResult {
+  int level = 0;
+  double h = 0;       ///< largest element diameter
+  int dofs = 0;       ///< dimension of the space (before boundary conditions)
+  int free_dofs = 0;  ///< unknowns after boundary conditions
+  // Errors against the exact solution (absent without one): L2 norm, H1 and H2 *seminorms*.
+  std::optional<double> l2, h1, h2;
+  double t_space = 0, t_assemble = 0, t_solve = 0, t_errors = 0;  ///< seconds
+};
+
+/// Rate between two rows: log(e_prev / e) / log(h_prev / h); nullopt if either error is missing.
+std::optional<double> rate(std::optional<double> e_prev, std::optional<double> e, double h_prev, double h);
+
+/// Least-squares slope of log(e) against log(h) over all rows with an error.
+std::optional<double> least_squares_rate(const std::vector<double>& h, const std::vector<std::optional<double>>& e);
+
+}  // namespace iga

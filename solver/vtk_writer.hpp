@@ -1,0 +1,33 @@
+#pragma once
+/// @file
+/// ParaView output through VTK's XML writers: one .vtu per level (the solution sampled on every
+/// element through ElementValues, so every space is drawn the same way) and a .pvd collection.
+
+#include <Eigen/Core>
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "spaces/space.hpp"
+
+namespace iga {
+
+struct VtkFieldOptions {
+  int samples = 8;  ///< samples per element edge (Space::sample_cell resolution)
+  /// Exact solution, if known: adds point fields `u_exact` and `error` (u - u_exact).
+  std::function<double(const Point2&)> exact;
+  /// Adds the point field `laplace_u` (for biharmonic problems).
+  bool laplacian = false;
+};
+
+/// Write the discrete function sum_i coefficients(i) N_i as an unstructured grid with point fields
+/// `u`, `grad_u` (3 components, z = 0) and the optional ones of `options`.
+/// Throws std::runtime_error if the file cannot be written.
+void write_solution_vtu(const Space& space, const Eigen::VectorXd& coefficients, const VtkFieldOptions& options,
+                        const std::string& filename);
+
+/// Write a ParaView collection listing `datasets` (paths relative to the .pvd) as time steps 0, 1, ...
+void write_pvd(const std::vector<std::string>& datasets, const std::string& filename);
+
+}  // namespace iga

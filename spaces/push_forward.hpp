@@ -1,0 +1,31 @@
+#pragma once
+/// @file
+/// Chain rule from reference to physical derivatives, including the second derivatives of the
+/// geometry map (needed for non-affine elements: mapped patches, bilinear quads, curved cells).
+
+#include <Eigen/Core>
+#include <vector>
+
+#include "spaces/space.hpp"
+
+namespace iga {
+
+/// A map (xi, eta) -> (x, y) and its first and second derivatives at one point.
+struct GeometryJet {
+  Point2 x = Point2::Zero();
+  Eigen::Matrix2d jacobian = Eigen::Matrix2d::Identity();  ///< J(i, k) = d x_i / d xi_k
+  Eigen::Matrix2d hessian_x = Eigen::Matrix2d::Zero();     ///< d^2 x / d xi_k d xi_l
+  Eigen::Matrix2d hessian_y = Eigen::Matrix2d::Zero();     ///< d^2 y / d xi_k d xi_l
+};
+
+/// Reference-coordinate data of n functions at q points (arrays n x q).
+struct ReferenceDerivatives {
+  Eigen::MatrixXd value, dxi, deta, dxixi, dxieta, detaeta;
+};
+
+/// Fill out.x, out.jacobian and the physical arrays requested by `flags` from reference data and
+/// the geometry jets at the q points. out.dofs is left untouched.
+void push_forward(const std::vector<GeometryJet>& geometry, const ReferenceDerivatives& ref, unsigned flags,
+                  PointValues& out);
+
+}  // namespace iga

@@ -1,0 +1,68 @@
+#include "spaces/space.hpp"
+
+#include <stdexcept>
+
+namespace iga {
+
+int num_edges(CellShape shape) { return shape == CellShape::quadrilateral ? 4 : 3; }
+
+Point2 reference_edge_point(CellShape shape, int edge, double t) {
+  if (shape == CellShape::quadrilateral) {
+    switch (edge) {
+      case 0: return {t, 0.0};
+      case 1: return {1.0, t};
+      case 2: return {1.0 - t, 1.0};
+      case 3: return {0.0, 1.0 - t};
+    }
+  } else {
+    switch (edge) {
+      case 0: return {t, 0.0};
+      case 1: return {1.0 - t, t};
+      case 2: return {0.0, 1.0 - t};
+    }
+  }
+  throw std::out_of_range("reference_edge_point: no such edge");
+}
+
+Point2 reference_edge_tangent(CellShape shape, int edge) {
+  return reference_edge_point(shape, edge, 1.0) - reference_edge_point(shape, edge, 0.0);
+}
+
+QuadratureRule edge_rule(CellShape shape, int edge, const QuadratureRule& rule_01) {
+  QuadratureRule r;
+  r.degree = rule_01.degree;
+  r.weights = rule_01.weights;
+  r.points.reserve(rule_01.points.size());
+  for (const Point2& p : rule_01.points) r.points.push_back(reference_edge_point(shape, edge, p.x()));
+  return r;
+}
+
+SampleCell Space::sample_cell(int element, int resolution) const {
+  SampleCell s;
+  const int m = std::max(1, resolution);
+  if (cell_shape(element) == CellShape::quadrilateral) {
+    for (int j = 0; j <= m; ++j)
+      for (int i = 0; i <= m; ++i) s.points.emplace_back(double(i) / m, double(j) / m);
+    for (int j = 0; j < m; ++j)
+      for (int i = 0; i < m; ++i) {
+        const int a = j * (m + 1) + i;
+        s.cells.push_back({a, a + 1, a + m + 2, a + m + 1});
+      }
+  } else {
+    // Row j holds m + 1 - j points; index of (i, j) is offset(j) + i.
+    std::vector<int> offset(m + 2, 0);
+    for (int j = 0; j <= m; ++j) {
+      offset[j + 1] = offset[j] + (m + 1 - j);
+      for (int i = 0; i <= m - j; ++i) s.points.emplace_back(double(i) / m, double(j) / m);
+    }
+    for (int j = 0; j < m; ++j)
+      for (int i = 0; i < m - j; ++i) {
+        const int a = offset[j] + i, b = a + 1, c = offset[j + 1] + i;
+        s.cells.push_back({a, b, c});
+        if (i + 1 < m - j) s.cells.push_back({b, c + 1, c});
+      }
+  }
+  return s;
+}
+
+}  // namespace iga

@@ -1,0 +1,129 @@
+#pragma once
+/// @file
+/// The one interface every spline space of iga-run implements.
+///
+/// Vocabulary (used with these meanings everywhere in the project):
+///  - *element*: a cell of the space's mesh, numbered 0..num_elements()-1. Each element has a
+///    reference cell (unit square or unit triangle, see quadrature_rule.hpp) and a map from it to
+///    physical coordinates. A macro-element (e.g. WS4) is one element whose polynomial pieces are
+///    sub-regions of its reference cell.
+///  - *global basis function* / *global index*: a basis function of the space, 0..dimension()-1.
+///    These are the unknowns of the linear system before boundary conditions.
+///  - *local basis*: the simple basis an element is built on (Bernstein, B-spline, simplex spline).
+///    A space stores an *extraction*: the active global functions of an element as linear
+///    combinations of its local basis. The local basis never appears in this interface.
+///  - *free / constrained*: after boundary conditions, a global function is constrained when its
+///    coefficient is fixed by Dirichlet-type data, free otherwise (see assembly/boundary_conditions).
+///
+/// Thread safety: a Space is immutable once built and may be shared by threads. Per-thread state
+/// (scratch arrays, reference tables) lives in an Evaluator, one per thread.
+
+#include <Eigen/Core>
+#include <map>
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "quadrature/quadrature_rule.hpp"
+
+namespace iga {
+
+enum class CellShape { quadrilateral, triangle };
+
+/// Number of edges of the reference cell.
+int num_edges(CellShape shape);
+/// Point of edge `edge` of the reference cell at parameter t in [0,1]. Edges run counterclockwise:
+/// quadrilateral 0: (t,0), 1: (1,t), 2: (1-t,1), 3: (0,1-t); triangle 0: (t,0), 1: (1-t,t), 2: (0,1-t).
+Point2 reference_edge_point(CellShape shape, int edge, double t);
+/// d(reference_edge_point)/dt: constant along each edge.
+Point2 reference_edge_tangent(CellShape shape, int edge);
+/// Edge rule in reference-cell coordinates from a rule on [0,1] (x coordinate); weights unchanged.
+QuadratureRule edge_rule(CellShape shape, int edge, const QuadratureRule& rule_01);
+
+/// What an evaluation must compute. Combine with |.
+enum UpdateFlags : unsigned {
+  update_values = 1u,
+  update_gradients = 2u,
+  update_hessians = 4u,
+};
+
+/// Values of the active global functions of one element at a set of points, in physical
+/// coordinates. Filled by Space::Evaluator::evaluate and completed by ElementValues.
+/// Shapes: n = dofs.size() active functions, q = number of points; arrays are n x q.
+struct PointValues {
+  std::vector<int> dofs;                 ///< global indices of the active functions (n)
+  Eigen::Matrix2Xd x;                    ///< physical points (2 x q)
+  std::vector<Eigen::Matrix2d> jacobian; ///< d(x,y)/d(xi,eta) at each point (q)
+  Eigen::MatrixXd value;                 ///< N_i(x_q)                    (if update_values)
+  Eigen::MatrixXd dx, dy;                ///< first derivatives           (if update_gradients)
+  Eigen::MatrixXd dxx, dxy, dyy;         ///< second derivatives          (if update_hessians)
+
+  int num_functions() const { return static_cast<int>(dofs.size()); }
+  int num_points() const { return static_cast<int>(x.cols()); }
+};
+
+/// A boundary edge: edge `local_edge` of element `element`.
+struct BoundaryEdge {
+  int element = 0;
+  int local_edge = 0;
+};
+
+/// A piece of an element to draw: points in reference coordinates and linear sub-cells over them
+/// (3 indices per triangle, 4 per quadrilateral). Used by the VTK writer.
+struct SampleCell {
+  std::vector<Point2> points;
+  std::vector<std::vector<int>> cells;
+};
+
+class Space {
+ public:
+  virtual ~Space() = default;
+
+  /// Per-thread evaluation of the active functions of an element. May cache reference tables
+  /// keyed by the address of the rule it is given (rules are shared through RulePtr).
+  class Evaluator {
+   public:
+    virtual ~Evaluator() = default;
+    /// Fill out.dofs, out.x, out.jacobian and the arrays requested by `flags` at the reference
+    /// points of `points` (weights are ignored).
+    virtual void evaluate(int element, const QuadratureRule& points, unsigned flags, PointValues& out) = 0;
+  };
+  virtual std::unique_ptr<Evaluator> make_evaluator() const = 0;
+
+  /// Short type name as used in configs, e.g. "bspline".
+  virtual std::string type() const = 0;
+  /// Parameters describing this instance (degree, regularity, elements, ...) for summaries.
+  virtual std::vector<std::pair<std::string, std::string>> parameters() const = 0;
+
+  /// Number of global basis functions.
+  virtual int dimension() const = 0;
+  virtual int num_elements() const = 0;
+  virtual CellShape cell_shape(int element) const = 0;
+  /// Largest element diameter in physical coordinates (the h of convergence tables).
+  virtual double mesh_size() const = 0;
+  /// Polynomial degree of the local basis in reference coordinates (drives quadrature choices).
+  virtual int degree() const = 0;
+  /// True when every element map is affine (then a rule of degree 2p is exact for mass matrices).
+  virtual bool affine_elements() const = 0;
+
+  /// A rule on element's reference cell exact for polynomials of degree `degree` on every
+  /// polynomial piece of the element (a macro-element integrates sub-region by sub-region).
+  virtual RulePtr quadrature(int element, int degree) const = 0;
+  /// A rule on edge `edge` of the element's reference cell (weights w.r.t. the edge parameter),
+  /// exact for polynomials of degree `degree` on every piece of the edge.
+  virtual RulePtr edge_quadrature(int element, int edge, int degree) const = 0;
+
+  /// Names of the boundary parts (e.g. left, right, bottom, top). "all" is implied.
+  virtual std::vector<std::string> boundary_names() const = 0;
+  /// Boundary edges of the named part; "all" returns every boundary edge.
+  virtual std::vector<BoundaryEdge> boundary_edges(const std::string& name) const = 0;
+
+  /// Sub-cells to draw element `element` with about `resolution` samples per edge.
+  /// The default samples the reference cell uniformly.
+  virtual SampleCell sample_cell(int element, int resolution) const;
+};
+
+using SpacePtr = std::shared_ptr<const Space>;
+
+}  // namespace iga
