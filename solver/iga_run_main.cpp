@@ -1,3 +1,4 @@
-// Placeholder entry point; replaced by the CLI in solver/cli.cpp.
-#include <iostream>
-int main() { std::cout << "iga-run " << IGA_RUN_VERSION << "\n"; return 0; }
+// iga-run: the command-line program. Everything lives in the library; see solver/cli.cpp.
+#include "solver/cli.hpp"
+
+int main(int argc, char** argv) { return iga::run_cli(argc, argv); }

@@ -37,6 +37,15 @@ QuadratureRule edge_rule(CellShape shape, int edge, const QuadratureRule& rule_0
   return r;
 }
 
+void Space::element_dofs(int element, std::vector<int>& out) const {
+  QuadratureRule one;
+  one.points = {cell_shape(element) == CellShape::quadrilateral ? Point2(0.5, 0.5) : Point2(1.0 / 3, 1.0 / 3)};
+  one.weights = {1.0};
+  PointValues pv;
+  make_evaluator()->evaluate(element, one, update_values, pv);
+  out = pv.dofs;
+}
+
 SampleCell Space::sample_cell(int element, int resolution) const {
   SampleCell s;
   const int m = std::max(1, resolution);

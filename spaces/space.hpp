@@ -98,6 +98,9 @@ class Space {
 
   /// Number of global basis functions.
   virtual int dimension() const = 0;
+  /// Global indices of the functions active on `element`, in the order Evaluator::evaluate uses.
+  /// The default evaluates at one point; spaces override it with a direct lookup.
+  virtual void element_dofs(int element, std::vector<int>& out) const;
   virtual int num_elements() const = 0;
   virtual CellShape cell_shape(int element) const = 0;
   /// Largest element diameter in physical coordinates (the h of convergence tables).

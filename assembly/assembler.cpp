@@ -1,0 +1,74 @@
+#include "assembly/assembler.hpp"
+
+namespace iga {
+
+Assembler::Assembler(const Space& space)
+    : space_(space),
+      table_(collect_element_dofs(space)),
+      pattern_(sparsity_pattern(table_, space.dimension())),
+      colours_(colour_elements(table_, space.dimension())) {}
+
+SparseMatrix Assembler::matrix(BilinearForm form, int quad_degree) const {
+  SparseMatrix A = pattern_;
+  for (const std::vector<int>& group : colours_) {
+    const int m = static_cast<int>(group.size());
+#pragma omp parallel
+    {
+      ElementValues ev(space_, flags_for(form));
+      Eigen::MatrixXd local;
+#pragma omp for schedule(dynamic, 16)
+      for (int k = 0; k < m; ++k) {
+        const int e = group[k];
+        ev.reinit(e, *space_.quadrature(e, quad_degree));
+        element_matrix(form, ev, local);
+        scatter_add(ev.dofs(), local, A);  // no two elements of a colour share an entry
+      }
+    }
+  }
+  return A;
+}
+
+Eigen::VectorXd Assembler::load(const ScalarField& f, int quad_degree) const {
+  Eigen::VectorXd b = Eigen::VectorXd::Zero(space_.dimension());
+  for (const std::vector<int>& group : colours_) {
+    const int m = static_cast<int>(group.size());
+#pragma omp parallel
+    {
+      ElementValues ev(space_, update_values);
+      Eigen::VectorXd local;
+#pragma omp for schedule(dynamic, 16)
+      for (int k = 0; k < m; ++k) {
+        const int e = group[k];
+        ev.reinit(e, *space_.quadrature(e, quad_degree));
+        element_load(f, ev, local);
+        const std::vector<int>& dofs = ev.dofs();
+        for (int i = 0; i < local.size(); ++i) b(dofs[i]) += local(i);
+      }
+    }
+  }
+  return b;
+}
+
+Eigen::VectorXd Assembler::boundary_load(const std::vector<BoundaryEdge>& edges, const BoundaryField& g,
+                                         BoundaryTest test, int quad_degree) const {
+  // Boundary work is O(sqrt(elements)); it runs serially.
+  Eigen::VectorXd b = Eigen::VectorXd::Zero(space_.dimension());
+  const unsigned flags = test == BoundaryTest::value ? update_values : update_gradients;
+  ElementValues ev(space_, flags);
+  for (const BoundaryEdge& be : edges) {
+    ev.reinit_edge(be.element, be.local_edge, *space_.edge_quadrature(be.element, be.local_edge, quad_degree));
+    const PointValues& v = ev.values();
+    for (int k = 0; k < ev.num_points(); ++k) {
+      const Point2 n = ev.normal().col(k);
+      const double gw = g(v.x.col(k), n) * ev.jxw()(k);
+      for (int i = 0; i < ev.num_functions(); ++i) {
+        const double test_value =
+            test == BoundaryTest::value ? v.value(i, k) : v.dx(i, k) * n.x() + v.dy(i, k) * n.y();
+        b(ev.dofs()[i]) += gw * test_value;
+      }
+    }
+  }
+  return b;
+}
+
+}  // namespace iga

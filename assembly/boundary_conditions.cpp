@@ -1,0 +1,152 @@
+#include "assembly/boundary_conditions.hpp"
+
+#include <Eigen/SparseCholesky>
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+#include "solver/errors.hpp"
+#include "spaces/element_values.hpp"
+
+namespace iga {
+
+namespace {
+
+// A function counts as active on an edge when it exceeds this fraction of the largest value there;
+// traces that vanish identically evaluate to round-off.
+constexpr double kActiveTolerance = 1e-10;
+
+struct EdgeKind {
+  bool value = false;
+  bool normal = false;
+};
+
+}  // namespace
+
+Constraints impose_essential(const Space& space, const EssentialBoundary& boundary, const BoundaryField& g,
+                             const BoundaryField& g_n, int quad_degree) {
+  const int dim = space.dimension();
+  Constraints c;
+  c.values = Eigen::VectorXd::Zero(dim);
+  if (boundary.empty()) {
+    c.free.resize(dim);
+    for (int i = 0; i < dim; ++i) c.free[i] = i;
+    return c;
+  }
+  // Merge the two edge lists: an edge can carry both kinds of data.
+  std::map<std::pair<int, int>, EdgeKind> edges;
+  for (const BoundaryEdge& e : boundary.value_edges) edges[{e.element, e.local_edge}].value = true;
+  for (const BoundaryEdge& e : boundary.normal_edges) edges[{e.element, e.local_edge}].normal = true;
+
+  // Pass 1: which functions are seen by the data, and the projection integrals in global indices.
+  std::vector<int> local_of(dim, -1);
+  std::vector<int> order;  // global indices in order of discovery
+  std::vector<Eigen::Triplet<double>> triplets;
+  std::vector<std::pair<int, double>> rhs_entries;
+  ElementValues ev(space, update_values | update_gradients);
+  std::vector<int> active;
+  Eigen::VectorXd dn;
+  for (const auto& [key, kind] : edges) {
+    const auto [element, edge] = key;
+    ev.reinit_edge(element, edge, *space.edge_quadrature(element, edge, quad_degree));
+    const PointValues& v = ev.values();
+    const int n = ev.num_functions(), q = ev.num_points();
+    const double length = ev.jxw().sum();
+    Eigen::MatrixXd dnv(n, q);
+    for (int k = 0; k < q; ++k) dnv.col(k) = v.dx.col(k) * ev.normal()(0, k) + v.dy.col(k) * ev.normal()(1, k);
+    const double vmax = v.value.cwiseAbs().maxCoeff();
+    const double nmax = dnv.cwiseAbs().maxCoeff();
+    active.clear();
+    for (int i = 0; i < n; ++i) {
+      const bool seen_value = kind.value && v.value.row(i).cwiseAbs().maxCoeff() > kActiveTolerance * vmax;
+      const bool seen_normal = kind.normal && dnv.row(i).cwiseAbs().maxCoeff() > kActiveTolerance * nmax;
+      if (!seen_value && !seen_normal) continue;
+      active.push_back(i);
+      const int gi = ev.dofs()[i];
+      if (local_of[gi] < 0) {
+        local_of[gi] = static_cast<int>(order.size());
+        order.push_back(gi);
+      }
+    }
+    const double wn = length * length;  // h_E^2 balances the units of u and ∂u/∂n
+    for (int k = 0; k < q; ++k) {
+      const Point2 x = v.x.col(k), nrm = ev.normal().col(k);
+      const double w = ev.jxw()(k);
+      const double gv = kind.value ? g(x, nrm) : 0.0;
+      const double gnv = kind.normal ? g_n(x, nrm) : 0.0;
+      for (int i : active) {
+        const int li = local_of[ev.dofs()[i]];
+        double r = 0;
+        if (kind.value) r += w * gv * v.value(i, k);
+        if (kind.normal) r += wn * w * gnv * dnv(i, k);
+        rhs_entries.emplace_back(li, r);
+        for (int j : active) {
+          double m = 0;
+          if (kind.value) m += w * v.value(i, k) * v.value(j, k);
+          if (kind.normal) m += wn * w * dnv(i, k) * dnv(j, k);
+          triplets.emplace_back(li, local_of[ev.dofs()[j]], m);
+        }
+      }
+    }
+  }
+
+  // Pass 2: solve the small SPD projection system.
+  const int m = static_cast<int>(order.size());
+  SparseMatrix M(m, m);
+  M.setFromTriplets(triplets.begin(), triplets.end());
+  Eigen::VectorXd r = Eigen::VectorXd::Zero(m);
+  for (const auto& [i, val] : rhs_entries) r(i) += val;
+  Eigen::SimplicialLDLT<SparseMatrix> ldlt(M);
+  const double dmax = ldlt.info() == Eigen::Success ? ldlt.vectorD().cwiseAbs().maxCoeff() : 0.0;
+  if (ldlt.info() != Eigen::Success || ldlt.vectorD().minCoeff() <= 1e-13 * dmax)
+    throw NumericalError(
+        "boundary projection is singular: the boundary traces of the constrained functions are linearly dependent");
+  const Eigen::VectorXd u = ldlt.solve(r);
+
+  for (int k = 0; k < m; ++k) c.values(order[k]) = u(k);
+  c.constrained = order;
+  std::sort(c.constrained.begin(), c.constrained.end());
+  for (int i = 0; i < dim; ++i)
+    if (local_of[i] < 0) c.free.push_back(i);
+  return c;
+}
+
+void reduce_system(const SparseMatrix& A, const Eigen::VectorXd& b, const Constraints& c, SparseMatrix& A_free,
+                   Eigen::VectorXd& b_free) {
+  const int dim = static_cast<int>(A.rows());
+  std::vector<int> free_of(dim, -1);
+  for (int k = 0; k < static_cast<int>(c.free.size()); ++k) free_of[c.free[k]] = k;
+  const int nf = static_cast<int>(c.free.size());
+
+  // Column by column: keep entries whose row and column are both free (inner order stays sorted).
+  A_free.resize(nf, nf);
+  std::vector<int> outer(nf + 1, 0);
+  for (int k = 0; k < nf; ++k) {
+    int count = 0;
+    for (SparseMatrix::InnerIterator it(A, c.free[k]); it; ++it) count += free_of[it.row()] >= 0;
+    outer[k + 1] = outer[k] + count;
+  }
+  A_free.resizeNonZeros(outer[nf]);
+  std::copy(outer.begin(), outer.end(), A_free.outerIndexPtr());
+#pragma omp parallel for schedule(static)
+  for (int k = 0; k < nf; ++k) {
+    int pos = outer[k];
+    for (SparseMatrix::InnerIterator it(A, c.free[k]); it; ++it)
+      if (free_of[it.row()] >= 0) {
+        A_free.innerIndexPtr()[pos] = free_of[it.row()];
+        A_free.valuePtr()[pos] = it.value();
+        ++pos;
+      }
+  }
+  const Eigen::VectorXd lifted = A * c.values;
+  b_free.resize(nf);
+  for (int k = 0; k < nf; ++k) b_free(k) = b(c.free[k]) - lifted(c.free[k]);
+}
+
+Eigen::VectorXd expand_solution(const Eigen::VectorXd& u_free, const Constraints& c) {
+  Eigen::VectorXd u = c.values;
+  for (int k = 0; k < static_cast<int>(c.free.size()); ++k) u(c.free[k]) = u_free(k);
+  return u;
+}
+
+}  // namespace iga

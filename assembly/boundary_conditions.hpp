@@ -1,0 +1,51 @@
+#pragma once
+/// @file
+/// Essential boundary conditions for any space, through the Space interface only.
+///
+/// Method (chosen so that optimal rates hold for every space, including Hermite-type and G1 ones
+/// whose boundary functions are not interpolatory):
+///  1. The *constrained* global functions are those whose trace on an edge with value data, or
+///     whose normal derivative on an edge with normal-derivative data, is not identically zero
+///     (detected at the points of an edge rule with more points than the trace's degree).
+///  2. Their coefficients minimise  Σ_value-edges ∫ (u_h − g)² ds + Σ_normal-edges h_E² ∫ (∂u_h/∂n − g_n)² ds
+///     over the constrained functions (all others held at zero): a boundary L2 projection. The h_E²
+///     weight makes both terms scale alike, so both data are matched to optimal order.
+///  3. The constrained coefficients are fixed and eliminated: A_ff u_f = b_f − A_fc u_c.
+/// The projection matrix is SPD when the boundary traces of the constrained functions are
+/// linearly independent; otherwise NumericalError is thrown.
+
+#include <Eigen/Core>
+#include <vector>
+
+#include "assembly/fields.hpp"
+#include "assembly/sparsity.hpp"
+
+namespace iga {
+
+/// Where essential data are imposed.
+struct EssentialBoundary {
+  std::vector<BoundaryEdge> value_edges;   ///< u = g        (dirichlet, clamped, simply supported)
+  std::vector<BoundaryEdge> normal_edges;  ///< ∂u/∂n = g_n  (clamped)
+  bool empty() const { return value_edges.empty() && normal_edges.empty(); }
+};
+
+/// Coefficients fixed by essential data, and the rest.
+struct Constraints {
+  std::vector<int> constrained;  ///< sorted global indices
+  std::vector<int> free;         ///< sorted global indices
+  Eigen::VectorXd values;        ///< length dimension; the fixed values at constrained indices, 0 elsewhere
+};
+
+/// Find the constrained functions and their values by the boundary projection above.
+/// `g` gives u on value edges, `g_n` gives ∂u/∂n on normal edges (may be empty when there are none).
+Constraints impose_essential(const Space& space, const EssentialBoundary& boundary, const BoundaryField& g,
+                             const BoundaryField& g_n, int quad_degree);
+
+/// The system on the free coefficients: A_ff and b_f − A_fc u_c.
+void reduce_system(const SparseMatrix& A, const Eigen::VectorXd& b, const Constraints& c, SparseMatrix& A_free,
+                   Eigen::VectorXd& b_free);
+
+/// The full coefficient vector from the free solution and the fixed values.
+Eigen::VectorXd expand_solution(const Eigen::VectorXd& u_free, const Constraints& c);
+
+}  // namespace iga

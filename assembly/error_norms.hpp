@@ -1,0 +1,28 @@
+#pragma once
+/// @file
+/// Errors of a discrete function against an exact solution: the L2 norm and the standard H1 and
+/// H2 *seminorms* (|e|_1 = ||∇e||, |e|_2 = ||D²e|| with the Frobenius norm), not G+Smo's sums.
+
+#include <Eigen/Core>
+#include <optional>
+
+#include "assembly/fields.hpp"
+#include "spaces/space.hpp"
+
+namespace iga {
+
+struct ErrorNorms {
+  double l2 = 0;
+  std::optional<double> h1;  ///< present when the exact gradient is known
+  std::optional<double> h2;  ///< present when the exact Hessian is known
+};
+
+/// Integrate element by element with rules of degree `quad_degree` (use more than for assembly:
+/// an oscillating exact solution is under-resolved by the assembly rule on coarse meshes).
+ErrorNorms error_norms(const Space& space, const Eigen::VectorXd& coefficients, const ExactSolution& exact,
+                       int quad_degree);
+
+/// ∫ u_h over the domain and the domain area (checks and mean values).
+std::pair<double, double> integral_and_area(const Space& space, const Eigen::VectorXd& coefficients, int quad_degree);
+
+}  // namespace iga

@@ -1,0 +1,31 @@
+#pragma once
+/// @file
+/// Element integrators: stateless functions from evaluated basis data to local matrices/vectors.
+/// Callers provide the output arrays (resized here), so threads never share scratch.
+
+#include <Eigen/Core>
+#include <string>
+
+#include "assembly/fields.hpp"
+#include "spaces/element_values.hpp"
+
+namespace iga {
+
+enum class BilinearForm {
+  mass,       ///< ∫ u v
+  laplace,    ///< ∫ ∇u·∇v                       (Poisson)
+  bilaplace,  ///< ∫ Δu Δv                        (biharmonic; natural condition Δu = 0)
+  hessian,    ///< ∫ D²u : D²v                    (biharmonic; same solution when u, ∂u/∂n are fixed)
+};
+
+/// Update flags an element loop needs for `form`.
+unsigned flags_for(BilinearForm form);
+std::string to_string(BilinearForm form);
+
+/// Local matrix of `form` on the element last evaluated by `ev` (n x n, n = ev.num_functions()).
+void element_matrix(BilinearForm form, const ElementValues& ev, Eigen::MatrixXd& local);
+
+/// Local load ∫ f v (n entries).
+void element_load(const ScalarField& f, const ElementValues& ev, Eigen::VectorXd& local);
+
+}  // namespace iga

@@ -1,0 +1,116 @@
+#include "assembly/sparsity.hpp"
+
+#include <algorithm>
+#include <cassert>
+#include <numeric>
+
+namespace iga {
+
+ElementDofTable collect_element_dofs(const Space& space) {
+  const int ne = space.num_elements();
+  std::vector<std::vector<int>> per_element(ne);
+#pragma omp parallel for schedule(dynamic, 64)
+  for (int e = 0; e < ne; ++e) space.element_dofs(e, per_element[e]);
+  ElementDofTable t;
+  t.offsets.resize(ne + 1, 0);
+  for (int e = 0; e < ne; ++e) t.offsets[e + 1] = t.offsets[e] + static_cast<int>(per_element[e].size());
+  t.dofs.resize(t.offsets[ne]);
+  for (int e = 0; e < ne; ++e) std::copy(per_element[e].begin(), per_element[e].end(), t.dofs.begin() + t.offsets[e]);
+  return t;
+}
+
+namespace {
+
+/// Transpose of the element table: for each global index, the elements it is active on.
+void elements_of_dofs(const ElementDofTable& t, int dimension, std::vector<int>& offsets, std::vector<int>& elems) {
+  offsets.assign(dimension + 1, 0);
+  for (int d : t.dofs) ++offsets[d + 1];
+  std::partial_sum(offsets.begin(), offsets.end(), offsets.begin());
+  elems.resize(t.dofs.size());
+  std::vector<int> fill(offsets.begin(), offsets.end() - 1);
+  for (int e = 0; e < t.num_elements(); ++e)
+    for (const int* d = t.begin(e); d != t.begin(e + 1); ++d) elems[fill[*d]++] = e;
+}
+
+}  // namespace
+
+SparseMatrix sparsity_pattern(const ElementDofTable& table, int dimension) {
+  std::vector<int> d_off, d_el;
+  elements_of_dofs(table, dimension, d_off, d_el);
+  std::vector<std::vector<int>> columns(dimension);
+#pragma omp parallel
+  {
+    std::vector<char> seen(dimension, 0);  // per-thread marker, reset after each column
+#pragma omp for schedule(dynamic, 256)
+    for (int j = 0; j < dimension; ++j) {
+      std::vector<int>& col = columns[j];
+      for (int k = d_off[j]; k < d_off[j + 1]; ++k) {
+        const int e = d_el[k];
+        for (const int* d = table.begin(e); d != table.begin(e + 1); ++d)
+          if (!seen[*d]) {
+            seen[*d] = 1;
+            col.push_back(*d);
+          }
+      }
+      for (int i : col) seen[i] = 0;
+      std::sort(col.begin(), col.end());
+    }
+  }
+  SparseMatrix A(dimension, dimension);
+  std::size_t nnz = 0;
+  for (const auto& c : columns) nnz += c.size();
+  A.resizeNonZeros(static_cast<Eigen::Index>(nnz));
+  int* outer = A.outerIndexPtr();
+  int* inner = A.innerIndexPtr();
+  outer[0] = 0;
+  for (int j = 0; j < dimension; ++j) {
+    std::copy(columns[j].begin(), columns[j].end(), inner + outer[j]);
+    outer[j + 1] = outer[j] + static_cast<int>(columns[j].size());
+  }
+  std::fill(A.valuePtr(), A.valuePtr() + nnz, 0.0);
+  return A;
+}
+
+std::vector<std::vector<int>> colour_elements(const ElementDofTable& table, int dimension) {
+  std::vector<int> d_off, d_el;
+  elements_of_dofs(table, dimension, d_off, d_el);
+  const int ne = table.num_elements();
+  std::vector<int> colour(ne, -1);
+  std::vector<int> used_by;  // used_by[c] == e: colour c is taken by a neighbour of e
+  std::vector<std::vector<int>> groups;
+  for (int e = 0; e < ne; ++e) {
+    for (const int* d = table.begin(e); d != table.begin(e + 1); ++d)
+      for (int k = d_off[*d]; k < d_off[*d + 1]; ++k) {
+        const int c = colour[d_el[k]];
+        if (c >= 0) used_by[c] = e;
+      }
+    int c = 0;
+    while (c < static_cast<int>(groups.size()) && used_by[c] == e) ++c;
+    if (c == static_cast<int>(groups.size())) {
+      groups.emplace_back();
+      used_by.push_back(-1);
+    }
+    colour[e] = c;
+    groups[c].push_back(e);
+  }
+  return groups;
+}
+
+void scatter_add(const std::vector<int>& dofs, const Eigen::MatrixXd& local, SparseMatrix& matrix) {
+  const int n = static_cast<int>(dofs.size());
+  const int* outer = matrix.outerIndexPtr();
+  const int* inner = matrix.innerIndexPtr();
+  double* values = matrix.valuePtr();
+  for (int j = 0; j < n; ++j) {
+    const int col = dofs[j];
+    const int* first = inner + outer[col];
+    const int* last = inner + outer[col + 1];
+    for (int i = 0; i < n; ++i) {
+      const int* pos = std::lower_bound(first, last, dofs[i]);
+      assert(pos != last && *pos == dofs[i]);
+      values[pos - inner] += local(i, j);
+    }
+  }
+}
+
+}  // namespace iga

@@ -1,0 +1,38 @@
+#pragma once
+/// @file
+/// What does not change while a space is used: the global indices active on every element, the
+/// sparsity pattern of its matrices and a colouring of the elements for lock-free parallel assembly.
+
+#include <Eigen/SparseCore>
+#include <vector>
+
+#include "spaces/space.hpp"
+
+namespace iga {
+
+using SparseMatrix = Eigen::SparseMatrix<double>;  // column-major, int indices (CHOLMOD, UMFPACK)
+
+/// Element -> active global indices, in compressed rows: dofs[offsets[e] .. offsets[e+1]).
+struct ElementDofTable {
+  std::vector<int> offsets;
+  std::vector<int> dofs;
+  int num_elements() const { return static_cast<int>(offsets.size()) - 1; }
+  int size(int e) const { return offsets[e + 1] - offsets[e]; }
+  const int* begin(int e) const { return dofs.data() + offsets[e]; }
+};
+
+ElementDofTable collect_element_dofs(const Space& space);
+
+/// A compressed matrix with explicit zeros at every (i, j) such that functions i and j are active
+/// on a common element; inner indices sorted within each column.
+SparseMatrix sparsity_pattern(const ElementDofTable& table, int dimension);
+
+/// Groups of elements such that no two elements of a group share an active function: elements of
+/// one group can add into the same matrix concurrently without locks. Greedy, in element order.
+std::vector<std::vector<int>> colour_elements(const ElementDofTable& table, int dimension);
+
+/// Add the local matrix `local` (rows and columns in the order of `dofs`) into `matrix`, whose
+/// pattern must already hold every entry (sparsity_pattern).
+void scatter_add(const std::vector<int>& dofs, const Eigen::MatrixXd& local, SparseMatrix& matrix);
+
+}  // namespace iga

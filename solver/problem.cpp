@@ -1,0 +1,105 @@
+#include "solver/problem.hpp"
+
+namespace iga {
+
+std::string to_string(Pde pde) { return pde == Pde::poisson ? "poisson" : "biharmonic"; }
+
+std::string to_string(BoundaryKind kind) {
+  switch (kind) {
+    case BoundaryKind::dirichlet: return "dirichlet";
+    case BoundaryKind::neumann: return "neumann";
+    case BoundaryKind::clamped: return "clamped";
+    case BoundaryKind::simply_supported: return "simply_supported";
+  }
+  return "?";
+}
+
+namespace {
+
+ScalarField field(const SymbolicFunction& f) {
+  return [f](const Point2& x) { return f(x); };
+}
+
+SymbolicFunction parse_expression(const ConfigNode& node) { return SymbolicFunction::parse(node.as_string(), node.where()); }
+
+}  // namespace
+
+ExactSolution ProblemSpec::exact_solution() const {
+  ExactSolution s;
+  if (!exact) return s;
+  const SymbolicFunction& u = *exact;
+  const SymbolicFunction ux = u.diff_x(), uy = u.diff_y();
+  s.u = field(u);
+  s.ux = field(ux);
+  s.uy = field(uy);
+  s.uxx = field(ux.diff_x());
+  s.uxy = field(ux.diff_y());
+  s.uyy = field(uy.diff_y());
+  return s;
+}
+
+BoundaryField ProblemSpec::normal_derivative_field() const {
+  if (gradient_x && gradient_y) {
+    const SymbolicFunction gx = *gradient_x, gy = *gradient_y;
+    return [gx, gy](const Point2& x, const Point2& n) { return gx(x) * n.x() + gy(x) * n.y(); };
+  }
+  const SymbolicFunction dn = normal_derivative;
+  return [dn](const Point2& x, const Point2&) { return dn(x); };
+}
+
+ProblemSpec parse_problem(const ConfigNode& node) {
+  node.check_keys({"pde", "exact", "source", "boundary", "data", "form"});
+  ProblemSpec p;
+  p.pde = node["pde"].as_choice({"poisson", "biharmonic"}) == "poisson" ? Pde::poisson : Pde::biharmonic;
+
+  if (auto form = node.find("form")) {
+    if (p.pde == Pde::poisson) form->fail("'form' applies to biharmonic problems only");
+    p.form = form->as_choice({"laplacian", "hessian"}) == "hessian" ? BilinearForm::hessian : BilinearForm::bilaplace;
+  } else {
+    p.form = p.pde == Pde::poisson ? BilinearForm::laplace : BilinearForm::bilaplace;
+  }
+
+  if (auto exact = node.find("exact")) {
+    const SymbolicFunction u = parse_expression(*exact);
+    p.exact = u;
+    p.value = u;
+    p.gradient_x = u.diff_x();
+    p.gradient_y = u.diff_y();
+    p.laplacian = u.laplacian();
+    p.source = p.pde == Pde::poisson ? -u.laplacian() : u.bilaplacian();
+  }
+  if (auto source = node.find("source")) p.source = parse_expression(*source);
+  else if (!p.exact) node.fail("give 'exact' (a manufactured solution) or 'source'");
+
+  if (auto data = node.find("data")) {
+    if (p.exact) data->fail("'data' is derived from 'exact'; give one or the other");
+    data->check_keys({"u", "dudn", "laplace_u"});
+    if (auto u = data->find("u")) p.value = parse_expression(*u);
+    if (auto dn = data->find("dudn")) p.normal_derivative = parse_expression(*dn);
+    if (auto lap = data->find("laplace_u")) p.laplacian = parse_expression(*lap);
+  }
+
+  const std::vector<std::string> kinds = p.pde == Pde::poisson
+                                             ? std::vector<std::string>{"dirichlet", "neumann"}
+                                             : std::vector<std::string>{"clamped", "simply_supported"};
+  const ConfigNode boundary = node["boundary"];
+  if (!boundary.is_map() || boundary.keys().empty())
+    boundary.fail("expected a map from boundary part (all, left, ...) to a condition (" + kinds[0] + ", " +
+                  kinds[1] + ")");
+  for (const std::string& name : boundary.keys()) {
+    const ConfigNode entry = boundary[name];
+    const std::string k = entry.as_choice(kinds);
+    BoundaryKind kind = k == "dirichlet"   ? BoundaryKind::dirichlet
+                        : k == "neumann"   ? BoundaryKind::neumann
+                        : k == "clamped"   ? BoundaryKind::clamped
+                                           : BoundaryKind::simply_supported;
+    if (kind == BoundaryKind::simply_supported && p.form == BilinearForm::hessian)
+      entry.fail("simply_supported needs form: laplacian (the Hessian form has another natural condition)");
+    BoundaryPart part{name, kind, entry.where()};
+    if (name == "all") p.boundary.insert(p.boundary.begin(), part);
+    else p.boundary.push_back(part);
+  }
+  return p;
+}
+
+}  // namespace iga

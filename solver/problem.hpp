@@ -1,0 +1,54 @@
+#pragma once
+/// @file
+/// The boundary value problem of a config: PDE, bilinear form, source, boundary parts with their
+/// kinds, and the data on them. With `exact` given, every datum is derived from it symbolically.
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "assembly/fields.hpp"
+#include "assembly/integrators.hpp"
+#include "solver/config_node.hpp"
+#include "solver/expression.hpp"
+
+namespace iga {
+
+enum class Pde { poisson, biharmonic };
+enum class BoundaryKind { dirichlet, neumann, clamped, simply_supported };
+
+std::string to_string(Pde pde);
+std::string to_string(BoundaryKind kind);
+
+/// A named boundary part ("all", "left", ...) and the condition imposed there.
+struct BoundaryPart {
+  std::string name;
+  BoundaryKind kind;
+  std::string where;  ///< config location, for messages about unknown part names
+};
+
+struct ProblemSpec {
+  Pde pde = Pde::poisson;
+  BilinearForm form = BilinearForm::laplace;
+  std::optional<SymbolicFunction> exact;
+  SymbolicFunction source = SymbolicFunction::constant(0.0);
+  std::vector<BoundaryPart> boundary;  ///< in config order; "all" first applies, later parts override
+
+  // Boundary data (from `exact`, or from `data:`; zero when neither gives them).
+  SymbolicFunction value = SymbolicFunction::constant(0.0);      ///< u on dirichlet/clamped/simply supported parts
+  std::optional<SymbolicFunction> gradient_x, gradient_y;        ///< ∇u, when known (∂u/∂n = ∇u·n)
+  SymbolicFunction normal_derivative = SymbolicFunction::constant(0.0);  ///< ∂u/∂n when ∇u is not known
+  SymbolicFunction laplacian = SymbolicFunction::constant(0.0);  ///< Δu on simply supported parts
+
+  /// u, ∇u, D²u of the exact solution as callables (empty members when there is none).
+  ExactSolution exact_solution() const;
+  /// ∂u/∂n as a boundary field (from ∇u when known).
+  BoundaryField normal_derivative_field() const;
+  /// Degree of the differential operator (2 or 4).
+  int order() const { return pde == Pde::poisson ? 2 : 4; }
+};
+
+/// Parse and validate the `problem:` section (keys pde, exact, source, boundary, data, form).
+ProblemSpec parse_problem(const ConfigNode& node);
+
+}  // namespace iga

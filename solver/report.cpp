@@ -1,0 +1,150 @@
+#include "solver/report.hpp"
+
+#include <cstdio>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+namespace iga {
+
+namespace {
+
+std::string number(std::optional<double> v, const char* fmt = "%.6e") {
+  if (!v) return "";
+  char buf[64];
+  std::snprintf(buf, sizeof buf, fmt, *v);
+  return buf;
+}
+
+struct Rates {
+  std::optional<double> l2, h1, h2;
+};
+
+Rates rates_at(const std::vector<LevelResult>& rows, std::size_t i) {
+  if (i == 0) return {};
+  const LevelResult &a = rows[i - 1], &b = rows[i];
+  return {rate(a.l2, b.l2, a.h, b.h), rate(a.h1, b.h1, a.h, b.h), rate(a.h2, b.h2, a.h, b.h)};
+}
+
+std::ofstream open_for_writing(const std::string& filename) {
+  std::ofstream out(filename);
+  if (!out) throw std::runtime_error("cannot write " + filename);
+  return out;
+}
+
+/// YAML scalars as JSON numbers or booleans when they read as such, strings otherwise.
+nlohmann::json to_json(const YAML::Node& node) {
+  switch (node.Type()) {
+    case YAML::NodeType::Map: {
+      nlohmann::json j = nlohmann::json::object();
+      for (const auto& kv : node) j[kv.first.as<std::string>()] = to_json(kv.second);
+      return j;
+    }
+    case YAML::NodeType::Sequence: {
+      nlohmann::json j = nlohmann::json::array();
+      for (const auto& item : node) j.push_back(to_json(item));
+      return j;
+    }
+    case YAML::NodeType::Scalar: {
+      long long i;
+      double d;
+      bool b;
+      if (YAML::convert<long long>::decode(node, i)) return i;
+      if (YAML::convert<double>::decode(node, d)) return d;
+      if (YAML::convert<bool>::decode(node, b)) return b;
+      return node.as<std::string>();
+    }
+    default: return nullptr;
+  }
+}
+
+nlohmann::json optional_json(std::optional<double> v) { return v ? nlohmann::json(*v) : nlohmann::json(nullptr); }
+
+}  // namespace
+
+void write_convergence_csv(const std::vector<LevelResult>& rows, const std::string& filename) {
+  std::ofstream out = open_for_writing(filename);
+  out << "level,h,dofs,l2,h1,h2,rate_l2,rate_h1,rate_h2,t_assemble,t_solve,free_dofs,t_space,t_errors\n";
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    const LevelResult& r = rows[i];
+    const Rates q = rates_at(rows, i);
+    out << r.level << ',' << number(r.h, "%.10e") << ',' << r.dofs << ',' << number(r.l2, "%.10e") << ','
+        << number(r.h1, "%.10e") << ',' << number(r.h2, "%.10e") << ',' << number(q.l2, "%.4f") << ','
+        << number(q.h1, "%.4f") << ',' << number(q.h2, "%.4f") << ',' << number(r.t_assemble, "%.6f") << ','
+        << number(r.t_solve, "%.6f") << ',' << r.free_dofs << ',' << number(r.t_space, "%.6f") << ','
+        << number(r.t_errors, "%.6f") << '\n';
+  }
+}
+
+std::string format_convergence_table(const std::vector<LevelResult>& rows) {
+  std::ostringstream s;
+  char line[256];
+  std::snprintf(line, sizeof line, "%5s %10s %8s %11s %6s %11s %6s %11s %6s %9s %9s\n", "level", "h", "dofs", "L2",
+                "rate", "H1-semi", "rate", "H2-semi", "rate", "assemble", "solve");
+  s << line;
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    const LevelResult& r = rows[i];
+    const Rates q = rates_at(rows, i);
+    auto e = [](std::optional<double> v) { return v ? number(v, "%.3e") : std::string("-"); };
+    auto k = [](std::optional<double> v) { return v ? number(v, "%.2f") : std::string(""); };
+    std::snprintf(line, sizeof line, "%5d %10.4e %8d %11s %6s %11s %6s %11s %6s %8.3fs %8.3fs\n", r.level, r.h, r.dofs,
+                  e(r.l2).c_str(), k(q.l2).c_str(), e(r.h1).c_str(), k(q.h1).c_str(), e(r.h2).c_str(),
+                  k(q.h2).c_str(), r.t_assemble, r.t_solve);
+    s << line;
+  }
+  return s.str();
+}
+
+void write_summary_json(const StudySettings& settings, const StudyResult& result, const std::string& filename) {
+  using nlohmann::json;
+  json j;
+  j["iga_run_version"] = IGA_RUN_VERSION;
+  j["config"] = to_json(settings.root.yaml());
+  j["config_file"] = settings.root.file();
+  json space = {{"type", result.space_type}};
+  for (const auto& [k, v] : result.space_parameters) space["parameters"][k] = v;
+  j["space"] = space;
+  j["problem"] = {{"pde", to_string(settings.problem.pde)},
+                  {"form", to_string(settings.problem.form)},
+                  {"exact", settings.problem.exact ? json(settings.problem.exact->str()) : json(nullptr)},
+                  {"source", settings.problem.source.str()}};
+  for (const BoundaryPart& p : settings.problem.boundary) j["problem"]["boundary"][p.name] = to_string(p.kind);
+  j["norms"] = "l2: L2 norm; h1: H1 seminorm |e|_1 = ||grad e||; h2: H2 seminorm |e|_2 = ||D^2 e|| (Frobenius)";
+  json levels = json::array();
+  std::vector<double> h;
+  std::vector<std::optional<double>> l2, h1, h2;
+  for (std::size_t i = 0; i < result.rows.size(); ++i) {
+    const LevelResult& r = result.rows[i];
+    const Rates q = rates_at(result.rows, i);
+    levels.push_back({{"level", r.level},
+                      {"h", r.h},
+                      {"dofs", r.dofs},
+                      {"free_dofs", r.free_dofs},
+                      {"l2", optional_json(r.l2)},
+                      {"h1", optional_json(r.h1)},
+                      {"h2", optional_json(r.h2)},
+                      {"rate_l2", optional_json(q.l2)},
+                      {"rate_h1", optional_json(q.h1)},
+                      {"rate_h2", optional_json(q.h2)},
+                      {"solver", result.solver_methods[i]},
+                      {"relative_residual", result.relative_residuals[i]},
+                      {"timings", {{"space", r.t_space}, {"assemble", r.t_assemble}, {"solve", r.t_solve},
+                                   {"errors", r.t_errors}}}});
+    h.push_back(r.h);
+    l2.push_back(r.l2);
+    h1.push_back(r.h1);
+    h2.push_back(r.h2);
+  }
+  j["levels"] = levels;
+  j["least_squares_rates"] = {{"l2", optional_json(least_squares_rate(h, l2))},
+                              {"h1", optional_json(least_squares_rate(h, h1))},
+                              {"h2", optional_json(least_squares_rate(h, h2))}};
+  j["expected_rates"] = {{"l2", result.expected.l2}, {"h1", result.expected.h1}, {"h2", result.expected.h2}};
+  double total = 0;
+  for (const LevelResult& r : result.rows) total += r.t_space + r.t_assemble + r.t_solve + r.t_errors;
+  j["total_seconds"] = total;
+  std::ofstream out = open_for_writing(filename);
+  out << j.dump(2) << '\n';
+}
+
+}  // namespace iga

@@ -1,0 +1,22 @@
+#pragma once
+/// @file
+/// The study's tables: convergence.csv (a contract: its header starts exactly with
+/// level,h,dofs,l2,h1,h2,rate_l2,rate_h1,rate_h2,t_assemble,t_solve), the aligned stdout table and
+/// summary.json.
+
+#include <string>
+#include <vector>
+
+#include "solver/study.hpp"
+
+namespace iga {
+
+void write_convergence_csv(const std::vector<LevelResult>& rows, const std::string& filename);
+
+/// The convergence table as aligned text, one row per level, rates from consecutive levels.
+std::string format_convergence_table(const std::vector<LevelResult>& rows);
+
+/// Config echo, space and parameters, rows, least-squares rates, timings.
+void write_summary_json(const StudySettings& settings, const StudyResult& result, const std::string& filename);
+
+}  // namespace iga

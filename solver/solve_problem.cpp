@@ -1,0 +1,103 @@
+#include "solver/solve_problem.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <map>
+
+#include "assembly/assembler.hpp"
+#include "assembly/boundary_conditions.hpp"
+#include "solver/errors.hpp"
+
+namespace iga {
+
+namespace {
+using Clock = std::chrono::steady_clock;
+double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
+
+BoundaryField boundary_field(const SymbolicFunction& f) {
+  return [f](const Point2& x, const Point2&) { return f(x); };
+}
+}  // namespace
+
+int assembly_quadrature_degree(const Space& space) {
+  // 2p integrates products of basis functions on affine elements; non-affine maps and
+  // non-polynomial data get two more.
+  return 2 * space.degree() + (space.affine_elements() ? 1 : 3);
+}
+
+int error_quadrature_degree(const Space& space) { return 2 * space.degree() + 8; }
+
+void check_boundary_parts(const Space& space, const ProblemSpec& problem) {
+  const std::vector<std::string> names = space.boundary_names();
+  for (const BoundaryPart& part : problem.boundary) {
+    if (part.name == "all" || std::find(names.begin(), names.end(), part.name) != names.end()) continue;
+    std::string list = "all";
+    for (const auto& n : names) list += ", " + n;
+    const std::string near = nearest_word(part.name, names);
+    throw InputError(part.where + ": unknown boundary part '" + part.name + "' of this " + space.type() +
+                     " domain (parts: " + list + ")" + (near.empty() ? "" : " (did you mean '" + near + "'?)"));
+  }
+}
+
+DiscreteSolution solve_problem(const Space& space, const ProblemSpec& problem, SolverKind solver) {
+  check_boundary_parts(space, problem);
+  DiscreteSolution out;
+  LevelResult& r = out.result;
+  r.h = space.mesh_size();
+  r.dofs = space.dimension();
+  const int qa = assembly_quadrature_degree(space);
+
+  // Which condition holds on every boundary edge: "all" first, named parts override it.
+  std::map<std::pair<int, int>, BoundaryKind> kind_of_edge;
+  for (const BoundaryPart& part : problem.boundary)
+    for (const BoundaryEdge& e : space.boundary_edges(part.name)) kind_of_edge[{e.element, e.local_edge}] = part.kind;
+  EssentialBoundary essential;
+  std::vector<BoundaryEdge> neumann_edges, simply_supported_edges;
+  for (const auto& [key, kind] : kind_of_edge) {
+    const BoundaryEdge e{key.first, key.second};
+    if (kind != BoundaryKind::neumann) essential.value_edges.push_back(e);
+    if (kind == BoundaryKind::clamped) essential.normal_edges.push_back(e);
+    if (kind == BoundaryKind::neumann) neumann_edges.push_back(e);
+    if (kind == BoundaryKind::simply_supported) simply_supported_edges.push_back(e);
+  }
+  if (essential.value_edges.empty())
+    throw InputError("problem.boundary: a pure Neumann problem has no unique solution; make at least one part dirichlet");
+
+  auto t0 = Clock::now();
+  const Assembler assembler(space);
+  SparseMatrix A = assembler.matrix(problem.form, qa);
+  const SymbolicFunction source = problem.source;
+  Eigen::VectorXd b = assembler.load([source](const Point2& x) { return source(x); }, qa);
+  const BoundaryField dudn = problem.normal_derivative_field();
+  // Natural conditions: Neumann flux ∫ g_N v, and for simply supported plates ∫ Δu ∂v/∂n
+  // (from ∫ Δ²u v = ∫ Δu Δv − ∫_Γ Δu ∂v/∂n when v = 0 on Γ).
+  if (!neumann_edges.empty()) b += assembler.boundary_load(neumann_edges, dudn, Assembler::BoundaryTest::value, qa);
+  if (!simply_supported_edges.empty())
+    b += assembler.boundary_load(simply_supported_edges, boundary_field(problem.laplacian),
+                                 Assembler::BoundaryTest::normal_derivative, qa);
+  const Constraints constraints =
+      impose_essential(space, essential, boundary_field(problem.value), dudn, qa);
+  SparseMatrix A_free;
+  Eigen::VectorXd b_free;
+  reduce_system(A, b, constraints, A_free, b_free);
+  r.t_assemble = seconds_since(t0);
+  r.free_dofs = static_cast<int>(constraints.free.size());
+  out.boundary_constrained = static_cast<int>(constraints.constrained.size());
+
+  t0 = Clock::now();
+  const Eigen::VectorXd u_free = solve_linear_system(A_free, b_free, solver, out.solve);
+  out.coefficients = expand_solution(u_free, constraints);
+  r.t_solve = seconds_since(t0);
+
+  if (problem.exact) {
+    t0 = Clock::now();
+    const ErrorNorms e = error_norms(space, out.coefficients, problem.exact_solution(), error_quadrature_degree(space));
+    r.l2 = e.l2;
+    r.h1 = e.h1;
+    r.h2 = e.h2;
+    r.t_errors = seconds_since(t0);
+  }
+  return out;
+}
+
+}  // namespace iga

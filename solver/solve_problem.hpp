@@ -1,0 +1,32 @@
+#pragma once
+/// @file
+/// Solve one boundary value problem on one space: assemble, impose boundary conditions, solve,
+/// measure errors. Written against the Space interface only.
+
+#include <Eigen/Core>
+#include <string>
+
+#include "assembly/error_norms.hpp"
+#include "solver/level_result.hpp"
+#include "solver/linear_solver.hpp"
+#include "solver/problem.hpp"
+
+namespace iga {
+
+struct DiscreteSolution {
+  Eigen::VectorXd coefficients;  ///< one per global basis function
+  LevelResult result;            ///< h, dofs, errors, timings (level and t_space left to the caller)
+  SolveReport solve;
+  int boundary_constrained = 0;  ///< coefficients fixed by essential data
+};
+
+/// Quadrature degrees used for a space of local degree p (documented in README).
+int assembly_quadrature_degree(const Space& space);
+int error_quadrature_degree(const Space& space);
+
+/// Validate the problem's boundary part names against the space; throws InputError.
+void check_boundary_parts(const Space& space, const ProblemSpec& problem);
+
+DiscreteSolution solve_problem(const Space& space, const ProblemSpec& problem, SolverKind solver);
+
+}  // namespace iga

@@ -1,0 +1,29 @@
+#pragma once
+/// @file
+/// A results directory that appears only when complete. Outputs are written into a private
+/// temporary directory; commit() moves it into place (replacing an older result). If commit() is
+/// never called — a failed run — the temporary directory is removed and nothing is left behind.
+
+#include <string>
+
+namespace iga {
+
+class StagedDirectory {
+ public:
+  explicit StagedDirectory(std::string final_path);
+  ~StagedDirectory();
+  StagedDirectory(const StagedDirectory&) = delete;
+  StagedDirectory& operator=(const StagedDirectory&) = delete;
+
+  /// Where to write now.
+  const std::string& path() const { return staging_; }
+  /// Move the staged outputs to the final path. Throws std::runtime_error on failure.
+  void commit();
+
+ private:
+  std::string final_;
+  std::string staging_;
+  bool committed_ = false;
+};
+
+}  // namespace iga

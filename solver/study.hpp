@@ -1,0 +1,58 @@
+#pragma once
+/// @file
+/// A convergence study: the same problem solved on a space refined level by level, with the
+/// outputs of every level written into one directory.
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "solver/config_node.hpp"
+#include "solver/level_result.hpp"
+#include "solver/linear_solver.hpp"
+#include "solver/problem.hpp"
+
+namespace iga {
+
+/// Everything a study needs, validated from the config (and command-line overrides).
+struct StudySettings {
+  ConfigNode root;
+  ProblemSpec problem;
+  int levels = 4;          ///< number of levels solved: 0 .. levels-1
+  SolverKind solver = SolverKind::cholmod;
+  std::string output_dir;  ///< final destination of the results
+  bool write_vtk = true;
+  int vtk_samples = 8;     ///< samples per element edge
+  bool write_plot = true;
+};
+
+/// Parse and validate the whole config (all sections) before anything is computed, so a typo
+/// deep in the file fails before a long study starts. `levels_override` <= 0 means none.
+/// `config_path` gives the default output directory results/<config name>.
+StudySettings parse_study(const ConfigNode& root, const std::string& config_path, int levels_override,
+                          const std::string& output_override);
+
+struct OptimalRates {
+  int l2 = 0, h1 = 0, h2 = 0;
+};
+
+/// Progress messages for long phases (stderr; silenced by --quiet).
+using ProgressSink = std::function<void(const std::string&)>;
+
+struct StudyResult {
+  std::vector<LevelResult> rows;
+  std::vector<std::pair<std::string, std::string>> space_parameters;  ///< of the finest level
+  std::string space_type;
+  OptimalRates expected;     ///< for the space degree and PDE
+  std::vector<std::string> solver_methods;  ///< per level
+  std::vector<double> relative_residuals;   ///< per level
+};
+
+/// Run all levels, writing solution_<l>.vtu and solution.pvd into `directory` (which exists).
+StudyResult run_study(const StudySettings& settings, const std::string& directory, const ProgressSink& progress);
+
+/// Optimal orders of a conforming space of degree p (smooth solution): Poisson p+1, p, p−1;
+/// biharmonic L2 p−1+min(2, p−1), H1 p−1+min(1, p−1), H2 p−1 (p = 2 gives 2, 2, 1).
+OptimalRates optimal_rates(Pde pde, int degree);
+
+}  // namespace iga
