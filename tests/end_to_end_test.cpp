@@ -1,0 +1,173 @@
+// The iga-run program as a user runs it: every shipped config, its outputs read back with VTK's
+// reader, and bad input ending in exit code 2 with a message and no output directory.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <vtkDataArray.h>
+#include <vtkPointData.h>
+#include <vtkSmartPointer.h>
+#include <vtkUnstructuredGrid.h>
+#include <vtkXMLUnstructuredGridReader.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+namespace fs = std::filesystem;
+
+namespace {
+
+struct RunResult {
+  int exit_code;
+  std::string out, err;
+};
+
+std::string slurp(const fs::path& p) {
+  std::ifstream in(p);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+fs::path scratch_dir() {
+  static const fs::path dir = [] {
+    fs::path d = fs::temp_directory_path() / ("iga-e2e-" + std::to_string(::getpid()));
+    fs::create_directories(d);
+    return d;
+  }();
+  return dir;
+}
+
+RunResult run_iga(const std::string& args) {
+  const fs::path out = scratch_dir() / "stdout.txt", err = scratch_dir() / "stderr.txt";
+  const std::string cmd = std::string(IGA_RUN_BINARY) + " " + args + " >" + out.string() + " 2>" + err.string();
+  const int status = std::system(cmd.c_str());
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(out), slurp(err)};
+}
+
+fs::path write_config(const std::string& name, const std::string& text) {
+  const fs::path p = scratch_dir() / name;
+  std::ofstream(p) << text;
+  return p;
+}
+
+const char* kGood = R"(problem:
+  pde: poisson
+  exact: "x*y + sin(x)"
+  boundary: {all: dirichlet}
+domain: {type: rectangle, min: [0, 0], max: [1, 1]}
+space: {type: bspline, degree: 2, elements: [2, 2]}
+refinement: {levels: 2}
+)";
+
+/// A config with one line replaced, for bad-input cases.
+std::string with_replaced(const std::string& from, const std::string& to) {
+  std::string s = kGood;
+  const auto pos = s.find(from);
+  EXPECT_NE(pos, std::string::npos);
+  return s.replace(pos, from.size(), to);
+}
+
+}  // namespace
+
+TEST(EndToEnd, EveryShippedConfigRunsAndWritesReadableOutput) {
+  int count = 0;
+  for (const auto& entry : fs::directory_iterator(fs::path(IGA_SOURCE_DIR) / "configs")) {
+    if (entry.path().extension() != ".yaml") continue;
+    ++count;
+    const std::string name = entry.path().stem().string();
+    const fs::path out = scratch_dir() / ("out-" + name);
+    const RunResult r = run_iga(entry.path().string() + " --levels 2 --quiet --output " + out.string());
+    ASSERT_EQ(r.exit_code, 0) << name << ": " << r.err;
+    EXPECT_TRUE(r.err.empty()) << "--quiet still printed: " << r.err;
+    EXPECT_NE(r.out.find("level"), std::string::npos);
+
+    const std::string csv = slurp(out / "convergence.csv");
+    EXPECT_EQ(csv.rfind("level,h,dofs,l2,h1,h2,rate_l2,rate_h1,rate_h2,t_assemble,t_solve", 0), 0u) << name;
+    EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 3) << name;  // header + 2 levels
+
+    const nlohmann::json summary = nlohmann::json::parse(slurp(out / "summary.json"));
+    EXPECT_EQ(summary["levels"].size(), 2u);
+    EXPECT_TRUE(summary.contains("config"));
+    EXPECT_TRUE(summary["space"].contains("type"));
+
+    EXPECT_TRUE(fs::exists(out / "solution.pvd"));
+    EXPECT_GT(fs::file_size(out / "convergence.svg"), 1000u);
+    const bool biharmonic = summary["problem"]["pde"] == "biharmonic";
+    for (int level = 0; level < 2; ++level) {
+      auto reader = vtkSmartPointer<vtkXMLUnstructuredGridReader>::New();
+      reader->SetFileName((out / ("solution_" + std::to_string(level) + ".vtu")).c_str());
+      reader->Update();
+      vtkUnstructuredGrid* grid = reader->GetOutput();
+      ASSERT_GT(grid->GetNumberOfPoints(), 0) << name;
+      ASSERT_GT(grid->GetNumberOfCells(), 0) << name;
+      vtkPointData* pd = grid->GetPointData();
+      for (const char* field : {"u", "grad_u", "u_exact", "error"}) EXPECT_NE(pd->GetArray(field), nullptr) << field;
+      EXPECT_EQ(pd->GetArray("grad_u")->GetNumberOfComponents(), 3);
+      if (biharmonic) EXPECT_NE(pd->GetArray("laplace_u"), nullptr);
+      // The error field is small against the solution (the exact solutions are resolved).
+      double range_u[2], range_e[2];
+      pd->GetArray("u_exact")->GetRange(range_u);
+      pd->GetArray("error")->GetRange(range_e);
+      const double scale = std::max(std::abs(range_u[0]), std::abs(range_u[1]));
+      EXPECT_LT(std::max(std::abs(range_e[0]), std::abs(range_e[1])), 0.2 * scale) << name;
+    }
+  }
+  EXPECT_GE(count, 5);
+}
+
+TEST(EndToEnd, GoodConfigWritesToConfiguredDirectory) {
+  const fs::path out = scratch_dir() / "good-out";
+  const fs::path cfg = write_config("good.yaml", std::string(kGood) + "output: {directory: " + out.string() + "}\n");
+  const RunResult r = run_iga(cfg.string() + " --quiet");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_TRUE(fs::exists(out / "convergence.csv"));
+  // A second run replaces the results in place.
+  ASSERT_EQ(run_iga(cfg.string() + " --quiet --levels 1").exit_code, 0);
+  const std::string csv = slurp(out / "convergence.csv");
+  EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 2);
+}
+
+struct BadCase {
+  const char* name;
+  std::string config;      // empty: use a missing file
+  const char* message;     // must appear on stderr
+};
+
+class BadInput : public ::testing::TestWithParam<BadCase> {};
+
+TEST_P(BadInput, ExitsWithCode2AndLeavesNoOutput) {
+  const BadCase& c = GetParam();
+  const fs::path out = scratch_dir() / (std::string("bad-") + c.name);
+  const fs::path cfg = c.config.empty() ? scratch_dir() / "does-not-exist.yaml"
+                                        : write_config(std::string(c.name) + ".yaml", c.config);
+  const RunResult r = run_iga(cfg.string() + " --output " + out.string());
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_NE(r.err.find(c.message), std::string::npos) << "stderr: " << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << "one line: " << r.err;
+  EXPECT_FALSE(fs::exists(out));
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Cases, BadInput,
+    ::testing::Values(
+        BadCase{"typo_key", with_replaced("degree: 2", "degre: 2"), "did you mean 'degree'"},
+        BadCase{"typo_top_level", with_replaced("refinement:", "refinment:"), "did you mean 'refinement'"},
+        BadCase{"bad_expression", with_replaced("x*y + sin(x)", "x*y + sin(x"), "cannot parse"},
+        BadCase{"unknown_symbol", with_replaced("x*y + sin(x)", "x*z"), "cannot parse"},
+        BadCase{"degree_zero", with_replaced("degree: 2", "degree: 0"), "degree"},
+        BadCase{"unknown_boundary_part", with_replaced("{all: dirichlet}", "{lft: dirichlet}"), "did you mean 'left'"},
+        BadCase{"wrong_condition", with_replaced("{all: dirichlet}", "{all: clamped}"), "dirichlet"},
+        BadCase{"yaml_syntax", with_replaced("pde: poisson", "pde: [poisson"), "yaml_syntax.yaml:"},
+        BadCase{"missing_file", "", "does-not-exist.yaml"}),
+    [](const auto& info) { return std::string(info.param.name); });
+
+TEST(EndToEnd, VersionHelpAndUsage) {
+  RunResult r = run_iga("--version");
+  EXPECT_EQ(r.exit_code, 0);
+  EXPECT_NE(r.out.find("iga-run"), std::string::npos);
+  EXPECT_EQ(run_iga("--help").exit_code, 0);
+  EXPECT_EQ(run_iga("").exit_code, 2);
+  EXPECT_EQ(run_iga("a.yaml --levels abc").exit_code, 2);
+}
