@@ -47,6 +47,26 @@ BoundaryField ProblemSpec::normal_derivative_field() const {
   return [dn](const Point2& x, const Point2&) { return dn(x); };
 }
 
+namespace {
+void derive_from_exact(ProblemSpec& p, const SymbolicFunction& u) {
+  p.exact = u;
+  p.value = u;
+  p.gradient_x = u.diff_x();
+  p.gradient_y = u.diff_y();
+  p.laplacian = u.laplacian();
+  p.source = p.pde == Pde::poisson ? -u.laplacian() : u.bilaplacian();
+}
+}  // namespace
+
+ProblemSpec manufactured_problem(Pde pde, const SymbolicFunction& u, std::vector<BoundaryPart> boundary) {
+  ProblemSpec p;
+  p.pde = pde;
+  p.form = pde == Pde::poisson ? BilinearForm::laplace : BilinearForm::bilaplace;
+  derive_from_exact(p, u);
+  p.boundary = std::move(boundary);
+  return p;
+}
+
 ProblemSpec parse_problem(const ConfigNode& node) {
   node.check_keys({"pde", "exact", "source", "boundary", "data", "form"});
   ProblemSpec p;
@@ -60,13 +80,7 @@ ProblemSpec parse_problem(const ConfigNode& node) {
   }
 
   if (auto exact = node.find("exact")) {
-    const SymbolicFunction u = parse_expression(*exact);
-    p.exact = u;
-    p.value = u;
-    p.gradient_x = u.diff_x();
-    p.gradient_y = u.diff_y();
-    p.laplacian = u.laplacian();
-    p.source = p.pde == Pde::poisson ? -u.laplacian() : u.bilaplacian();
+    derive_from_exact(p, parse_expression(*exact));
   }
   if (auto source = node.find("source")) p.source = parse_expression(*source);
   else if (!p.exact) node.fail("give 'exact' (a manufactured solution) or 'source'");

@@ -48,6 +48,10 @@ struct ProblemSpec {
   int order() const { return pde == Pde::poisson ? 2 : 4; }
 };
 
+/// A problem with manufactured solution `u`: source and all boundary data derived from it.
+/// `boundary` lists parts as in the config ("all" first).
+ProblemSpec manufactured_problem(Pde pde, const SymbolicFunction& u, std::vector<BoundaryPart> boundary);
+
 /// Parse and validate the `problem:` section (keys pde, exact, source, boundary, data, form).
 ProblemSpec parse_problem(const ConfigNode& node);
 
