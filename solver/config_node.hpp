@@ -68,6 +68,7 @@ class ConfigNode {
   YAML::Node node_;
   std::string path_;
   std::shared_ptr<const std::string> file_;
+  YAML::Mark key_mark_ = YAML::Mark::null_mark();  ///< of the key; an empty value has no place of its own
 };
 
 /// Levenshtein-nearest of `candidates` to `word`, or empty when none is close (for suggestions).
