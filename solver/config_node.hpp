@@ -23,7 +23,7 @@ class ConfigNode {
 
   /// Dotted key path of this node, e.g. "space.degree" (empty for the root).
   const std::string& path() const { return path_; }
-  /// "FILE:LINE:COL (path)" for messages.
+  /// "FILE:LINE:COL: path" for messages (fail() appends ": message").
   std::string where() const;
   /// Throw InputError "where(): message".
   [[noreturn]] void fail(const std::string& message) const;

@@ -1,5 +1,7 @@
 #include "spaces/element_values.hpp"
 
+#include <Eigen/LU>  // Matrix2d::determinant
+
 #include <cmath>
 
 namespace iga {

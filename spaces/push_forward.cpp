@@ -1,5 +1,7 @@
 #include "spaces/push_forward.hpp"
 
+#include <Eigen/LU>  // Matrix2d::inverse
+
 namespace iga {
 
 void push_forward(const std::vector<GeometryJet>& geometry, const ReferenceDerivatives& ref, unsigned flags,
