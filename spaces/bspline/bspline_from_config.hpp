@@ -1,0 +1,31 @@
+#pragma once
+/// @file
+/// Building B-spline spaces and patch geometries from the `domain` and `space` config nodes.
+///
+///   domain: {type: rectangle, min: [x0, y0], max: [x1, y1]}
+///   domain: {type: quarter_annulus, inner: r0, outer: r1}
+///   domain: {type: patch, degree: [pu, pv], knots_u: [...], knots_v: [...],
+///            control_points: [[x, y], ...], weights: [...]}          # weights optional (NURBS)
+///   space:  {type: bspline, degree: p, regularity: r, elements: [nx, ny]}
+///
+/// Every error is an InputError naming the config place (exit code 2).
+
+#include <memory>
+
+#include "solver/config_node.hpp"
+#include "spaces/bspline/patch_geometry.hpp"
+#include "spaces/space.hpp"
+
+namespace iga {
+
+/// The geometry of a rectangle, quarter_annulus or patch domain, validated (det J > 0).
+std::shared_ptr<const PatchGeometry> make_patch_geometry(const ConfigNode& domain);
+
+/// B-spline space of degree p, regularity r (0..p-1, default p-1) and `elements` (default [2,2],
+/// counted over the whole patch) refined uniformly `level` times: elements x 2^level per
+/// direction, the geometry unchanged. For a patch domain each direction's element count must be
+/// a multiple of the geometry's spans, which are subdivided uniformly (so the space's breakpoints
+/// contain the geometry's).
+SpacePtr make_bspline_space(const ConfigNode& domain, const ConfigNode& space, int level);
+
+}  // namespace iga

@@ -1,0 +1,275 @@
+#include "spaces/bspline/tensor_bspline_space.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "solver/errors.hpp"
+#include "spaces/bspline/bspline_basis_1d.hpp"
+#include "spaces/push_forward.hpp"
+
+namespace iga {
+
+namespace {
+
+/// Every breakpoint of `geometry` must be (within round-off) a knot of `space`.
+bool contains_breakpoints(const KnotVector& space, const KnotVector& geometry) {
+  const std::vector<double> knots = space.breakpoints();
+  for (double t : geometry.breakpoints()) {
+    const auto it = std::lower_bound(knots.begin(), knots.end(), t - 1e-12);
+    if (it == knots.end() || std::abs(*it - t) > 1e-12) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+// ---------------------------------------------------------------------------------------------
+// Evaluator: Bernstein tables per rule, then per element only extraction + geometry + push-forward.
+
+class TensorBSplineSpace::TensorEvaluator final : public Space::Evaluator {
+ public:
+  explicit TensorEvaluator(const TensorBSplineSpace& space) : space_(space) {}
+
+  void evaluate(int element, const QuadratureRule& rule, unsigned flags, PointValues& out) override;
+
+ private:
+  /// Bernstein values and derivatives (orders 0..2) at the points of one rule: (p+1) x q each.
+  struct Tables {
+    std::vector<Point2> points;  // copy, to detect a different rule at a reused address
+    Eigen::MatrixXd bu[3], bv[3];
+  };
+  const Tables& tables(const QuadratureRule& rule);
+
+  const TensorBSplineSpace& space_;
+  std::map<const QuadratureRule*, Tables> cache_;
+  // Scratch reused between calls.
+  Eigen::MatrixXd tu_[3], tv_[3];
+  ReferenceDerivatives ref_;
+  std::vector<GeometryJet> jets_;
+};
+
+const TensorBSplineSpace::TensorEvaluator::Tables& TensorBSplineSpace::TensorEvaluator::tables(
+    const QuadratureRule& rule) {
+  auto it = cache_.find(&rule);
+  if (it != cache_.end() && it->second.points == rule.points) return it->second;
+  // Temporary rules could otherwise grow the cache without bound.
+  if (it == cache_.end() && cache_.size() >= 64) cache_.clear();
+  Tables& t = cache_[&rule];
+  t.points = rule.points;
+  const int pu = space_.knots_u_.degree(), pv = space_.knots_v_.degree();
+  const int q = rule.size();
+  for (int d = 0; d < 3; ++d) {
+    t.bu[d].resize(pu + 1, q);
+    t.bv[d].resize(pv + 1, q);
+  }
+  for (int k = 0; k < q; ++k) {
+    const Eigen::MatrixXd bu = bernstein_derivatives(pu, rule.points[k].x(), 2);
+    const Eigen::MatrixXd bv = bernstein_derivatives(pv, rule.points[k].y(), 2);
+    for (int d = 0; d < 3; ++d) {
+      t.bu[d].col(k) = bu.row(d).transpose();
+      t.bv[d].col(k) = bv.row(d).transpose();
+    }
+  }
+  return t;
+}
+
+void TensorBSplineSpace::TensorEvaluator::evaluate(int element, const QuadratureRule& rule, unsigned flags,
+                                                   PointValues& out) {
+  const TensorBSplineSpace& s = space_;
+  const Tables& t = tables(rule);
+  const int nex = s.num_elements_u();
+  const int ex = element % nex, ey = element / nex;
+  const int pu = s.knots_u_.degree(), pv = s.knots_v_.degree();
+  const int q = rule.size();
+  const bool values = (flags & update_values) != 0;
+  const bool grads = (flags & (update_gradients | update_hessians)) != 0;
+  const bool hess = (flags & update_hessians) != 0;
+  const int nd = hess ? 2 : (grads ? 1 : 0);
+
+  // 1D active functions at the points: extraction times Bernstein tables.
+  for (int d = 0; d <= nd; ++d) {
+    tu_[d].noalias() = s.extraction_u_[ex] * t.bu[d];
+    tv_[d].noalias() = s.extraction_v_[ey] * t.bv[d];
+  }
+  const int n = (pu + 1) * (pv + 1);
+  if (values) ref_.value.resize(n, q);
+  if (grads) {
+    ref_.dxi.resize(n, q);
+    ref_.deta.resize(n, q);
+  }
+  if (hess) {
+    ref_.dxixi.resize(n, q);
+    ref_.dxieta.resize(n, q);
+    ref_.detaeta.resize(n, q);
+  }
+  for (int k = 0; k < q; ++k)
+    for (int b = 0; b <= pv; ++b)
+      for (int a = 0; a <= pu; ++a) {
+        const int i = a + b * (pu + 1);
+        if (values) ref_.value(i, k) = tu_[0](a, k) * tv_[0](b, k);
+        if (grads) {
+          ref_.dxi(i, k) = tu_[1](a, k) * tv_[0](b, k);
+          ref_.deta(i, k) = tu_[0](a, k) * tv_[1](b, k);
+        }
+        if (hess) {
+          ref_.dxixi(i, k) = tu_[2](a, k) * tv_[0](b, k);
+          ref_.dxieta(i, k) = tu_[1](a, k) * tv_[1](b, k);
+          ref_.detaeta(i, k) = tu_[0](a, k) * tv_[2](b, k);
+        }
+      }
+
+  s.element_dofs(element, out.dofs);
+
+  // Geometry w.r.t. reference coordinates: F(lo + h .* xi) has J diag(h) and H_kl h_k h_l.
+  Point2 lo, hi;
+  s.element_box(element, lo, hi);
+  const Point2 h = hi - lo;
+  const int gsu = s.geometry_span_u_[ex], gsv = s.geometry_span_v_[ey];
+  jets_.resize(q);
+  for (int k = 0; k < q; ++k) {
+    const Point2 uv = lo + h.cwiseProduct(rule.points[k]);
+    GeometryJet g = s.geometry_->evaluate(uv, gsu, gsv, hess);
+    g.jacobian.col(0) *= h.x();
+    g.jacobian.col(1) *= h.y();
+    if (hess) {
+      const Eigen::Matrix2d scale = h * h.transpose();
+      g.hessian_x = g.hessian_x.cwiseProduct(scale);
+      g.hessian_y = g.hessian_y.cwiseProduct(scale);
+    }
+    jets_[k] = g;
+  }
+  push_forward(jets_, ref_, flags, out);
+}
+
+// ---------------------------------------------------------------------------------------------
+
+TensorBSplineSpace::TensorBSplineSpace(std::shared_ptr<const PatchGeometry> geometry, KnotVector knots_u,
+                                       KnotVector knots_v)
+    : geometry_(std::move(geometry)),
+      knots_u_(std::move(knots_u)),
+      knots_v_(std::move(knots_v)),
+      n_u_(knots_u_.num_functions()),
+      n_v_(knots_v_.num_functions()) {
+  if (!geometry_) throw std::invalid_argument("TensorBSplineSpace: no geometry");
+  for (const KnotVector* kv : {&knots_u_, &knots_v_})
+    if (kv->front() != 0.0 || kv->back() != 1.0)
+      throw std::invalid_argument("TensorBSplineSpace: knot vectors must span [0,1]");
+  if (!contains_breakpoints(knots_u_, geometry_->knots_u()) || !contains_breakpoints(knots_v_, geometry_->knots_v()))
+    throw std::invalid_argument("TensorBSplineSpace: the knots must contain the breakpoints of the geometry");
+  extraction_u_ = bezier_extractions(knots_u_);
+  extraction_v_ = bezier_extractions(knots_v_);
+  // The geometry piece of each element, found from its midpoint (never on a geometry knot).
+  for (int mu : knots_u_.spans())
+    geometry_span_u_.push_back(geometry_->knots_u().find_span(0.5 * (knots_u_[mu] + knots_u_[mu + 1])));
+  for (int mu : knots_v_.spans())
+    geometry_span_v_.push_back(geometry_->knots_v().find_span(0.5 * (knots_v_[mu] + knots_v_[mu + 1])));
+  mesh_size_ = compute_mesh_size();
+}
+
+std::unique_ptr<Space::Evaluator> TensorBSplineSpace::make_evaluator() const {
+  return std::make_unique<TensorEvaluator>(*this);
+}
+
+int TensorBSplineSpace::regularity() const {
+  int r = degree();
+  for (const KnotVector* kv : {&knots_u_, &knots_v_}) {
+    const int m = kv->max_interior_multiplicity();
+    if (m > 0) r = std::min(r, kv->degree() - m);
+  }
+  return r;
+}
+
+std::vector<std::pair<std::string, std::string>> TensorBSplineSpace::parameters() const {
+  const int pu = knots_u_.degree(), pv = knots_v_.degree();
+  const bool interior = knots_u_.max_interior_multiplicity() > 0 || knots_v_.max_interior_multiplicity() > 0;
+  return {
+      {"degree", pu == pv ? std::to_string(pu) : std::to_string(pu) + "," + std::to_string(pv)},
+      {"regularity", interior ? std::to_string(regularity()) : "-"},
+      {"elements", std::to_string(num_elements_u()) + "x" + std::to_string(num_elements_v())},
+      {"domain", geometry_->description()},
+  };
+}
+
+void TensorBSplineSpace::element_dofs(int element, std::vector<int>& out) const {
+  const int nex = num_elements_u();
+  const int su = knots_u_.spans()[element % nex], sv = knots_v_.spans()[element / nex];
+  const int pu = knots_u_.degree(), pv = knots_v_.degree();
+  out.resize((pu + 1) * (pv + 1));
+  for (int b = 0; b <= pv; ++b)
+    for (int a = 0; a <= pu; ++a) out[a + b * (pu + 1)] = (su - pu + a) + (sv - pv + b) * n_u_;
+}
+
+void TensorBSplineSpace::element_box(int element, Point2& lo, Point2& hi) const {
+  const int nex = num_elements_u();
+  const int su = knots_u_.spans()[element % nex], sv = knots_v_.spans()[element / nex];
+  lo = Point2(knots_u_[su], knots_v_[sv]);
+  hi = Point2(knots_u_[su + 1], knots_v_[sv + 1]);
+}
+
+double TensorBSplineSpace::compute_mesh_size() const {
+  // Diameter from points along the element boundary: corners for affine maps, a few more per
+  // edge for curved ones (an estimate, as documented for Space::mesh_size).
+  const int per_edge = geometry_->is_affine() ? 1 : 4;
+  std::vector<Point2> pts(4 * per_edge);
+  double h = 0.0;
+  for (int e = 0; e < num_elements(); ++e) {
+    Point2 lo, hi;
+    element_box(e, lo, hi);
+    const int ex = e % num_elements_u(), ey = e / num_elements_u();
+    for (int edge = 0; edge < 4; ++edge)
+      for (int i = 0; i < per_edge; ++i) {
+        const Point2 xi = reference_edge_point(CellShape::quadrilateral, edge, double(i) / per_edge);
+        const Point2 uv = lo + (hi - lo).cwiseProduct(xi);
+        pts[edge * per_edge + i] = geometry_->evaluate(uv, geometry_span_u_[ex], geometry_span_v_[ey], false).x;
+      }
+    for (size_t i = 0; i < pts.size(); ++i)
+      for (size_t j = i + 1; j < pts.size(); ++j) h = std::max(h, (pts[i] - pts[j]).norm());
+  }
+  return h;
+}
+
+RulePtr TensorBSplineSpace::quadrature(int, int degree) const {
+  degree = std::max(degree, 0);
+  std::lock_guard<std::mutex> lock(rule_mutex_);
+  RulePtr& r = cell_rules_[degree];
+  if (!r) r = std::make_shared<const QuadratureRule>(tensor_gauss(degree));
+  return r;
+}
+
+RulePtr TensorBSplineSpace::edge_quadrature(int, int edge, int degree) const {
+  degree = std::max(degree, 0);
+  std::lock_guard<std::mutex> lock(rule_mutex_);
+  RulePtr& r = edge_rules_[{edge, degree}];
+  if (!r)
+    r = std::make_shared<const QuadratureRule>(
+        edge_rule(CellShape::quadrilateral, edge, gauss_legendre_for_degree(degree)));
+  return r;
+}
+
+std::vector<std::string> TensorBSplineSpace::boundary_names() const { return {"left", "right", "bottom", "top"}; }
+
+std::vector<BoundaryEdge> TensorBSplineSpace::boundary_edges(const std::string& name) const {
+  const int nex = num_elements_u(), ney = num_elements_v();
+  std::vector<BoundaryEdge> out;
+  auto side = [&](const std::string& s) {
+    if (s == "bottom")
+      for (int ex = 0; ex < nex; ++ex) out.push_back({ex, 0});
+    else if (s == "right")
+      for (int ey = 0; ey < ney; ++ey) out.push_back({nex - 1 + ey * nex, 1});
+    else if (s == "top")
+      for (int ex = 0; ex < nex; ++ex) out.push_back({ex + (ney - 1) * nex, 2});
+    else if (s == "left")
+      for (int ey = 0; ey < ney; ++ey) out.push_back({ey * nex, 3});
+  };
+  if (name == "all") {
+    for (const char* s : {"bottom", "right", "top", "left"}) side(s);
+  } else if (name == "left" || name == "right" || name == "bottom" || name == "top") {
+    side(name);
+  } else {
+    throw InputError("unknown boundary '" + name + "' of a B-spline patch (valid: left, right, bottom, top, all)");
+  }
+  return out;
+}
+
+}  // namespace iga

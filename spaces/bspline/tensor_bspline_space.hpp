@@ -1,0 +1,85 @@
+#pragma once
+/// @file
+/// TensorBSplineSpace: tensor-product B-splines on one patch, the baseline of every smooth space.
+///
+/// Elements are the nonzero knot span pairs, numbered ex + ey * n_ex. The reference cell [0,1]^2
+/// of an element maps affinely onto its parameter box, then through the PatchGeometry. Global
+/// functions N_i(u) M_j(v) are numbered i + j * n_u. The local basis of an element is the tensor
+/// Bernstein basis; its (p_u+1)(p_v+1) active functions are (C_v ⊗ C_u) times it, with the 1D
+/// Bézier extraction operators C_u, C_v. Active functions are ordered a + b * (p_u+1) (a along u).
+
+#include <algorithm>
+#include <map>
+#include <memory>
+#include <mutex>
+
+#include "spaces/bspline/knot_vector.hpp"
+#include "spaces/bspline/patch_geometry.hpp"
+#include "spaces/space.hpp"
+
+namespace iga {
+
+class TensorBSplineSpace final : public Space {
+ public:
+  /// Spline space of `knots_u` x `knots_v` on `geometry`. Both knot vectors must cover [0,1] and
+  /// contain every breakpoint of the geometry (so the map is smooth on each element);
+  /// std::invalid_argument otherwise.
+  TensorBSplineSpace(std::shared_ptr<const PatchGeometry> geometry, KnotVector knots_u, KnotVector knots_v);
+
+  std::unique_ptr<Evaluator> make_evaluator() const override;
+
+  std::string type() const override { return "bspline"; }
+  /// degree, regularity (C^r over interior knots; "-" with one element per direction), elements
+  /// (n_ex x n_ey), domain.
+  std::vector<std::pair<std::string, std::string>> parameters() const override;
+
+  int dimension() const override { return n_u_ * n_v_; }
+  void element_dofs(int element, std::vector<int>& out) const override;
+  int num_elements() const override { return num_elements_u() * num_elements_v(); }
+  CellShape cell_shape(int) const override { return CellShape::quadrilateral; }
+  double mesh_size() const override { return mesh_size_; }
+  int degree() const override { return std::max(knots_u_.degree(), knots_v_.degree()); }
+  bool affine_elements() const override { return geometry_->is_affine(); }
+
+  /// Shared tensor Gauss rule exact for `degree` per direction (built once per degree).
+  RulePtr quadrature(int element, int degree) const override;
+  /// Shared Gauss rule on edge `edge` of the reference square (built once per edge and degree).
+  RulePtr edge_quadrature(int element, int edge, int degree) const override;
+
+  /// left (u = 0), right (u = 1), bottom (v = 0), top (v = 1).
+  std::vector<std::string> boundary_names() const override;
+  /// Edges of a named side in increasing element order; "all" lists bottom, right, top, left.
+  /// Throws InputError for an unknown name.
+  std::vector<BoundaryEdge> boundary_edges(const std::string& name) const override;
+
+  const PatchGeometry& geometry() const { return *geometry_; }
+  const KnotVector& knots_u() const { return knots_u_; }
+  const KnotVector& knots_v() const { return knots_v_; }
+  int num_elements_u() const { return knots_u_.num_spans(); }
+  int num_elements_v() const { return knots_v_.num_spans(); }
+  /// Parameter box [lo, hi] of an element.
+  void element_box(int element, Point2& lo, Point2& hi) const;
+  /// Bézier extraction of element column ex (along u) and row ey (along v), (p+1) x (p+1).
+  const Eigen::MatrixXd& extraction_u(int ex) const { return extraction_u_[ex]; }
+  const Eigen::MatrixXd& extraction_v(int ey) const { return extraction_v_[ey]; }
+  /// Smallest continuity order of the interior knots of both directions (degree when there are none).
+  int regularity() const;
+
+ private:
+  class TensorEvaluator;
+  double compute_mesh_size() const;
+
+  std::shared_ptr<const PatchGeometry> geometry_;
+  KnotVector knots_u_, knots_v_;
+  int n_u_, n_v_;
+  std::vector<Eigen::MatrixXd> extraction_u_, extraction_v_;
+  std::vector<int> geometry_span_u_, geometry_span_v_;  ///< geometry span of each element column/row
+  double mesh_size_ = 0.0;
+
+  // Shared rule caches: the space is used by several threads, hence the mutex.
+  mutable std::mutex rule_mutex_;
+  mutable std::map<int, RulePtr> cell_rules_;
+  mutable std::map<std::pair<int, int>, RulePtr> edge_rules_;
+};
+
+}  // namespace iga
