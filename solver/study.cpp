@@ -31,8 +31,9 @@ StudySettings parse_study(const ConfigNode& root, const std::string& config_path
                           const std::string& output_override) {
   root.check_keys({"problem", "domain", "space", "refinement", "solver", "output"});
   StudySettings s{root, parse_problem(root["problem"])};
-  // Domain and space are validated by building the coarsest space once (cheap).
-  make_space(root["domain"], root["space"], 0);
+  // Domain, space and boundary part names are validated on the coarsest space (cheap), so that
+  // every input error surfaces before the study starts.
+  check_boundary_parts(*make_space(root["domain"], root["space"], 0), s.problem);
 
   if (auto refinement = root.find("refinement")) {
     refinement->check_keys({"levels"});

@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 #include <omp.h>
 
+#include <Eigen/SparseCholesky>
+
 #include <set>
 
 #include "assembly/assembler.hpp"
@@ -11,14 +13,14 @@
 using namespace iga;
 
 namespace {
-const char* kCubic = R"(
+const char* kCubic = R"yaml(
 domain: {type: rectangle, min: [-1, 0.5], max: [2, 1.5]}
 space: {type: bspline, degree: 3, regularity: 2, elements: [5, 3]}
-)";
-const char* kAnnulus = R"(
+)yaml";
+const char* kAnnulus = R"yaml(
 domain: {type: quarter_annulus, inner: 1, outer: 2}
 space: {type: bspline, degree: 2, regularity: 1, elements: [4, 3]}
-)";
+)yaml";
 }  // namespace
 
 TEST(Assembly, ColouringSeparatesElementsThatShareFunctions) {

@@ -28,10 +28,10 @@ Rates last_rates(const std::string& yaml, int levels) {
 }
 
 std::string poisson_yaml(int p) {
-  return R"(
+  return R"yaml(
 problem: {pde: poisson, exact: "sin(pi*x)*sin(2*pi*y)", boundary: {all: dirichlet}}
 domain: {type: rectangle, min: [0, 0], max: [1, 1]}
-space: {type: bspline, degree: )" +
+space: {type: bspline, degree: )yaml" +
          std::to_string(p) + ", regularity: " + std::to_string(p - 1) + ", elements: [4, 4]}\n";
 }
 
@@ -51,11 +51,11 @@ TEST(ConvergenceRates, PoissonCubic) {
 }
 
 TEST(ConvergenceRates, ClampedPlateCubic) {
-  const Rates r = last_rates(R"(
+  const Rates r = last_rates(R"yaml(
 problem: {pde: biharmonic, exact: "(cos(4*pi*x)-1)*(cos(4*pi*y)-1)", boundary: {all: clamped}}
 domain: {type: rectangle, min: [0, 0], max: [1, 1]}
 space: {type: bspline, degree: 3, regularity: 2, elements: [4, 4]}
-)",
+)yaml",
                              5);
   EXPECT_GT(r.l2, 3.75);
   EXPECT_GT(r.h1, 2.85);
@@ -63,11 +63,11 @@ space: {type: bspline, degree: 3, regularity: 2, elements: [4, 4]}
 }
 
 TEST(ConvergenceRates, SimplySupportedPlateOnQuarterAnnulus) {
-  const Rates r = last_rates(R"(
+  const Rates r = last_rates(R"yaml(
 problem: {pde: biharmonic, exact: "sin(x*y) + x^3", boundary: {all: simply_supported}}
 domain: {type: quarter_annulus, inner: 1, outer: 2}
 space: {type: bspline, degree: 4, elements: [2, 2]}
-)",
+)yaml",
                              4);
   EXPECT_GT(r.l2, 5 - 0.3);
   EXPECT_GT(r.h1, 4 - 0.3);

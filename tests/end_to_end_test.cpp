@@ -52,14 +52,14 @@ fs::path write_config(const std::string& name, const std::string& text) {
   return p;
 }
 
-const char* kGood = R"(problem:
+const char* kGood = R"yaml(problem:
   pde: poisson
   exact: "x*y + sin(x)"
   boundary: {all: dirichlet}
 domain: {type: rectangle, min: [0, 0], max: [1, 1]}
 space: {type: bspline, degree: 2, elements: [2, 2]}
 refinement: {levels: 2}
-)";
+)yaml";
 
 /// A config with one line replaced, for bad-input cases.
 std::string with_replaced(const std::string& from, const std::string& to) {

@@ -15,36 +15,36 @@ struct PatchCase {
 };
 
 const PatchCase kCases[] = {
-    {"poisson_dirichlet_p2", R"(
+    {"poisson_dirichlet_p2", R"yaml(
 problem: {pde: poisson, exact: "1 + x - 2*y + x^2 - 3*x*y + 0.5*y^2", boundary: {all: dirichlet}}
 domain: {type: rectangle, min: [-1, 0.5], max: [2, 1.5]}
 space: {type: bspline, degree: 2, regularity: 1, elements: [3, 2]}
-)"},
-    {"poisson_mixed_p3", R"(
+)yaml"},
+    {"poisson_mixed_p3", R"yaml(
 problem: {pde: poisson, exact: "x^3 - 3*x*y^2 + 2*x^2*y + y^3 - x", boundary: {all: dirichlet, left: neumann, top: neumann}}
 domain: {type: rectangle, min: [0, 0], max: [1, 2]}
 space: {type: bspline, degree: 3, regularity: 1, elements: [3, 4]}
-)"},
-    {"biharmonic_clamped_p3", R"(
+)yaml"},
+    {"biharmonic_clamped_p3", R"yaml(
 problem: {pde: biharmonic, exact: "x^3*y - 2*x^2*y^2 + y^3 + x*y + 1", boundary: {all: clamped}}
 domain: {type: rectangle, min: [0, 0], max: [2, 1]}
 space: {type: bspline, degree: 3, regularity: 2, elements: [4, 3]}
-)"},
-    {"biharmonic_hessian_form_p4", R"(
+)yaml"},
+    {"biharmonic_hessian_form_p4", R"yaml(
 problem: {pde: biharmonic, form: hessian, exact: "x^4 - x^2*y^2 + 3*x*y^3 - y", boundary: {all: clamped}}
 domain: {type: rectangle, min: [0, 0], max: [1, 1]}
 space: {type: bspline, degree: 4, regularity: 2, elements: [3, 3]}
-)"},
-    {"biharmonic_simply_supported_p3", R"(
+)yaml"},
+    {"biharmonic_simply_supported_p3", R"yaml(
 problem: {pde: biharmonic, exact: "x^3 + x^2*y - y^3 + 2", boundary: {all: simply_supported}}
 domain: {type: rectangle, min: [0, 0], max: [1, 1]}
 space: {type: bspline, degree: 3, regularity: 2, elements: [3, 3]}
-)"},
-    {"biharmonic_mixed_p3", R"(
+)yaml"},
+    {"biharmonic_mixed_p3", R"yaml(
 problem: {pde: biharmonic, exact: "x^2*y^3 - x*y + 4", boundary: {all: clamped, bottom: simply_supported, right: simply_supported}}
 domain: {type: rectangle, min: [0, 0], max: [1, 1]}
 space: {type: bspline, degree: 3, regularity: 2, elements: [4, 4]}
-)"},
+)yaml"},
 };
 
 class PatchTest : public ::testing::TestWithParam<PatchCase> {};
