@@ -127,6 +127,20 @@ void TensorBSplineSpace::TensorEvaluator::evaluate(int element, const Quadrature
   const Point2 h = hi - lo;
   const int gsu = s.geometry_span_u_[ex], gsv = s.geometry_span_v_[ey];
   jets_.resize(q);
+  if (s.geometry_->is_affine()) {
+    // An affine map has one Jacobian and no curvature: evaluate it once per element.
+    GeometryJet g = s.geometry_->evaluate(lo + 0.5 * h, gsu, gsv, false);
+    g.jacobian.col(0) *= h.x();
+    g.jacobian.col(1) *= h.y();
+    for (int k = 0; k < q; ++k) {
+      jets_[k].jacobian = g.jacobian;
+      jets_[k].x = g.x + g.jacobian * (rule.points[k] - Point2(0.5, 0.5));
+      jets_[k].hessian_x.setZero();
+      jets_[k].hessian_y.setZero();
+    }
+    push_forward(jets_, ref_, flags, out);
+    return;
+  }
   for (int k = 0; k < q; ++k) {
     const Point2 uv = lo + h.cwiseProduct(rule.points[k]);
     GeometryJet g = s.geometry_->evaluate(uv, gsu, gsv, hess);
