@@ -16,6 +16,7 @@ namespace iga {
 struct VtkFieldOptions {
   int samples = 8;  ///< samples per element edge (Space::sample_cell resolution)
   /// Exact solution, if known: adds point fields `u_exact` and `error` (u - u_exact).
+  /// Called from several threads at once, so it must be thread-safe (as every ScalarField).
   std::function<double(const Point2&)> exact;
   /// Adds the point field `laplace_u` (for biharmonic problems).
   bool laplacian = false;
