@@ -68,3 +68,37 @@ TEST_P(PatchTest, PolynomialSolutionIsReproduced) {
 
 INSTANTIATE_TEST_SUITE_P(BSpline, PatchTest, ::testing::ValuesIn(kCases),
                          [](const auto& info) { return std::string(info.param.name); });
+
+// Without `exact`: explicit source and boundary data. No errors are reported, so the solution is
+// compared with the known polynomial here.
+TEST(ExplicitData, SourceAndBoundaryDataWithoutExactSolution) {
+  struct Case {
+    const char* yaml;
+    const char* solution;
+  };
+  const Case cases[] = {
+      {R"yaml(
+problem: {pde: poisson, source: "-4", data: {u: "x^2 + y^2 - x*y"}, boundary: {all: dirichlet}}
+domain: {type: rectangle, min: [0, 0], max: [1, 1]}
+space: {type: bspline, degree: 2, elements: [3, 3]}
+)yaml",
+       "x^2 + y^2 - x*y"},
+      {R"yaml(
+problem: {pde: biharmonic, source: "0", data: {u: "x^3*y + y^2", laplace_u: "6*x*y + 2"}, boundary: {all: simply_supported}}
+domain: {type: rectangle, min: [0, 0], max: [1, 1]}
+space: {type: bspline, degree: 4, elements: [3, 3]}
+)yaml",
+       "x^3*y + y^2"},
+  };
+  for (const Case& c : cases) {
+    const ProblemSpec problem = test::problem_from_yaml(c.yaml);
+    ASSERT_FALSE(problem.exact.has_value());
+    const SpacePtr space = test::space_from_yaml(c.yaml);
+    const DiscreteSolution s = solve_problem(*space, problem, SolverKind::cholmod);
+    EXPECT_FALSE(s.result.l2.has_value());
+    const ProblemSpec reference = manufactured_problem(problem.pde, SymbolicFunction::parse(c.solution, "test"), {});
+    const ErrorNorms e = error_norms(*space, s.coefficients, reference.exact_solution(), 12);
+    EXPECT_LT(e.l2, 1e-11) << c.solution;
+    EXPECT_LT(*e.h2, 1e-9) << c.solution;
+  }
+}
