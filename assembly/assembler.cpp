@@ -8,44 +8,39 @@ Assembler::Assembler(const Space& space)
       pattern_(sparsity_pattern(table_, space.dimension())),
       colours_(colour_elements(table_, space.dimension())) {}
 
-SparseMatrix Assembler::matrix(BilinearForm form, int quad_degree) const {
-  SparseMatrix A = pattern_;
+template <class Scratch, class Work>
+void Assembler::for_each_element(unsigned flags, int quad_degree, Work&& work) const {
   for (const std::vector<int>& group : colours_) {
     const int m = static_cast<int>(group.size());
 #pragma omp parallel
     {
-      ElementValues ev(space_, flags_for(form));
-      Eigen::MatrixXd local;
+      ElementValues ev(space_, flags);
+      Scratch scratch;
 #pragma omp for schedule(dynamic, 16)
       for (int k = 0; k < m; ++k) {
         const int e = group[k];
         ev.reinit(e, *space_.quadrature(e, quad_degree));
-        element_matrix(form, ev, local);
-        scatter_add(ev.dofs(), local, A);  // no two elements of a colour share an entry
+        work(ev, scratch);
       }
     }
   }
+}
+
+SparseMatrix Assembler::matrix(BilinearForm form, int quad_degree) const {
+  SparseMatrix A = pattern_;
+  for_each_element<Eigen::MatrixXd>(flags_for(form), quad_degree, [&](const ElementValues& ev, Eigen::MatrixXd& local) {
+    element_matrix(form, ev, local);
+    scatter_add(ev.dofs(), local, A);
+  });
   return A;
 }
 
 Eigen::VectorXd Assembler::load(const ScalarField& f, int quad_degree) const {
   Eigen::VectorXd b = Eigen::VectorXd::Zero(space_.dimension());
-  for (const std::vector<int>& group : colours_) {
-    const int m = static_cast<int>(group.size());
-#pragma omp parallel
-    {
-      ElementValues ev(space_, update_values);
-      Eigen::VectorXd local;
-#pragma omp for schedule(dynamic, 16)
-      for (int k = 0; k < m; ++k) {
-        const int e = group[k];
-        ev.reinit(e, *space_.quadrature(e, quad_degree));
-        element_load(f, ev, local);
-        const std::vector<int>& dofs = ev.dofs();
-        for (int i = 0; i < local.size(); ++i) b(dofs[i]) += local(i);
-      }
-    }
-  }
+  for_each_element<Eigen::VectorXd>(update_values, quad_degree, [&](const ElementValues& ev, Eigen::VectorXd& local) {
+    element_load(f, ev, local);
+    for (int i = 0; i < local.size(); ++i) b(ev.dofs()[i]) += local(i);
+  });
   return b;
 }
 
