@@ -142,7 +142,7 @@ TEST_P(BadInput, ExitsWithCode2AndLeavesNoOutput) {
   const fs::path out = scratch_dir() / (std::string("bad-") + c.name);
   const fs::path cfg = c.config.empty() ? scratch_dir() / "does-not-exist.yaml"
                                         : write_config(std::string(c.name) + ".yaml", c.config);
-  const RunResult r = run_iga(cfg.string() + " --output " + out.string());
+  const RunResult r = run_iga(cfg.string() + " --quiet --output " + out.string());
   EXPECT_EQ(r.exit_code, 2) << r.err;
   EXPECT_NE(r.err.find(c.message), std::string::npos) << "stderr: " << r.err;
   EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << "one line: " << r.err;
