@@ -42,6 +42,14 @@ QuadratureRule tensor_gauss(int degree);
 /// all points inside the triangle.
 QuadratureRule triangle_rule(int degree);
 
+/// Symmetrized collapsed (Duffy) Gauss product rule on the unit triangle, exact for total degree
+/// `degree`. Valid for any degree but larger than the tabulated rules: the fallback of triangle_rule.
+QuadratureRule triangle_rule_collapsed(int degree);
+
+/// Smallest precomputed compact fully symmetric rule on the unit triangle with degree >= `degree`
+/// (quadrature/triangle_rule_tables.cpp); an empty rule when no tabulated rule reaches that degree.
+QuadratureRule triangle_rule_tabulated(int degree);
+
 /// The rule `ref` (on the unit triangle) mapped affinely onto the triangle (a, b, c);
 /// weights are scaled by the area ratio, so they sum to the area of (a, b, c).
 QuadratureRule map_to_triangle(const QuadratureRule& ref, const Point2& a, const Point2& b, const Point2& c);
