@@ -40,7 +40,11 @@ void check_boundary_parts(const Space& space, const ProblemSpec& problem) {
   }
 }
 
-DiscreteSolution solve_problem(const Space& space, const ProblemSpec& problem, SolverKind solver) {
+DiscreteSolution solve_problem(const Space& space, const ProblemSpec& problem, SolverKind solver,
+                               const ProgressSink& progress) {
+  const auto say = [&](const std::string& msg) {
+    if (progress) progress(msg);
+  };
   check_boundary_parts(space, problem);
   DiscreteSolution out;
   LevelResult& r = out.result;
@@ -64,6 +68,7 @@ DiscreteSolution solve_problem(const Space& space, const ProblemSpec& problem, S
   if (essential.value_edges.empty())
     throw InputError("problem.boundary: a pure Neumann problem has no unique solution; make at least one part dirichlet");
 
+  say("assembling");
   auto t0 = Clock::now();
   const Assembler assembler(space);
   SparseMatrix A = assembler.matrix(problem.form, qa);
@@ -92,12 +97,14 @@ DiscreteSolution solve_problem(const Space& space, const ProblemSpec& problem, S
   r.free_dofs = static_cast<int>(constraints.free.size());
   out.boundary_constrained = static_cast<int>(constraints.constrained.size());
 
+  say("factorizing and solving (" + std::to_string(r.free_dofs) + " unknowns)");
   t0 = Clock::now();
   const Eigen::VectorXd u_free = solve_linear_system(A_free, b_free, solver, out.solve);
   out.coefficients = expand_solution(u_free, constraints);
   r.t_solve = seconds_since(t0);
 
   if (problem.exact) {
+    say("computing errors");
     t0 = Clock::now();
     const ErrorNorms e = error_norms(space, out.coefficients, problem.exact_solution(), error_quadrature_degree(space));
     if (!std::isfinite(e.l2) || !std::isfinite(e.h1.value_or(0)) || !std::isfinite(e.h2.value_or(0)))

@@ -4,6 +4,7 @@
 /// measure errors. Written against the Space interface only.
 
 #include <Eigen/Core>
+#include <functional>
 #include <string>
 
 #include "assembly/error_norms.hpp"
@@ -27,6 +28,11 @@ int error_quadrature_degree(const Space& space);
 /// Validate the problem's boundary part names against the space; throws InputError.
 void check_boundary_parts(const Space& space, const ProblemSpec& problem);
 
-DiscreteSolution solve_problem(const Space& space, const ProblemSpec& problem, SolverKind solver);
+/// Progress messages for long phases (the CLI prints them to stderr unless --quiet).
+using ProgressSink = std::function<void(const std::string&)>;
+
+/// `progress`, when given, is told when each phase starts (assemble, factorize and solve, errors).
+DiscreteSolution solve_problem(const Space& space, const ProblemSpec& problem, SolverKind solver,
+                               const ProgressSink& progress = {});
 
 }  // namespace iga

@@ -84,13 +84,13 @@ StudyResult run_study(const StudySettings& settings, const std::string& director
     const SpacePtr space = make_space(domain, space_node, level);
     const double t_space = seconds_since(t0);
     progress(tag + "space: " + std::to_string(space->dimension()) + " dofs, " +
-             std::to_string(space->num_elements()) + " elements (" + format_seconds(t_space) +
-             "); assembling and solving");
+             std::to_string(space->num_elements()) + " elements (" + format_seconds(t_space) + ")");
 
-    DiscreteSolution sol = solve_problem(*space, settings.problem, settings.solver);
+    DiscreteSolution sol = solve_problem(*space, settings.problem, settings.solver,
+                                         [&](const std::string& msg) { progress(tag + msg); });
     sol.result.level = level;
     sol.result.t_space = t_space;
-    progress(tag + "assembled in " + format_seconds(sol.result.t_assemble) + ", solved (" + sol.solve.method + ") in " +
+    progress(tag + "done: assembled in " + format_seconds(sol.result.t_assemble) + ", solved (" + sol.solve.method + ") in " +
              format_seconds(sol.result.t_solve) + ", errors in " + format_seconds(sol.result.t_errors));
 
     if (settings.write_vtk) {

@@ -11,6 +11,7 @@
 #include "solver/level_result.hpp"
 #include "solver/linear_solver.hpp"
 #include "solver/problem.hpp"
+#include "solver/solve_problem.hpp"
 
 namespace iga {
 
@@ -36,8 +37,6 @@ struct OptimalRates {
   int l2 = 0, h1 = 0, h2 = 0;
 };
 
-/// Progress messages for long phases (stderr; silenced by --quiet).
-using ProgressSink = std::function<void(const std::string&)>;
 
 struct StudyResult {
   std::vector<LevelResult> rows;
