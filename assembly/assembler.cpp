@@ -9,7 +9,7 @@ Assembler::Assembler(const Space& space)
       colours_(colour_elements(table_, space.dimension())) {}
 
 template <class Scratch, class Work>
-void Assembler::for_each_element(unsigned flags, int quad_degree, Work&& work) const {
+void Assembler::for_each_element(unsigned flags, Work&& work) const {
   for (const std::vector<int>& group : colours_) {
     const int m = static_cast<int>(group.size());
 #pragma omp parallel
@@ -18,9 +18,7 @@ void Assembler::for_each_element(unsigned flags, int quad_degree, Work&& work) c
       Scratch scratch;
 #pragma omp for schedule(dynamic, 16)
       for (int k = 0; k < m; ++k) {
-        const int e = group[k];
-        ev.reinit(e, *space_.quadrature(e, quad_degree));
-        work(ev, scratch);
+        work(group[k], ev, scratch);
       }
     }
   }
@@ -28,7 +26,14 @@ void Assembler::for_each_element(unsigned flags, int quad_degree, Work&& work) c
 
 SparseMatrix Assembler::matrix(BilinearForm form, int quad_degree) const {
   SparseMatrix A = pattern_;
-  for_each_element<Eigen::MatrixXd>(flags_for(form), quad_degree, [&](const ElementValues& ev, Eigen::MatrixXd& local) {
+  for_each_element<Eigen::MatrixXd>(flags_for(form), [&](int e, ElementValues& ev, Eigen::MatrixXd& local) {
+    if (space_.closed_form_element_matrix(e, form, local)) {
+      thread_local std::vector<int> dofs;
+      dofs.assign(table_.begin(e), table_.begin(e + 1));
+      scatter_add(dofs, local, A);
+      return;
+    }
+    ev.reinit(e, *space_.quadrature(e, quad_degree));
     element_matrix(form, ev, local);
     scatter_add(ev.dofs(), local, A);
   });
@@ -37,7 +42,8 @@ SparseMatrix Assembler::matrix(BilinearForm form, int quad_degree) const {
 
 Eigen::VectorXd Assembler::load(const ScalarField& f, int quad_degree) const {
   Eigen::VectorXd b = Eigen::VectorXd::Zero(space_.dimension());
-  for_each_element<Eigen::VectorXd>(update_values, quad_degree, [&](const ElementValues& ev, Eigen::VectorXd& local) {
+  for_each_element<Eigen::VectorXd>(update_values, [&](int e, ElementValues& ev, Eigen::VectorXd& local) {
+    ev.reinit(e, *space_.quadrature(e, quad_degree));
     element_load(f, ev, local);
     for (int i = 0; i < local.size(); ++i) b(ev.dofs()[i]) += local(i);
   });

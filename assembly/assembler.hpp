@@ -34,11 +34,11 @@ class Assembler {
   int num_colours() const { return static_cast<int>(colours_.size()); }
 
  private:
-  /// Run work(ev, scratch) on every element, colour by colour, in parallel: one ElementValues
-  /// (reinitialised on the element) and one Scratch per thread, so threads share nothing mutable
-  /// but the output, which elements of one colour never touch at the same place.
+  /// Run work(e, ev, scratch) on every element e, colour by colour, in parallel: one ElementValues
+  /// (for work to reinit when it needs quadrature data) and one Scratch per thread, so threads share
+  /// nothing mutable but the output, which elements of one colour never touch at the same place.
   template <class Scratch, class Work>
-  void for_each_element(unsigned flags, int quad_degree, Work&& work) const;
+  void for_each_element(unsigned flags, Work&& work) const;
 
   const Space& space_;
   ElementDofTable table_;

@@ -6,17 +6,12 @@
 #include <Eigen/Core>
 #include <string>
 
+#include "assembly/bilinear_form.hpp"
 #include "assembly/fields.hpp"
 #include "spaces/element_values.hpp"
 
 namespace iga {
 
-enum class BilinearForm {
-  mass,       ///< ∫ u v
-  laplace,    ///< ∫ ∇u·∇v                       (Poisson)
-  bilaplace,  ///< ∫ Δu Δv                        (biharmonic; natural condition Δu = 0)
-  hessian,    ///< ∫ D²u : D²v                    (biharmonic; same solution when u, ∂u/∂n are fixed)
-};
 
 /// Update flags an element loop needs for `form`.
 unsigned flags_for(BilinearForm form);

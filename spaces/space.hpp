@@ -25,6 +25,7 @@
 #include <utility>
 #include <vector>
 
+#include "assembly/bilinear_form.hpp"
 #include "quadrature/quadrature_rule.hpp"
 
 namespace iga {
@@ -121,6 +122,13 @@ class Space {
   virtual std::vector<std::string> boundary_names() const = 0;
   /// Boundary edges of the named part; "all" returns every boundary edge.
   virtual std::vector<BoundaryEdge> boundary_edges(const std::string& name) const = 0;
+
+  /// Optional fast path: the element matrix of `form` without quadrature (e.g. a combination of
+  /// reference matrices of an affine-invariant basis), rows and columns in element_dofs order.
+  /// Return false (the default) and the assembler integrates with quadrature. Must be thread-safe.
+  virtual bool closed_form_element_matrix(int /*element*/, BilinearForm /*form*/, Eigen::MatrixXd& /*local*/) const {
+    return false;
+  }
 
   /// Sub-cells to draw element `element` with about `resolution` samples per edge.
   /// The default samples the reference cell uniformly.
