@@ -96,3 +96,44 @@ TEST(Assembly, ResultDoesNotDependOnThreadCount) {
   ASSERT_EQ(A1.nonZeros(), A2.nonZeros());
   for (int k = 0; k < A1.nonZeros(); ++k) ASSERT_EQ(A1.valuePtr()[k], A2.valuePtr()[k]);
 }
+
+namespace {
+/// Delegates to a B-spline space but supplies element matrices "in closed form": twice the
+/// quadrature ones, so the test can see which path the assembler took.
+class ClosedFormSpace final : public Space {
+ public:
+  explicit ClosedFormSpace(SpacePtr inner) : inner_(std::move(inner)) {}
+  std::unique_ptr<Evaluator> make_evaluator() const override { return inner_->make_evaluator(); }
+  std::string type() const override { return "closed-form test"; }
+  std::vector<std::pair<std::string, std::string>> parameters() const override { return {}; }
+  int dimension() const override { return inner_->dimension(); }
+  void element_dofs(int e, std::vector<int>& out) const override { inner_->element_dofs(e, out); }
+  int num_elements() const override { return inner_->num_elements(); }
+  CellShape cell_shape(int e) const override { return inner_->cell_shape(e); }
+  double mesh_size() const override { return inner_->mesh_size(); }
+  int degree() const override { return inner_->degree(); }
+  bool affine_elements() const override { return inner_->affine_elements(); }
+  RulePtr quadrature(int e, int d) const override { return inner_->quadrature(e, d); }
+  RulePtr edge_quadrature(int e, int edge, int d) const override { return inner_->edge_quadrature(e, edge, d); }
+  std::vector<std::string> boundary_names() const override { return inner_->boundary_names(); }
+  std::vector<BoundaryEdge> boundary_edges(const std::string& n) const override { return inner_->boundary_edges(n); }
+  bool closed_form_element_matrix(int e, BilinearForm form, Eigen::MatrixXd& local) const override {
+    ElementValues ev(*inner_, flags_for(form));
+    ev.reinit(e, *inner_->quadrature(e, 8));
+    element_matrix(form, ev, local);
+    local *= 2.0;
+    return true;
+  }
+
+ private:
+  SpacePtr inner_;
+};
+}  // namespace
+
+TEST(Assembly, UsesClosedFormElementMatricesWhenTheSpaceHasThem) {
+  const SpacePtr inner = test::space_from_yaml(kCubic);
+  const ClosedFormSpace closed(inner);
+  const SparseMatrix A = Assembler(*inner).matrix(BilinearForm::laplace, 8);
+  const SparseMatrix B = Assembler(closed).matrix(BilinearForm::laplace, 8);
+  EXPECT_LT((B - 2.0 * A).norm(), 1e-13 * A.norm());
+}
