@@ -1,6 +1,8 @@
+#include "assembly/parallel.hpp"
 #include "assembly/assembler.hpp"
 
 namespace iga {
+
 
 Assembler::Assembler(const Space& space)
     : space_(space),
@@ -10,16 +12,17 @@ Assembler::Assembler(const Space& space)
 
 template <class Scratch, class Work>
 void Assembler::for_each_element(unsigned flags, Work&& work) const {
-  for (const std::vector<int>& group : colours_) {
-    const int m = static_cast<int>(group.size());
-#pragma omp parallel
-    {
-      ElementValues ev(space_, flags);
-      Scratch scratch;
+  // One thread team for all colours (evaluators and scratch are built once per thread); the
+  // implicit barrier after each `omp for` keeps colours apart. Small meshes stay serial: there
+  // the barriers would cost more than the work, notably on a machine busy with other processes.
+  #pragma omp parallel if (worth_threads(space_.num_elements()))
+  {
+    ElementValues ev(space_, flags);
+    Scratch scratch;
+    for (const std::vector<int>& group : colours_) {
+      const int m = static_cast<int>(group.size());
 #pragma omp for schedule(dynamic, 16)
-      for (int k = 0; k < m; ++k) {
-        work(group[k], ev, scratch);
-      }
+      for (int k = 0; k < m; ++k) work(group[k], ev, scratch);
     }
   }
 }

@@ -1,3 +1,4 @@
+#include "assembly/parallel.hpp"
 #include "assembly/boundary_conditions.hpp"
 
 #include <Eigen/SparseCholesky>
@@ -128,7 +129,7 @@ void reduce_system(const SparseMatrix& A, const Eigen::VectorXd& b, const Constr
   }
   A_free.resizeNonZeros(outer[nf]);
   std::copy(outer.begin(), outer.end(), A_free.outerIndexPtr());
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (worth_threads(nf))
   for (int k = 0; k < nf; ++k) {
     int pos = outer[k];
     for (SparseMatrix::InnerIterator it(A, c.free[k]); it; ++it)

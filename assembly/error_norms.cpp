@@ -1,3 +1,4 @@
+#include "assembly/parallel.hpp"
 #include "assembly/error_norms.hpp"
 
 #include <cmath>
@@ -12,7 +13,7 @@ ErrorNorms error_norms(const Space& space, const Eigen::VectorXd& coefficients, 
   const unsigned flags = update_values | (grad ? update_gradients : 0u) | (hess ? update_hessians : 0u);
   const int ne = space.num_elements();
   double l2 = 0, h1 = 0, h2 = 0;
-#pragma omp parallel reduction(+ : l2, h1, h2)
+#pragma omp parallel reduction(+ : l2, h1, h2) if (worth_threads(ne))
   {
     ElementValues ev(space, flags);
     Eigen::VectorXd c;
@@ -52,7 +53,7 @@ std::pair<double, double> integral_and_area(const Space& space, const Eigen::Vec
                                             int quad_degree) {
   double integral = 0, area = 0;
   const int ne = space.num_elements();
-#pragma omp parallel reduction(+ : integral, area)
+#pragma omp parallel reduction(+ : integral, area) if (worth_threads(ne))
   {
     ElementValues ev(space, update_values);
 #pragma omp for schedule(dynamic, 16)

@@ -1,3 +1,4 @@
+#include "assembly/parallel.hpp"
 #include "assembly/sparsity.hpp"
 
 #include <algorithm>
@@ -9,7 +10,7 @@ namespace iga {
 ElementDofTable collect_element_dofs(const Space& space) {
   const int ne = space.num_elements();
   std::vector<std::vector<int>> per_element(ne);
-#pragma omp parallel for schedule(dynamic, 64)
+#pragma omp parallel for schedule(dynamic, 64) if (worth_threads(ne))
   for (int e = 0; e < ne; ++e) space.element_dofs(e, per_element[e]);
   ElementDofTable t;
   t.offsets.resize(ne + 1, 0);
@@ -38,7 +39,7 @@ SparseMatrix sparsity_pattern(const ElementDofTable& table, int dimension) {
   std::vector<int> d_off, d_el;
   elements_of_dofs(table, dimension, d_off, d_el);
   std::vector<std::vector<int>> columns(dimension);
-#pragma omp parallel
+#pragma omp parallel if (worth_threads(dimension))
   {
     std::vector<char> seen(dimension, 0);  // per-thread marker, reset after each column
 #pragma omp for schedule(dynamic, 256)
