@@ -34,7 +34,7 @@ int run_config(const std::string& config_path, const std::string& output, int le
   write_summary_json(settings, result, (dir / "summary.json").string());
   if (settings.write_plot) {
     const std::string title = result.space_type + " " + to_string(settings.problem.pde);
-    plot_convergence(result.rows, result.expected.l2, title, (dir / "convergence.svg").string());
+    plot_convergence(result.rows, result.expected, title, (dir / "convergence.svg").string());
   }
   staged.commit();
 

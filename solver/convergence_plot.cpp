@@ -136,12 +136,12 @@ void draw_panel(plstream& pls, const std::vector<Series>& series, bool against_d
 
 }  // namespace
 
-void plot_convergence(const std::vector<LevelResult>& rows, int expected_l2, const std::string& title,
+void plot_convergence(const std::vector<LevelResult>& rows, const OptimalRates& expected, const std::string& title,
                       const std::string& filename) {
   std::vector<Series> series = {
-      {"L2 error", &LevelResult::l2, 2, "●", expected_l2, {}, {}, {}},
-      {"H1 error", &LevelResult::h1, 3, "■", expected_l2 - 1, {}, {}, {}},
-      {"H2 error", &LevelResult::h2, 4, "▲", expected_l2 - 2, {}, {}, {}},
+      {"L2 error", &LevelResult::l2, 2, "●", expected.l2, {}, {}, {}},
+      {"H1 error", &LevelResult::h1, 3, "■", expected.h1, {}, {}, {}},
+      {"H2 error", &LevelResult::h2, 4, "▲", expected.h2, {}, {}, {}},
   };
   bool any = false;
   for (Series& s : series)

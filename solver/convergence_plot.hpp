@@ -11,9 +11,9 @@
 namespace iga {
 
 /// Draw L2, H1 and H2 errors of `rows` against h (left panel) and DOFs (right panel), with dashed
-/// reference slopes h^{expected_l2}, h^{expected_l2-1}, h^{expected_l2-2}. Does nothing when no row
+/// reference slopes h^{expected.l2}, h^{expected.h1}, h^{expected.h2}. Does nothing when no row
 /// has an error. Throws std::runtime_error if the file cannot be written.
-void plot_convergence(const std::vector<LevelResult>& rows, int expected_l2, const std::string& title,
+void plot_convergence(const std::vector<LevelResult>& rows, const OptimalRates& expected, const std::string& title,
                       const std::string& filename);
 
 }  // namespace iga

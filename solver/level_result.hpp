@@ -18,6 +18,11 @@ struct LevelResult {
   double t_space = 0, t_assemble = 0, t_solve = 0, t_errors = 0;  ///< seconds
 };
 
+/// Expected convergence orders of the L2 error and the H1, H2 seminorm errors.
+struct OptimalRates {
+  int l2 = 0, h1 = 0, h2 = 0;
+};
+
 /// Rate between two rows: log(e_prev / e) / log(h_prev / h); nullopt if either error is missing.
 std::optional<double> rate(std::optional<double> e_prev, std::optional<double> e, double h_prev, double h);
 

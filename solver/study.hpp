@@ -33,10 +33,6 @@ struct StudySettings {
 StudySettings parse_study(const ConfigNode& root, const std::string& config_path, int levels_override,
                           const std::string& output_override);
 
-struct OptimalRates {
-  int l2 = 0, h1 = 0, h2 = 0;
-};
-
 
 struct StudyResult {
   std::vector<LevelResult> rows;

@@ -85,7 +85,7 @@ TEST_F(ConvergencePlotTest, WritesSvgWithLegendAndTitleSilently) {
   const std::string file = path("convergence.svg");
   testing::internal::CaptureStdout();
   testing::internal::CaptureStderr();
-  plot_convergence(synthetic_rows(true), 3, "Poisson Q2 & friends", file);
+  plot_convergence(synthetic_rows(true), OptimalRates{3, 2, 1}, "Poisson Q2 & friends", file);
   const std::string out = testing::internal::GetCapturedStdout();
   const std::string err = testing::internal::GetCapturedStderr();
   EXPECT_EQ(out, "");
@@ -109,7 +109,7 @@ TEST_F(ConvergencePlotTest, WritesSvgWithLegendAndTitleSilently) {
 
 TEST_F(ConvergencePlotTest, OnlyTheSeriesThatHaveErrorsAreDrawn) {
   const std::string file = path("l2_only.svg");
-  plot_convergence(synthetic_rows(false), 2, "L2 only", file);
+  plot_convergence(synthetic_rows(false), OptimalRates{2, 1, 0}, "L2 only", file);
   const std::string text = decode_character_references(read_file(file));
   EXPECT_NE(text.find("L2 error"), std::string::npos);
   EXPECT_EQ(text.find("H1 error"), std::string::npos);
@@ -122,7 +122,7 @@ TEST_F(ConvergencePlotTest, SingleLevelStillPlots) {
   rows.resize(1);
   const std::string file = path("one.svg");
   testing::internal::CaptureStderr();
-  plot_convergence(rows, 3, "one level", file);
+  plot_convergence(rows, OptimalRates{3, 2, 1}, "one level", file);
   EXPECT_EQ(testing::internal::GetCapturedStderr(), "");
   EXPECT_GT(fs::file_size(file), 1000u);
 }
@@ -131,15 +131,15 @@ TEST_F(ConvergencePlotTest, NoErrorsMeansNoFile) {
   auto rows = synthetic_rows(false);
   for (auto& r : rows) r.l2.reset();
   const std::string file = path("none.svg");
-  EXPECT_NO_THROW(plot_convergence(rows, 3, "none", file));
+  EXPECT_NO_THROW(plot_convergence(rows, OptimalRates{3, 2, 1}, "none", file));
   EXPECT_FALSE(fs::exists(file));
-  EXPECT_NO_THROW(plot_convergence({}, 3, "empty", file));
+  EXPECT_NO_THROW(plot_convergence({}, OptimalRates{3, 2, 1}, "empty", file));
   EXPECT_FALSE(fs::exists(file));
 }
 
 TEST_F(ConvergencePlotTest, UnwritablePathThrowsInsteadOfExiting) {
   // PLplot itself would end the process here; the writer must check first.
-  EXPECT_THROW(plot_convergence(synthetic_rows(true), 3, "x", path("missing/dir/plot.svg")), std::runtime_error);
+  EXPECT_THROW(plot_convergence(synthetic_rows(true), OptimalRates{3, 2, 1}, "x", path("missing/dir/plot.svg")), std::runtime_error);
 }
 
 }  // namespace
