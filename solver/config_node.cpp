@@ -132,9 +132,13 @@ std::vector<std::string> ConfigNode::keys() const {
   std::vector<std::string> out;
   if (node_.IsNull()) return out;  // "section:" with nothing under it is an empty map
   if (!node_.IsMap()) fail("expected a map, got " + describe(node_));
+  std::set<std::string> seen;
   for (const auto& kv : node_) {
-    if (!kv.first.IsScalar())
-      throw InputError(location(*file_, kv.first.Mark()) + ": keys must be plain words " + in_map(path_));
+    const std::string here = location(*file_, kv.first.Mark());
+    if (!kv.first.IsScalar()) throw InputError(here + ": keys must be plain words " + in_map(path_));
+    // As in check_keys: yaml-cpp would silently let one copy of a repeated key win.
+    if (!seen.insert(kv.first.Scalar()).second)
+      throw InputError(here + ": duplicate key '" + kv.first.Scalar() + "' " + in_map(path_));
     out.push_back(kv.first.Scalar());
   }
   return out;

@@ -38,6 +38,7 @@ Eigen::VectorXd solve_linear_system(const SparseMatrix& A, const Eigen::VectorXd
   bool ok = false;
   if (kind == SolverKind::cholmod) {
     Eigen::CholmodSupernodalLLT<SparseMatrix, Eigen::Lower> llt;
+    llt.cholmod().print = 0;  // its warnings would go to stdout; a failure is reported by the fallback
     ok = try_solve(llt, A, b, x, report);
     report.method = "cholmod";
   }

@@ -81,13 +81,18 @@ ProblemSpec parse_problem(const ConfigNode& node) {
 
   if (auto exact = node.find("exact")) {
     derive_from_exact(p, parse_expression(*exact));
+    p.source_where = p.data_where = exact->where();
   }
-  if (auto source = node.find("source")) p.source = parse_expression(*source);
+  if (auto source = node.find("source")) {
+    p.source = parse_expression(*source);
+    p.source_where = source->where();
+  }
   else if (!p.exact) node.fail("give 'exact' (a manufactured solution) or 'source'");
 
   if (auto data = node.find("data")) {
     if (p.exact) data->fail("'data' is derived from 'exact'; give one or the other");
     data->check_keys({"u", "dudn", "laplace_u"});
+    p.data_where = data->where();
     if (auto u = data->find("u")) p.value = parse_expression(*u);
     if (auto dn = data->find("dudn")) p.normal_derivative = parse_expression(*dn);
     if (auto lap = data->find("laplace_u")) p.laplacian = parse_expression(*lap);

@@ -40,6 +40,10 @@ struct ProblemSpec {
   SymbolicFunction normal_derivative = SymbolicFunction::constant(0.0);  ///< ∂u/∂n when ∇u is not known
   SymbolicFunction laplacian = SymbolicFunction::constant(0.0);  ///< Δu on simply supported parts
 
+  /// Config places the source and the boundary data came from ("FILE:LINE:COL: problem.exact"),
+  /// for messages about them found only while solving.
+  std::string source_where = "problem.source", data_where = "problem.data";
+
   /// u, ∇u, D²u of the exact solution as callables (empty members when there is none).
   ExactSolution exact_solution() const;
   /// ∂u/∂n as a boundary field (from ∇u when known).

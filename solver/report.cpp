@@ -46,6 +46,7 @@ nlohmann::json to_json(const YAML::Node& node) {
       return j;
     }
     case YAML::NodeType::Scalar: {
+      if (node.Tag() == "!") return node.as<std::string>();  // quoted in the file: a string
       long long i;
       double d;
       bool b;

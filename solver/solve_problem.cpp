@@ -84,12 +84,13 @@ DiscreteSolution solve_problem(const Space& space, const ProblemSpec& problem, S
   // NaN or inf data (sqrt of a negative number, a pole inside the domain) is bad input, not a
   // numerical failure: say which datum it was before the solver reports a singular system.
   if (!b.allFinite())
-    throw InputError("problem: the source term or boundary flux is not finite at some point of the domain "
-                     "(check 'exact'/'source' for poles, logs or roots of negative numbers)");
+    throw InputError(problem.source_where +
+                     ": the source term or boundary flux is not finite at some point of the domain "
+                     "(a pole, or a log or root of a negative number?)");
   const Constraints constraints =
       impose_essential(space, essential, boundary_field(problem.value), dudn, qa);
   if (!constraints.values.allFinite())
-    throw InputError("problem: the boundary data (u or du/dn) are not finite at some boundary point");
+    throw InputError(problem.data_where + ": the boundary data (u or du/dn) are not finite at some boundary point");
   SparseMatrix A_free;
   Eigen::VectorXd b_free;
   reduce_system(A, b, constraints, A_free, b_free);
@@ -108,7 +109,7 @@ DiscreteSolution solve_problem(const Space& space, const ProblemSpec& problem, S
     t0 = Clock::now();
     const ErrorNorms e = error_norms(space, out.coefficients, problem.exact_solution(), error_quadrature_degree(space));
     if (!std::isfinite(e.l2) || !std::isfinite(e.h1.value_or(0)) || !std::isfinite(e.h2.value_or(0)))
-      throw InputError("problem.exact: the exact solution or its derivatives are not finite at some point of the domain");
+      throw InputError(problem.data_where + ": the exact solution or its derivatives are not finite somewhere in the domain");
     r.l2 = e.l2;
     r.h1 = e.h1;
     r.h2 = e.h2;

@@ -2,6 +2,8 @@
 
 #include <unistd.h>
 
+#include "solver/errors.hpp"
+
 #include <filesystem>
 #include <random>
 #include <stdexcept>
@@ -17,6 +19,20 @@ std::string unique_suffix() {
   return std::to_string(::getpid()) + "-" + std::to_string(rd() % 1000000);
 }
 }  // namespace
+
+void check_output_location(const std::string& final_path) {
+  const fs::path target = fs::absolute(final_path);
+  std::error_code ec;
+  if (fs::exists(target, ec) && !fs::is_directory(target, ec))
+    throw InputError("output directory '" + final_path + "' exists and is not a directory");
+  fs::path ancestor = target.parent_path();
+  while (!ancestor.empty() && !fs::exists(ancestor, ec) && ancestor != ancestor.parent_path())
+    ancestor = ancestor.parent_path();
+  if (!fs::is_directory(ancestor, ec))
+    throw InputError("output directory '" + final_path + "': '" + ancestor.string() + "' is not a directory");
+  if (::access(ancestor.c_str(), W_OK) != 0)
+    throw InputError("output directory '" + final_path + "': '" + ancestor.string() + "' is not writable");
+}
 
 StagedDirectory::StagedDirectory(std::string final_path) : final_(std::move(final_path)) {
   // Staging lives in the system temp directory so that a failed run creates nothing beside the
@@ -36,13 +52,21 @@ void StagedDirectory::commit() {
   // Copy next to the target first (the temp dir may be on another file system), then swap by
   // renames, which are atomic within one file system.
   const fs::path incoming = target.parent_path() / ("." + target.filename().string() + ".incoming-" + unique_suffix());
-  fs::copy(staging_, incoming, fs::copy_options::recursive);
   const fs::path old = target.parent_path() / ("." + target.filename().string() + ".old-" + unique_suffix());
-  const bool replace = fs::exists(target);
-  if (replace) fs::rename(target, old);
-  fs::rename(incoming, target);
   std::error_code ec;
-  if (replace) fs::remove_all(old, ec);
+  bool replaced = false;
+  try {
+    fs::copy(staging_, incoming, fs::copy_options::recursive);
+    replaced = fs::exists(target);
+    if (replaced) fs::rename(target, old);
+    fs::rename(incoming, target);
+  } catch (...) {
+    // Roll back: no half-copied result, and an earlier result back in its place.
+    fs::remove_all(incoming, ec);
+    if (replaced && !fs::exists(target, ec)) fs::rename(old, target, ec);
+    throw;
+  }
+  if (replaced) fs::remove_all(old, ec);
   fs::remove_all(staging_, ec);
   committed_ = true;
 }

@@ -8,6 +8,10 @@
 
 namespace iga {
 
+/// Throw InputError unless `final_path` can become a results directory: the nearest existing
+/// ancestor must be a writable directory (checked before a study starts, not after it).
+void check_output_location(const std::string& final_path);
+
 class StagedDirectory {
  public:
   explicit StagedDirectory(std::string final_path);

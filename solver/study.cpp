@@ -7,6 +7,7 @@
 #include "solver/errors.hpp"
 #include "solver/solve_problem.hpp"
 #include "solver/vtk_writer.hpp"
+#include "solver/staged_directory.hpp"
 #include "spaces/space_factory.hpp"
 
 namespace iga {
@@ -30,10 +31,15 @@ OptimalRates optimal_rates(Pde pde, int degree) {
 StudySettings parse_study(const ConfigNode& root, const std::string& config_path, int levels_override,
                           const std::string& output_override) {
   root.check_keys({"problem", "domain", "space", "refinement", "solver", "output"});
-  StudySettings s{root, parse_problem(root["problem"])};
+  StudySettings s(root, parse_problem(root["problem"]));
   // Domain, space and boundary part names are validated on the coarsest space (cheap), so that
   // every input error surfaces before the study starts.
-  check_boundary_parts(*make_space(root["domain"], root["space"], 0), s.problem);
+  const SpacePtr coarse = make_space(root["domain"], root["space"], 0);
+  check_boundary_parts(*coarse, s.problem);
+  if (s.problem.pde == Pde::biharmonic && coarse->continuity() < 1)
+    root["space"].fail("the biharmonic problem needs a C1 (H2-conforming) space; this " + coarse->type() +
+                       " space is only C" + std::to_string(coarse->continuity()) +
+                       " (raise space.degree/space.regularity)");
 
   if (auto refinement = root.find("refinement")) {
     refinement->check_keys({"levels"});
@@ -69,6 +75,7 @@ StudySettings parse_study(const ConfigNode& root, const std::string& config_path
     if (auto plot = output->find("plot")) s.write_plot = plot->as_bool();
   }
   if (!output_override.empty()) s.output_dir = output_override;
+  check_output_location(s.output_dir);
   return s;
 }
 

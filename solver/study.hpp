@@ -17,6 +17,8 @@ namespace iga {
 
 /// Everything a study needs, validated from the config (and command-line overrides).
 struct StudySettings {
+  StudySettings(ConfigNode root_node, ProblemSpec problem_spec)
+      : root(std::move(root_node)), problem(std::move(problem_spec)) {}
   ConfigNode root;
   ProblemSpec problem;
   int levels = 4;          ///< number of levels solved: 0 .. levels-1

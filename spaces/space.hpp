@@ -108,6 +108,9 @@ class Space {
   virtual double mesh_size() const = 0;
   /// Polynomial degree of the local basis in reference coordinates (drives quadrature choices).
   virtual int degree() const = 0;
+  /// Global smoothness: the space is C^k (k = continuity()) in physical coordinates. Biharmonic
+  /// problems need k >= 1 (H2-conforming). The default 0 is the safe answer for a new space.
+  virtual int continuity() const { return 0; }
   /// True when every element map is affine (then a rule of degree 2p is exact for mass matrices).
   virtual bool affine_elements() const = 0;
 

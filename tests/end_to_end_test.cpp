@@ -39,6 +39,16 @@ fs::path scratch_dir() {
   return dir;
 }
 
+/// Removes the scratch directory when the test program ends.
+class ScratchCleanup : public ::testing::Environment {
+ public:
+  void TearDown() override {
+    std::error_code ec;
+    fs::remove_all(scratch_dir(), ec);
+  }
+};
+const auto* const kCleanup = ::testing::AddGlobalTestEnvironment(new ScratchCleanup);
+
 RunResult run_iga(const std::string& args) {
   const fs::path out = scratch_dir() / "stdout.txt", err = scratch_dir() / "stderr.txt";
   const std::string cmd = std::string(IGA_RUN_BINARY) + " " + args + " >" + out.string() + " 2>" + err.string();
@@ -61,13 +71,15 @@ space: {type: bspline, degree: 2, elements: [2, 2]}
 refinement: {levels: 2}
 )yaml";
 
-/// A config with one line replaced, for bad-input cases.
-std::string with_replaced(const std::string& from, const std::string& to) {
-  std::string s = kGood;
-  const auto pos = s.find(from);
-  EXPECT_NE(pos, std::string::npos);
-  return s.replace(pos, from.size(), to);
+/// `text` with the first `from` replaced by `to`.
+std::string replaced(std::string text, const std::string& from, const std::string& to) {
+  const auto pos = text.find(from);
+  EXPECT_NE(pos, std::string::npos) << from;
+  return pos == std::string::npos ? text : text.replace(pos, from.size(), to);
 }
+
+/// The good config with one part replaced, for bad-input cases.
+std::string with_replaced(const std::string& from, const std::string& to) { return replaced(kGood, from, to); }
 
 }  // namespace
 
@@ -164,12 +176,28 @@ INSTANTIATE_TEST_SUITE_P(
                 "folds over itself"},
         BadCase{"regularity_too_high", with_replaced("degree: 2", "degree: 2, regularity: 2"), "regularity"},
         BadCase{"unknown_space", with_replaced("type: bspline", "type: bsplin"), "bspline"},
+        BadCase{"biharmonic_needs_c1",
+                replaced(replaced(with_replaced("pde: poisson", "pde: biharmonic"), "{all: dirichlet}", "{all: clamped}"),
+                         "degree: 2", "degree: 2, regularity: 0"),
+                "needs a C1"},
+        BadCase{"duplicate_boundary_part", with_replaced("{all: dirichlet}", "{left: dirichlet, left: neumann}"),
+                "duplicate key 'left'"},
         BadCase{"degree_zero", with_replaced("degree: 2", "degree: 0"), "degree"},
         BadCase{"unknown_boundary_part", with_replaced("{all: dirichlet}", "{lft: dirichlet}"), "did you mean 'left'"},
         BadCase{"wrong_condition", with_replaced("{all: dirichlet}", "{all: clamped}"), "dirichlet"},
         BadCase{"yaml_syntax", with_replaced("pde: poisson", "pde: [poisson"), "yaml_syntax.yaml:"},
         BadCase{"missing_file", "", "does-not-exist.yaml"}),
     [](const auto& info) { return std::string(info.param.name); });
+
+TEST(EndToEnd, UnusableOutputLocationFailsBeforeTheStudy) {
+  const fs::path file = scratch_dir() / "a-file";
+  std::ofstream(file) << "x";
+  const fs::path cfg = write_config("good2.yaml", kGood);
+  const RunResult r = run_iga(cfg.string() + " --quiet --output " + (file / "sub").string());
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_NE(r.err.find("is not a directory"), std::string::npos) << r.err;
+  EXPECT_TRUE(r.out.empty()) << "no study output expected: " << r.out;
+}
 
 TEST(EndToEnd, VersionHelpAndUsage) {
   RunResult r = run_iga("--version");

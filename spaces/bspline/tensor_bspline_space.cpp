@@ -185,6 +185,15 @@ std::unique_ptr<Space::Evaluator> TensorBSplineSpace::make_evaluator() const {
   return std::make_unique<TensorEvaluator>(*this);
 }
 
+int TensorBSplineSpace::continuity() const {
+  int k = regularity();
+  for (const KnotVector* kv : {&geometry_->knots_u(), &geometry_->knots_v()}) {
+    const int m = kv->max_interior_multiplicity();
+    if (m > 0) k = std::min(k, kv->degree() - m);
+  }
+  return k;
+}
+
 int TensorBSplineSpace::regularity() const {
   int r = degree();
   for (const KnotVector* kv : {&knots_u_, &knots_v_}) {

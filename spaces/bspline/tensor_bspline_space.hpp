@@ -64,6 +64,8 @@ class TensorBSplineSpace final : public Space {
   const Eigen::MatrixXd& extraction_v(int ey) const { return extraction_v_[ey]; }
   /// Smallest continuity order of the interior knots of both directions (degree when there are none).
   int regularity() const;
+  /// regularity(), lowered where the geometry map itself is less smooth (its interior knots).
+  int continuity() const override;
 
  private:
   class TensorEvaluator;
