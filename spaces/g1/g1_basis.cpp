@@ -1,0 +1,260 @@
+#include "spaces/g1/g1_basis.hpp"
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <unordered_map>
+
+#include "quadrature/quadrature_rule.hpp"
+#include "spaces/g1/bernstein_quad.hpp"
+
+namespace iga {
+
+namespace {
+
+// Relative singular-value threshold of the local null spaces (the Bernstein rows are O(1)).
+constexpr double kRankTolerance = 1e-10;
+
+/// Local indices in rows 0-1 along local edge e with m in [m0, m1].
+void add_edge_rows(int k, int face, int e, int m0, int m1, std::vector<std::pair<int, int>>& out) {
+  for (int r = 0; r <= 1; ++r)
+    for (int m = m0; m <= m1; ++m) out.push_back({face, edge_coefficient(k, e, m, r)});
+}
+
+/// Unknown set: (face, index) pairs, deduplicated, with a lookup.
+struct Unknowns {
+  std::vector<std::pair<int, int>> list;
+  std::unordered_map<long long, int> column;
+  int stride = 0;
+  explicit Unknowns(int k) : stride((k + 1) * (k + 1)) {}
+  void add(const std::vector<std::pair<int, int>>& items) {
+    for (const auto& [f, i] : items) {
+      const long long key = static_cast<long long>(f) * stride + i;
+      if (column.emplace(key, static_cast<int>(list.size())).second) list.push_back({f, i});
+    }
+  }
+  int find(int f, int i) const {
+    const auto it = column.find(static_cast<long long>(f) * stride + i);
+    return it == column.end() ? -1 : it->second;
+  }
+  int size() const { return static_cast<int>(list.size()); }
+};
+
+/// Rows restricted to the unknowns (coefficients outside are zero).
+Eigen::MatrixXd restrict_rows(const std::vector<std::vector<FaceCoefficient>>& rows, const Unknowns& u) {
+  Eigen::MatrixXd m = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(rows.size()), u.size());
+  for (size_t r = 0; r < rows.size(); ++r)
+    for (const FaceCoefficient& c : rows[r]) {
+      const int col = u.find(c.face, c.index);
+      if (col >= 0) m(static_cast<Eigen::Index>(r), col) += c.value;
+    }
+  return m;
+}
+
+/// Orthonormal basis of the null space of m (n columns), n x nullity.
+Eigen::MatrixXd null_space(const Eigen::MatrixXd& m, int n) {
+  if (m.rows() == 0) return Eigen::MatrixXd::Identity(n, n);
+  Eigen::JacobiSVD<Eigen::MatrixXd> svd(m, Eigen::ComputeFullV);
+  const Eigen::VectorXd& s = svd.singularValues();
+  int rank = 0;
+  for (int i = 0; i < s.size(); ++i)
+    if (s[i] > kRankTolerance * s[0]) ++rank;
+  return svd.matrixV().rightCols(n - rank);
+}
+
+std::vector<FaceCoefficient> to_function(const Eigen::VectorXd& x, const Unknowns& u, bool normalize) {
+  const double scale = normalize ? x.cwiseAbs().maxCoeff() : 1.0;
+  std::vector<FaceCoefficient> f;
+  for (int i = 0; i < u.size(); ++i)
+    if (x[i] != 0.0) f.push_back({u.list[i].first, u.list[i].second, x[i] / scale});
+  return f;
+}
+
+}  // namespace
+
+std::vector<std::vector<FaceCoefficient>> edge_constraint_rows(const QuadMesh& mesh, const EdgeGluing& g, int k) {
+  const MeshEdge& me = mesh.edge(g.edge);
+  const EdgeFrame fr = edge_frame(mesh, g.edge);
+  const int e1 = me.first.local_edge, e2 = me.second.local_edge;
+  std::vector<std::vector<FaceCoefficient>> rows;
+  // C0: straight edges parametrised linearly from X to Y on both faces, so traces match coefficient
+  // by coefficient (the second face runs Y -> X).
+  for (int m = 0; m <= k; ++m)
+    rows.push_back({{fr.face1, edge_coefficient(k, e1, m, 0), 1.0}, {fr.face2, edge_coefficient(k, e2, k - m, 0), -1.0}});
+  // G1 by collocation at k+3 Gauss points: the residual has degree <= k+2 in t.
+  const QuadratureRule pts = gauss_legendre(k + 3);
+  std::vector<int> rows1, rows2;
+  for (int r = 0; r <= 1; ++r)
+    for (int m = 0; m <= k; ++m) {
+      rows1.push_back(edge_coefficient(k, e1, m, r));
+      rows2.push_back(edge_coefficient(k, e2, m, r));
+    }
+  for (const Point2& p : pts.points) {
+    const double t = p.x();
+    const Eigen::MatrixXd j1 = bernstein_tensor_jet(k, fr.start1 + t * fr.tangent1);
+    const Eigen::MatrixXd j2 = bernstein_tensor_jet(k, fr.start2 + t * fr.tangent2);
+    const double a = eval_poly(g.a, t), b = eval_poly(g.b, t), c = eval_poly(g.c, t);
+    std::vector<FaceCoefficient> row;
+    double big = 0.0;
+    for (int i : rows1) {
+      const double cross = j1(1, i) * fr.cross1.x() + j1(2, i) * fr.cross1.y();
+      const double along = j1(1, i) * fr.tangent1.x() + j1(2, i) * fr.tangent1.y();
+      const double v = c * cross - a * along;
+      if (v != 0.0) row.push_back({fr.face1, i, v});
+      big = std::max(big, std::abs(v));
+    }
+    for (int i : rows2) {
+      const double v = -b * (j2(1, i) * fr.cross2.x() + j2(2, i) * fr.cross2.y());
+      if (v != 0.0) row.push_back({fr.face2, i, v});
+      big = std::max(big, std::abs(v));
+    }
+    for (FaceCoefficient& fc : row) fc.value /= big;
+    rows.push_back(std::move(row));
+  }
+  return rows;
+}
+
+int vertex_function_count(const QuadMesh& mesh, const std::vector<EdgeGluing>& gluing, int v) {
+  const VertexFan& fan = mesh.fan(v);
+  int crossing = 0;
+  for (int e : fan.edge) crossing += crossing_at(mesh, gluing, e, v) ? 1 : 0;
+  const int faces = static_cast<int>(fan.face.size());
+  const bool crossing_vertex = !fan.boundary && fan.valence() == 4 && crossing == 4;
+  return 3 + faces - crossing + (crossing_vertex ? 1 : 0);
+}
+
+int theorem_dimension(const QuadMesh& mesh, const std::vector<EdgeGluing>& gluing, int k) {
+  int sum_d = 0, crossing_vertices = 0, used_vertices = 0;
+  for (int e = 0; e < mesh.num_edges(); ++e)
+    sum_d += mesh.edge(e).boundary() ? 2 * k + 3 : syzygy_dimension(gluing[e], k);
+  for (int v = 0; v < mesh.num_vertices(); ++v) {
+    const VertexFan& fan = mesh.fan(v);
+    if (fan.face.empty()) continue;
+    ++used_vertices;
+    if (fan.boundary || fan.valence() != 4) continue;
+    bool all = true;
+    for (int e : fan.edge) all = all && crossing_at(mesh, gluing, e, v);
+    crossing_vertices += all ? 1 : 0;
+  }
+  const int fq = mesh.num_faces();
+  return (k - 3) * (k - 3) * fq + sum_d + 4 * fq - 9 * mesh.num_edges() + 3 * used_vertices + crossing_vertices;
+}
+
+G1Basis build_g1_basis(const QuadMesh& mesh, const std::vector<EdgeGluing>& gluing, int k) {
+  if (k < 3) throw IncompleteBasis("G1 basis needs degree >= 3");
+  G1Basis basis;
+  basis.degree = k;
+  std::vector<std::vector<FaceCoefficient>> functions;
+  auto add = [&](std::vector<FaceCoefficient> f, G1FunctionInfo info) {
+    functions.push_back(std::move(f));
+    basis.info.push_back(info);
+  };
+  const std::string where = mesh.name() + ", degree " + std::to_string(k) + ": ";
+
+  // Edge rows once per interior edge (shared by the edge and both vertex problems).
+  std::vector<std::vector<std::vector<FaceCoefficient>>> rows(mesh.num_edges());
+  for (int e = 0; e < mesh.num_edges(); ++e)
+    if (!mesh.edge(e).boundary()) rows[e] = edge_constraint_rows(mesh, gluing[e], k);
+
+  // Edge functions; their counts are needed by the vertex check.
+  std::vector<int> edge_count(mesh.num_edges(), 0);
+  for (int e = 0; e < mesh.num_edges(); ++e) {
+    const MeshEdge& me = mesh.edge(e);
+    Unknowns u(k);
+    std::vector<std::pair<int, int>> items;
+    add_edge_rows(k, me.first.face, me.first.local_edge, 2, k - 2, items);
+    if (me.boundary()) {
+      for (const auto& [f, i] : items) add({{f, i, 1.0}}, {G1Entity::edge, e});
+      edge_count[e] = static_cast<int>(items.size());
+      continue;
+    }
+    add_edge_rows(k, me.second.face, me.second.local_edge, 2, k - 2, items);
+    u.add(items);
+    const Eigen::MatrixXd n = null_space(restrict_rows(rows[e], u), u.size());
+    const int expected = syzygy_dimension(gluing[e], k) - 9 + (gluing[e].crossing_x ? 1 : 0) + (gluing[e].crossing_y ? 1 : 0);
+    if (n.cols() != expected)
+      throw IncompleteBasis(where + "edge " + std::to_string(e) + " has " + std::to_string(n.cols()) +
+                            " local functions, expected " + std::to_string(expected));
+    edge_count[e] = static_cast<int>(n.cols());
+    for (int j = 0; j < n.cols(); ++j) add(to_function(n.col(j), u, true), {G1Entity::edge, e});
+  }
+
+  // Vertex functions.
+  for (int v = 0; v < mesh.num_vertices(); ++v) {
+    const VertexFan& fan = mesh.fan(v);
+    const int nf = static_cast<int>(fan.face.size());
+    if (nf == 0) continue;
+    Unknowns u(k);
+    std::vector<std::pair<int, int>> items, corner;
+    for (int i = 0; i < nf; ++i) {
+      const int f = fan.face[i], c = fan.corner[i];
+      add_edge_rows(k, f, c, 0, k - 2, items);          // along edge c, without corner c+1
+      add_edge_rows(k, f, (c + 3) % 4, 2, k, items);    // along edge c-1, without corner c-1
+      for (int idx : corner_coefficients(k, c)) corner.push_back({f, idx});
+    }
+    u.add(items);
+    std::vector<std::vector<FaceCoefficient>> vrows;
+    int edge_functions = 0;
+    for (int e : fan.edge) {
+      edge_functions += edge_count[e];
+      if (!mesh.edge(e).boundary()) vrows.insert(vrows.end(), rows[e].begin(), rows[e].end());
+    }
+    const Eigen::MatrixXd n = null_space(restrict_rows(vrows, u), u.size());
+    // Corner data (Taylor map T_γ) of the null space.
+    Eigen::MatrixXd w(static_cast<Eigen::Index>(corner.size()), n.cols());
+    for (size_t r = 0; r < corner.size(); ++r) w.row(static_cast<Eigen::Index>(r)) = n.row(u.find(corner[r].first, corner[r].second));
+    Eigen::JacobiSVD<Eigen::MatrixXd> svd(w, Eigen::ComputeThinU | Eigen::ComputeThinV);
+    const Eigen::VectorXd& s = svd.singularValues();
+    int rank = 0;
+    for (int i = 0; i < s.size(); ++i)
+      if (s[i] > 1e-8 * s[0]) ++rank;
+    const int expected = vertex_function_count(mesh, gluing, v);
+    if (rank != expected || n.cols() != rank + edge_functions)
+      throw IncompleteBasis(where + "vertex " + std::to_string(v) + " has " + std::to_string(rank) +
+                            " independent corner data and " + std::to_string(n.cols()) +
+                            " local functions; expected " + std::to_string(expected) + " and " +
+                            std::to_string(expected + edge_functions));
+    const Eigen::MatrixXd ur = svd.matrixU().leftCols(rank);
+    // Minimum-norm solution of T_γ x = h: orthogonal to the edge functions inside the null space.
+    auto solve = [&](const Eigen::VectorXd& h) -> Eigen::VectorXd {
+      const Eigen::VectorXd y = (ur.transpose() * h).cwiseQuotient(s.head(rank));
+      return n * (svd.matrixV().leftCols(rank) * y);
+    };
+    const Eigen::VectorXd ones = Eigen::VectorXd::Ones(static_cast<Eigen::Index>(corner.size()));
+    if ((ur * (ur.transpose() * ones) - ones).norm() > 1e-8 * ones.norm())
+      throw IncompleteBasis(where + "vertex " + std::to_string(v) + ": constants are not locally representable");
+    add(to_function(solve(ones), u, false), {G1Entity::vertex, v, true});
+    // The rest of the corner-data range, orthogonal to the constant data.
+    const Eigen::MatrixXd rest = ur - ones * (ones.transpose() * ur) / ones.squaredNorm();
+    Eigen::JacobiSVD<Eigen::MatrixXd> rsvd(rest, Eigen::ComputeThinU);
+    for (int j = 0; j < rank - 1; ++j) add(to_function(solve(rsvd.matrixU().col(j)), u, true), {G1Entity::vertex, v});
+  }
+
+  // Face functions: interior Bernstein coefficients.
+  for (int f = 0; f < mesh.num_faces(); ++f)
+    for (int j = 2; j <= k - 2; ++j)
+      for (int i = 2; i <= k - 2; ++i) add({{f, i + j * (k + 1), 1.0}}, {G1Entity::face, f});
+
+  // Per-face extraction.
+  const int nb = (k + 1) * (k + 1);
+  basis.face_dofs.assign(mesh.num_faces(), {});
+  for (int g = 0; g < static_cast<int>(functions.size()); ++g)
+    for (const FaceCoefficient& c : functions[g])
+      if (basis.face_dofs[c.face].empty() || basis.face_dofs[c.face].back() != g) basis.face_dofs[c.face].push_back(g);
+  basis.extraction.resize(mesh.num_faces());
+  std::vector<std::vector<Eigen::Triplet<double>>> triplets(mesh.num_faces());
+  for (int g = 0; g < static_cast<int>(functions.size()); ++g)
+    for (const FaceCoefficient& c : functions[g]) {
+      const std::vector<int>& d = basis.face_dofs[c.face];
+      const int col = static_cast<int>(std::lower_bound(d.begin(), d.end(), g) - d.begin());
+      triplets[c.face].push_back({c.index, col, c.value});
+    }
+  for (int f = 0; f < mesh.num_faces(); ++f) {
+    basis.extraction[f].resize(nb, static_cast<Eigen::Index>(basis.face_dofs[f].size()));
+    basis.extraction[f].setFromTriplets(triplets[f].begin(), triplets[f].end());
+  }
+  return basis;
+}
+
+}  // namespace iga

@@ -1,0 +1,278 @@
+// The G1 space S¹_k on bilinear multipatch meshes (notes §9): dimensions against Theorem 6.3 and
+// a brute-force null space of all C0 + G1 rows, local counts, physical C1 continuity of every
+// basis function, linear independence, partition of unity and polynomial reproduction.
+#include <gtest/gtest.h>
+
+#include <Eigen/Dense>
+#include <cmath>
+#include <functional>
+
+#include "solver/errors.hpp"
+#include "spaces/g1/bernstein_quad.hpp"
+#include "spaces/g1/g1_space.hpp"
+#include "spaces/g1/multipatch_domains.hpp"
+
+using namespace iga;
+
+namespace {
+
+using P = Point2;
+
+QuadMesh grid_mesh(const std::vector<P>& pts, const std::string& name) {
+  // pts indexed i*3 + j for (i,j) in {0,1,2}^2, faces ((i,j),(i+1,j),(i+1,j+1),(i,j+1)).
+  std::vector<std::array<P, 4>> patches;
+  for (int i = 0; i < 2; ++i)
+    for (int j = 0; j < 2; ++j)
+      patches.push_back({pts[i * 3 + j], pts[(i + 1) * 3 + j], pts[(i + 1) * 3 + j + 1], pts[i * 3 + j + 1]});
+  return mesh_from_patches(patches, name);
+}
+
+QuadMesh star_mesh(const std::vector<P>& d, const std::vector<P>& e, const std::string& name) {
+  std::vector<std::array<P, 4>> patches;
+  const int n = static_cast<int>(d.size());
+  for (int i = 0; i < n; ++i) patches.push_back({P(0, 0), d[i], e[i], d[(i + 1) % n]});
+  return mesh_from_patches(patches, name);
+}
+
+QuadMesh t3() {
+  std::vector<P> p;
+  for (int i = 0; i <= 2; ++i)
+    for (int j = 0; j <= 2; ++j) p.push_back(P(i, j));
+  return grid_mesh(p, "T3");
+}
+QuadMesh t4() {
+  return grid_mesh({P(0, 0), P(0, 21.0 / 19), P(0, 2), P(1, 0), P(15.0 / 17, 17.0 / 19), P(18.0 / 17, 2), P(2, 0),
+                    P(2, 20.0 / 19), P(2, 2)},
+                   "T4");
+}
+QuadMesh t5() { return star_mesh({P(1, 0), P(-1, 1), P(0, -1)}, {P(0, 1), P(-1, 0), P(1, -1)}, "T5"); }
+QuadMesh t6() {
+  return star_mesh({P(1, 0), P(-1, 1), P(0, -1)}, {P(0.2, 1.2), P(-1.2, 0.1), P(1, -1.5)}, "T6");
+}
+QuadMesh t7() {
+  return star_mesh({P(1, 0), P(0.3, 1), P(-0.8, 0.6), P(-0.8, -0.6), P(0.3, -1)},
+                   {P(1.17, 0.9), P(-0.43, 499.0 / 350), P(-1.4, -1.0 / 35), P(-0.39, -519.0 / 350), P(1.25, -67.0 / 70)},
+                   "T7");
+}
+
+/// Nullity of all C0 + G1 rows on all Bernstein coefficients (dense SVD).
+int brute_force_dimension(const QuadMesh& m, int k) {
+  const std::vector<EdgeGluing> g = gluing_from_geometry(m);
+  const int nb = (k + 1) * (k + 1);
+  std::vector<std::vector<FaceCoefficient>> rows;
+  for (int e = 0; e < m.num_edges(); ++e)
+    if (!m.edge(e).boundary()) {
+      auto r = edge_constraint_rows(m, g[e], k);
+      rows.insert(rows.end(), r.begin(), r.end());
+    }
+  Eigen::MatrixXd a = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(rows.size()), m.num_faces() * nb);
+  for (size_t r = 0; r < rows.size(); ++r)
+    for (const FaceCoefficient& c : rows[r]) a(static_cast<Eigen::Index>(r), c.face * nb + c.index) += c.value;
+  Eigen::JacobiSVD<Eigen::MatrixXd> svd(a);
+  int rank = 0;
+  for (int i = 0; i < svd.singularValues().size(); ++i)
+    if (svd.singularValues()[i] > 1e-10 * svd.singularValues()[0]) ++rank;
+  return static_cast<int>(a.cols()) - rank;
+}
+
+/// Global extraction: all face Bernstein coefficients x global functions.
+Eigen::MatrixXd global_extraction(const G1Space& s) {
+  const int nb = (s.degree() + 1) * (s.degree() + 1);
+  Eigen::MatrixXd e = Eigen::MatrixXd::Zero(s.num_elements() * nb, s.dimension());
+  for (int f = 0; f < s.num_elements(); ++f) {
+    const Eigen::MatrixXd c = s.basis().extraction[f];
+    for (int j = 0; j < c.cols(); ++j) e.block(f * nb, s.basis().face_dofs[f][j], nb, 1) = c.col(j);
+  }
+  return e;
+}
+
+/// Bernstein coefficients on every face of a function of (x, y), stacked like global_extraction's rows.
+Eigen::VectorXd face_coefficients(const G1Space& s, const std::function<double(P)>& fn) {
+  const int k = s.degree(), nb = (k + 1) * (k + 1);
+  Eigen::MatrixXd b(nb, nb);
+  std::vector<P> pts;
+  for (int j = 0; j <= k; ++j)
+    for (int i = 0; i <= k; ++i) pts.push_back(P(double(i) / k, double(j) / k));
+  for (int p = 0; p < nb; ++p) b.row(p) = bernstein_tensor_jet(k, pts[p]).row(0);
+  const Eigen::PartialPivLU<Eigen::MatrixXd> lu(b);
+  Eigen::VectorXd out(s.num_elements() * nb);
+  for (int f = 0; f < s.num_elements(); ++f) {
+    Eigen::VectorXd v(nb);
+    for (int p = 0; p < nb; ++p) v[p] = fn(s.mesh().map(f, pts[p]).x);
+    out.segment(f * nb, nb) = lu.solve(v);
+  }
+  return out;
+}
+
+/// Largest jump of value and of physical gradient of any basis function across interior edges.
+void max_jumps(const G1Space& s, double& value_jump, double& gradient_jump, double& gradient_max) {
+  value_jump = gradient_jump = gradient_max = 0.0;
+  auto ev = s.make_evaluator();
+  const std::vector<double> ts{0.0, 0.13, 0.31, 0.5, 0.77, 0.94, 1.0};
+  for (int e = 0; e < s.mesh().num_edges(); ++e) {
+    if (s.mesh().edge(e).boundary()) continue;
+    const EdgeFrame fr = edge_frame(s.mesh(), e);
+    QuadratureRule r1, r2;
+    for (double t : ts) {
+      r1.points.push_back(fr.start1 + t * fr.tangent1);
+      r2.points.push_back(fr.start2 + t * fr.tangent2);
+      r1.weights.push_back(1.0);
+      r2.weights.push_back(1.0);
+    }
+    PointValues v1, v2;
+    ev->evaluate(fr.face1, r1, update_values | update_gradients, v1);
+    ev->evaluate(fr.face2, r2, update_values | update_gradients, v2);
+    EXPECT_LT((v1.x - v2.x).cwiseAbs().maxCoeff(), 1e-14);
+    std::map<int, std::pair<int, int>> rows;
+    for (int i = 0; i < v1.num_functions(); ++i) rows[v1.dofs[i]].first = i + 1;
+    for (int i = 0; i < v2.num_functions(); ++i) rows[v2.dofs[i]].second = i + 1;
+    for (const auto& [g, r] : rows)
+      for (int q = 0; q < static_cast<int>(ts.size()); ++q) {
+        auto get = [&](const PointValues& v, int row, double& val, Eigen::Vector2d& grad) {
+          val = row ? v.value(row - 1, q) : 0.0;
+          grad = row ? Eigen::Vector2d(v.dx(row - 1, q), v.dy(row - 1, q)) : Eigen::Vector2d::Zero();
+        };
+        double a, b;
+        Eigen::Vector2d ga, gb;
+        get(v1, r.first, a, ga);
+        get(v2, r.second, b, gb);
+        value_jump = std::max(value_jump, std::abs(a - b));
+        gradient_jump = std::max(gradient_jump, (ga - gb).norm());
+        gradient_max = std::max(gradient_max, ga.norm());
+      }
+  }
+}
+
+struct Case {
+  std::string name;
+  std::function<QuadMesh()> mesh;
+  int k;
+  int expected;  ///< dimension from notes §9.1 (brute force, exact arithmetic); -1: not tabulated
+};
+
+std::vector<Case> cases() {
+  return {
+      {"T3", t3, 4, 64},
+      {"T3", t3, 5, 100},
+      {"T4", t4, 5, 95},
+      {"T5", t5, 5, 75},
+      {"T6", t6, 5, 72},
+      {"T6", t6, 6, 105},
+      {"T7", t7, 5, 118},
+      {"3p_square", [] { return multipatch_domain("3p_square"); }, 5, -1},
+      {"5p_square", [] { return multipatch_domain("5p_square"); }, 5, -1},
+      {"pentagon", [] { return multipatch_domain("pentagon"); }, 5, -1},
+      {"3p_square level 1", [] { return multipatch_domain("3p_square").refined(); }, 5, -1},
+  };
+}
+
+}  // namespace
+
+TEST(G1Space, DimensionMatchesTheoremAndBruteForce) {
+  for (const Case& c : cases()) {
+    const QuadMesh m = c.mesh();
+    const G1Space s(std::make_shared<const QuadMesh>(m), c.k);
+    const int brute = brute_force_dimension(m, c.k);
+    EXPECT_EQ(s.dimension(), brute) << c.name << " k=" << c.k;
+    EXPECT_EQ(theorem_dimension(m, s.gluing(), c.k), brute) << c.name << " k=" << c.k;
+    if (c.expected > 0) EXPECT_EQ(brute, c.expected) << c.name << " k=" << c.k;
+  }
+}
+
+TEST(G1Space, BenchmarkDomainDimensions) {
+  // Generic bilinear data everywhere (d_τ = 2k), no crossing vertex: Theorem 6.3 by hand.
+  // 3p_square, k = 5: 3*4 + 3*10 + 6*13 + 12 - 81 + 21 = 72 (= 3k² - 3, like T6).
+  EXPECT_EQ(G1Space(std::make_shared<const QuadMesh>(multipatch_domain("3p_square")), 5).dimension(), 72);
+  // pentagon, k = 5: 5*4 + 5*10 + 10*13 + 20 - 9*15 + 3*11 = 118 (= 5k² - 7, like T7).
+  EXPECT_EQ(G1Space(std::make_shared<const QuadMesh>(multipatch_domain("pentagon")), 5).dimension(), 118);
+}
+
+TEST(G1Space, LocalCountsPerEntity) {
+  // T7 at k = 5 (notes §9.2): centre 8, boundary d_i 5, e_i 4, interior edges 1, boundary edges 4.
+  const QuadMesh m = t7();
+  const G1Space s(std::make_shared<const QuadMesh>(m), 5);
+  std::vector<int> per_vertex(m.num_vertices(), 0), per_edge(m.num_edges(), 0);
+  int faces = 0;
+  for (const G1FunctionInfo& i : s.basis().info) {
+    if (i.entity == G1Entity::vertex) ++per_vertex[i.id];
+    if (i.entity == G1Entity::edge) ++per_edge[i.id];
+    if (i.entity == G1Entity::face) ++faces;
+  }
+  EXPECT_EQ(faces, 5 * 4);
+  for (int v = 0; v < m.num_vertices(); ++v) {
+    const VertexFan& fan = m.fan(v);
+    const int expected = !fan.boundary ? 8 : (fan.face.size() == 2 ? 5 : 4);
+    EXPECT_EQ(per_vertex[v], expected) << "vertex " << v;
+  }
+  for (int e = 0; e < m.num_edges(); ++e) EXPECT_EQ(per_edge[e], m.edge(e).boundary() ? 4 : 1) << "edge " << e;
+}
+
+TEST(G1Space, RefusesDegreesBelowSeparabilityNamingTheSmallestThatWorks) {
+  // T5 at k = 4: the local construction gives 45 of 48 (notes §9.2); T6 likewise 42 of 45.
+  for (auto mesh : {t5(), t6()}) {
+    try {
+      G1Space(std::make_shared<const QuadMesh>(mesh), 4);
+      FAIL() << mesh.name() << " accepted at k = 4";
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find("use degree >= 5"), std::string::npos) << e.what();
+    }
+  }
+  // The straight 2x2 grid is fine at k = 4 (all edges crossing).
+  EXPECT_EQ(G1Space(std::make_shared<const QuadMesh>(t3()), 4).dimension(), 64);
+}
+
+TEST(G1Space, EveryBasisFunctionIsC1AcrossInterfaces) {
+  for (const Case& c : cases()) {
+    const G1Space s(std::make_shared<const QuadMesh>(c.mesh()), c.k);
+    double vj, gj, gmax;
+    max_jumps(s, vj, gj, gmax);
+    EXPECT_LT(vj, 1e-12) << c.name;
+    EXPECT_LT(gj, 1e-11) << c.name << " (largest gradient " << gmax << ")";
+    EXPECT_GT(gmax, 1.0) << c.name;  // the check saw real gradients
+  }
+}
+
+TEST(G1Space, LinearlyIndependent) {
+  for (const Case& c : cases()) {
+    const G1Space s(std::make_shared<const QuadMesh>(c.mesh()), c.k);
+    Eigen::JacobiSVD<Eigen::MatrixXd> svd(global_extraction(s));
+    const Eigen::VectorXd& sv = svd.singularValues();
+    EXPECT_GT(sv[sv.size() - 1], 1e-6 * sv[0]) << c.name << " k=" << c.k;
+  }
+}
+
+TEST(G1Space, PartitionOfUnityThroughVertexValueFunctions) {
+  for (const Case& c : cases()) {
+    const G1Space s(std::make_shared<const QuadMesh>(c.mesh()), c.k);
+    const Eigen::MatrixXd e = global_extraction(s);
+    const Eigen::VectorXd one = face_coefficients(s, [](P) { return 1.0; });
+    const Eigen::VectorXd x = e.colPivHouseholderQr().solve(one);
+    EXPECT_LT((e * x - one).cwiseAbs().maxCoeff(), 1e-11) << c.name;
+    int values = 0;
+    for (int g = 0; g < s.dimension(); ++g) {
+      const G1FunctionInfo& i = s.basis().info[g];
+      if (i.entity != G1Entity::vertex) continue;
+      EXPECT_NEAR(x[g], i.value_function ? 1.0 : 0.0, 1e-10) << c.name << " function " << g;
+      values += i.value_function ? 1 : 0;
+    }
+    EXPECT_EQ(values, s.mesh().num_vertices());
+  }
+}
+
+TEST(G1Space, ReproducesPolynomialsUpToDegreeK) {
+  for (const Case& c : cases()) {
+    const G1Space s(std::make_shared<const QuadMesh>(c.mesh()), c.k);
+    const Eigen::MatrixXd e = global_extraction(s);
+    const Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(e);
+    for (int d = 0; d <= c.k; ++d)
+      for (int i = 0; i <= d; ++i) {
+        const int j = d - i;
+        const Eigen::VectorXd b =
+            face_coefficients(s, [&](P x) { return std::pow(x.x() - 0.3, i) * std::pow(x.y() + 0.2, j); });
+        const Eigen::VectorXd r = e * qr.solve(b) - b;
+        EXPECT_LT(r.cwiseAbs().maxCoeff(), 1e-10 * std::max(1.0, b.cwiseAbs().maxCoeff()))
+            << c.name << " x^" << i << " y^" << j;
+      }
+    // Degree k+1 is not reproduced on non-parallelogram meshes: the test can fail.
+  }
+}
