@@ -276,3 +276,44 @@ TEST(G1Space, ReproducesPolynomialsUpToDegreeK) {
     // Degree k+1 is not reproduced on non-parallelogram meshes: the test can fail.
   }
 }
+
+TEST(G1Space, BoundaryAdaptedVertexFunctionsGiveTheBoundarySubspaces) {
+  // Functions vanishing on the boundary (row 0 of every boundary edge) and vanishing to first
+  // order (rows 0 and 1): their counts are the dimensions of the Dirichlet and clamped subspaces
+  // (notes §9.4; pentagon from g1-routeA-evidence: 38 and 228 clamped DOFs at levels 0 and 1).
+  struct Expect {
+    std::string name;
+    std::function<QuadMesh()> mesh;
+    int dirichlet, clamped;
+  };
+  const std::vector<Expect> list{
+      {"T3", t3, 64, 36},
+      {"T4", t4, 59, 31},
+      {"T5", t5, 45, 24},
+      {"T6", t6, 42, 21},
+      {"T7", t7, 68, 33},
+      {"pentagon", [] { return multipatch_domain("pentagon"); }, -1, 38},
+      {"pentagon level 1", [] { return multipatch_domain("pentagon").refined(); }, -1, 228},
+  };
+  for (const Expect& c : list) {
+    const G1Space s(std::make_shared<const QuadMesh>(c.mesh()), 5);
+    const int k = 5;
+    std::vector<double> row0(s.dimension(), 0.0), row1(s.dimension(), 0.0);
+    for (const BoundaryEdge& b : s.boundary_edges("all")) {
+      const Eigen::MatrixXd ex = s.basis().extraction[b.element];
+      const std::vector<int>& dofs = s.basis().face_dofs[b.element];
+      for (int j = 0; j < ex.cols(); ++j)
+        for (int m = 0; m <= k; ++m) {
+          row0[dofs[j]] = std::max(row0[dofs[j]], std::abs(ex(edge_coefficient(k, b.local_edge, m, 0), j)));
+          row1[dofs[j]] = std::max(row1[dofs[j]], std::abs(ex(edge_coefficient(k, b.local_edge, m, 1), j)));
+        }
+    }
+    int dirichlet = 0, clamped = 0;
+    for (int g = 0; g < s.dimension(); ++g) {
+      dirichlet += row0[g] < 1e-12 ? 1 : 0;
+      clamped += (row0[g] < 1e-12 && row1[g] < 1e-12) ? 1 : 0;
+    }
+    if (c.dirichlet >= 0) EXPECT_EQ(dirichlet, c.dirichlet) << c.name;
+    EXPECT_EQ(clamped, c.clamped) << c.name;
+  }
+}

@@ -71,6 +71,64 @@ std::vector<FaceCoefficient> to_function(const Eigen::VectorXd& x, const Unknown
   return f;
 }
 
+/// Orthonormal bases of ker(a) and of its orthogonal complement in R^r (r = a.cols()).
+void split_kernel(const Eigen::MatrixXd& a, Eigen::MatrixXd& kernel, Eigen::MatrixXd& complement) {
+  const Eigen::Index r = a.cols();
+  if (a.rows() == 0 || r == 0) {
+    kernel = Eigen::MatrixXd::Identity(r, r);
+    complement.resize(r, 0);
+    return;
+  }
+  Eigen::JacobiSVD<Eigen::MatrixXd> svd(a, Eigen::ComputeFullV);
+  const Eigen::VectorXd& s = svd.singularValues();
+  Eigen::Index rank = 0;
+  for (Eigen::Index i = 0; i < s.size(); ++i)
+    if (s[i] > 1e-10 * std::max(s[0], 1e-300)) ++rank;
+  complement = svd.matrixV().leftCols(rank);
+  kernel = svd.matrixV().rightCols(r - rank);
+}
+
+/// Orthonormal basis of the complement of unit vector direction y in R^rho (rho x (rho-1)).
+Eigen::MatrixXd complement_of(const Eigen::VectorXd& y) {
+  Eigen::HouseholderQR<Eigen::MatrixXd> qr(Eigen::MatrixXd(y.normalized()));
+  const Eigen::MatrixXd q = qr.householderQ() * Eigen::MatrixXd::Identity(y.size(), y.size());
+  return q.rightCols(y.size() - 1);
+}
+
+/// Coordinates (in the corner-data range basis `ur`, r columns) of the r vertex functions' corner
+/// data: column 0 is the constant (o = urᵀ·ones). At a boundary vertex the rest are chosen so that
+/// the functions with a nonzero trace have independent traces (columns 1..ρ-1), then zero-trace
+/// functions with independent next-row data, then functions vanishing to first order on the
+/// boundary: the boundary projections for Dirichlet and clamped data are then nonsingular.
+Eigen::MatrixXd vertex_targets(const Eigen::MatrixXd& ur, const Eigen::VectorXd& o, const std::vector<int>& trace_rows,
+                               const std::vector<int>& normal_rows) {
+  const Eigen::Index r = ur.cols();
+  Eigen::MatrixXd out(r, r);
+  out.col(0) = o;
+  if (trace_rows.empty()) {
+    out.rightCols(r - 1) = complement_of(o);
+    return out;
+  }
+  auto rows_of = [&](const std::vector<int>& idx, const Eigen::MatrixXd& basis) {
+    Eigen::MatrixXd m(static_cast<Eigen::Index>(idx.size()), basis.cols());
+    for (size_t i = 0; i < idx.size(); ++i) m.row(static_cast<Eigen::Index>(i)) = ur.row(idx[i]) * basis;
+    return m;
+  };
+  Eigen::MatrixXd k1, c1, k2, c2;
+  split_kernel(rows_of(trace_rows, Eigen::MatrixXd::Identity(r, r)), k1, c1);
+  Eigen::Index col = 1;
+  if (c1.cols() > 1) {
+    const Eigen::MatrixXd rest = c1 * complement_of(c1.transpose() * o);
+    out.middleCols(col, rest.cols()) = rest;
+    col += rest.cols();
+  }
+  split_kernel(rows_of(normal_rows, k1), k2, c2);
+  out.middleCols(col, c2.cols()) = k1 * c2;
+  col += c2.cols();
+  out.middleCols(col, k2.cols()) = k1 * k2;
+  return out;
+}
+
 }  // namespace
 
 std::vector<std::vector<FaceCoefficient>> edge_constraint_rows(const QuadMesh& mesh, const EdgeGluing& g, int k) {
@@ -224,11 +282,27 @@ G1Basis build_g1_basis(const QuadMesh& mesh, const std::vector<EdgeGluing>& glui
     const Eigen::VectorXd ones = Eigen::VectorXd::Ones(static_cast<Eigen::Index>(corner.size()));
     if ((ur * (ur.transpose() * ones) - ones).norm() > 1e-8 * ones.norm())
       throw IncompleteBasis(where + "vertex " + std::to_string(v) + ": constants are not locally representable");
+    // Positions in the corner data of the trace (row 0) and next-row (row 1) coefficients along
+    // the boundary edges at a boundary vertex.
+    std::vector<int> trace_rows, normal_rows;
+    if (fan.boundary) {
+      auto position = [&](int f, int idx) {
+        for (size_t r = 0; r < corner.size(); ++r)
+          if (corner[r].first == f && corner[r].second == idx) return static_cast<int>(r);
+        return -1;
+      };
+      const int f0 = fan.face.front(), c0 = fan.corner.front();
+      const int fl = fan.face.back(), cl = fan.corner.back();
+      for (int m = 0; m <= 1; ++m) {
+        trace_rows.push_back(position(f0, edge_coefficient(k, c0, m, 0)));
+        normal_rows.push_back(position(f0, edge_coefficient(k, c0, m, 1)));
+        trace_rows.push_back(position(fl, edge_coefficient(k, cl + 3, k - m, 0)));
+        normal_rows.push_back(position(fl, edge_coefficient(k, cl + 3, k - m, 1)));
+      }
+    }
+    const Eigen::MatrixXd targets = vertex_targets(ur, ur.transpose() * ones, trace_rows, normal_rows);
     add(to_function(solve(ones), u, false), {G1Entity::vertex, v, true});
-    // The rest of the corner-data range, orthogonal to the constant data.
-    const Eigen::MatrixXd rest = ur - ones * (ones.transpose() * ur) / ones.squaredNorm();
-    Eigen::JacobiSVD<Eigen::MatrixXd> rsvd(rest, Eigen::ComputeThinU);
-    for (int j = 0; j < rank - 1; ++j) add(to_function(solve(rsvd.matrixU().col(j)), u, true), {G1Entity::vertex, v});
+    for (int j = 1; j < rank; ++j) add(to_function(solve(ur * targets.col(j)), u, true), {G1Entity::vertex, v});
   }
 
   // Face functions: interior Bernstein coefficients.
