@@ -154,6 +154,7 @@ std::vector<Case> cases() {
   return {
       {"T3", t3, 4, 64},
       {"T3", t3, 5, 100},
+      {"T4", t4, 4, 59},  // every interface straight at one end: k = 4 suffices (notes §0, §9.2)
       {"T4", t4, 5, 95},
       {"T5", t5, 5, 75},
       {"T6", t6, 5, 72},
@@ -161,6 +162,7 @@ std::vector<Case> cases() {
       {"T7", t7, 5, 118},
       {"3p_square", [] { return multipatch_domain("3p_square"); }, 5, -1},
       {"5p_square", [] { return multipatch_domain("5p_square"); }, 5, -1},
+      {"pentagon", [] { return multipatch_domain("pentagon"); }, 4, 73},  // 5k² - 7 as T7
       {"pentagon", [] { return multipatch_domain("pentagon"); }, 5, -1},
       {"3p_square level 1", [] { return multipatch_domain("3p_square").refined(); }, 5, -1},
   };

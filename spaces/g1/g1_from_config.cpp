@@ -10,8 +10,7 @@ SpacePtr make_g1_space(const ConfigNode& domain, const ConfigNode& space, int le
   space.check_keys({"type", "degree"});
   if (space.has("type")) space["type"].as_choice({"g1"});
   domain.check_keys({"type", "name"});
-  const std::string type = domain["type"].as_choice({"multipatch"});
-  (void)type;
+  domain["type"].as_choice({"multipatch"});
   const std::string name = domain["name"].as_choice(multipatch_domain_names());
   const ConfigNode dn = space["degree"];
   const int k = dn.as_int();
