@@ -319,3 +319,34 @@ TEST(G1Space, BoundaryAdaptedVertexFunctionsGiveTheBoundarySubspaces) {
     EXPECT_EQ(clamped, c.clamped) << c.name;
   }
 }
+
+TEST(G1Space, PhysicalDerivativesMatchFiniteDifferencesOnBilinearPatches) {
+  // Central differences along reference directions through the (non-affine) bilinear maps:
+  // F(x+) - F(x-) = ∇F·(x+ - x-) and ∇F(x+) - ∇F(x-) = D²F (x+ - x-), both up to O(δ³).
+  const G1Space s(std::make_shared<const QuadMesh>(multipatch_domain("3p_square")), 5);
+  auto ev = s.make_evaluator();
+  const double delta = 1e-4;
+  double worst_grad = 0.0, worst_hess = 0.0;
+  for (int f = 0; f < s.num_elements(); ++f)
+    for (int dir = 0; dir < 2; ++dir) {
+      const P xi(0.37, 0.61), step = dir == 0 ? P(delta, 0) : P(0, delta);
+      QuadratureRule r;
+      r.points = {xi, xi + step, xi - step};
+      r.weights = {1, 1, 1};
+      PointValues v;
+      ev->evaluate(f, r, update_values | update_gradients | update_hessians, v);
+      const Eigen::Vector2d dx = v.x.col(1) - v.x.col(2);
+      for (int i = 0; i < v.num_functions(); ++i) {
+        const double scale_g = std::abs(v.dx(i, 0)) + std::abs(v.dy(i, 0)) + 1.0;
+        const double df = v.value(i, 1) - v.value(i, 2);
+        worst_grad = std::max(worst_grad, std::abs(df - (v.dx(i, 0) * dx.x() + v.dy(i, 0) * dx.y())) / (scale_g * dx.norm()));
+        const double gx = v.dx(i, 1) - v.dx(i, 2), gy = v.dy(i, 1) - v.dy(i, 2);
+        const double hx = v.dxx(i, 0) * dx.x() + v.dxy(i, 0) * dx.y(), hy = v.dxy(i, 0) * dx.x() + v.dyy(i, 0) * dx.y();
+        const double scale_h = std::abs(v.dxx(i, 0)) + std::abs(v.dxy(i, 0)) + std::abs(v.dyy(i, 0)) + 1.0;
+        worst_hess = std::max(worst_hess, std::hypot(gx - hx, gy - hy) / (scale_h * dx.norm()));
+      }
+    }
+  EXPECT_LT(worst_grad, 1e-6);
+  EXPECT_LT(worst_hess, 1e-6);
+  EXPECT_GT(worst_hess, 0.0);  // the differences were computed
+}
