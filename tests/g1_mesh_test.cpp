@@ -181,3 +181,23 @@ TEST(G1Gluing, DegreesAndCrossingsOfBilinearEdges) {
   }
   EXPECT_EQ(parametric, 12);  // 4 inner edges per patch
 }
+
+TEST(G1Mesh, BenchmarkDomainsFromTheAnchors) {
+  // 5p_pentagon: valence 5 at the origin; area of the regular pentagon with apothem a.
+  const QuadMesh p = multipatch_domain("5p_pentagon");
+  EXPECT_EQ(p.fan(vertex_at(p, Point2(0, 0))).valence(), 5);
+  EXPECT_EQ(count(p).interior_vertices, 1);
+  EXPECT_NEAR(total_area(p), 5 * 0.6881909602355869 * 0.5, 1e-12);
+  // 3p_hexagon: valence 3 at the origin, regular hexagon of circumradius 1.
+  const QuadMesh h = multipatch_domain("3p_hexagon");
+  EXPECT_EQ(h.fan(vertex_at(h, Point2(0, 0))).valence(), 3);
+  EXPECT_NEAR(total_area(h), 1.5 * std::sqrt(3.0), 1e-12);
+  for (int f = 0; f < 3; ++f) EXPECT_TRUE(h.is_parallelogram(f));
+  // lshape_8p: (-1,1)^2 minus the fourth quadrant; the re-entrant corner (0,0) is a boundary vertex.
+  const QuadMesh l = multipatch_domain("lshape_8p");
+  EXPECT_EQ(l.num_faces(), 8);
+  EXPECT_NEAR(total_area(l), 3.0, 1e-13);
+  EXPECT_TRUE(l.fan(vertex_at(l, Point2(0, 0))).boundary);
+  EXPECT_EQ(l.num_vertices(), 12);
+  EXPECT_EQ(count(l).interior_vertices, 6);  // the 6 boundary vertices are the corners of the L
+}

@@ -165,6 +165,9 @@ std::vector<Case> cases() {
       {"pentagon", [] { return multipatch_domain("pentagon"); }, 4, 73},  // 5k² - 7 as T7
       {"pentagon", [] { return multipatch_domain("pentagon"); }, 5, -1},
       {"3p_square level 1", [] { return multipatch_domain("3p_square").refined(); }, 5, -1},
+      {"5p_pentagon", [] { return multipatch_domain("5p_pentagon"); }, 5, -1},
+      {"3p_hexagon", [] { return multipatch_domain("3p_hexagon"); }, 5, 75},  // parallelograms: 3k² as T5
+      {"lshape_8p", [] { return multipatch_domain("lshape_8p"); }, 5, -1},
   };
 }
 

@@ -43,7 +43,9 @@ QuadMesh mesh_from_patches(const std::vector<std::array<Point2, 4>>& patches, co
   return QuadMesh(std::move(vertices), std::move(faces), name);
 }
 
-std::vector<std::string> multipatch_domain_names() { return {"3p_square", "5p_square", "pentagon"}; }
+std::vector<std::string> multipatch_domain_names() {
+  return {"3p_square", "5p_square", "pentagon", "5p_pentagon", "3p_hexagon", "lshape_8p"};
+}
 
 QuadMesh multipatch_domain(const std::string& name) {
   using P = Point2;
@@ -71,6 +73,35 @@ QuadMesh multipatch_domain(const std::string& name) {
     std::vector<std::array<P, 4>> patches;
     for (int i = 0; i < 5; ++i) patches.push_back({o, m[(i + 4) % 5], v[i], m[i]});
     return mesh_from_patches(patches, name);
+  }
+  if (name == "5p_pentagon") {
+    const double a = 0.6881909602355869, b = 0.654508497187474, c = 0.21266270208801, d = 0.809016994374947,
+                 e = 0.262865556059567, f = 0.404508497187474, g = 0.556758182205803, h = 0.85065080835204;
+    return mesh_from_patches({tensor(P(-0.5, -a), P(0, -a), P(-b, -c), P(0, 0)),
+                              tensor(P(0, -a), P(0.5, -a), P(0, 0), P(b, -c)),
+                              tensor(P(-b, -c), P(0, 0), P(-d, e), P(-f, g)),
+                              tensor(P(b, -c), P(0, 0), P(d, e), P(f, g)),
+                              tensor(P(0, 0), P(f, g), P(-f, g), P(0, h))},
+                             name);
+  }
+  if (name == "3p_hexagon") {
+    const double s = 0.8660254037844386;
+    return mesh_from_patches({tensor(P(0, 0), P(s, -0.5), P(0, 1), P(s, 0.5)),
+                              tensor(P(-s, -0.5), P(0, 0), P(-s, 0.5), P(0, 1)),
+                              tensor(P(0, -1), P(s, -0.5), P(-s, -0.5), P(0, 0))},
+                             name);
+  }
+  if (name == "lshape_8p") {
+    const double t = 1.0 / 3, u = 2.0 / 3;
+    return mesh_from_patches({tensor(P(0, 0), P(1, 0), P(-t, t), P(u, t)),
+                              tensor(P(0, 0), P(0, -1), P(-t, t), P(-t, -u)),
+                              tensor(P(-t, -u), P(0, -1), P(-u, -u), P(-1, -1)),
+                              tensor(P(-1, -1), P(-1, 1), P(-u, -u), P(-u, u)),
+                              tensor(P(-u, -u), P(-u, u), P(-t, -u), P(-t, t)),
+                              tensor(P(-u, u), P(u, u), P(-t, t), P(u, t)),
+                              tensor(P(-1, 1), P(1, 1), P(-u, u), P(u, u)),
+                              tensor(P(u, t), P(u, u), P(1, 0), P(1, 1))},
+                             name);
   }
   throw std::invalid_argument("unknown multipatch domain '" + name + "'");
 }

@@ -22,7 +22,9 @@ std::vector<std::string> multipatch_domain_names();
 ///  - 3p_square: unit square, 3 patches, valence-3 vertex at (0.6, 0.6) (anchors §10);
 ///  - 5p_square: inner square [0.2,0.8]^2 and 4 trapezoids, four valence-3 vertices (anchors §10);
 ///  - pentagon: regular pentagon (circumradius 1), 5 patches around the off-centre valence-5
-///    vertex (0.07, -0.04) (g1-routeA-evidence).
+///    vertex (0.07, -0.04) (g1-routeA-evidence);
+///  - 5p_pentagon, 3p_hexagon, lshape_8p: G+Smo's regular pentagon (valence 5 at the origin) and
+///    hexagon (valence 3, parallelograms), GeoPDEs' 8-patch L-shape (parallelograms) (anchors §10).
 /// Throws std::invalid_argument for another name.
 QuadMesh multipatch_domain(const std::string& name);
 
