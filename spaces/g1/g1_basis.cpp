@@ -1,0 +1,334 @@
+#include "spaces/g1/g1_basis.hpp"
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <unordered_map>
+
+#include "quadrature/quadrature_rule.hpp"
+#include "spaces/g1/bernstein_quad.hpp"
+
+namespace iga {
+
+namespace {
+
+// Relative singular-value threshold of the local null spaces (the Bernstein rows are O(1)).
+constexpr double kRankTolerance = 1e-10;
+
+/// Local indices in rows 0-1 along local edge e with m in [m0, m1].
+void add_edge_rows(int k, int face, int e, int m0, int m1, std::vector<std::pair<int, int>>& out) {
+  for (int r = 0; r <= 1; ++r)
+    for (int m = m0; m <= m1; ++m) out.push_back({face, edge_coefficient(k, e, m, r)});
+}
+
+/// Unknown set: (face, index) pairs, deduplicated, with a lookup.
+struct Unknowns {
+  std::vector<std::pair<int, int>> list;
+  std::unordered_map<long long, int> column;
+  int stride = 0;
+  explicit Unknowns(int k) : stride((k + 1) * (k + 1)) {}
+  void add(const std::vector<std::pair<int, int>>& items) {
+    for (const auto& [f, i] : items) {
+      const long long key = static_cast<long long>(f) * stride + i;
+      if (column.emplace(key, static_cast<int>(list.size())).second) list.push_back({f, i});
+    }
+  }
+  int find(int f, int i) const {
+    const auto it = column.find(static_cast<long long>(f) * stride + i);
+    return it == column.end() ? -1 : it->second;
+  }
+  int size() const { return static_cast<int>(list.size()); }
+};
+
+/// Rows restricted to the unknowns (coefficients outside are zero).
+Eigen::MatrixXd restrict_rows(const std::vector<std::vector<FaceCoefficient>>& rows, const Unknowns& u) {
+  Eigen::MatrixXd m = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(rows.size()), u.size());
+  for (size_t r = 0; r < rows.size(); ++r)
+    for (const FaceCoefficient& c : rows[r]) {
+      const int col = u.find(c.face, c.index);
+      if (col >= 0) m(static_cast<Eigen::Index>(r), col) += c.value;
+    }
+  return m;
+}
+
+/// Orthonormal basis of the null space of m (n columns), n x nullity.
+Eigen::MatrixXd null_space(const Eigen::MatrixXd& m, int n) {
+  if (m.rows() == 0) return Eigen::MatrixXd::Identity(n, n);
+  Eigen::JacobiSVD<Eigen::MatrixXd> svd(m, Eigen::ComputeFullV);
+  const Eigen::VectorXd& s = svd.singularValues();
+  int rank = 0;
+  for (int i = 0; i < s.size(); ++i)
+    if (s[i] > kRankTolerance * s[0]) ++rank;
+  return svd.matrixV().rightCols(n - rank);
+}
+
+std::vector<FaceCoefficient> to_function(const Eigen::VectorXd& x, const Unknowns& u, bool normalize) {
+  const double scale = normalize ? x.cwiseAbs().maxCoeff() : 1.0;
+  std::vector<FaceCoefficient> f;
+  for (int i = 0; i < u.size(); ++i)
+    if (x[i] != 0.0) f.push_back({u.list[i].first, u.list[i].second, x[i] / scale});
+  return f;
+}
+
+/// Orthonormal bases of ker(a) and of its orthogonal complement in R^r (r = a.cols()).
+void split_kernel(const Eigen::MatrixXd& a, Eigen::MatrixXd& kernel, Eigen::MatrixXd& complement) {
+  const Eigen::Index r = a.cols();
+  if (a.rows() == 0 || r == 0) {
+    kernel = Eigen::MatrixXd::Identity(r, r);
+    complement.resize(r, 0);
+    return;
+  }
+  Eigen::JacobiSVD<Eigen::MatrixXd> svd(a, Eigen::ComputeFullV);
+  const Eigen::VectorXd& s = svd.singularValues();
+  Eigen::Index rank = 0;
+  for (Eigen::Index i = 0; i < s.size(); ++i)
+    if (s[i] > 1e-10 * std::max(s[0], 1e-300)) ++rank;
+  complement = svd.matrixV().leftCols(rank);
+  kernel = svd.matrixV().rightCols(r - rank);
+}
+
+/// Orthonormal basis of the complement of unit vector direction y in R^rho (rho x (rho-1)).
+Eigen::MatrixXd complement_of(const Eigen::VectorXd& y) {
+  Eigen::HouseholderQR<Eigen::MatrixXd> qr(Eigen::MatrixXd(y.normalized()));
+  const Eigen::MatrixXd q = qr.householderQ() * Eigen::MatrixXd::Identity(y.size(), y.size());
+  return q.rightCols(y.size() - 1);
+}
+
+/// Coordinates (in the corner-data range basis `ur`, r columns) of the r vertex functions' corner
+/// data: column 0 is the constant (o = urᵀ·ones). At a boundary vertex the rest are chosen so that
+/// the functions with a nonzero trace have independent traces (columns 1..ρ-1), then zero-trace
+/// functions with independent next-row data, then functions vanishing to first order on the
+/// boundary: the boundary projections for Dirichlet and clamped data are then nonsingular.
+Eigen::MatrixXd vertex_targets(const Eigen::MatrixXd& ur, const Eigen::VectorXd& o, const std::vector<int>& trace_rows,
+                               const std::vector<int>& normal_rows) {
+  const Eigen::Index r = ur.cols();
+  Eigen::MatrixXd out(r, r);
+  out.col(0) = o;
+  if (trace_rows.empty()) {
+    out.rightCols(r - 1) = complement_of(o);
+    return out;
+  }
+  auto rows_of = [&](const std::vector<int>& idx, const Eigen::MatrixXd& basis) {
+    Eigen::MatrixXd m(static_cast<Eigen::Index>(idx.size()), basis.cols());
+    for (size_t i = 0; i < idx.size(); ++i) m.row(static_cast<Eigen::Index>(i)) = ur.row(idx[i]) * basis;
+    return m;
+  };
+  Eigen::MatrixXd k1, c1, k2, c2;
+  split_kernel(rows_of(trace_rows, Eigen::MatrixXd::Identity(r, r)), k1, c1);
+  Eigen::Index col = 1;
+  if (c1.cols() > 1) {
+    const Eigen::MatrixXd rest = c1 * complement_of(c1.transpose() * o);
+    out.middleCols(col, rest.cols()) = rest;
+    col += rest.cols();
+  }
+  split_kernel(rows_of(normal_rows, k1), k2, c2);
+  out.middleCols(col, c2.cols()) = k1 * c2;
+  col += c2.cols();
+  out.middleCols(col, k2.cols()) = k1 * k2;
+  return out;
+}
+
+}  // namespace
+
+std::vector<std::vector<FaceCoefficient>> edge_constraint_rows(const QuadMesh& mesh, const EdgeGluing& g, int k) {
+  const MeshEdge& me = mesh.edge(g.edge);
+  const EdgeFrame fr = edge_frame(mesh, g.edge);
+  const int e1 = me.first.local_edge, e2 = me.second.local_edge;
+  std::vector<std::vector<FaceCoefficient>> rows;
+  // C0: straight edges parametrised linearly from X to Y on both faces, so traces match coefficient
+  // by coefficient (the second face runs Y -> X).
+  for (int m = 0; m <= k; ++m)
+    rows.push_back({{fr.face1, edge_coefficient(k, e1, m, 0), 1.0}, {fr.face2, edge_coefficient(k, e2, k - m, 0), -1.0}});
+  // G1 by collocation at k+3 Gauss points: the residual has degree <= k+2 in t.
+  const QuadratureRule pts = gauss_legendre(k + 3);
+  std::vector<int> rows1, rows2;
+  for (int r = 0; r <= 1; ++r)
+    for (int m = 0; m <= k; ++m) {
+      rows1.push_back(edge_coefficient(k, e1, m, r));
+      rows2.push_back(edge_coefficient(k, e2, m, r));
+    }
+  for (const Point2& p : pts.points) {
+    const double t = p.x();
+    const Eigen::MatrixXd j1 = bernstein_tensor_jet(k, fr.start1 + t * fr.tangent1);
+    const Eigen::MatrixXd j2 = bernstein_tensor_jet(k, fr.start2 + t * fr.tangent2);
+    const double a = eval_poly(g.a, t), b = eval_poly(g.b, t), c = eval_poly(g.c, t);
+    std::vector<FaceCoefficient> row;
+    double big = 0.0;
+    for (int i : rows1) {
+      const double cross = j1(1, i) * fr.cross1.x() + j1(2, i) * fr.cross1.y();
+      const double along = j1(1, i) * fr.tangent1.x() + j1(2, i) * fr.tangent1.y();
+      const double v = c * cross - a * along;
+      if (v != 0.0) row.push_back({fr.face1, i, v});
+      big = std::max(big, std::abs(v));
+    }
+    for (int i : rows2) {
+      const double v = -b * (j2(1, i) * fr.cross2.x() + j2(2, i) * fr.cross2.y());
+      if (v != 0.0) row.push_back({fr.face2, i, v});
+      big = std::max(big, std::abs(v));
+    }
+    for (FaceCoefficient& fc : row) fc.value /= big;
+    rows.push_back(std::move(row));
+  }
+  return rows;
+}
+
+int vertex_function_count(const QuadMesh& mesh, const std::vector<EdgeGluing>& gluing, int v) {
+  const VertexFan& fan = mesh.fan(v);
+  int crossing = 0;
+  for (int e : fan.edge) crossing += crossing_at(mesh, gluing, e, v) ? 1 : 0;
+  const int faces = static_cast<int>(fan.face.size());
+  const bool crossing_vertex = !fan.boundary && fan.valence() == 4 && crossing == 4;
+  return 3 + faces - crossing + (crossing_vertex ? 1 : 0);
+}
+
+int theorem_dimension(const QuadMesh& mesh, const std::vector<EdgeGluing>& gluing, int k) {
+  int sum_d = 0, crossing_vertices = 0, used_vertices = 0;
+  for (int e = 0; e < mesh.num_edges(); ++e)
+    sum_d += mesh.edge(e).boundary() ? 2 * k + 3 : syzygy_dimension(gluing[e], k);
+  for (int v = 0; v < mesh.num_vertices(); ++v) {
+    const VertexFan& fan = mesh.fan(v);
+    if (fan.face.empty()) continue;
+    ++used_vertices;
+    if (fan.boundary || fan.valence() != 4) continue;
+    bool all = true;
+    for (int e : fan.edge) all = all && crossing_at(mesh, gluing, e, v);
+    crossing_vertices += all ? 1 : 0;
+  }
+  const int fq = mesh.num_faces();
+  return (k - 3) * (k - 3) * fq + sum_d + 4 * fq - 9 * mesh.num_edges() + 3 * used_vertices + crossing_vertices;
+}
+
+G1Basis build_g1_basis(const QuadMesh& mesh, const std::vector<EdgeGluing>& gluing, int k) {
+  if (k < 3) throw IncompleteBasis("G1 basis needs degree >= 3");
+  G1Basis basis;
+  basis.degree = k;
+  std::vector<std::vector<FaceCoefficient>> functions;
+  auto add = [&](std::vector<FaceCoefficient> f, G1FunctionInfo info) {
+    functions.push_back(std::move(f));
+    basis.info.push_back(info);
+  };
+  const std::string where = mesh.name() + ", degree " + std::to_string(k) + ": ";
+
+  // Edge rows once per interior edge (shared by the edge and both vertex problems).
+  std::vector<std::vector<std::vector<FaceCoefficient>>> rows(mesh.num_edges());
+  for (int e = 0; e < mesh.num_edges(); ++e)
+    if (!mesh.edge(e).boundary()) rows[e] = edge_constraint_rows(mesh, gluing[e], k);
+
+  // Edge functions; their counts are needed by the vertex check.
+  std::vector<int> edge_count(mesh.num_edges(), 0);
+  for (int e = 0; e < mesh.num_edges(); ++e) {
+    const MeshEdge& me = mesh.edge(e);
+    Unknowns u(k);
+    std::vector<std::pair<int, int>> items;
+    add_edge_rows(k, me.first.face, me.first.local_edge, 2, k - 2, items);
+    if (me.boundary()) {
+      for (const auto& [f, i] : items) add({{f, i, 1.0}}, {G1Entity::edge, e});
+      edge_count[e] = static_cast<int>(items.size());
+      continue;
+    }
+    add_edge_rows(k, me.second.face, me.second.local_edge, 2, k - 2, items);
+    u.add(items);
+    const Eigen::MatrixXd n = null_space(restrict_rows(rows[e], u), u.size());
+    const int expected = syzygy_dimension(gluing[e], k) - 9 + (gluing[e].crossing_x ? 1 : 0) + (gluing[e].crossing_y ? 1 : 0);
+    if (n.cols() != expected)
+      throw IncompleteBasis(where + "edge " + std::to_string(e) + " has " + std::to_string(n.cols()) +
+                            " local functions, expected " + std::to_string(expected));
+    edge_count[e] = static_cast<int>(n.cols());
+    for (int j = 0; j < n.cols(); ++j) add(to_function(n.col(j), u, true), {G1Entity::edge, e});
+  }
+
+  // Vertex functions.
+  for (int v = 0; v < mesh.num_vertices(); ++v) {
+    const VertexFan& fan = mesh.fan(v);
+    const int nf = static_cast<int>(fan.face.size());
+    if (nf == 0) continue;
+    Unknowns u(k);
+    std::vector<std::pair<int, int>> items, corner;
+    for (int i = 0; i < nf; ++i) {
+      const int f = fan.face[i], c = fan.corner[i];
+      add_edge_rows(k, f, c, 0, k - 2, items);          // along edge c, without corner c+1
+      add_edge_rows(k, f, (c + 3) % 4, 2, k, items);    // along edge c-1, without corner c-1
+      for (int idx : corner_coefficients(k, c)) corner.push_back({f, idx});
+    }
+    u.add(items);
+    std::vector<std::vector<FaceCoefficient>> vrows;
+    int edge_functions = 0;
+    for (int e : fan.edge) {
+      edge_functions += edge_count[e];
+      if (!mesh.edge(e).boundary()) vrows.insert(vrows.end(), rows[e].begin(), rows[e].end());
+    }
+    const Eigen::MatrixXd n = null_space(restrict_rows(vrows, u), u.size());
+    // Corner data (Taylor map T_γ) of the null space.
+    Eigen::MatrixXd w(static_cast<Eigen::Index>(corner.size()), n.cols());
+    for (size_t r = 0; r < corner.size(); ++r) w.row(static_cast<Eigen::Index>(r)) = n.row(u.find(corner[r].first, corner[r].second));
+    Eigen::JacobiSVD<Eigen::MatrixXd> svd(w, Eigen::ComputeThinU | Eigen::ComputeThinV);
+    const Eigen::VectorXd& s = svd.singularValues();
+    int rank = 0;
+    for (int i = 0; i < s.size(); ++i)
+      if (s[i] > 1e-8 * s[0]) ++rank;
+    const int expected = vertex_function_count(mesh, gluing, v);
+    if (rank != expected || n.cols() != rank + edge_functions)
+      throw IncompleteBasis(where + "vertex " + std::to_string(v) + " has " + std::to_string(rank) +
+                            " independent corner data and " + std::to_string(n.cols()) +
+                            " local functions; expected " + std::to_string(expected) + " and " +
+                            std::to_string(expected + edge_functions));
+    const Eigen::MatrixXd ur = svd.matrixU().leftCols(rank);
+    // Minimum-norm solution of T_γ x = h: orthogonal to the edge functions inside the null space.
+    auto solve = [&](const Eigen::VectorXd& h) -> Eigen::VectorXd {
+      const Eigen::VectorXd y = (ur.transpose() * h).cwiseQuotient(s.head(rank));
+      return n * (svd.matrixV().leftCols(rank) * y);
+    };
+    const Eigen::VectorXd ones = Eigen::VectorXd::Ones(static_cast<Eigen::Index>(corner.size()));
+    if ((ur * (ur.transpose() * ones) - ones).norm() > 1e-8 * ones.norm())
+      throw IncompleteBasis(where + "vertex " + std::to_string(v) + ": constants are not locally representable");
+    // Positions in the corner data of the trace (row 0) and next-row (row 1) coefficients along
+    // the boundary edges at a boundary vertex.
+    std::vector<int> trace_rows, normal_rows;
+    if (fan.boundary) {
+      auto position = [&](int f, int idx) {
+        for (size_t r = 0; r < corner.size(); ++r)
+          if (corner[r].first == f && corner[r].second == idx) return static_cast<int>(r);
+        return -1;
+      };
+      const int f0 = fan.face.front(), c0 = fan.corner.front();
+      const int fl = fan.face.back(), cl = fan.corner.back();
+      for (int m = 0; m <= 1; ++m) {
+        trace_rows.push_back(position(f0, edge_coefficient(k, c0, m, 0)));
+        normal_rows.push_back(position(f0, edge_coefficient(k, c0, m, 1)));
+        trace_rows.push_back(position(fl, edge_coefficient(k, cl + 3, k - m, 0)));
+        normal_rows.push_back(position(fl, edge_coefficient(k, cl + 3, k - m, 1)));
+      }
+    }
+    const Eigen::MatrixXd targets = vertex_targets(ur, ur.transpose() * ones, trace_rows, normal_rows);
+    add(to_function(solve(ones), u, false), {G1Entity::vertex, v, true});
+    for (int j = 1; j < rank; ++j) add(to_function(solve(ur * targets.col(j)), u, true), {G1Entity::vertex, v});
+  }
+
+  // Face functions: interior Bernstein coefficients.
+  for (int f = 0; f < mesh.num_faces(); ++f)
+    for (int j = 2; j <= k - 2; ++j)
+      for (int i = 2; i <= k - 2; ++i) add({{f, i + j * (k + 1), 1.0}}, {G1Entity::face, f});
+
+  // Per-face extraction.
+  const int nb = (k + 1) * (k + 1);
+  basis.face_dofs.assign(mesh.num_faces(), {});
+  for (int g = 0; g < static_cast<int>(functions.size()); ++g)
+    for (const FaceCoefficient& c : functions[g])
+      if (basis.face_dofs[c.face].empty() || basis.face_dofs[c.face].back() != g) basis.face_dofs[c.face].push_back(g);
+  basis.extraction.resize(mesh.num_faces());
+  std::vector<std::vector<Eigen::Triplet<double>>> triplets(mesh.num_faces());
+  for (int g = 0; g < static_cast<int>(functions.size()); ++g)
+    for (const FaceCoefficient& c : functions[g]) {
+      const std::vector<int>& d = basis.face_dofs[c.face];
+      const int col = static_cast<int>(std::lower_bound(d.begin(), d.end(), g) - d.begin());
+      triplets[c.face].push_back({c.index, col, c.value});
+    }
+  for (int f = 0; f < mesh.num_faces(); ++f) {
+    basis.extraction[f].resize(nb, static_cast<Eigen::Index>(basis.face_dofs[f].size()));
+    basis.extraction[f].setFromTriplets(triplets[f].begin(), triplets[f].end());
+  }
+  return basis;
+}
+
+}  // namespace iga

@@ -1,0 +1,65 @@
+#pragma once
+/// @file
+/// The local-nullspace basis of S¹_k (notes §4.5) on a QuadMesh with geometry-derived gluing data:
+/// face functions (interior Bernstein coefficients), edge functions (null space of the edge's C0 and
+/// G1 rows on rows 0–1 along the edge minus the corner sets), vertex functions (null space of the
+/// rows of the vertex's edges on rows 0–1 along its edges minus the other corners, reduced to a
+/// complement of the edge functions with independent corner data: a value function with all
+/// corner coefficients 1, the others with corner data orthogonal to it).
+///
+/// Every construction step is a small dense problem per entity: work linear in the number of faces.
+
+#include <Eigen/Core>
+#include <Eigen/SparseCore>
+#include <vector>
+
+#include "spaces/g1/gluing_data.hpp"
+#include "spaces/g1/quad_mesh.hpp"
+
+namespace iga {
+
+/// One coefficient of a global function: local Bernstein index `index` of face `face`.
+struct FaceCoefficient {
+  int face;
+  int index;
+  double value;
+};
+
+/// Sparse rows of the C0 and G1 conditions of interior edge `edge` (notes §1.4/§1.5): k+1 trace
+/// equalities and k+3 collocations of c ∂_{X→Z1} f1 − a ∂_{X→Y} f1 − b ∂_{X→Z2} f2 (a polynomial of
+/// degree k+2, so exact), each row scaled to max-norm 1.
+std::vector<std::vector<FaceCoefficient>> edge_constraint_rows(const QuadMesh& mesh, const EdgeGluing& gluing, int k);
+
+enum class G1Entity { vertex, edge, face };
+
+struct G1FunctionInfo {
+  G1Entity entity;
+  int id;                       ///< vertex, edge or face index
+  bool value_function = false;  ///< the vertex function with all corner coefficients 1
+};
+
+/// The basis: global functions as Bernstein coefficients per face.
+struct G1Basis {
+  int degree = 0;
+  std::vector<G1FunctionInfo> info;                      ///< per global function
+  std::vector<std::vector<int>> face_dofs;               ///< per face: sorted active global functions
+  std::vector<Eigen::SparseMatrix<double>> extraction;   ///< per face: (k+1)^2 x face_dofs.size()
+  int dimension() const { return static_cast<int>(info.size()); }
+};
+
+/// Thrown when a local problem has fewer functions than the theory predicts (k below the
+/// separability degree of some edge, notes §2.5 and §4.5).
+struct IncompleteBasis : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+/// Build the basis of degree k >= 3. Throws IncompleteBasis when a local count disagrees.
+G1Basis build_g1_basis(const QuadMesh& mesh, const std::vector<EdgeGluing>& gluing, int k);
+
+/// dim H(γ) of Prop. 5.1: 3 + F − Σ c_τ(γ) + c₊(γ) (number of vertex functions at v).
+int vertex_function_count(const QuadMesh& mesh, const std::vector<EdgeGluing>& gluing, int v);
+
+/// Theorem 6.3: the dimension of S¹_k for k >= s*, from d_τ(k) of every edge.
+int theorem_dimension(const QuadMesh& mesh, const std::vector<EdgeGluing>& gluing, int k);
+
+}  // namespace iga

@@ -1,0 +1,137 @@
+#include "spaces/g1/g1_space.hpp"
+
+#include <algorithm>
+
+#include "solver/errors.hpp"
+#include "spaces/bspline/bspline_basis_1d.hpp"
+#include "spaces/push_forward.hpp"
+
+namespace iga {
+
+// Evaluator: tensor Bernstein tables per rule, then per element extraction^T * tables + push-forward.
+class G1Space::G1Evaluator final : public Space::Evaluator {
+ public:
+  explicit G1Evaluator(const G1Space& space) : space_(space) {}
+  void evaluate(int element, const QuadratureRule& rule, unsigned flags, PointValues& out) override;
+
+ private:
+  /// (k+1)^2 x q tables of value, d/du, d/dv, d2/du2, d2/dudv, d2/dv2.
+  struct Tables {
+    std::vector<Point2> points;
+    Eigen::MatrixXd t[6];
+  };
+  const Tables& tables(const QuadratureRule& rule);
+
+  const G1Space& space_;
+  std::map<const QuadratureRule*, Tables> cache_;
+  ReferenceDerivatives ref_;
+  std::vector<GeometryJet> jets_;
+};
+
+const G1Space::G1Evaluator::Tables& G1Space::G1Evaluator::tables(const QuadratureRule& rule) {
+  auto it = cache_.find(&rule);
+  if (it != cache_.end() && it->second.points == rule.points) return it->second;
+  if (it == cache_.end() && cache_.size() >= 64) cache_.clear();
+  Tables& t = cache_[&rule];
+  t.points = rule.points;
+  const int k = space_.degree(), nb = (k + 1) * (k + 1), q = rule.size();
+  for (auto& m : t.t) m.resize(nb, q);
+  for (int p = 0; p < q; ++p) {
+    const Eigen::MatrixXd bu = bernstein_derivatives(k, rule.points[p].x(), 2);
+    const Eigen::MatrixXd bv = bernstein_derivatives(k, rule.points[p].y(), 2);
+    for (int j = 0; j <= k; ++j)
+      for (int i = 0; i <= k; ++i) {
+        const int id = i + j * (k + 1);
+        t.t[0](id, p) = bu(0, i) * bv(0, j);
+        t.t[1](id, p) = bu(1, i) * bv(0, j);
+        t.t[2](id, p) = bu(0, i) * bv(1, j);
+        t.t[3](id, p) = bu(2, i) * bv(0, j);
+        t.t[4](id, p) = bu(1, i) * bv(1, j);
+        t.t[5](id, p) = bu(0, i) * bv(2, j);
+      }
+  }
+  return t;
+}
+
+void G1Space::G1Evaluator::evaluate(int element, const QuadratureRule& rule, unsigned flags, PointValues& out) {
+  const Tables& t = tables(rule);
+  const Eigen::SparseMatrix<double>& c = space_.basis_.extraction[element];
+  const bool grads = (flags & (update_gradients | update_hessians)) != 0;
+  const bool hess = (flags & update_hessians) != 0;
+  if (flags & update_values) ref_.value = c.transpose() * t.t[0];
+  if (grads) {
+    ref_.dxi = c.transpose() * t.t[1];
+    ref_.deta = c.transpose() * t.t[2];
+  }
+  if (hess) {
+    ref_.dxixi = c.transpose() * t.t[3];
+    ref_.dxieta = c.transpose() * t.t[4];
+    ref_.detaeta = c.transpose() * t.t[5];
+  }
+  out.dofs = space_.basis_.face_dofs[element];
+  jets_.resize(rule.size());
+  for (int p = 0; p < rule.size(); ++p) jets_[p] = space_.mesh_->map(element, rule.points[p]);
+  push_forward(jets_, ref_, flags, out);
+}
+
+G1Space::G1Space(std::shared_ptr<const QuadMesh> mesh, int k) : mesh_(std::move(mesh)) {
+  gluing_ = gluing_from_geometry(*mesh_);
+  try {
+    basis_ = build_g1_basis(*mesh_, gluing_, k);
+  } catch (const IncompleteBasis& e) {
+    // Find the smallest degree for which the local construction is complete (separability, §2.5).
+    int works = -1;
+    for (int trial = std::max(k + 1, 3); trial <= 10 && works < 0; ++trial) {
+      try {
+        build_g1_basis(*mesh_, gluing_, trial);
+        works = trial;
+      } catch (const IncompleteBasis&) {
+      }
+    }
+    throw InputError("G1 space of degree " + std::to_string(k) + " on '" + mesh_->name() +
+                     "': degree below the separability degree of this mesh (" + e.what() + "); use degree >= " +
+                     (works > 0 ? std::to_string(works) : std::string("11")));
+  }
+  affine_ = true;
+  for (int f = 0; f < mesh_->num_faces(); ++f) {
+    mesh_size_ = std::max(mesh_size_, mesh_->diameter(f));
+    affine_ = affine_ && mesh_->is_parallelogram(f);
+  }
+}
+
+std::unique_ptr<Space::Evaluator> G1Space::make_evaluator() const { return std::make_unique<G1Evaluator>(*this); }
+
+std::vector<std::pair<std::string, std::string>> G1Space::parameters() const {
+  return {{"degree", std::to_string(basis_.degree)},
+          {"patches", std::to_string(mesh_->num_faces())},
+          {"domain", mesh_->name()}};
+}
+
+RulePtr G1Space::quadrature(int, int degree) const {
+  degree = std::max(degree, 0);
+  std::lock_guard<std::mutex> lock(rule_mutex_);
+  RulePtr& r = cell_rules_[degree];
+  if (!r) r = std::make_shared<const QuadratureRule>(tensor_gauss(degree));
+  return r;
+}
+
+RulePtr G1Space::edge_quadrature(int, int edge, int degree) const {
+  degree = std::max(degree, 0);
+  std::lock_guard<std::mutex> lock(rule_mutex_);
+  RulePtr& r = edge_rules_[{edge, degree}];
+  if (!r)
+    r = std::make_shared<const QuadratureRule>(
+        edge_rule(CellShape::quadrilateral, edge, gauss_legendre_for_degree(degree)));
+  return r;
+}
+
+std::vector<BoundaryEdge> G1Space::boundary_edges(const std::string& name) const {
+  if (name != "all")
+    throw InputError("unknown boundary '" + name + "' of a multipatch G1 space (valid: all)");
+  std::vector<BoundaryEdge> out;
+  for (int e = 0; e < mesh_->num_edges(); ++e)
+    if (mesh_->edge(e).boundary()) out.push_back({mesh_->edge(e).first.face, mesh_->edge(e).first.local_edge});
+  return out;
+}
+
+}  // namespace iga

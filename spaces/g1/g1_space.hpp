@@ -1,0 +1,66 @@
+#pragma once
+/// @file
+/// G1Space: the C1 space S¹_k(M) ∘ G⁻¹ on a planar multipatch mesh of bilinear quads (notes §7,
+/// route A: gluing data derived from the geometry). One polynomial of bidegree (k,k) per face,
+/// C1 across all interior edges; the basis is the local-nullspace basis of g1_basis.hpp, stored as
+/// a sparse extraction onto each face's Bernstein basis.
+///
+/// Elements are the mesh faces, with the reference square and the face's bilinear map; the active
+/// functions of an element are G1Basis::face_dofs in that order.
+
+#include <map>
+#include <memory>
+#include <mutex>
+
+#include "spaces/g1/g1_basis.hpp"
+#include "spaces/g1/gluing_data.hpp"
+#include "spaces/g1/quad_mesh.hpp"
+#include "spaces/space.hpp"
+
+namespace iga {
+
+class G1Space final : public Space {
+ public:
+  /// Build on `mesh` with degree k. Throws InputError when k is below the degree the local
+  /// construction needs on this mesh (the message names the smallest degree that works).
+  G1Space(std::shared_ptr<const QuadMesh> mesh, int k);
+
+  std::unique_ptr<Evaluator> make_evaluator() const override;
+  std::string type() const override { return "g1"; }
+  /// degree, patches (faces), domain.
+  std::vector<std::pair<std::string, std::string>> parameters() const override;
+
+  int dimension() const override { return basis_.dimension(); }
+  void element_dofs(int element, std::vector<int>& out) const override { out = basis_.face_dofs[element]; }
+  int num_elements() const override { return mesh_->num_faces(); }
+  CellShape cell_shape(int) const override { return CellShape::quadrilateral; }
+  double mesh_size() const override { return mesh_size_; }
+  int degree() const override { return basis_.degree; }
+  bool affine_elements() const override { return affine_; }
+
+  RulePtr quadrature(int element, int degree) const override;
+  RulePtr edge_quadrature(int element, int edge, int degree) const override;
+
+  /// Only "all" (every boundary edge); named parts are not defined on these meshes.
+  std::vector<std::string> boundary_names() const override { return {}; }
+  std::vector<BoundaryEdge> boundary_edges(const std::string& name) const override;
+
+  const QuadMesh& mesh() const { return *mesh_; }
+  const std::vector<EdgeGluing>& gluing() const { return gluing_; }
+  const G1Basis& basis() const { return basis_; }
+
+ private:
+  class G1Evaluator;
+
+  std::shared_ptr<const QuadMesh> mesh_;
+  std::vector<EdgeGluing> gluing_;
+  G1Basis basis_;
+  double mesh_size_ = 0.0;
+  bool affine_ = false;
+
+  mutable std::mutex rule_mutex_;
+  mutable std::map<int, RulePtr> cell_rules_;
+  mutable std::map<std::pair<int, int>, RulePtr> edge_rules_;
+};
+
+}  // namespace iga

@@ -1,0 +1,183 @@
+#include "spaces/g1/quad_mesh.hpp"
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <sstream>
+
+#include "solver/errors.hpp"
+
+namespace iga {
+
+Point2 reference_corner(int c) {
+  static const Point2 corners[4] = {{0.0, 0.0}, {1.0, 0.0}, {1.0, 1.0}, {0.0, 1.0}};
+  return corners[((c % 4) + 4) % 4];
+}
+
+namespace {
+
+std::string patch_name(const std::string& mesh, int f) {
+  return mesh + ": patch " + std::to_string(f);
+}
+
+}  // namespace
+
+QuadMesh::QuadMesh(std::vector<Point2> vertices, std::vector<std::array<int, 4>> faces, std::string name)
+    : vertices_(std::move(vertices)), faces_(std::move(faces)), name_(std::move(name)) {
+  if (faces_.empty()) throw InputError(name_ + ": a multipatch mesh needs at least one patch");
+  for (int f = 0; f < num_faces(); ++f) {
+    const auto& q = faces_[f];
+    for (int c = 0; c < 4; ++c) {
+      if (q[c] < 0 || q[c] >= num_vertices())
+        throw InputError(patch_name(name_, f) + " refers to vertex " + std::to_string(q[c]) + " of " +
+                         std::to_string(num_vertices()));
+      for (int d = 0; d < c; ++d)
+        if (q[c] == q[d]) throw InputError(patch_name(name_, f) + " repeats a corner vertex");
+    }
+    // det DG of a bilinear map is affine in u and in v: positive at the corners <=> positive inside.
+    const double scale = std::max(diameter(f), 1e-300);
+    int positive = 0, negative = 0;
+    for (int c = 0; c < 4; ++c) {
+      const double det = map(f, reference_corner(c)).jacobian.determinant();
+      if (det > 1e-12 * scale * scale) ++positive;
+      else if (det < -1e-12 * scale * scale) ++negative;
+    }
+    if (negative == 4) throw InputError(patch_name(name_, f) + " is inverted (corners listed clockwise)");
+    if (positive != 4)
+      throw InputError(patch_name(name_, f) +
+                       " is folded or degenerate (det DG changes sign or vanishes at a corner: not strictly convex)");
+  }
+  build_topology();
+  build_fans();
+}
+
+void QuadMesh::build_topology() {
+  // Key: unordered vertex pair. Value: the face sides using it.
+  std::map<std::pair<int, int>, std::vector<FaceEdge>> uses;
+  for (int f = 0; f < num_faces(); ++f)
+    for (int e = 0; e < 4; ++e) {
+      const int a = faces_[f][e], b = faces_[f][(e + 1) % 4];
+      uses[{std::min(a, b), std::max(a, b)}].push_back({f, e});
+    }
+  face_edges_.assign(num_faces(), {-1, -1, -1, -1});
+  for (const auto& [key, list] : uses) {
+    if (list.size() > 2) {
+      std::ostringstream s;
+      s << name_ << ": non-manifold edge between vertices " << key.first << " and " << key.second
+        << " is shared by patches";
+      for (const FaceEdge& fe : list) s << ' ' << fe.face;
+      throw InputError(s.str());
+    }
+    MeshEdge edge;
+    edge.first = list[0];
+    edge.x = faces_[list[0].face][list[0].local_edge];
+    edge.y = faces_[list[0].face][(list[0].local_edge + 1) % 4];
+    if (list.size() == 2) {
+      edge.second = list[1];
+      const int x2 = faces_[list[1].face][list[1].local_edge];
+      if (x2 == edge.x)
+        throw InputError(patch_name(name_, list[1].face) + " and patch " + std::to_string(list[0].face) +
+                         " traverse their shared edge in the same direction (inconsistent orientation)");
+    }
+    const int id = num_edges();
+    edges_.push_back(edge);
+    for (const FaceEdge& fe : list) face_edges_[fe.face][fe.local_edge] = id;
+  }
+}
+
+void QuadMesh::build_fans() {
+  // Faces at each vertex, then walk counterclockwise: from face i at corner c the next face is the
+  // neighbour across local edge c-1 (the edge from the vertex to corner c-1).
+  std::vector<std::vector<std::pair<int, int>>> at(num_vertices());
+  for (int f = 0; f < num_faces(); ++f)
+    for (int c = 0; c < 4; ++c) at[faces_[f][c]].push_back({f, c});
+  fans_.assign(num_vertices(), VertexFan{});
+  auto other_side = [&](int edge_id, int face) -> FaceEdge {
+    const MeshEdge& e = edges_[edge_id];
+    if (e.boundary()) return {};
+    return e.first.face == face ? e.second : e.first;
+  };
+  for (int v = 0; v < num_vertices(); ++v) {
+    if (at[v].empty()) continue;
+    // Start at a face whose u-axis edge (local edge c) is a boundary edge, if any.
+    std::pair<int, int> start = at[v][0];
+    bool boundary = false;
+    for (const auto& [f, c] : at[v])
+      if (edges_[face_edges_[f][c]].boundary()) {
+        start = {f, c};
+        boundary = true;
+      }
+    VertexFan& fan = fans_[v];
+    fan.boundary = boundary;
+    auto [f, c] = start;
+    for (size_t step = 0; step <= at[v].size(); ++step) {
+      fan.face.push_back(f);
+      fan.corner.push_back(c);
+      fan.edge.push_back(face_edges_[f][c]);
+      const int next_edge = face_edges_[f][(c + 3) % 4];
+      const FaceEdge n = other_side(next_edge, f);
+      if (n.face < 0) {
+        fan.edge.push_back(next_edge);
+        break;
+      }
+      // In the neighbour the shared edge runs from corner(c-1) to the vertex, i.e. it starts at v.
+      f = n.face;
+      c = n.local_edge;
+      if (f == start.first && c == start.second) break;
+    }
+    if (fan.face.size() != at[v].size())
+      throw InputError(name_ + ": the patches at vertex " + std::to_string(v) +
+                       " do not form a single fan (non-manifold vertex), e.g. patch " + std::to_string(at[v][0].first));
+  }
+}
+
+GeometryJet QuadMesh::map(int f, const Point2& uv) const {
+  const auto& q = faces_[f];
+  const Point2 &p0 = vertices_[q[0]], &p1 = vertices_[q[1]], &p2 = vertices_[q[2]], &p3 = vertices_[q[3]];
+  const double u = uv.x(), v = uv.y();
+  GeometryJet g;
+  g.x = (1 - u) * (1 - v) * p0 + u * (1 - v) * p1 + u * v * p2 + (1 - u) * v * p3;
+  g.jacobian.col(0) = (1 - v) * (p1 - p0) + v * (p2 - p3);
+  g.jacobian.col(1) = (1 - u) * (p3 - p0) + u * (p2 - p1);
+  const Point2 twist = p0 - p1 + p2 - p3;  // d^2 G / du dv; the pure second derivatives vanish
+  g.hessian_x << 0.0, twist.x(), twist.x(), 0.0;
+  g.hessian_y << 0.0, twist.y(), twist.y(), 0.0;
+  return g;
+}
+
+double QuadMesh::diameter(int f) const {
+  double h = 0.0;
+  for (int a = 0; a < 4; ++a)
+    for (int b = a + 1; b < 4; ++b) h = std::max(h, (vertices_[faces_[f][a]] - vertices_[faces_[f][b]]).norm());
+  return h;
+}
+
+bool QuadMesh::is_parallelogram(int f) const {
+  const auto& q = faces_[f];
+  const Point2 twist = vertices_[q[0]] - vertices_[q[1]] + vertices_[q[2]] - vertices_[q[3]];
+  return twist.norm() <= 1e-14 * diameter(f);
+}
+
+QuadMesh QuadMesh::refined() const {
+  std::vector<Point2> v = vertices_;
+  std::vector<int> mid(num_edges(), -1);
+  for (int e = 0; e < num_edges(); ++e) {
+    mid[e] = static_cast<int>(v.size());
+    v.push_back(0.5 * (vertices_[edges_[e].x] + vertices_[edges_[e].y]));
+  }
+  std::vector<std::array<int, 4>> faces;
+  faces.reserve(4 * faces_.size());
+  for (int f = 0; f < num_faces(); ++f) {
+    const int centre = static_cast<int>(v.size());
+    v.push_back(map(f, Point2(0.5, 0.5)).x);
+    const auto& q = faces_[f];
+    int m[4];
+    for (int e = 0; e < 4; ++e) m[e] = mid[face_edges_[f][e]];
+    // Child c keeps corner c: (corner c, mid of edge c, centre, mid of edge c-1), counterclockwise.
+    for (int c = 0; c < 4; ++c) faces.push_back({q[c], m[c], centre, m[(c + 3) % 4]});
+  }
+  return QuadMesh(std::move(v), std::move(faces), name_);
+}
+
+}  // namespace iga

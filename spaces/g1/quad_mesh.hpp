@@ -1,0 +1,87 @@
+#pragma once
+/// @file
+/// QuadMesh: a planar multipatch mesh of bilinear quadrilaterals with its topology (shared edges,
+/// orientation, vertex fans, boundary) and validation. The geometry of every face is the bilinear
+/// map of its four corners; refinement splits each face into four with the same map.
+///
+/// Conventions: a face lists its corners counterclockwise; corner c maps to the reference corner
+/// (0,0),(1,0),(1,1),(0,1) for c = 0..3; local edge e runs from corner e to corner e+1 (mod 4), as
+/// in reference_edge_point.
+
+#include <array>
+#include <string>
+#include <vector>
+
+#include "spaces/push_forward.hpp"
+
+namespace iga {
+
+/// One side of a face: face index and local edge 0..3.
+struct FaceEdge {
+  int face = -1;
+  int local_edge = -1;
+};
+
+/// A mesh edge. For an interior edge, `first` traverses X -> Y counterclockwise and `second`
+/// traverses Y -> X; a boundary edge has only `first` (second.face == -1).
+struct MeshEdge {
+  int x = -1, y = -1;  ///< end vertices (X, Y) in the direction of `first`
+  FaceEdge first, second;
+  bool boundary() const { return second.face < 0; }
+};
+
+/// The faces around a vertex in counterclockwise order. Face i meets the vertex at corner
+/// corner[i]; edge[i] is the edge from the vertex along local edge corner[i] of face i (the
+/// "u-axis" τ_i of §1.8 of the notes) and edge[faces] the last edge of a boundary fan.
+struct VertexFan {
+  std::vector<int> face, corner;
+  std::vector<int> edge;  ///< F edges (interior vertex) or F+1 edges (boundary vertex)
+  bool boundary = false;
+  int valence() const { return static_cast<int>(edge.size()); }
+};
+
+class QuadMesh {
+ public:
+  /// Build and validate. `name` is used in messages. Throws InputError for an inverted or folded
+  /// face (det DG <= 0 at a corner), a repeated corner, an edge shared by more than two faces
+  /// (non-manifold), an edge traversed in the same direction by two faces (inconsistent
+  /// orientation) and a vertex whose faces do not form one fan; the message names the patch.
+  QuadMesh(std::vector<Point2> vertices, std::vector<std::array<int, 4>> faces, std::string name);
+
+  /// Each face split into four (edge midpoints and centre of the bilinear map); same geometry.
+  QuadMesh refined() const;
+
+  const std::string& name() const { return name_; }
+  int num_vertices() const { return static_cast<int>(vertices_.size()); }
+  int num_faces() const { return static_cast<int>(faces_.size()); }
+  int num_edges() const { return static_cast<int>(edges_.size()); }
+  const Point2& vertex(int v) const { return vertices_[v]; }
+  const std::array<int, 4>& face(int f) const { return faces_[f]; }
+  const MeshEdge& edge(int e) const { return edges_[e]; }
+  /// Mesh edge of local edge `local_edge` of face f.
+  int face_edge(int f, int local_edge) const { return face_edges_[f][local_edge]; }
+  const VertexFan& fan(int v) const { return fans_[v]; }
+
+  /// Bilinear map of face f at reference point (u,v), with first and second derivatives.
+  GeometryJet map(int f, const Point2& uv) const;
+  /// Largest corner-to-corner distance of a face (its diameter: bilinear faces have straight edges).
+  double diameter(int f) const;
+  /// True when face f is a parallelogram (affine map).
+  bool is_parallelogram(int f) const;
+
+ private:
+  void build_topology();
+  void build_fans();
+
+  std::vector<Point2> vertices_;
+  std::vector<std::array<int, 4>> faces_;
+  std::string name_;
+  std::vector<MeshEdge> edges_;
+  std::vector<std::array<int, 4>> face_edges_;
+  std::vector<VertexFan> fans_;
+};
+
+/// Reference coordinates of corner c (0..3) of the unit square.
+Point2 reference_corner(int c);
+
+}  // namespace iga
