@@ -1,14 +1,16 @@
 #include "spaces/space_factory.hpp"
 
 #include "spaces/bspline/bspline_from_config.hpp"
+#include "spaces/ws4/ws4_from_config.hpp"
 
 namespace iga {
 
-std::vector<std::string> space_types() { return {"bspline"}; }
+std::vector<std::string> space_types() { return {"bspline", "ws4"}; }
 
 SpacePtr make_space(const ConfigNode& domain, const ConfigNode& space, int level) {
   const std::string type = space["type"].as_choice(space_types());
   if (type == "bspline") return make_bspline_space(domain, space, level);
+  if (type == "ws4") return make_ws4_space(domain, space, level);
   space["type"].fail("unsupported space type '" + type + "'");
 }
 
