@@ -7,6 +7,7 @@
 #include "solver/errors.hpp"
 #include "spaces/push_forward.hpp"
 #include "spaces/ws4/ws4_basis.hpp"
+#include "spaces/ws4/ws4_reference_matrices.hpp"
 
 namespace iga::ws4 {
 
@@ -195,6 +196,12 @@ Eigen::VectorXd Ws4Space::interpolate(const Jet3& f) const {
     for (int k = 0; k < dofs_per_triangle; ++k) u(tri0 + dofs_per_triangle * t + k) = f(p0 + j * kInteriorPoint[k])[0];
   }
   return u;
+}
+
+bool Ws4Space::closed_form_element_matrix(int element, BilinearForm form, Eigen::MatrixXd& local) const {
+  const Eigen::MatrixXd& c = extraction_[element];
+  local.noalias() = c.transpose() * ws4_form_matrix(form, jacobian(element)) * c;
+  return true;
 }
 
 RulePtr Ws4Space::quadrature(int, int degree) const {

@@ -52,6 +52,9 @@ class Ws4Space final : public Space {
   /// Gauss rule on each quarter of the edge (the pieces of the split along it).
   RulePtr edge_quadrature(int element, int edge, int degree) const override;
 
+  /// C_Kᵀ K_B C_K with K_B from the universal reference matrices (ws4_reference_matrices.hpp).
+  bool closed_form_element_matrix(int element, BilinearForm form, Eigen::MatrixXd& local) const override;
+
   std::vector<std::string> boundary_names() const override { return mesh_.part_names(); }
   /// Throws InputError for an unknown name.
   std::vector<BoundaryEdge> boundary_edges(const std::string& name) const override;
