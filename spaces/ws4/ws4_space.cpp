@@ -23,6 +23,24 @@ const int kEdgeOrder[6] = {1, 2, 2, 3, 3, 3};
 const int kVertexDx[10] = {0, 1, 0, 2, 1, 0, 3, 2, 1, 0};
 const int kVertexDy[10] = {0, 0, 1, 0, 1, 2, 0, 1, 2, 3};
 
+/// D_{v_1} ... D_{v_k} f from the Cartesian derivatives of f (order <= 3, vertex-DOF order).
+double directional_from_jet(const std::array<double, 10>& d, const std::vector<Point2>& dirs) {
+  static const int index_of[4][4] = {{0, 2, 5, 9}, {1, 4, 8, -1}, {3, 7, -1, -1}, {6, -1, -1, -1}};  // [nx][ny]
+  const int k = static_cast<int>(dirs.size());
+  double sum = 0.0;
+  for (int choice = 0; choice < (1 << k); ++choice) {  // bit m set: direction m contributes its y part
+    double w = 1.0;
+    int nx = 0, ny = 0;
+    for (int m = 0; m < k; ++m) {
+      const bool y = (choice >> m) & 1;
+      w *= y ? dirs[m].y() : dirs[m].x();
+      (y ? ny : nx)++;
+    }
+    sum += w * d[index_of[nx][ny]];
+  }
+  return sum;
+}
+
 }  // namespace
 
 // ---------------------------------------------------------------------------------------------
@@ -90,9 +108,31 @@ Ws4Space::Ws4Space(Triangulation mesh, std::string description)
       mesh_size_ = std::max(mesh_size_, (mesh_.vertices()[e[0]] - mesh_.vertices()[e[1]]).norm());
     }
   h_ = mesh_size_;
+  compute_vertex_frames();
   extraction_.resize(mesh_.num_triangles());
 #pragma omp parallel for schedule(static)
   for (int t = 0; t < mesh_.num_triangles(); ++t) extraction_[t] = element_functionals(t).partialPivLu().inverse();
+}
+
+void Ws4Space::compute_vertex_frames() {
+  vertex_frame_.assign(mesh_.num_vertices(), Eigen::Matrix2d::Identity());
+  // Unit directions of the boundary edges leaving each boundary vertex.
+  std::vector<std::vector<Point2>> out(mesh_.num_vertices());
+  const auto& x = mesh_.vertices();
+  for (int e = 0; e < mesh_.num_edges(); ++e) {
+    if (!mesh_.is_boundary_edge(e)) continue;
+    const int a = mesh_.edge(e)[0], b = mesh_.edge(e)[1];
+    out[a].push_back((x[b] - x[a]).normalized());
+    out[b].push_back((x[a] - x[b]).normalized());
+  }
+  for (int v = 0; v < mesh_.num_vertices(); ++v) {
+    if (out[v].empty()) continue;
+    const Point2 t1 = out[v][0];
+    Point2 t2(-t1.y(), t1.x());  // straight boundary (or a non-manifold vertex): tangent and normal
+    if (out[v].size() == 2 && std::abs(t1.x() * out[v][1].y() - t1.y() * out[v][1].x()) > 1e-8) t2 = out[v][1];
+    vertex_frame_[v].col(0) = t1;
+    vertex_frame_[v].col(1) = t2;
+  }
 }
 
 std::unique_ptr<Space::Evaluator> Ws4Space::make_evaluator() const { return std::make_unique<Ws4Evaluator>(*this); }
@@ -135,7 +175,6 @@ Eigen::MatrixXd Ws4Space::element_functionals(int element) const {
   const Ws4Basis& basis = Ws4Basis::reference();
   const Eigen::Matrix2d jinv = jacobian(element).inverse();
   // A physical direction d differentiates the reference pieces along J^{-1} d.
-  const Point2 wx = jinv.col(0), wy = jinv.col(1);
   Eigen::MatrixXd g(dofs_per_element, dofs_per_element);
   double row[Ws4Basis::size];
   int m = 0;
@@ -145,13 +184,16 @@ Eigen::MatrixXd Ws4Space::element_functionals(int element) const {
     for (int i = 0; i < Ws4Basis::size; ++i) g(m, i) = scale * row[i];
     ++m;
   };
-  for (int a = 0; a < 3; ++a)
+  const auto& tri = mesh_.triangle(element);
+  for (int a = 0; a < 3; ++a) {
+    const Eigen::Matrix2d& f = vertex_frame_[tri[a]];
+    const Point2 w1 = jinv * f.col(0), w2 = jinv * f.col(1);
     for (int k = 0; k < dofs_per_vertex; ++k) {
-      std::vector<Point2> dirs(kVertexDx[k], wx);
-      dirs.insert(dirs.end(), kVertexDy[k], wy);
+      std::vector<Point2> dirs(kVertexDx[k], w1);
+      dirs.insert(dirs.end(), kVertexDy[k], w2);
       put(kCorner[a], dirs);
     }
-  const auto& tri = mesh_.triangle(element);
+  }
   for (int k = 0; k < 3; ++k) {
     const auto& e = mesh_.edge(mesh_.triangle_edge(element, k));
     // Local corners of the edge's global start a and end b.
@@ -170,8 +212,11 @@ Eigen::VectorXd Ws4Space::interpolate(const Jet3& f) const {
   const auto& x = mesh_.vertices();
   for (int v = 0; v < mesh_.num_vertices(); ++v) {
     const std::array<double, 10> d = f(x[v]);
-    for (int k = 0; k < dofs_per_vertex; ++k)
-      u(dofs_per_vertex * v + k) = std::pow(h_, kVertexDx[k] + kVertexDy[k]) * d[k];
+    for (int k = 0; k < dofs_per_vertex; ++k) {
+      std::vector<Point2> dirs(kVertexDx[k], Point2(vertex_frame_[v].col(0)));
+      dirs.insert(dirs.end(), kVertexDy[k], Point2(vertex_frame_[v].col(1)));
+      u(dofs_per_vertex * v + k) = std::pow(h_, kVertexDx[k] + kVertexDy[k]) * directional_from_jet(d, dirs);
+    }
   }
   const int edge0 = dofs_per_vertex * mesh_.num_vertices();
   for (int e = 0; e < mesh_.num_edges(); ++e) {

@@ -4,8 +4,13 @@
 /// Hermite finite element (WS4 notes §8).
 ///
 /// Global basis (dimension 10 n_V + 6 n_E + 3 n_T), numbered vertices, then edges, then triangles:
-///  - vertex v, 10 functions at 10 v + k: h^|α| ∂^α u(v) in the order
-///    u, u_x, u_y, u_xx, u_xy, u_yy, u_xxx, u_xxy, u_xyy, u_yyy;
+///  - vertex v, 10 functions at 10 v + k: h^(a+b) D_{d1}^a D_{d2}^b u(v) in the order (a, b) =
+///    (0,0), (1,0), (0,1), (2,0), (1,1), (0,2), (3,0), (2,1), (1,2), (0,3), with the vertex frame
+///    (d1, d2) = (x, y) at interior vertices. At boundary vertices the frame follows the boundary:
+///    d1, d2 are the unit directions of the two boundary edges at a corner, the unit tangent and
+///    normal on a straight part. Then the trace on a boundary edge involves only D_t^j data of its
+///    end vertices, and the trace of ∂_n u only D_t^j D_n data (notes §8.7), so the generic boundary
+///    projection constrains exactly those functions, also on slanted boundaries;
 ///  - edge e = (a, b), a < b, 6 functions at 10 n_V + 6 e + k: with t = (x_b - x_a)/|x_b - x_a|,
 ///    n = (-t_y, t_x) and e(s) = x_a + s (x_b - x_a):
 ///    h ∂_n u(e(½)), h² ∂²_n u(e(¼)), h² ∂²_n u(e(¾)), h³ ∂³_n u(e(¼)), h³ ∂³_n u(e(½)), h³ ∂³_n u(e(¾));
@@ -69,6 +74,9 @@ class Ws4Space final : public Space {
   /// G_K: the 51 DOF functionals of element t applied to the 51 reference B_i (rows: functionals).
   Eigen::MatrixXd element_functionals(int element) const;
 
+  /// Vertex frame (d1, d2) of vertex v as columns (see the file comment).
+  const Eigen::Matrix2d& vertex_frame(int v) const { return vertex_frame_[v]; }
+
   /// Cartesian derivatives ∂x^a ∂y^b f(x) for a + b <= 3, indexed like the vertex DOFs
   /// (0: f, 1: f_x, 2: f_y, 3: f_xx, 4: f_xy, 5: f_yy, 6: f_xxx, 7: f_xxy, 8: f_xyy, 9: f_yyy).
   using Jet3 = std::function<std::array<double, 10>(const Point2& x)>;
@@ -77,11 +85,13 @@ class Ws4Space final : public Space {
 
  private:
   class Ws4Evaluator;
+  void compute_vertex_frames();
 
   Triangulation mesh_;
   std::string description_;
   double mesh_size_ = 0.0, h_ = 1.0;
   std::vector<Eigen::MatrixXd> extraction_;
+  std::vector<Eigen::Matrix2d> vertex_frame_;
 
   mutable std::mutex rule_mutex_;
   mutable std::map<int, RulePtr> cell_rules_;
