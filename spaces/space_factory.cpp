@@ -2,14 +2,18 @@
 
 #include "spaces/bspline/bspline_from_config.hpp"
 #include "spaces/g1/g1_from_config.hpp"
+#include "spaces/tmesh/tmesh_from_config.hpp"
+#include "spaces/ws4/ws4_from_config.hpp"
 
 namespace iga {
 
-std::vector<std::string> space_types() { return {"bspline", "g1"}; }
+std::vector<std::string> space_types() { return {"bspline", "ws4", "tmesh", "g1"}; }
 
 SpacePtr make_space(const ConfigNode& domain, const ConfigNode& space, int level) {
   const std::string type = space["type"].as_choice(space_types());
   if (type == "bspline") return make_bspline_space(domain, space, level);
+  if (type == "ws4") return make_ws4_space(domain, space, level);
+  if (type == "tmesh") return make_tmesh_space(domain, space, level);
   if (type == "g1") return make_g1_space(domain, space, level);
   space["type"].fail("unsupported space type '" + type + "'");
 }

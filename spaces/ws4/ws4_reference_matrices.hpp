@@ -1,0 +1,26 @@
+#pragma once
+/// @file
+/// Universal reference matrices of the 51 WS4 simplex splines on the unit triangle, and the element
+/// matrices of the bilinear forms on any affine triangle built from them without quadrature
+/// (the B_i are affine-invariant; WS4 notes §9).
+
+#include <Eigen/Core>
+
+#include "assembly/bilinear_form.hpp"
+
+namespace iga::ws4 {
+
+/// All matrices 51 x 51, integrals over the reference triangle, exact sub-region by sub-region.
+struct Ws4ReferenceMatrices {
+  Eigen::MatrixXd mass;        ///< ∫ B_i B_j
+  Eigen::MatrixXd grad[2][2];  ///< ∫ ∂_a B_i ∂_b B_j, a, b ∈ {ξ, η}
+  Eigen::MatrixXd hess[3][3];  ///< ∫ ∂_p B_i ∂_q B_j, p, q ∈ {ξξ, ξη, ηη}
+
+  /// Built on first use (quadrature of degree 8 per sub-triangle), then shared; thread-safe.
+  static const Ws4ReferenceMatrices& get();
+};
+
+/// Element matrix of `form` in the basis B_i of the triangle x = P0 + J ξ (51 x 51).
+Eigen::MatrixXd ws4_form_matrix(BilinearForm form, const Eigen::Matrix2d& jacobian);
+
+}  // namespace iga::ws4

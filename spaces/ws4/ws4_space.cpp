@@ -1,0 +1,297 @@
+#include "spaces/ws4/ws4_space.hpp"
+
+#include <Eigen/LU>
+#include <algorithm>
+#include <cmath>
+
+#include "solver/errors.hpp"
+#include "spaces/push_forward.hpp"
+#include "spaces/ws4/ws4_basis.hpp"
+#include "spaces/ws4/ws4_reference_matrices.hpp"
+
+namespace iga::ws4 {
+
+namespace {
+
+const Point2 kCorner[3] = {Point2(0, 0), Point2(1, 0), Point2(0, 1)};
+/// Interior DOF points in reference coordinates: v3, v1, v2 of the paper (order ρ49, ρ50, ρ51).
+const Point2 kInteriorPoint[3] = {Point2(0.375, 0.25), Point2(0.375, 0.375), Point2(0.25, 0.375)};
+/// Edge DOFs: parameter along the globally oriented edge and order of the normal derivative.
+const double kEdgeS[6] = {0.5, 0.25, 0.75, 0.25, 0.5, 0.75};
+const int kEdgeOrder[6] = {1, 2, 2, 3, 3, 3};
+/// Vertex DOFs: number of x and y derivatives.
+const int kVertexDx[10] = {0, 1, 0, 2, 1, 0, 3, 2, 1, 0};
+const int kVertexDy[10] = {0, 0, 1, 0, 1, 2, 0, 1, 2, 3};
+
+/// D_{v_1} ... D_{v_k} f from the Cartesian derivatives of f (order <= 3, vertex-DOF order).
+double directional_from_jet(const std::array<double, 10>& d, const std::vector<Point2>& dirs) {
+  static const int index_of[4][4] = {{0, 2, 5, 9}, {1, 4, 8, -1}, {3, 7, -1, -1}, {6, -1, -1, -1}};  // [nx][ny]
+  const int k = static_cast<int>(dirs.size());
+  double sum = 0.0;
+  for (int choice = 0; choice < (1 << k); ++choice) {  // bit m set: direction m contributes its y part
+    double w = 1.0;
+    int nx = 0, ny = 0;
+    for (int m = 0; m < k; ++m) {
+      const bool y = (choice >> m) & 1;
+      w *= y ? dirs[m].y() : dirs[m].x();
+      (y ? ny : nx)++;
+    }
+    sum += w * d[index_of[nx][ny]];
+  }
+  return sum;
+}
+
+}  // namespace
+
+// ---------------------------------------------------------------------------------------------
+// Evaluator: reference tables per rule (51 x q), then per element C_Kᵀ times them and the affine
+// push-forward.
+
+class Ws4Space::Ws4Evaluator final : public Space::Evaluator {
+ public:
+  explicit Ws4Evaluator(const Ws4Space& space) : space_(space) {}
+
+  void evaluate(int element, const QuadratureRule& rule, unsigned flags, PointValues& out) override {
+    const Tables& t = tables(rule);
+    const Eigen::MatrixXd& c = space_.extraction(element);
+    const bool grads = (flags & (update_gradients | update_hessians)) != 0;
+    const bool hess = (flags & update_hessians) != 0;
+    if (flags & update_values) ref_.value.noalias() = c.transpose() * t.ref.value;
+    if (grads) {
+      ref_.dxi.noalias() = c.transpose() * t.ref.dxi;
+      ref_.deta.noalias() = c.transpose() * t.ref.deta;
+    }
+    if (hess) {
+      ref_.dxixi.noalias() = c.transpose() * t.ref.dxixi;
+      ref_.dxieta.noalias() = c.transpose() * t.ref.dxieta;
+      ref_.detaeta.noalias() = c.transpose() * t.ref.detaeta;
+    }
+    space_.element_dofs(element, out.dofs);
+    const Eigen::Matrix2d j = space_.jacobian(element);
+    const Point2 p0 = space_.mesh_.vertices()[space_.mesh_.triangle(element)[0]];
+    jets_.resize(rule.size());
+    for (int k = 0; k < rule.size(); ++k) {
+      jets_[k].x = p0 + j * rule.points[k];
+      jets_[k].jacobian = j;
+    }
+    push_forward(jets_, ref_, flags, out);
+  }
+
+ private:
+  struct Tables {
+    std::vector<Point2> points;  // copy, to detect a different rule at a reused address
+    ReferenceDerivatives ref;
+  };
+  const Tables& tables(const QuadratureRule& rule) {
+    auto it = cache_.find(&rule);
+    if (it != cache_.end() && it->second.points == rule.points) return it->second;
+    if (it == cache_.end() && cache_.size() >= 64) cache_.clear();  // bound temporary rules
+    Tables& t = cache_[&rule];
+    t.points = rule.points;
+    Ws4Basis::reference().tabulate(rule.points, t.ref);
+    return t;
+  }
+
+  const Ws4Space& space_;
+  std::map<const QuadratureRule*, Tables> cache_;
+  ReferenceDerivatives ref_;
+  std::vector<GeometryJet> jets_;
+};
+
+// ---------------------------------------------------------------------------------------------
+
+Ws4Space::Ws4Space(Triangulation mesh, std::string description)
+    : mesh_(std::move(mesh)), description_(std::move(description)) {
+  for (int t = 0; t < mesh_.num_triangles(); ++t)
+    for (int k = 0; k < 3; ++k) {
+      const auto& e = mesh_.edge(mesh_.triangle_edge(t, k));
+      mesh_size_ = std::max(mesh_size_, (mesh_.vertices()[e[0]] - mesh_.vertices()[e[1]]).norm());
+    }
+  h_ = mesh_size_;
+  compute_vertex_frames();
+  extraction_.resize(mesh_.num_triangles());
+#pragma omp parallel for schedule(static)
+  for (int t = 0; t < mesh_.num_triangles(); ++t) extraction_[t] = element_functionals(t).partialPivLu().inverse();
+}
+
+void Ws4Space::compute_vertex_frames() {
+  vertex_frame_.assign(mesh_.num_vertices(), Eigen::Matrix2d::Identity());
+  // Unit directions of the boundary edges leaving each boundary vertex.
+  std::vector<std::vector<Point2>> out(mesh_.num_vertices());
+  const auto& x = mesh_.vertices();
+  for (int e = 0; e < mesh_.num_edges(); ++e) {
+    if (!mesh_.is_boundary_edge(e)) continue;
+    const int a = mesh_.edge(e)[0], b = mesh_.edge(e)[1];
+    out[a].push_back((x[b] - x[a]).normalized());
+    out[b].push_back((x[a] - x[b]).normalized());
+  }
+  for (int v = 0; v < mesh_.num_vertices(); ++v) {
+    if (out[v].empty()) continue;
+    const Point2 t1 = out[v][0];
+    Point2 t2(-t1.y(), t1.x());  // straight boundary (or a non-manifold vertex): tangent and normal
+    if (out[v].size() == 2 && std::abs(t1.x() * out[v][1].y() - t1.y() * out[v][1].x()) > 1e-8) t2 = out[v][1];
+    vertex_frame_[v].col(0) = t1;
+    vertex_frame_[v].col(1) = t2;
+  }
+}
+
+std::unique_ptr<Space::Evaluator> Ws4Space::make_evaluator() const { return std::make_unique<Ws4Evaluator>(*this); }
+
+std::vector<std::pair<std::string, std::string>> Ws4Space::parameters() const {
+  return {{"triangles", std::to_string(mesh_.num_triangles())},
+          {"vertices", std::to_string(mesh_.num_vertices())},
+          {"edges", std::to_string(mesh_.num_edges())},
+          {"domain", description_}};
+}
+
+int Ws4Space::dimension() const {
+  return dofs_per_vertex * mesh_.num_vertices() + dofs_per_edge * mesh_.num_edges() +
+         dofs_per_triangle * mesh_.num_triangles();
+}
+
+void Ws4Space::element_dofs(int element, std::vector<int>& out) const {
+  out.resize(dofs_per_element);
+  const auto& v = mesh_.triangle(element);
+  int m = 0;
+  for (int a = 0; a < 3; ++a)
+    for (int k = 0; k < dofs_per_vertex; ++k) out[m++] = dofs_per_vertex * v[a] + k;
+  const int edge0 = dofs_per_vertex * mesh_.num_vertices();
+  for (int a = 0; a < 3; ++a)
+    for (int k = 0; k < dofs_per_edge; ++k) out[m++] = edge0 + dofs_per_edge * mesh_.triangle_edge(element, a) + k;
+  const int tri0 = edge0 + dofs_per_edge * mesh_.num_edges();
+  for (int k = 0; k < dofs_per_triangle; ++k) out[m++] = tri0 + dofs_per_triangle * element + k;
+}
+
+Eigen::Matrix2d Ws4Space::jacobian(int element) const {
+  const auto& v = mesh_.triangle(element);
+  const auto& x = mesh_.vertices();
+  Eigen::Matrix2d j;
+  j.col(0) = x[v[1]] - x[v[0]];
+  j.col(1) = x[v[2]] - x[v[0]];
+  return j;
+}
+
+Eigen::MatrixXd Ws4Space::element_functionals(int element) const {
+  const Ws4Basis& basis = Ws4Basis::reference();
+  const Eigen::Matrix2d jinv = jacobian(element).inverse();
+  // A physical direction d differentiates the reference pieces along J^{-1} d.
+  Eigen::MatrixXd g(dofs_per_element, dofs_per_element);
+  double row[Ws4Basis::size];
+  int m = 0;
+  auto put = [&](const Point2& xi, const std::vector<Point2>& dirs) {
+    basis.directional_derivatives(xi, dirs, row);
+    const double scale = std::pow(h_, static_cast<int>(dirs.size()));
+    for (int i = 0; i < Ws4Basis::size; ++i) g(m, i) = scale * row[i];
+    ++m;
+  };
+  const auto& tri = mesh_.triangle(element);
+  for (int a = 0; a < 3; ++a) {
+    const Eigen::Matrix2d& f = vertex_frame_[tri[a]];
+    const Point2 w1 = jinv * f.col(0), w2 = jinv * f.col(1);
+    for (int k = 0; k < dofs_per_vertex; ++k) {
+      std::vector<Point2> dirs(kVertexDx[k], w1);
+      dirs.insert(dirs.end(), kVertexDy[k], w2);
+      put(kCorner[a], dirs);
+    }
+  }
+  for (int k = 0; k < 3; ++k) {
+    const auto& e = mesh_.edge(mesh_.triangle_edge(element, k));
+    // Local corners of the edge's global start a and end b.
+    const int a = tri[k] == e[0] ? k : (k + 1) % 3, b = tri[k] == e[0] ? (k + 1) % 3 : k;
+    const Point2 t = (mesh_.vertices()[e[1]] - mesh_.vertices()[e[0]]).normalized();
+    const Point2 wn = jinv * Point2(-t.y(), t.x());
+    for (int d = 0; d < dofs_per_edge; ++d)
+      put(kCorner[a] + kEdgeS[d] * (kCorner[b] - kCorner[a]), std::vector<Point2>(kEdgeOrder[d], wn));
+  }
+  for (const Point2& xi : kInteriorPoint) put(xi, {});
+  return g;
+}
+
+Eigen::VectorXd Ws4Space::interpolate(const Jet3& f) const {
+  Eigen::VectorXd u(dimension());
+  const auto& x = mesh_.vertices();
+  for (int v = 0; v < mesh_.num_vertices(); ++v) {
+    const std::array<double, 10> d = f(x[v]);
+    for (int k = 0; k < dofs_per_vertex; ++k) {
+      std::vector<Point2> dirs(kVertexDx[k], Point2(vertex_frame_[v].col(0)));
+      dirs.insert(dirs.end(), kVertexDy[k], Point2(vertex_frame_[v].col(1)));
+      u(dofs_per_vertex * v + k) = std::pow(h_, kVertexDx[k] + kVertexDy[k]) * directional_from_jet(d, dirs);
+    }
+  }
+  const int edge0 = dofs_per_vertex * mesh_.num_vertices();
+  for (int e = 0; e < mesh_.num_edges(); ++e) {
+    const Point2 xa = x[mesh_.edge(e)[0]], xb = x[mesh_.edge(e)[1]];
+    const Point2 t = (xb - xa).normalized();
+    const double nx = -t.y(), ny = t.x();
+    for (int k = 0; k < dofs_per_edge; ++k) {
+      const std::array<double, 10> d = f(xa + kEdgeS[k] * (xb - xa));
+      double dn = 0.0;
+      switch (kEdgeOrder[k]) {
+        case 1: dn = nx * d[1] + ny * d[2]; break;
+        case 2: dn = nx * nx * d[3] + 2 * nx * ny * d[4] + ny * ny * d[5]; break;
+        default: dn = nx * nx * nx * d[6] + 3 * nx * nx * ny * d[7] + 3 * nx * ny * ny * d[8] + ny * ny * ny * d[9];
+      }
+      u(edge0 + dofs_per_edge * e + k) = std::pow(h_, kEdgeOrder[k]) * dn;
+    }
+  }
+  const int tri0 = edge0 + dofs_per_edge * mesh_.num_edges();
+  for (int t = 0; t < mesh_.num_triangles(); ++t) {
+    const Eigen::Matrix2d j = jacobian(t);
+    const Point2 p0 = x[mesh_.triangle(t)[0]];
+    for (int k = 0; k < dofs_per_triangle; ++k) u(tri0 + dofs_per_triangle * t + k) = f(p0 + j * kInteriorPoint[k])[0];
+  }
+  return u;
+}
+
+bool Ws4Space::closed_form_element_matrix(int element, BilinearForm form, Eigen::MatrixXd& local) const {
+  const Eigen::MatrixXd& c = extraction_[element];
+  local.noalias() = c.transpose() * ws4_form_matrix(form, jacobian(element)) * c;
+  return true;
+}
+
+RulePtr Ws4Space::quadrature(int, int degree) const {
+  degree = std::max(degree, 0);
+  std::lock_guard<std::mutex> lock(rule_mutex_);
+  RulePtr& r = cell_rules_[degree];
+  if (!r) r = std::make_shared<const QuadratureRule>(Ws4Split::reference().composite_rule(degree));
+  return r;
+}
+
+RulePtr Ws4Space::edge_quadrature(int, int edge, int degree) const {
+  degree = std::max(degree, 0);
+  std::lock_guard<std::mutex> lock(rule_mutex_);
+  RulePtr& r = edge_rules_[{edge, degree}];
+  if (!r) {
+    const QuadratureRule g = gauss_legendre_for_degree(degree);
+    QuadratureRule quarters;
+    quarters.degree = g.degree;
+    for (int piece = 0; piece < 4; ++piece)
+      for (int k = 0; k < g.size(); ++k) {
+        quarters.points.emplace_back(0.25 * (piece + g.points[k].x()), 0.0);
+        quarters.weights.push_back(0.25 * g.weights[k]);
+      }
+    r = std::make_shared<const QuadratureRule>(edge_rule(CellShape::triangle, edge, quarters));
+  }
+  return r;
+}
+
+std::vector<BoundaryEdge> Ws4Space::boundary_edges(const std::string& name) const {
+  const auto& names = mesh_.part_names();
+  const auto it = std::find(names.begin(), names.end(), name);
+  if (name != "all" && it == names.end()) {
+    std::string valid;
+    for (const std::string& n : names) valid += n + ", ";
+    throw InputError("unknown boundary '" + name + "' of a WS4 triangulation (valid: " + valid + "all)");
+  }
+  const int part = name == "all" ? -1 : static_cast<int>(it - names.begin());
+  std::vector<BoundaryEdge> out;
+  for (int e = 0; e < mesh_.num_edges(); ++e) {
+    if (!mesh_.is_boundary_edge(e) || (part >= 0 && mesh_.edge_part(e) != part)) continue;
+    const int t = mesh_.edge_triangles(e)[0];
+    for (int k = 0; k < 3; ++k)
+      if (mesh_.triangle_edge(t, k) == e) out.push_back({t, k});
+  }
+  return out;
+}
+
+}  // namespace iga::ws4

@@ -1,0 +1,101 @@
+#pragma once
+/// @file
+/// Ws4Space: C³ quartic Wang–Shi splines S₄³(T_WS4) on a triangulation, as an Argyris-style
+/// Hermite finite element (WS4 notes §8).
+///
+/// Global basis (dimension 10 n_V + 6 n_E + 3 n_T), numbered vertices, then edges, then triangles:
+///  - vertex v, 10 functions at 10 v + k: h^(a+b) D_{d1}^a D_{d2}^b u(v) in the order (a, b) =
+///    (0,0), (1,0), (0,1), (2,0), (1,1), (0,2), (3,0), (2,1), (1,2), (0,3), with the vertex frame
+///    (d1, d2) = (x, y) at interior vertices. At boundary vertices the frame follows the boundary:
+///    d1, d2 are the unit directions of the two boundary edges at a corner, the unit tangent and
+///    normal on a straight part. Then the trace on a boundary edge involves only D_t^j data of its
+///    end vertices, and the trace of ∂_n u only D_t^j D_n data (notes §8.7), so the generic boundary
+///    projection constrains exactly those functions, also on slanted boundaries;
+///  - edge e = (a, b), a < b, 6 functions at 10 n_V + 6 e + k: with t = (x_b - x_a)/|x_b - x_a|,
+///    n = (-t_y, t_x) and e(s) = x_a + s (x_b - x_a):
+///    h ∂_n u(e(½)), h² ∂²_n u(e(¼)), h² ∂²_n u(e(¾)), h³ ∂³_n u(e(¼)), h³ ∂³_n u(e(½)), h³ ∂³_n u(e(¾));
+///  - triangle t, 3 functions at 10 n_V + 6 n_E + 3 t + k: u at the reference points
+///    (3/8, 1/4), (3/8, 3/8), (1/4, 3/8) (the paper's v3, v1, v2).
+/// h is the mesh size (scaling keeps the orders of the unknowns comparable).
+///
+/// Element t (reference triangle -> (P0, P1, P2) affinely) has 51 active functions in the order:
+/// vertex P0 (10), P1 (10), P2 (10), local edge 0 = P0P1 (6), 1 = P1P2 (6), 2 = P2P0 (6), interior (3).
+/// Its local basis is the 51 reference simplex splines B_i; the extraction C_K (51 x 51) gives the
+/// active function m as Σ_i C_K(i, m) B_i, C_K = G_K^{-1} with G_K(m, i) = (DOF functional m)(B_i)
+/// (notes §8.4). Both neighbours of an edge use the same normal and points, hence C³ (notes §2.3).
+
+#include <map>
+#include <mutex>
+
+#include "spaces/space.hpp"
+#include "spaces/ws4/triangulation.hpp"
+
+namespace iga::ws4 {
+
+class Ws4Space final : public Space {
+ public:
+  static constexpr int dofs_per_vertex = 10, dofs_per_edge = 6, dofs_per_triangle = 3, dofs_per_element = 51;
+
+  /// The space on `mesh`; `description` names the domain in parameters().
+  explicit Ws4Space(Triangulation mesh, std::string description = "triangulation");
+
+  std::unique_ptr<Evaluator> make_evaluator() const override;
+  std::string type() const override { return "ws4"; }
+  /// triangles, vertices, edges, domain.
+  std::vector<std::pair<std::string, std::string>> parameters() const override;
+
+  int dimension() const override;
+  void element_dofs(int element, std::vector<int>& out) const override;
+  int num_elements() const override { return mesh_.num_triangles(); }
+  CellShape cell_shape(int) const override { return CellShape::triangle; }
+  double mesh_size() const override { return mesh_size_; }
+  int degree() const override { return 4; }
+  bool affine_elements() const override { return true; }
+
+  /// triangle_rule(degree) on each of the 342 fan triangles of the WS4 split (shared by all elements).
+  RulePtr quadrature(int element, int degree) const override;
+  /// Gauss rule on each quarter of the edge (the pieces of the split along it).
+  RulePtr edge_quadrature(int element, int edge, int degree) const override;
+
+  /// C_Kᵀ K_B C_K with K_B from the universal reference matrices (ws4_reference_matrices.hpp).
+  bool closed_form_element_matrix(int element, BilinearForm form, Eigen::MatrixXd& local) const override;
+
+  std::vector<std::string> boundary_names() const override { return mesh_.part_names(); }
+  /// Throws InputError for an unknown name.
+  std::vector<BoundaryEdge> boundary_edges(const std::string& name) const override;
+
+  const Triangulation& mesh() const { return mesh_; }
+  /// The factor h of the scaled DOFs (see the file comment).
+  double dof_scale() const { return h_; }
+  /// J = [P1 - P0, P2 - P0] of element t.
+  Eigen::Matrix2d jacobian(int element) const;
+  /// Extraction C_K of element t (51 x 51, see the file comment).
+  const Eigen::MatrixXd& extraction(int element) const { return extraction_[element]; }
+  /// G_K: the 51 DOF functionals of element t applied to the 51 reference B_i (rows: functionals).
+  Eigen::MatrixXd element_functionals(int element) const;
+
+  /// Vertex frame (d1, d2) of vertex v as columns (see the file comment).
+  const Eigen::Matrix2d& vertex_frame(int v) const { return vertex_frame_[v]; }
+
+  /// Cartesian derivatives ∂x^a ∂y^b f(x) for a + b <= 3, indexed like the vertex DOFs
+  /// (0: f, 1: f_x, 2: f_y, 3: f_xx, 4: f_xy, 5: f_yy, 6: f_xxx, 7: f_xxy, 8: f_xyy, 9: f_yyy).
+  using Jet3 = std::function<std::array<double, 10>(const Point2& x)>;
+  /// Global coefficients of the Hermite interpolant of f (exact for quartics).
+  Eigen::VectorXd interpolate(const Jet3& f) const;
+
+ private:
+  class Ws4Evaluator;
+  void compute_vertex_frames();
+
+  Triangulation mesh_;
+  std::string description_;
+  double mesh_size_ = 0.0, h_ = 1.0;
+  std::vector<Eigen::MatrixXd> extraction_;
+  std::vector<Eigen::Matrix2d> vertex_frame_;
+
+  mutable std::mutex rule_mutex_;
+  mutable std::map<int, RulePtr> cell_rules_;
+  mutable std::map<std::pair<int, int>, RulePtr> edge_rules_;
+};
+
+}  // namespace iga::ws4

@@ -1,0 +1,50 @@
+/// @file
+/// Closed-form WS4 element matrices: the reference numbers of the WS4 notes §9, and equality with
+/// the quadrature-based element matrices of assembly/integrators on perturbed triangles.
+
+#include "spaces/ws4/ws4_reference_matrices.hpp"
+
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include "assembly/integrators.hpp"
+#include "spaces/element_values.hpp"
+#include "spaces/ws4/ws4_space.hpp"
+
+namespace iga::ws4 {
+namespace {
+
+TEST(Ws4Matrices, ReferenceNumbersOfTheNotes) {
+  const Ws4ReferenceMatrices& r = Ws4ReferenceMatrices::get();
+  const Eigen::MatrixXd lap = r.grad[0][0] + r.grad[1][1];
+  EXPECT_NEAR(lap(0, 0), 4.0 / 7, 1e-13);
+  EXPECT_NEAR(r.mass(0, 0), 1.0 / 1440, 1e-16);
+  EXPECT_NEAR(r.hess[0][0](0, 0), 76.8, 1e-10);
+  EXPECT_NEAR(r.mass.sum(), 0.5, 1e-14);
+  EXPECT_LT(lap.rowwise().sum().cwiseAbs().maxCoeff(), 1e-11);
+  const int index[11] = {1, 4, 10, 16, 19, 25, 31, 34, 40, 46, 49};
+  const double diag[11] = {0.5714285714, 0.6642857143, 0.7327380952, 0.7238095238, 1.016402116, 0.7285714286,
+                           1.832569444,  0.7852040816, 0.09789115646, 0.1222633929, 0.3781409439};
+  for (int k = 0; k < 11; ++k) EXPECT_NEAR(lap(index[k] - 1, index[k] - 1), diag[k], 1e-9) << "B" << index[k];
+}
+
+TEST(Ws4Matrices, ClosedFormEqualsQuadratureOnPerturbedTriangles) {
+  Triangulation mesh = Triangulation::rectangle(2, 2, Point2(0, 0), Point2(1, 1));
+  mesh.move_vertex(4, Point2(0.57, 0.43));  // the centre vertex: all 8 triangles distorted
+  const Ws4Space space(mesh);
+  for (BilinearForm form : {BilinearForm::mass, BilinearForm::laplace, BilinearForm::bilaplace, BilinearForm::hessian}) {
+    ElementValues ev(space, flags_for(form));
+    for (int t = 0; t < space.num_elements(); ++t) {
+      Eigen::MatrixXd closed, quad;
+      ASSERT_TRUE(space.closed_form_element_matrix(t, form, closed));
+      ev.reinit(t, *space.quadrature(t, 8));
+      element_matrix(form, ev, quad);
+      EXPECT_LT((closed - quad).cwiseAbs().maxCoeff(), 1e-11 * quad.cwiseAbs().maxCoeff())
+          << "form " << static_cast<int>(form) << " element " << t;
+    }
+  }
+}
+
+}  // namespace
+}  // namespace iga::ws4
