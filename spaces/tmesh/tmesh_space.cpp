@@ -24,25 +24,25 @@ class TMeshSpace::TMeshEvaluator final : public Space::Evaluator {
     std::vector<Point2> points;
     Eigen::MatrixXd bx[3], by[3];
   };
-  const Tables& tables(const QuadratureRule& rule, double hx, double hy);
+  const Tables& tables(const QuadratureRule& rule, std::int64_t lx, std::int64_t ly);
 
   const TMeshSpace& space_;
-  std::map<std::tuple<const QuadratureRule*, double, double>, Tables> cache_;
+  std::map<std::tuple<const QuadratureRule*, std::int64_t, std::int64_t>, Tables> cache_;
   Eigen::MatrixXd local_[6];
   ReferenceDerivatives ref_;
   std::vector<GeometryJet> jets_;
 };
 
-const TMeshSpace::TMeshEvaluator::Tables& TMeshSpace::TMeshEvaluator::tables(const QuadratureRule& rule, double hx,
-                                                                           double hy) {
-  const auto key = std::make_tuple(&rule, hx, hy);
+const TMeshSpace::TMeshEvaluator::Tables& TMeshSpace::TMeshEvaluator::tables(const QuadratureRule& rule,
+                                                                           std::int64_t lx, std::int64_t ly) {
+  const auto key = std::make_tuple(&rule, lx, ly);
   auto it = cache_.find(key);
   if (it != cache_.end() && it->second.points == rule.points) return it->second;
   if (it == cache_.end() && cache_.size() >= 256) cache_.clear();
   Tables& t = cache_[key];
   t.points = rule.points;
-  const SectionBernstein& bx = space_.bernstein(hx);
-  const SectionBernstein& by = space_.bernstein(hy);
+  const SectionBernstein& bx = space_.bernstein(0, lx);
+  const SectionBernstein& by = space_.bernstein(1, ly);
   const int n = bx.n(), q = rule.size();
   for (int d = 0; d < 3; ++d) {
     t.bx[d].resize(n + 1, q);
@@ -62,7 +62,8 @@ void TMeshSpace::TMeshEvaluator::evaluate(int element, const QuadratureRule& rul
   Point2 lo, hi;
   space_.cell_box(element, lo, hi);
   const Point2 h = hi - lo;
-  const Tables& t = tables(rule, h.x(), h.y());
+  const TCell& cell = space_.mesh().cells()[element];
+  const Tables& t = tables(rule, cell.x1 - cell.x0, cell.y1 - cell.y0);
   const int n = space_.section().n, q = rule.size(), nl = (n + 1) * (n + 1);
   const bool values = (flags & update_values) != 0;
   const bool grads = (flags & (update_gradients | update_hessians)) != 0;
@@ -101,9 +102,12 @@ void TMeshSpace::TMeshEvaluator::evaluate(int element, const QuadratureRule& rul
 TMeshSpace::TMeshSpace(TMesh mesh, int regularity, bool rectangular, std::string domain_description)
     : mesh_(std::move(mesh)), r_(regularity), rectangular_(rectangular), domain_(std::move(domain_description)) {
   extraction_ = hermite_extraction(mesh_, r_);
-  for (int c = 0; c < mesh_.num_cells(); ++c)
-    for (double h : {mesh_.width(c), mesh_.height(c)})
-      if (!bernstein_.count(h)) bernstein_.emplace(h, SectionBernstein(section(), h));
+  // Exact lattice lengths as keys: dyadic meshes have a handful of distinct cell sizes.
+  for (int c = 0; c < mesh_.num_cells(); ++c) {
+    const TCell& cell = mesh_.cells()[c];
+    if (!bernstein_[0].count(cell.x1 - cell.x0)) bernstein_[0].emplace(cell.x1 - cell.x0, SectionBernstein(section(), mesh_.width(c)));
+    if (!bernstein_[1].count(cell.y1 - cell.y0)) bernstein_[1].emplace(cell.y1 - cell.y0, SectionBernstein(section(), mesh_.height(c)));
+  }
   for (int c = 0; c < mesh_.num_cells(); ++c) mesh_size_ = std::max(mesh_size_, std::hypot(mesh_.width(c), mesh_.height(c)));
 }
 

@@ -52,8 +52,9 @@ class TMeshSpace final : public Space {
   int regularity() const { return r_; }
   /// Physical box of a cell.
   void cell_box(int cell, Point2& lo, Point2& hi) const;
-  /// Bernstein basis of a cell side length (shared, immutable after construction).
-  const SectionBernstein& bernstein(double h) const { return bernstein_.at(h); }
+  /// Bernstein basis along x (dir 0) or y (dir 1) of cells of that lattice side length (shared,
+  /// immutable after construction).
+  const SectionBernstein& bernstein(int dir, std::int64_t length) const { return bernstein_[dir].at(length); }
 
  private:
   class TMeshEvaluator;
@@ -64,7 +65,7 @@ class TMeshSpace final : public Space {
   bool rectangular_;
   std::string domain_;
   HermiteExtraction extraction_;
-  std::map<double, SectionBernstein> bernstein_;
+  std::map<std::int64_t, SectionBernstein> bernstein_[2];
   double mesh_size_ = 0.0;
 
   mutable std::mutex rule_mutex_;
