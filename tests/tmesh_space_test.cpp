@@ -86,6 +86,23 @@ std::pair<double, double> max_jumps(const TMeshSpace& space, int r, unsigned see
   return {jump / scale, control / scale};
 }
 
+/// Smallest / largest singular value of the values of all global functions at (n+1)^2 points per cell.
+double independence(const Space& s, int n) {
+  QuadratureRule rule;
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i) rule.points.push_back({(i + 0.3) / (n + 1), (j + 0.6) / (n + 1)}), rule.weights.push_back(1);
+  Eigen::MatrixXd M = Eigen::MatrixXd::Zero(s.num_elements() * rule.size(), s.dimension());
+  auto ev = s.make_evaluator();
+  PointValues pv;
+  for (int c = 0; c < s.num_elements(); ++c) {
+    ev->evaluate(c, rule, update_values, pv);
+    for (int a = 0; a < pv.num_functions(); ++a)
+      for (int q = 0; q < rule.size(); ++q) M(c * rule.size() + q, pv.dofs[a]) = pv.value(a, q);
+  }
+  const Eigen::VectorXd sv = Eigen::JacobiSVD<Eigen::MatrixXd>(M).singularValues();
+  return sv(sv.size() - 1) / sv(0);
+}
+
 }  // namespace
 
 TEST(TmeshSpace, DimensionEqualsFormulaAndBruteForce) {
@@ -116,20 +133,7 @@ TEST(TmeshSpace, SmoothAcrossEveryEdgeIncludingTJunctions) {
 
 TEST(TmeshSpace, BasisIsLinearlyIndependent) {
   const SpacePtr s = test::space_from_yaml(dyadic_yaml("trig", 3, 1));
-  const int n = 3;
-  QuadratureRule rule;
-  for (int j = 0; j <= n; ++j)
-    for (int i = 0; i <= n; ++i) rule.points.push_back({(i + 0.3) / (n + 1), (j + 0.6) / (n + 1)}), rule.weights.push_back(1);
-  Eigen::MatrixXd M = Eigen::MatrixXd::Zero(s->num_elements() * rule.size(), s->dimension());
-  auto ev = s->make_evaluator();
-  PointValues pv;
-  for (int c = 0; c < s->num_elements(); ++c) {
-    ev->evaluate(c, rule, update_values, pv);
-    for (int a = 0; a < pv.num_functions(); ++a)
-      for (int q = 0; q < rule.size(); ++q) M(c * rule.size() + q, pv.dofs[a]) = pv.value(a, q);
-  }
-  const Eigen::VectorXd sv = Eigen::JacobiSVD<Eigen::MatrixXd>(M).singularValues();
-  EXPECT_GT(sv(sv.size() - 1) / sv(0), 1e-8);
+  EXPECT_GT(independence(*s, 3), 1e-8);
 }
 
 TEST(TmeshSpace, PoissonSolutionInTheSpaceIsReproduced) {
@@ -188,4 +192,31 @@ TEST(TmeshSpace, GenericBoundaryConditionsOnLShape) {
   const SpacePtr s = test::space_from_yaml(plate, 1);
   const DiscreteSolution sol = solve_problem(*s, test::problem_from_yaml(plate), SolverKind::cholmod);
   EXPECT_LT(*sol.result.l2, 1e-10);
+}
+
+TEST(TmeshSpace, PaperMixedSpaceS2) {
+  // Fig. 7 reconstruction on [0, pi]^2 (units of pi/4): trig w = 1.9 on A, cosh 3 on B,
+  // quintic polynomials elsewhere; (5,5)/(1,1): 132 functions, four d_e = 0 edges.
+  const std::int64_t U = 1024;
+  const int boxes[7][5] = {{0, 2, 0, 2, 1}, {0, 2, 2, 3, 2}, {2, 3, 2, 3, 0}, {0, 3, 3, 4, 0},
+                           {3, 4, 2, 4, 0}, {2, 3, 0, 2, 0}, {3, 4, 0, 2, 0}};
+  for (bool mixed : {true, false}) {
+    std::vector<TCell> cells;
+    for (const auto& b : boxes) {
+      const int sec = mixed ? b[4] : 2;
+      cells.push_back({b[0] * U, b[1] * U, b[2] * U, b[3] * U, sec, sec});
+    }
+    TMesh mesh(cells,
+               {{SectionFamily::polynomial, 5, 0.0}, {SectionFamily::trigonometric, 5, 1.9}, {SectionFamily::hyperbolic, 5, 3.0}},
+               {0, 0}, {pi / 4 / U, pi / 4 / U});
+    const TMeshSpace space(mesh, 1, true, "fig7");
+    EXPECT_EQ(space.dimension(), mixed ? 132 : 148);
+    EXPECT_LT(space.extraction().corner_mismatch, 1e-9);
+    const auto [jump, control] = max_jumps(space, 1, 11);
+    std::printf("Fig. 7 %s: dim %d, max relative C1 jump %.2e, second-derivative jump %.2e\n", mixed ? "S2" : "S1",
+                space.dimension(), jump, control);
+    EXPECT_LT(jump, 1e-10);
+    EXPECT_GT(control, 1e-3);
+    EXPECT_GT(independence(space, 5), 1e-10);
+  }
 }

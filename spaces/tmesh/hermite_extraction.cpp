@@ -14,19 +14,22 @@ namespace {
 /// A linear form in the global DOF vector.
 using Form = Eigen::SparseVector<double>;
 
-/// A section-space function along a composite edge: T(x) = sum_m tau_m L^{-m} phi_m(x), as forms.
+/// A function of the edge space V_e along a composite edge, T(x) = sum_m tau_m L^{-m} phi_m(x) in
+/// the G-basis of order `order` (n for d_e = 2; n-2 with pi_rho = 0, i.e. x^m/m!, for d_e = 0).
 struct Trace {
   double length = 1.0;
-  std::vector<Form> tau;  // n+1
+  int order = 0;
+  double pi_rho = 0.0;
+  std::vector<Form> tau;  // order+1
 };
 
 /// Scaled derivatives (h^d T^{(d)}) of a trace at x for d = 0..dmax, as forms.
-std::vector<Form> trace_derivatives(const Trace& T, const SectionSpec& s, double x, double h, int dmax, int ndof) {
-  const Eigen::MatrixXd g = g_basis_scaled(s.n, s.pi_rho(), T.length, x / T.length, dmax);
+std::vector<Form> trace_derivatives(const Trace& T, double x, double h, int dmax, int ndof) {
+  const Eigen::MatrixXd g = g_basis_scaled(T.order, T.pi_rho, T.length, x / T.length, dmax);
   std::vector<Form> out(dmax + 1, Form(ndof));
   for (int d = 0; d <= dmax; ++d) {
     const double scale = std::pow(h / T.length, d);
-    for (int m = 0; m <= s.n; ++m)
+    for (int m = 0; m <= T.order; ++m)
       if (g(d, m) != 0.0) out[d] += (scale * g(d, m)) * T.tau[m];
   }
   return out;
@@ -37,15 +40,22 @@ std::vector<Form> trace_derivatives(const Trace& T, const SectionSpec& s, double
 HermiteExtraction hermite_extraction(const TMesh& mesh, int r) {
   if (!mesh.admissibility_problem().empty())
     throw std::invalid_argument("the T-mesh is not admissible: " + mesh.admissibility_problem());
-  const SectionSpec& spec = mesh.sections()[mesh.cells()[0].section_s];
-  for (const TCell& c : mesh.cells())
-    if (!(mesh.sections()[c.section_s] == spec) || !(mesh.sections()[c.section_t] == spec))
-      throw std::invalid_argument("the Hermite extraction needs one section space in every cell and direction");
-  const int n = spec.n;
-  if (r < 0 || n < 2 * r + 1)
-    throw std::invalid_argument("C^" + std::to_string(r) + " generalized splines need n >= 2r+1 = " +
-                                std::to_string(2 * r + 1) + " (got n = " + std::to_string(n) + ")");
-  const int nr = r + 1, ka = n - r - 1, ne = ka - r, ni = n - 2 * r - 1;
+  const int n = mesh.sections()[mesh.cells()[0].section_s].n;
+  for (const SectionSpec& sp : mesh.sections())
+    if (sp.n != n) throw std::invalid_argument("the Hermite extraction needs the same n in every section space");
+  bool reduced = false;  // some edge with d_e = 0
+  for (const CompositeEdge& e : mesh.edges()) {
+    if (e.d == 1) throw std::invalid_argument("composite edges with d_e = 1 are not supported by the Hermite extraction");
+    reduced = reduced || e.d == 0;
+  }
+  const int need = reduced ? 2 * r + 3 : 2 * r + 1;
+  if (r < 0 || n < need)
+    throw std::invalid_argument("C^" + std::to_string(r) + " generalized splines need n >= " + std::to_string(need) +
+                                (reduced ? " (edges between different section spaces)" : "") + " (got n = " +
+                                std::to_string(n) + ")");
+  const int nr = r + 1, ni = n - 2 * r - 1;
+  // Per edge: last one-sided tangential order k_a and edge DOFs per normal order (k_a - r).
+  auto last_order = [&](const CompositeEdge& e) { return n - r - 3 + e.d; };
   const auto& V = mesh.vertices();
   const auto& E = mesh.edges();
   const int nc = mesh.num_cells();
@@ -62,7 +72,7 @@ HermiteExtraction hermite_extraction(const TMesh& mesh, int r) {
   out.num_vertex_dofs = next;
   for (size_t e = 0; e < E.size(); ++e) {
     ebase[e] = next;
-    next += nr * ne;
+    next += nr * (last_order(E[e]) - r);
   }
   out.num_edge_dofs = next - out.num_vertex_dofs;
   for (int c = 0; c < nc; ++c) {
@@ -92,9 +102,15 @@ HermiteExtraction hermite_extraction(const TMesh& mesh, int r) {
     const CompositeEdge& ce = E[e];
     const double unit_len = ce.horizontal ? mesh.unit().x() : mesh.unit().y();
     const double L = (ce.hi - ce.lo) * unit_len;
-    const Eigen::MatrixXd g0 = g_basis_scaled(n, spec.pi_rho(), L, 0.0, ka);
-    const Eigen::MatrixXd g1 = g_basis_scaled(n, spec.pi_rho(), L, 1.0, r);
-    Eigen::MatrixXd H(n + 1, n + 1);
+    const int ka = last_order(ce), ne = ka - r;
+    // V_e: the common section space (d_e = 2) or the polynomials of degree n-2 (d_e = 0).
+    const TCell& c0 = mesh.cells()[ce.cells.front()];
+    const SectionSpec& along = mesh.sections()[ce.horizontal ? c0.section_s : c0.section_t];
+    const int order = ce.d == 2 ? n : n - 2;
+    const double pr = ce.d == 2 ? along.pi_rho() : 0.0;
+    const Eigen::MatrixXd g0 = g_basis_scaled(order, pr, L, 0.0, ka);
+    const Eigen::MatrixXd g1 = g_basis_scaled(order, pr, L, 1.0, r);
+    Eigen::MatrixXd H(order + 1, order + 1);
     for (int i = 0; i <= ka; ++i) H.row(i) = g0.row(i);
     for (int i = 0; i <= r; ++i) H.row(ka + 1 + i) = g1.row(i);
     const Eigen::MatrixXd Hinv = H.fullPivLu().inverse();
@@ -105,7 +121,7 @@ HermiteExtraction hermite_extraction(const TMesh& mesh, int r) {
     for (int b = 0; b < nr; ++b) {
       // Jet index of (tangential order i, normal order b).
       auto jidx = [&](int i) { return ce.horizontal ? i + b * nr : b + i * nr; };
-      std::vector<Form> rhs(n + 1, Form(ndof));
+      std::vector<Form> rhs(order + 1, Form(ndof));
       for (int i = 0; i <= r; ++i) {
         rhs[i] = std::pow(L, i) * ja[jidx(i)];
         rhs[ka + 1 + i] = std::pow(L, i) * jb[jidx(i)];
@@ -113,16 +129,18 @@ HermiteExtraction hermite_extraction(const TMesh& mesh, int r) {
       for (int i = r + 1; i <= ka; ++i) rhs[i] = unit(ebase[e] + b * ne + (i - r - 1));
       Trace& T = traces[e][b];
       T.length = L;
-      T.tau.assign(n + 1, Form(ndof));
-      for (int m = 0; m <= n; ++m)
-        for (int k = 0; k <= n; ++k)
+      T.order = order;
+      T.pi_rho = pr;
+      T.tau.assign(order + 1, Form(ndof));
+      for (int m = 0; m <= order; ++m)
+        for (int k = 0; k <= order; ++k)
           if (Hinv(m, k) != 0.0) T.tau[m] += Hinv(m, k) * rhs[k];
     }
     for (int v : ce.t_junctions) {
       const double x = ((ce.horizontal ? V[v].x : V[v].y) - ce.lo) * unit_len;
       jet[v].assign(nr * nr, Form(ndof));
       for (int b = 0; b < nr; ++b) {
-        const std::vector<Form> d = trace_derivatives(traces[e][b], spec, x, 1.0, r, ndof);
+        const std::vector<Form> d = trace_derivatives(traces[e][b], x, 1.0, r, ndof);
         for (int i = 0; i <= r; ++i) jet[v][ce.horizontal ? i + b * nr : b + i * nr] = d[i];
       }
     }
@@ -135,7 +153,7 @@ HermiteExtraction hermite_extraction(const TMesh& mesh, int r) {
   for (int c = 0; c < nc; ++c) {
     const TCell& cell = mesh.cells()[c];
     const double hx = mesh.width(c), hy = mesh.height(c);
-    const SectionBernstein bx(spec, hx), by(spec, hy);
+    const SectionBernstein bx(mesh.sections()[cell.section_s], hx), by(mesh.sections()[cell.section_t], hy);
     const Eigen::MatrixXd X0 = bx.derivatives(0.0, n), X1 = bx.derivatives(1.0, n);
     const Eigen::MatrixXd Y0 = by.derivatives(0.0, n), Y1 = by.derivatives(1.0, n);
     std::vector<Form> coef(nl, Form(ndof));
@@ -167,7 +185,7 @@ HermiteExtraction hermite_extraction(const TMesh& mesh, int r) {
       // gamma[b][i]: tangential Bernstein coefficients of the normal-order-b trace (physical).
       std::vector<std::vector<Form>> gamma(nr, std::vector<Form>(n + 1, Form(ndof)));
       for (int b = 0; b < nr; ++b) {
-        const std::vector<Form> d = trace_derivatives(traces[e][b], spec, x, h_tan, n, ndof);
+        const std::vector<Form> d = trace_derivatives(traces[e][b], x, h_tan, n, ndof);
         for (int i = 0; i <= n; ++i) {
           Form g = d[i];
           for (int k = 0; k < i; ++k)

@@ -1,13 +1,14 @@
 #pragma once
 /// @file
 /// Hermite degrees of freedom and per-cell Bézier extraction for C^r generalized splines over an
-/// admissible T-mesh (notes §2.5, §3.5), for one section space in every cell (all d_e = 2) and
-/// n >= 2r+1 in both directions.
+/// admissible T-mesh (notes §2.5, §3.5). Cells may carry different section spaces of one n; edges
+/// between them have d_e = 0 (d_e = 1 needs exponential families, not provided). Needs n >= 2r+1,
+/// and n >= 2r+3 when some edge has d_e = 0.
 ///
 /// DOFs, numbered in this order:
 ///  - (V) every non-T-junction vertex w: D_s^a D_t^b p(w), a, b <= r, numbered a + b (r+1);
-///  - (E) every composite edge e (lo end w_a): the (r+1) (n-2r-1) one-sided tangential derivatives
-///    of the traces, L^i D_tan^i D_nor^b p(w_a) for r < i <= n-r-1, b <= r (L = |e|);
+///  - (E) every composite edge e (lo end w_a): the (r+1) (n-2r-3+d_e) one-sided tangential
+///    derivatives of the traces, L^i D_tan^i D_nor^b p(w_a) for r < i <= n-r-3+d_e, b <= r (L = |e|);
 ///  - (C) every cell: its interior Bernstein coefficients c_ij, r < i, j < n-r.
 /// Traces along a composite edge are one section-space function over the whole edge (Lemma 2),
 /// which gives the jets at its T-junctions; edges are processed in the mesh's dependency order.
@@ -34,7 +35,7 @@ struct HermiteExtraction {
 };
 
 /// Build the extraction for C^r on `mesh`. Throws std::invalid_argument when the mesh is not
-/// admissible (reason included), the cells do not share one section space, or n < 2r+1.
+/// admissible (reason included), the section spaces differ in n, an edge has d_e = 1, or n is too small.
 HermiteExtraction hermite_extraction(const TMesh& mesh, int r);
 
 }  // namespace iga

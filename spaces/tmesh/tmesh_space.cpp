@@ -24,25 +24,26 @@ class TMeshSpace::TMeshEvaluator final : public Space::Evaluator {
     std::vector<Point2> points;
     Eigen::MatrixXd bx[3], by[3];
   };
-  const Tables& tables(const QuadratureRule& rule, std::int64_t lx, std::int64_t ly);
+  const Tables& tables(const QuadratureRule& rule, const TCell& cell);
 
   const TMeshSpace& space_;
-  std::map<std::tuple<const QuadratureRule*, std::int64_t, std::int64_t>, Tables> cache_;
+  std::map<std::tuple<const QuadratureRule*, int, int, std::int64_t, std::int64_t>, Tables> cache_;
   Eigen::MatrixXd local_[6];
   ReferenceDerivatives ref_;
   std::vector<GeometryJet> jets_;
 };
 
 const TMeshSpace::TMeshEvaluator::Tables& TMeshSpace::TMeshEvaluator::tables(const QuadratureRule& rule,
-                                                                           std::int64_t lx, std::int64_t ly) {
-  const auto key = std::make_tuple(&rule, lx, ly);
+                                                                           const TCell& cell) {
+  const std::int64_t lx = cell.x1 - cell.x0, ly = cell.y1 - cell.y0;
+  const auto key = std::make_tuple(&rule, cell.section_s, cell.section_t, lx, ly);
   auto it = cache_.find(key);
   if (it != cache_.end() && it->second.points == rule.points) return it->second;
   if (it == cache_.end() && cache_.size() >= 256) cache_.clear();
   Tables& t = cache_[key];
   t.points = rule.points;
-  const SectionBernstein& bx = space_.bernstein(0, lx);
-  const SectionBernstein& by = space_.bernstein(1, ly);
+  const SectionBernstein& bx = space_.bernstein(cell.section_s, lx);
+  const SectionBernstein& by = space_.bernstein(cell.section_t, ly);
   const int n = bx.n(), q = rule.size();
   for (int d = 0; d < 3; ++d) {
     t.bx[d].resize(n + 1, q);
@@ -63,7 +64,7 @@ void TMeshSpace::TMeshEvaluator::evaluate(int element, const QuadratureRule& rul
   space_.cell_box(element, lo, hi);
   const Point2 h = hi - lo;
   const TCell& cell = space_.mesh().cells()[element];
-  const Tables& t = tables(rule, cell.x1 - cell.x0, cell.y1 - cell.y0);
+  const Tables& t = tables(rule, cell);
   const int n = space_.section().n, q = rule.size(), nl = (n + 1) * (n + 1);
   const bool values = (flags & update_values) != 0;
   const bool grads = (flags & (update_gradients | update_hessians)) != 0;
@@ -105,17 +106,26 @@ TMeshSpace::TMeshSpace(TMesh mesh, int regularity, bool rectangular, std::string
   // Exact lattice lengths as keys: dyadic meshes have a handful of distinct cell sizes.
   for (int c = 0; c < mesh_.num_cells(); ++c) {
     const TCell& cell = mesh_.cells()[c];
-    if (!bernstein_[0].count(cell.x1 - cell.x0)) bernstein_[0].emplace(cell.x1 - cell.x0, SectionBernstein(section(), mesh_.width(c)));
-    if (!bernstein_[1].count(cell.y1 - cell.y0)) bernstein_[1].emplace(cell.y1 - cell.y0, SectionBernstein(section(), mesh_.height(c)));
+    const std::pair<int, std::int64_t> kx{cell.section_s, cell.x1 - cell.x0}, ky{cell.section_t, cell.y1 - cell.y0};
+    if (!bernstein_.count(kx)) bernstein_.emplace(kx, SectionBernstein(mesh_.sections()[kx.first], mesh_.width(c)));
+    if (!bernstein_.count(ky)) bernstein_.emplace(ky, SectionBernstein(mesh_.sections()[ky.first], mesh_.height(c)));
   }
   for (int c = 0; c < mesh_.num_cells(); ++c) mesh_size_ = std::max(mesh_size_, std::hypot(mesh_.width(c), mesh_.height(c)));
+}
+
+int TMeshSpace::extra_points() const {
+  for (const SectionSpec& s : mesh_.sections())
+    if (s.family != SectionFamily::polynomial) return 16;
+  return 0;
 }
 
 std::unique_ptr<Space::Evaluator> TMeshSpace::make_evaluator() const { return std::make_unique<TMeshEvaluator>(*this); }
 
 std::vector<std::pair<std::string, std::string>> TMeshSpace::parameters() const {
   const int nt = static_cast<int>(mesh_.vertices().size()) - mesh_.num_non_t_vertices();
-  return {{"section", section().description()},
+  std::string sections;
+  for (const SectionSpec& s : mesh_.sections()) sections += (sections.empty() ? "" : "; ") + s.description();
+  return {{"section", sections},
           {"regularity", std::to_string(r_)},
           {"cells", std::to_string(mesh_.num_cells())},
           {"T-junctions", std::to_string(nt)},

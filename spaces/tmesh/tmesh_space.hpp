@@ -4,6 +4,7 @@
 /// admissible T-mesh, as a finite-element space.
 ///
 /// Elements are the mesh cells (in mesh order); the reference square maps affinely onto each cell.
+/// Cells may carry different section spaces (mixed spaces of the paper, e.g. its S2).
 /// Global functions are the Hermite-DOF basis of hermite_extraction.hpp (vertex jets, edge
 /// derivatives, cell bubbles). The local basis of a cell is the tensor generalized Bernstein basis
 /// of section_space.hpp; the active functions of a cell are E_c times it (E_c: n_active x (n+1)^2).
@@ -20,7 +21,7 @@ namespace iga {
 
 class TMeshSpace final : public Space {
  public:
-  /// C^r space on `mesh` (one section space, n >= 2r+1). `rectangular` names the boundary parts
+  /// C^r space on `mesh` (see hermite_extraction.hpp for the conditions on n). `rectangular` names the boundary parts
   /// left/right/bottom/top (otherwise only "all"). Throws std::invalid_argument when the mesh is
   /// not admissible or a trigonometric cell has w h >= pi.
   TMeshSpace(TMesh mesh, int regularity, bool rectangular, std::string domain_description);
@@ -48,24 +49,25 @@ class TMeshSpace final : public Space {
 
   const TMesh& mesh() const { return mesh_; }
   const HermiteExtraction& extraction() const { return extraction_; }
+  /// The section space of the first cell (all cells share its n).
   const SectionSpec& section() const { return mesh_.sections()[mesh_.cells()[0].section_s]; }
   int regularity() const { return r_; }
   /// Physical box of a cell.
   void cell_box(int cell, Point2& lo, Point2& hi) const;
-  /// Bernstein basis along x (dir 0) or y (dir 1) of cells of that lattice side length (shared,
-  /// immutable after construction).
-  const SectionBernstein& bernstein(int dir, std::int64_t length) const { return bernstein_[dir].at(length); }
+  /// Bernstein basis of section `section` on a cell side of that lattice length (shared, immutable
+  /// after construction).
+  const SectionBernstein& bernstein(int section, std::int64_t length) const { return bernstein_.at({section, length}); }
 
  private:
   class TMeshEvaluator;
-  int extra_points() const { return section().family == SectionFamily::polynomial ? 0 : 16; }
+  int extra_points() const;
 
   TMesh mesh_;
   int r_;
   bool rectangular_;
   std::string domain_;
   HermiteExtraction extraction_;
-  std::map<std::int64_t, SectionBernstein> bernstein_[2];
+  std::map<std::pair<int, std::int64_t>, SectionBernstein> bernstein_;
   double mesh_size_ = 0.0;
 
   mutable std::mutex rule_mutex_;
