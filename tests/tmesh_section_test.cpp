@@ -3,6 +3,8 @@
 
 #include <Eigen/LU>
 #include <cmath>
+#include <algorithm>
+#include <cstdio>
 #include <numbers>
 
 #include "spaces/tmesh/section_space.hpp"
@@ -134,6 +136,18 @@ TEST(TmeshSection, StableForTinyAndNearCriticalLengths) {
   const double e[] = {1, 50, 2000, 60000, 1.2e6, 1.2e7};
   const Eigen::MatrixXd D0 = tl.derivatives(0.0, n);
   for (int i = 0; i <= n; ++i) EXPECT_NEAR(D0(i, i) / std::pow(0.1, i), e[i], 1e-8 * e[i]);
+  // The trig basis is an even function of w h: B(2e-3) - B_poly must be 4 (B(1e-3) - B_poly) up to
+  // O((wh)^4). The raw {poly, cos, sin} construction loses every digit here (notes P4).
+  const SectionBernstein t1(trig(n, 1e-2), 0.1), t2(trig(n, 2e-2), 0.1);
+  double worst = 0.0, size = 0.0;
+  for (double s = 0.0; s <= 1.0; s += 0.05) {
+    const Eigen::MatrixXd d1 = t1.derivatives(s, 2) - p.derivatives(s, 2), d2 = t2.derivatives(s, 2) - p.derivatives(s, 2);
+    worst = std::max(worst, (d2 - 4 * d1).cwiseAbs().maxCoeff());
+    size = std::max(size, d1.cwiseAbs().maxCoeff());
+  }
+  EXPECT_GT(size, 1e-9);  // the trigonometric correction is visible ...
+  std::printf("w h = 1e-3: trig - poly %.3e, non-quadratic part %.3e\n", size, worst);
+  EXPECT_LT(worst, 1e-4 * size);  // ... and smooth in (w h)^2, without round-off noise
   // Near pi the basis is still a positive partition of unity.
   const SectionBernstein near(trig(3, 1.0), pi - 1e-3);
   for (double s = 0.05; s < 1.0; s += 0.05) {

@@ -113,7 +113,12 @@ HermiteExtraction hermite_extraction(const TMesh& mesh, int r) {
     Eigen::MatrixXd H(order + 1, order + 1);
     for (int i = 0; i <= ka; ++i) H.row(i) = g0.row(i);
     for (int i = 0; i <= r; ++i) H.row(ka + 1 + i) = g1.row(i);
-    const Eigen::MatrixXd Hinv = H.fullPivLu().inverse();
+    // Lemma 3 needs a Hermite-unisolvent edge space; a trigonometric edge can be too long for that.
+    const Eigen::FullPivLU<Eigen::MatrixXd> lu(H);
+    if (!lu.isInvertible() || lu.rcond() < 1e-13)
+      throw std::invalid_argument("the Hermite interpolation on a composite edge of length " + std::to_string(L) +
+                                  " is singular in its section space (trigonometric w L too large)");
+    const Eigen::MatrixXd Hinv = lu.inverse();
     const auto& ja = jet[ce.v_lo];
     const auto& jb = jet[ce.v_hi];
     if (ja.empty() || jb.empty()) throw std::logic_error("hermite_extraction: edge processed before its end jets");
