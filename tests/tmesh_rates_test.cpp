@@ -71,3 +71,14 @@ TEST(TmeshRates, PoissonC1CubicPolynomial) {
   EXPECT_GE(r.h1, 2.8);
   EXPECT_GE(r.h2, 1.9);
 }
+
+TEST(TmeshRates, PoissonC1CubicHyperbolic) {
+  // Notes §8.6: hyperbolic w = 1, u = sin3x sin2y, levels 2 -> 3: 3.67 / 2.81 / 2.05 (pre-asymptotic in L2).
+  const Rates r = last_rates(std::string(kDyadic) +
+                                 "space: {type: tmesh, section: hyperbolic, n: 3, regularity: 1, frequency: 1" + kRefine +
+                                 "problem: {pde: poisson, exact: \"sin(3*x)*sin(2*y)\", boundary: {all: dirichlet}}\n",
+                             4);
+  EXPECT_GE(r.l2, 3.5);
+  EXPECT_GE(r.h1, 2.7);
+  EXPECT_GE(r.h2, 1.9);
+}
