@@ -166,6 +166,19 @@ TEST(TmeshSpace, LShapeNonConforming) {
   EXPECT_EQ(s->dimension(), brute_force_dimension(t.mesh(), 1, 1));
   EXPECT_LT(max_jumps(t, 1, 3).first, 1e-11);
   EXPECT_EQ(s->boundary_edges("all").size(), 10u);
+  // The notes' two-cell L-shape has its re-entrant corner inside a cell side: not expressible as
+  // whole boundary element edges, so it is refused with the reason rather than mis-constrained.
+  const std::int64_t U = 1024;
+  TMesh two({{0, 2 * U, 0, U, 0, 0}, {0, U, U, 2 * U, 0, 0}}, {{SectionFamily::polynomial, 3, 0.0}}, {0, 0}, {1.0 / U, 1.0 / U});
+  EXPECT_TRUE(two.has_partial_boundary_sides());
+  EXPECT_EQ(hermite_extraction(two, 1).dimension, 24);  // the extraction itself handles it (not 28)
+  try {
+    TMeshSpace bad(two, 1, false, "L");
+    FAIL() << "partial boundary side accepted";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("partly on the boundary"), std::string::npos);
+  }
+  EXPECT_FALSE(t.mesh().has_partial_boundary_sides());
 }
 
 TEST(TmeshSpace, GenericBoundaryConditionsOnLShape) {

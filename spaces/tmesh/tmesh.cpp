@@ -245,10 +245,11 @@ void TMesh::build_topology() {
             const int side = horizontal ? (s.positive ? 0 : 2) : (s.positive ? 3 : 1);
             side_edge_[4 * s.cell + side] = id;
             // On the boundary when nothing faces it from the other side.
-            bool faced = false;
+            std::int64_t faced = 0;
             for (const Side& o : sides)
-              if (o.positive != s.positive && std::max(o.lo, s.lo) < std::min(o.hi, s.hi)) faced = true;
-            side_boundary_[4 * s.cell + side] = faced ? 0 : 1;
+              if (o.positive != s.positive) faced += std::max<std::int64_t>(0, std::min(o.hi, s.hi) - std::max(o.lo, s.lo));
+            side_boundary_[4 * s.cell + side] = faced == 0 ? 1 : 0;
+            if (faced > 0 && faced < s.hi - s.lo) partial_boundary_ = true;
           }
         e.d = common_nonpolynomial_dimension(along);
         edges_.push_back(std::move(e));

@@ -69,6 +69,9 @@ class TMesh {
   int side_edge(int cell, int side) const { return side_edge_[4 * cell + side]; }
   /// True when side `side` of `cell` lies on the domain boundary (no cell on its other side).
   bool side_on_boundary(int cell, int side) const { return side_boundary_[4 * cell + side]; }
+  /// True when some cell side is only partly on the boundary (e.g. a re-entrant corner inside a
+  /// side); such a side is reported as interior by side_on_boundary.
+  bool has_partial_boundary_sides() const { return partial_boundary_; }
   /// Vertex id at lattice point, -1 if none.
   int vertex_at(std::int64_t x, std::int64_t y) const;
   /// Corner vertex ids of a cell: 0 (x0,y0), 1 (x1,y0), 2 (x1,y1), 3 (x0,y1).
@@ -112,6 +115,7 @@ class TMesh {
   std::vector<int> edge_order_;
   std::string problem_;
   int longest_chain_ = 0;
+  bool partial_boundary_ = false;
 };
 
 /// d_e of the notes: dim of the intersection of the section spaces (root multisets) minus (n-1).

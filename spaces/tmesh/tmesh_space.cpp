@@ -102,6 +102,11 @@ void TMeshSpace::TMeshEvaluator::evaluate(int element, const QuadratureRule& rul
 
 TMeshSpace::TMeshSpace(TMesh mesh, int regularity, bool rectangular, std::string domain_description)
     : mesh_(std::move(mesh)), r_(regularity), rectangular_(rectangular), domain_(std::move(domain_description)) {
+  // Space::boundary_edges can only name whole element edges.
+  if (mesh_.has_partial_boundary_sides())
+    throw std::invalid_argument(
+        "a cell side lies partly on the boundary (a re-entrant corner inside a cell side); boundary edges "
+        "of the Space interface are whole element edges, so refine that cell first");
   extraction_ = hermite_extraction(mesh_, r_);
   // Exact lattice lengths as keys: dyadic meshes have a handful of distinct cell sizes.
   for (int c = 0; c < mesh_.num_cells(); ++c) {
