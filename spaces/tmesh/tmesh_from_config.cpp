@@ -1,0 +1,103 @@
+#include "spaces/tmesh/tmesh_from_config.hpp"
+
+#include <cmath>
+#include <numbers>
+#include <sstream>
+#include <stdexcept>
+
+#include "spaces/tmesh/tmesh_space.hpp"
+
+namespace iga {
+
+namespace {
+
+std::string fmt(double x) {
+  std::ostringstream s;
+  s << x;
+  return s.str();
+}
+
+Eigen::Vector2d read_point(const ConfigNode& node) {
+  const std::vector<double> v = node.as_doubles();
+  if (v.size() != 2) node.fail("expected a point [x, y] (got " + std::to_string(v.size()) + " numbers)");
+  return {v[0], v[1]};
+}
+
+}  // namespace
+
+SpacePtr make_tmesh_space(const ConfigNode& domain, const ConfigNode& space, int level) {
+  space.check_keys({"type", "section", "n", "regularity", "frequency", "elements", "refine"});
+  SectionSpec spec;
+  const std::string family = space.has("section") ? space["section"].as_choice({"poly", "trig", "hyperbolic"}) : "poly";
+  spec.family = family == "trig" ? SectionFamily::trigonometric
+                : family == "hyperbolic" ? SectionFamily::hyperbolic
+                                         : SectionFamily::polynomial;
+  const ConfigNode nn = space["n"];
+  spec.n = nn.as_int();
+  if (spec.n < 2) nn.fail("section spaces need n >= 2 (got " + std::to_string(spec.n) + ")");
+  int r = (spec.n - 1) / 2;
+  if (auto rn = space.find("regularity")) {
+    r = rn->as_int();
+    if (r < 0 || spec.n < 2 * r + 1)
+      rn->fail("regularity must be between 0 and (n-1)/2 = " + std::to_string((spec.n - 1) / 2) +
+               " so that n >= 2r+1 (got " + std::to_string(r) + ")");
+  }
+  if (auto wn = space.find("frequency")) {
+    spec.w = wn->as_double();
+    if (!(spec.w > 0.0)) wn->fail("the frequency must be > 0 (got " + fmt(spec.w) + ")");
+  }
+  std::vector<int> elements{2, 2};
+  if (auto en = space.find("elements")) {
+    elements = en->as_ints();
+    if (elements.size() != 2) en->fail("expected [nx, ny] (got " + std::to_string(elements.size()) + " numbers)");
+    if (elements[0] < 1 || elements[1] < 1) en->fail("element counts must be >= 1");
+  }
+  if (level < 0 || level > 12) space.fail("refinement level must be in 0..12 (got " + std::to_string(level) + ")");
+
+  const std::string type = domain["type"].as_choice({"rectangle", "l_shape"});
+  domain.check_keys({"type", "min", "max"});
+  const Eigen::Vector2d lo = read_point(domain["min"]), hi = read_point(domain["max"]);
+  if (!(lo.x() < hi.x()) || !(lo.y() < hi.y())) domain["max"].fail("max must be greater than min in both coordinates");
+  if (type == "l_shape" && (elements[0] % 2 || elements[1] % 2))
+    space.fail("an l_shape domain needs even element counts (the removed quarter must be whole cells)");
+  TMesh mesh = type == "rectangle" ? TMesh::rectangle(lo, hi, elements[0], elements[1], spec)
+                                   : TMesh::l_shape(lo, hi, elements[0], elements[1], spec);
+  if (auto rn = space.find("refine")) {
+    for (const ConfigNode& box : rn->items()) {
+      const std::vector<double> b = box.as_doubles();
+      if (b.size() != 4) box.fail("expected a box [x0, y0, x1, y1] relative to the domain (got " + std::to_string(b.size()) + " numbers)");
+      std::vector<int> inside;
+      for (int c = 0; c < mesh.num_cells(); ++c) {
+        const TCell& cell = mesh.cells()[c];
+        const double X = double(mesh.bound(1) - mesh.bound(0)), Y = double(mesh.bound(3) - mesh.bound(2));
+        const double x0 = (cell.x0 - mesh.bound(0)) / X, x1 = (cell.x1 - mesh.bound(0)) / X;
+        const double y0 = (cell.y0 - mesh.bound(2)) / Y, y1 = (cell.y1 - mesh.bound(2)) / Y;
+        const double eps = 1e-12;
+        if (x0 >= b[0] - eps && x1 <= b[2] + eps && y0 >= b[1] - eps && y1 <= b[3] + eps) inside.push_back(c);
+      }
+      if (inside.empty()) box.fail("no cell lies inside this box");
+      mesh = mesh.refined(inside);
+    }
+  }
+  for (int l = 0; l < level; ++l) mesh = mesh.refined_uniformly();
+  if (!mesh.admissibility_problem().empty()) space.fail("the refined T-mesh is not admissible: " + mesh.admissibility_problem());
+  if (spec.family == SectionFamily::trigonometric) {
+    double hmax = 0.0;
+    for (int c = 0; c < mesh.num_cells(); ++c) hmax = std::max({hmax, mesh.width(c), mesh.height(c)});
+    if (spec.w * hmax >= std::numbers::pi) {
+      const std::string msg = "trigonometric sections need w*h < pi on every cell: w = " + fmt(spec.w) +
+                              ", largest cell side h = " + fmt(hmax) + " gives w*h = " + fmt(spec.w * hmax) +
+                              "; use more elements, a higher level or a lower frequency";
+      if (auto wn = space.find("frequency")) wn->fail(msg);
+      space.fail(msg);
+    }
+  }
+  const std::string desc = type + " [" + fmt(lo.x()) + ", " + fmt(hi.x()) + "] x [" + fmt(lo.y()) + ", " + fmt(hi.y()) + "]";
+  try {
+    return std::make_shared<const TMeshSpace>(std::move(mesh), r, type == "rectangle", desc);
+  } catch (const std::invalid_argument& e) {
+    space.fail(e.what());
+  }
+}
+
+}  // namespace iga

@@ -1,0 +1,78 @@
+#pragma once
+/// @file
+/// TMeshSpace: C^r generalized splines (polynomial / trigonometric / hyperbolic sections) over an
+/// admissible T-mesh, as a finite-element space.
+///
+/// Elements are the mesh cells (in mesh order); the reference square maps affinely onto each cell.
+/// Cells may carry different section spaces (mixed spaces of the paper, e.g. its S2).
+/// Global functions are the Hermite-DOF basis of hermite_extraction.hpp (vertex jets, edge
+/// derivatives, cell bubbles). The local basis of a cell is the tensor generalized Bernstein basis
+/// of section_space.hpp; the active functions of a cell are E_c times it (E_c: n_active x (n+1)^2).
+
+#include <map>
+#include <memory>
+#include <mutex>
+
+#include "spaces/space.hpp"
+#include "spaces/tmesh/hermite_extraction.hpp"
+#include "spaces/tmesh/tmesh.hpp"
+
+namespace iga {
+
+class TMeshSpace final : public Space {
+ public:
+  /// C^r space on `mesh` (see hermite_extraction.hpp for the conditions on n). `rectangular` names the boundary parts
+  /// left/right/bottom/top (otherwise only "all"). Throws std::invalid_argument when the mesh is
+  /// not admissible or a trigonometric cell has w h >= pi.
+  TMeshSpace(TMesh mesh, int regularity, bool rectangular, std::string domain_description);
+
+  std::unique_ptr<Evaluator> make_evaluator() const override;
+  std::string type() const override { return "tmesh"; }
+  /// section, regularity, cells, T-junctions, domain.
+  std::vector<std::pair<std::string, std::string>> parameters() const override;
+
+  int dimension() const override { return extraction_.dimension; }
+  void element_dofs(int element, std::vector<int>& out) const override { out = extraction_.dofs[element]; }
+  int num_elements() const override { return mesh_.num_cells(); }
+  CellShape cell_shape(int) const override { return CellShape::quadrilateral; }
+  double mesh_size() const override { return mesh_size_; }
+  int degree() const override { return section().n; }
+  bool affine_elements() const override { return true; }
+
+  /// Tensor Gauss rule exact for `degree`; for trigonometric / hyperbolic sections 8 more points
+  /// per direction, since Gauss rules are not exact for those integrands (notes P6).
+  RulePtr quadrature(int element, int degree) const override;
+  RulePtr edge_quadrature(int element, int edge, int degree) const override;
+
+  std::vector<std::string> boundary_names() const override;
+  std::vector<BoundaryEdge> boundary_edges(const std::string& name) const override;
+
+  const TMesh& mesh() const { return mesh_; }
+  const HermiteExtraction& extraction() const { return extraction_; }
+  /// The section space of the first cell (all cells share its n).
+  const SectionSpec& section() const { return mesh_.sections()[mesh_.cells()[0].section_s]; }
+  int regularity() const { return r_; }
+  /// Physical box of a cell.
+  void cell_box(int cell, Point2& lo, Point2& hi) const;
+  /// Bernstein basis of section `section` on a cell side of that lattice length (shared, immutable
+  /// after construction).
+  const SectionBernstein& bernstein(int section, std::int64_t length) const { return bernstein_.at({section, length}); }
+
+ private:
+  class TMeshEvaluator;
+  int extra_points() const;
+
+  TMesh mesh_;
+  int r_;
+  bool rectangular_;
+  std::string domain_;
+  HermiteExtraction extraction_;
+  std::map<std::pair<int, std::int64_t>, SectionBernstein> bernstein_;
+  double mesh_size_ = 0.0;
+
+  mutable std::mutex rule_mutex_;
+  mutable std::map<int, RulePtr> cell_rules_;
+  mutable std::map<std::pair<int, int>, RulePtr> edge_rules_;
+};
+
+}  // namespace iga
