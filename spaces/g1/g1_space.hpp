@@ -36,6 +36,7 @@ class G1Space final : public Space {
   CellShape cell_shape(int) const override { return CellShape::quadrilateral; }
   double mesh_size() const override { return mesh_size_; }
   int degree() const override { return basis_.degree; }
+  int continuity() const override { return 1; }  // physical C1 by construction (route A)
   bool affine_elements() const override { return affine_; }
 
   RulePtr quadrature(int element, int degree) const override;

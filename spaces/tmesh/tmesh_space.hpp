@@ -37,6 +37,7 @@ class TMeshSpace final : public Space {
   CellShape cell_shape(int) const override { return CellShape::quadrilateral; }
   double mesh_size() const override { return mesh_size_; }
   int degree() const override { return section().n; }
+  int continuity() const override { return r_; }
   bool affine_elements() const override { return true; }
 
   /// Tensor Gauss rule exact for `degree`; for trigonometric / hyperbolic sections 8 more points

@@ -50,6 +50,7 @@ class Ws4Space final : public Space {
   CellShape cell_shape(int) const override { return CellShape::triangle; }
   double mesh_size() const override { return mesh_size_; }
   int degree() const override { return 4; }
+  int continuity() const override { return 3; }  // C3 across macro-edges (note §2.3)
   bool affine_elements() const override { return true; }
 
   /// triangle_rule(degree) on each of the 342 fan triangles of the WS4 split (shared by all elements).
