@@ -13,9 +13,13 @@ struct LevelResult {
   double h = 0;       ///< largest element diameter
   int dofs = 0;       ///< dimension of the space (before boundary conditions)
   int free_dofs = 0;  ///< unknowns after boundary conditions
+  int elements = 0;   ///< elements of the space
   // Errors against the exact solution (absent without one): L2 norm, H1 and H2 *seminorms*.
   std::optional<double> l2, h1, h2;
   double t_space = 0, t_assemble = 0, t_solve = 0, t_errors = 0;  ///< seconds
+  /// Largest gradient jump of the discrete solution across interior element edges
+  /// (Space::max_gradient_jump; absent when the space does not compute it).
+  std::optional<double> g1_jump;
 };
 
 /// Expected convergence orders of the L2 error and the H1, H2 seminorm errors.

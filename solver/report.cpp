@@ -1,5 +1,6 @@
 #include "solver/report.hpp"
 
+#include <algorithm>
 #include <cstdio>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -65,7 +66,7 @@ nlohmann::json optional_json(std::optional<double> v) { return v ? nlohmann::jso
 
 void write_convergence_csv(const std::vector<LevelResult>& rows, const std::string& filename) {
   std::ofstream out = open_for_writing(filename);
-  out << "level,h,dofs,l2,h1,h2,rate_l2,rate_h1,rate_h2,t_assemble,t_solve,free_dofs,t_space,t_errors\n";
+  out << "level,h,dofs,l2,h1,h2,rate_l2,rate_h1,rate_h2,t_assemble,t_solve,free_dofs,t_space,t_errors,g1_jump\n";
   for (std::size_t i = 0; i < rows.size(); ++i) {
     const LevelResult& r = rows[i];
     const Rates q = rates_at(rows, i);
@@ -73,25 +74,29 @@ void write_convergence_csv(const std::vector<LevelResult>& rows, const std::stri
         << number(r.h1, "%.10e") << ',' << number(r.h2, "%.10e") << ',' << number(q.l2, "%.4f") << ','
         << number(q.h1, "%.4f") << ',' << number(q.h2, "%.4f") << ',' << number(r.t_assemble, "%.6f") << ','
         << number(r.t_solve, "%.6f") << ',' << r.free_dofs << ',' << number(r.t_space, "%.6f") << ','
-        << number(r.t_errors, "%.6f") << '\n';
+        << number(r.t_errors, "%.6f") << ',' << number(r.g1_jump, "%.3e") << '\n';
   }
 }
 
 std::string format_convergence_table(const std::vector<LevelResult>& rows) {
+  // The gradient-jump column appears only for spaces that compute it.
+  const bool jumps = std::any_of(rows.begin(), rows.end(), [](const LevelResult& r) { return r.g1_jump.has_value(); });
   std::ostringstream s;
   char line[256];
-  std::snprintf(line, sizeof line, "%5s %10s %8s %11s %6s %11s %6s %11s %6s %9s %9s\n", "level", "h", "dofs", "L2",
+  std::snprintf(line, sizeof line, "%5s %10s %8s %11s %6s %11s %6s %11s %6s %9s %9s", "level", "h", "dofs", "L2",
                 "rate", "H1-semi", "rate", "H2-semi", "rate", "assemble", "solve");
-  s << line;
+  s << line << (jumps ? "   g1_jump\n" : "\n");
   for (std::size_t i = 0; i < rows.size(); ++i) {
     const LevelResult& r = rows[i];
     const Rates q = rates_at(rows, i);
     auto e = [](std::optional<double> v) { return v ? number(v, "%.3e") : std::string("-"); };
     auto k = [](std::optional<double> v) { return v ? number(v, "%.2f") : std::string(""); };
-    std::snprintf(line, sizeof line, "%5d %10.4e %8d %11s %6s %11s %6s %11s %6s %8.3fs %8.3fs\n", r.level, r.h, r.dofs,
+    std::snprintf(line, sizeof line, "%5d %10.4e %8d %11s %6s %11s %6s %11s %6s %8.3fs %8.3fs", r.level, r.h, r.dofs,
                   e(r.l2).c_str(), k(q.l2).c_str(), e(r.h1).c_str(), k(q.h1).c_str(), e(r.h2).c_str(),
                   k(q.h2).c_str(), r.t_assemble, r.t_solve);
     s << line;
+    if (jumps) s << "  " << e(r.g1_jump);
+    s << '\n';
   }
   return s.str();
 }
@@ -121,6 +126,7 @@ void write_summary_json(const StudySettings& settings, const StudyResult& result
                       {"h", r.h},
                       {"dofs", r.dofs},
                       {"free_dofs", r.free_dofs},
+                      {"elements", r.elements},
                       {"l2", optional_json(r.l2)},
                       {"h1", optional_json(r.h1)},
                       {"h2", optional_json(r.h2)},
@@ -129,6 +135,7 @@ void write_summary_json(const StudySettings& settings, const StudyResult& result
                       {"rate_h2", optional_json(q.h2)},
                       {"solver", result.solver_methods[i]},
                       {"relative_residual", result.relative_residuals[i]},
+                      {"g1_jump", optional_json(r.g1_jump)},
                       {"timings", {{"space", r.t_space}, {"assemble", r.t_assemble}, {"solve", r.t_solve},
                                    {"errors", r.t_errors}}}});
     h.push_back(r.h);

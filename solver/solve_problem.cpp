@@ -50,6 +50,7 @@ DiscreteSolution solve_problem(const Space& space, const ProblemSpec& problem, S
   LevelResult& r = out.result;
   r.h = space.mesh_size();
   r.dofs = space.dimension();
+  r.elements = space.num_elements();
   const int qa = assembly_quadrature_degree(space);
 
   // Which condition holds on every boundary edge: "all" first, named parts override it.
@@ -104,6 +105,7 @@ DiscreteSolution solve_problem(const Space& space, const ProblemSpec& problem, S
   out.coefficients = expand_solution(u_free, constraints);
   r.t_solve = seconds_since(t0);
 
+  r.g1_jump = space.max_gradient_jump(out.coefficients);
   if (problem.exact) {
     say("computing errors");
     t0 = Clock::now();

@@ -83,7 +83,7 @@ StudyResult run_study(const StudySettings& settings, const std::string& director
   StudyResult result;
   const ConfigNode domain = settings.root["domain"], space_node = settings.root["space"];
   const ExactSolution exact = settings.problem.exact_solution();
-  std::vector<std::string> vtu_files;
+  std::vector<std::string> vtu_files, mesh_files;
   for (int level = 0; level < settings.levels; ++level) {
     const std::string tag = "[level " + std::to_string(level) + "] ";
     progress(tag + "building space");
@@ -109,6 +109,9 @@ StudyResult run_study(const StudySettings& settings, const std::string& director
       const std::string name = "solution_" + std::to_string(level) + ".vtu";
       write_solution_vtu(*space, sol.coefficients, opt, (std::filesystem::path(directory) / name).string());
       vtu_files.push_back(name);
+      const std::string mesh = "mesh_" + std::to_string(level) + ".vtu";
+      write_mesh_vtu(*space, settings.vtk_samples, (std::filesystem::path(directory) / mesh).string());
+      mesh_files.push_back(mesh);
     }
     result.rows.push_back(sol.result);
     result.solver_methods.push_back(sol.solve.method);
@@ -117,7 +120,10 @@ StudyResult run_study(const StudySettings& settings, const std::string& director
     result.space_type = space->type();
     result.expected = optimal_rates(settings.problem.pde, space->degree());
   }
-  if (settings.write_vtk) write_pvd(vtu_files, (std::filesystem::path(directory) / "solution.pvd").string());
+  if (settings.write_vtk) {
+    write_pvd(vtu_files, (std::filesystem::path(directory) / "solution.pvd").string());
+    write_pvd(mesh_files, (std::filesystem::path(directory) / "mesh.pvd").string());
+  }
   return result;
 }
 

@@ -62,6 +62,10 @@ vtkNew<vtkDoubleArray> make_point_field(const char* name, int components, vtkIdT
   return a;
 }
 
+/// Write an unstructured grid with VTK's XML writer (LZ4-compressed, appended binary); throws
+/// std::runtime_error and removes the file if writing fails.
+void write_grid(vtkUnstructuredGrid* grid, const std::string& filename);
+
 }  // namespace
 
 void write_solution_vtu(const Space& space, const Eigen::VectorXd& coefficients, const VtkFieldOptions& options,
@@ -193,7 +197,45 @@ void write_solution_vtu(const Space& space, const Eigen::VectorXd& coefficients,
   }
   if (options.laplacian) grid->GetPointData()->AddArray(laplace_u);
   grid->GetCellData()->AddArray(cell_element);
+  write_grid(grid, filename);
+}
 
+void write_mesh_vtu(const Space& space, int samples, const std::string& filename) {
+  const int m = std::max(1, samples);
+  const int ne = space.num_elements();
+  vtkNew<vtkPoints> points;
+  vtkNew<vtkCellArray> lines;
+  auto cell_element = vtkSmartPointer<vtkIntArray>::New();
+  cell_element->SetName("element");
+  ElementValues ev(space, update_values);
+  std::vector<vtkIdType> ids;
+  for (int e = 0; e < ne; ++e) {
+    // The closed boundary of the reference cell, m samples per edge, mapped like the solution.
+    const CellShape shape = space.cell_shape(e);
+    QuadratureRule outline;
+    for (int edge = 0; edge < num_edges(shape); ++edge)
+      for (int j = 0; j < m; ++j) {
+        outline.points.push_back(reference_edge_point(shape, edge, double(j) / m));
+        outline.weights.push_back(0.0);
+      }
+    ev.reinit(e, outline);
+    ids.clear();
+    for (int k = 0; k < outline.size(); ++k)
+      ids.push_back(points->InsertNextPoint(ev.values().x(0, k), ev.values().x(1, k), 0.0));
+    ids.push_back(ids.front());
+    lines->InsertNextCell(static_cast<vtkIdType>(ids.size()), ids.data());
+    cell_element->InsertNextValue(e);
+  }
+  vtkNew<vtkUnstructuredGrid> grid;
+  grid->SetPoints(points);
+  grid->SetCells(VTK_POLY_LINE, lines);
+  grid->GetCellData()->AddArray(cell_element);
+  write_grid(grid, filename);
+}
+
+namespace {
+
+void write_grid(vtkUnstructuredGrid* grid, const std::string& filename) {
   // Open the file first: VTK would log a multi-line error of its own for an unwritable path.
   if (!std::ofstream(filename)) throw std::runtime_error("cannot write VTK file '" + filename + "'");
   vtkNew<vtkXMLUnstructuredGridWriter> writer;
@@ -208,6 +250,8 @@ void write_solution_vtu(const Space& space, const Eigen::VectorXd& coefficients,
     throw std::runtime_error("cannot write VTK file '" + filename + "'");
   }
 }
+
+}  // namespace
 
 void write_pvd(const std::vector<std::string>& datasets, const std::string& filename) {
   vtkNew<vtkXMLDataElement> root;

@@ -28,6 +28,10 @@ struct VtkFieldOptions {
 void write_solution_vtu(const Space& space, const Eigen::VectorXd& coefficients, const VtkFieldOptions& options,
                         const std::string& filename);
 
+/// Write the outline of every element (its boundary through the element map, `samples` points per
+/// edge) as closed poly-lines with a cell field `element`: the mesh, including where it was refined.
+void write_mesh_vtu(const Space& space, int samples, const std::string& filename);
+
 /// Write a ParaView collection listing `datasets` (paths relative to the .pvd) as time steps 0, 1, ...
 void write_pvd(const std::vector<std::string>& datasets, const std::string& filename);
 

@@ -21,6 +21,7 @@
 #include <Eigen/Core>
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -131,6 +132,13 @@ class Space {
   /// Return false (the default) and the assembler integrates with quadrature. Must be thread-safe.
   virtual bool closed_form_element_matrix(int /*element*/, BilinearForm /*form*/, Eigen::MatrixXd& /*local*/) const {
     return false;
+  }
+
+  /// The largest jump of the physical gradient of Σ c_i N_i across interior element edges, for
+  /// spaces that can locate both sides of their edges (a C1 space has it at round-off). Reported
+  /// as the `g1_jump` column of convergence.csv; nullopt (the default) leaves the column empty.
+  virtual std::optional<double> max_gradient_jump(const Eigen::VectorXd& /*coefficients*/) const {
+    return std::nullopt;
   }
 
   /// Sub-cells to draw element `element` with about `resolution` samples per edge.

@@ -2,6 +2,7 @@
 // reader, and bad input ending in exit code 2 with a message and no output directory.
 #include <gtest/gtest.h>
 #include <sys/wait.h>
+#include <vtkCellType.h>
 #include <vtkDataArray.h>
 #include <vtkPointData.h>
 #include <vtkSmartPointer.h>
@@ -105,6 +106,7 @@ TEST(EndToEnd, EveryShippedConfigRunsAndWritesReadableOutput) {
     EXPECT_TRUE(summary["space"].contains("type"));
 
     EXPECT_TRUE(fs::exists(out / "solution.pvd"));
+    EXPECT_TRUE(fs::exists(out / "mesh.pvd"));
     EXPECT_GT(fs::file_size(out / "convergence.svg"), 1000u);
     const bool biharmonic = summary["problem"]["pde"] == "biharmonic";
     for (int level = 0; level < 2; ++level) {
@@ -117,6 +119,14 @@ TEST(EndToEnd, EveryShippedConfigRunsAndWritesReadableOutput) {
       vtkPointData* pd = grid->GetPointData();
       for (const char* field : {"u", "grad_u", "u_exact", "error"}) EXPECT_NE(pd->GetArray(field), nullptr) << field;
       EXPECT_EQ(pd->GetArray("grad_u")->GetNumberOfComponents(), 3);
+      // The mesh outline: one closed poly-line per element of the solution file.
+      auto mesh_reader = vtkSmartPointer<vtkXMLUnstructuredGridReader>::New();
+      mesh_reader->SetFileName((out / ("mesh_" + std::to_string(level) + ".vtu")).c_str());
+      mesh_reader->Update();
+      vtkUnstructuredGrid* mesh = mesh_reader->GetOutput();
+      ASSERT_GT(mesh->GetNumberOfCells(), 0) << name;
+      EXPECT_EQ(mesh->GetCellType(0), VTK_POLY_LINE);
+      EXPECT_EQ(mesh->GetNumberOfCells(), summary["levels"][level]["elements"].get<int>()) << name;
       if (biharmonic) EXPECT_NE(pd->GetArray("laplace_u"), nullptr);
       // The error field is small against the solution (the exact solutions are resolved).
       double range_u[2], range_e[2];
