@@ -11,21 +11,8 @@ using namespace iga;
 
 namespace {
 
-struct Rates {
-  double l2, h1, h2;
-};
-
-/// Rates between the last two of `levels` levels.
-Rates last_rates(const std::string& yaml, int levels) {
-  const ProblemSpec problem = test::problem_from_yaml(yaml);
-  std::vector<LevelResult> rows;
-  for (int level = 0; level < levels; ++level) {
-    const SpacePtr space = test::space_from_yaml(yaml, level);
-    rows.push_back(solve_problem(*space, problem, SolverKind::cholmod).result);
-  }
-  const LevelResult &a = rows[levels - 2], &b = rows[levels - 1];
-  return {*rate(a.l2, b.l2, a.h, b.h), *rate(a.h1, b.h1, a.h, b.h), *rate(a.h2, b.h2, a.h, b.h)};
-}
+using test::last_rates;
+using test::Rates;
 
 std::string poisson_yaml(int p) {
   return R"yaml(

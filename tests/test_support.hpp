@@ -1,10 +1,13 @@
 #pragma once
 // Helpers shared by tests: build spaces and problems from YAML text, as a user's config would.
 
+#include <cstdio>
 #include <string>
+#include <vector>
 
 #include "solver/config_node.hpp"
 #include "solver/problem.hpp"
+#include "solver/solve_problem.hpp"
 #include "spaces/space_factory.hpp"
 
 namespace iga::test {
@@ -17,6 +20,29 @@ inline SpacePtr space_from_yaml(const std::string& yaml, int level = 0) {
 
 inline ProblemSpec problem_from_yaml(const std::string& yaml) {
   return parse_problem(ConfigNode::load_string(yaml, "test.yaml")["problem"]);
+}
+
+/// Rates between the last two levels of a study; h2 is 0 when the H2 error is not measured.
+struct Rates {
+  double l2 = 0, h1 = 0, h2 = 0;
+};
+
+/// Solve the config's problem on levels 0..levels-1 (printing each row, so a failing rate can be
+/// read off the test log) and return the rates between the last two levels.
+inline Rates last_rates(const std::string& yaml, int levels) {
+  const ProblemSpec problem = problem_from_yaml(yaml);
+  std::vector<LevelResult> rows;
+  for (int level = 0; level < levels; ++level) {
+    const SpacePtr space = space_from_yaml(yaml, level);
+    rows.push_back(solve_problem(*space, problem, SolverKind::cholmod).result);
+    const LevelResult& b = rows.back();
+    std::printf("level %d elements %d dofs %d h %.4f  L2 %.3e H1 %.3e H2 %.3e\n", level, space->num_elements(),
+                space->dimension(), b.h, *b.l2, *b.h1, b.h2.value_or(0.0));
+  }
+  const LevelResult &a = rows[levels - 2], &b = rows[levels - 1];
+  Rates r{*rate(a.l2, b.l2, a.h, b.h), *rate(a.h1, b.h1, a.h, b.h), 0.0};
+  if (a.h2 && b.h2) r.h2 = *rate(a.h2, b.h2, a.h, b.h);
+  return r;
 }
 
 }  // namespace iga::test

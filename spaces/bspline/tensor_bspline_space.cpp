@@ -252,23 +252,9 @@ double TensorBSplineSpace::compute_mesh_size() const {
   return h;
 }
 
-RulePtr TensorBSplineSpace::quadrature(int, int degree) const {
-  degree = std::max(degree, 0);
-  std::lock_guard<std::mutex> lock(rule_mutex_);
-  RulePtr& r = cell_rules_[degree];
-  if (!r) r = std::make_shared<const QuadratureRule>(tensor_gauss(degree));
-  return r;
-}
+RulePtr TensorBSplineSpace::quadrature(int, int degree) const { return rules_.cell(degree); }
 
-RulePtr TensorBSplineSpace::edge_quadrature(int, int edge, int degree) const {
-  degree = std::max(degree, 0);
-  std::lock_guard<std::mutex> lock(rule_mutex_);
-  RulePtr& r = edge_rules_[{edge, degree}];
-  if (!r)
-    r = std::make_shared<const QuadratureRule>(
-        edge_rule(CellShape::quadrilateral, edge, gauss_legendre_for_degree(degree)));
-  return r;
-}
+RulePtr TensorBSplineSpace::edge_quadrature(int, int edge, int degree) const { return rules_.edge(edge, degree); }
 
 std::vector<std::string> TensorBSplineSpace::boundary_names() const { return {"left", "right", "bottom", "top"}; }
 

@@ -15,6 +15,7 @@
 
 #include "spaces/bspline/knot_vector.hpp"
 #include "spaces/bspline/patch_geometry.hpp"
+#include "spaces/gauss_rule_cache.hpp"
 #include "spaces/space.hpp"
 
 namespace iga {
@@ -79,9 +80,7 @@ class TensorBSplineSpace final : public Space {
   double mesh_size_ = 0.0;
 
   // Shared rule caches: the space is used by several threads, hence the mutex.
-  mutable std::mutex rule_mutex_;
-  mutable std::map<int, RulePtr> cell_rules_;
-  mutable std::map<std::pair<int, int>, RulePtr> edge_rules_;
+  GaussRuleCache rules_;
 };
 
 }  // namespace iga
