@@ -27,6 +27,14 @@ Rates rates_at(const std::vector<LevelResult>& rows, std::size_t i) {
   return {rate(a.l2, b.l2, a.h, b.h), rate(a.h1, b.h1, a.h, b.h), rate(a.h2, b.h2, a.h, b.h)};
 }
 
+/// Rates against the number of DOFs N: e ~ N^(-rate), i.e. log(e_prev/e) / log(N/N_prev).
+Rates dof_rates_at(const std::vector<LevelResult>& rows, std::size_t i) {
+  if (i == 0) return {};
+  const LevelResult &a = rows[i - 1], &b = rows[i];
+  const double na = a.dofs, nb = b.dofs;
+  return {rate(a.l2, b.l2, nb, na), rate(a.h1, b.h1, nb, na), rate(a.h2, b.h2, nb, na)};
+}
+
 std::ofstream open_for_writing(const std::string& filename) {
   std::ofstream out(filename);
   if (!out) throw std::runtime_error("cannot write " + filename);
@@ -66,7 +74,7 @@ nlohmann::json optional_json(std::optional<double> v) { return v ? nlohmann::jso
 
 void write_convergence_csv(const std::vector<LevelResult>& rows, const std::string& filename) {
   std::ofstream out = open_for_writing(filename);
-  out << "level,h,dofs,l2,h1,h2,rate_l2,rate_h1,rate_h2,t_assemble,t_solve,free_dofs,t_space,t_errors,g1_jump\n";
+  out << "level,h,dofs,l2,h1,h2,rate_l2,rate_h1,rate_h2,t_assemble,t_solve,free_dofs,t_space,t_errors,g1_jump,rate_dofs_l2,rate_dofs_h1,rate_dofs_h2\n";
   for (std::size_t i = 0; i < rows.size(); ++i) {
     const LevelResult& r = rows[i];
     const Rates q = rates_at(rows, i);
@@ -74,7 +82,9 @@ void write_convergence_csv(const std::vector<LevelResult>& rows, const std::stri
         << number(r.h1, "%.10e") << ',' << number(r.h2, "%.10e") << ',' << number(q.l2, "%.4f") << ','
         << number(q.h1, "%.4f") << ',' << number(q.h2, "%.4f") << ',' << number(r.t_assemble, "%.6f") << ','
         << number(r.t_solve, "%.6f") << ',' << r.free_dofs << ',' << number(r.t_space, "%.6f") << ','
-        << number(r.t_errors, "%.6f") << ',' << number(r.g1_jump, "%.3e") << '\n';
+        << number(r.t_errors, "%.6f") << ',' << number(r.g1_jump, "%.3e");
+    const Rates d = dof_rates_at(rows, i);
+    out << ',' << number(d.l2, "%.4f") << ',' << number(d.h1, "%.4f") << ',' << number(d.h2, "%.4f") << '\n';
   }
 }
 
@@ -117,11 +127,12 @@ void write_summary_json(const StudySettings& settings, const StudyResult& result
   for (const BoundaryPart& p : settings.problem.boundary) j["problem"]["boundary"][p.name] = to_string(p.kind);
   j["norms"] = "l2: L2 norm; h1: H1 seminorm |e|_1 = ||grad e||; h2: H2 seminorm |e|_2 = ||D^2 e|| (Frobenius)";
   json levels = json::array();
-  std::vector<double> h;
+  std::vector<double> h, inverse_dofs;
   std::vector<std::optional<double>> l2, h1, h2;
   for (std::size_t i = 0; i < result.rows.size(); ++i) {
     const LevelResult& r = result.rows[i];
     const Rates q = rates_at(result.rows, i);
+    const Rates d = dof_rates_at(result.rows, i);
     levels.push_back({{"level", r.level},
                       {"h", r.h},
                       {"dofs", r.dofs},
@@ -136,9 +147,14 @@ void write_summary_json(const StudySettings& settings, const StudyResult& result
                       {"solver", result.solver_methods[i]},
                       {"relative_residual", result.relative_residuals[i]},
                       {"g1_jump", optional_json(r.g1_jump)},
+                      {"rate_dofs_l2", optional_json(d.l2)},
+                      {"rate_dofs_h1", optional_json(d.h1)},
+                      {"rate_dofs_h2", optional_json(d.h2)},
+                      {"estimator", i < result.estimators.size() ? optional_json(result.estimators[i]) : json(nullptr)},
                       {"timings", {{"space", r.t_space}, {"assemble", r.t_assemble}, {"solve", r.t_solve},
                                    {"errors", r.t_errors}}}});
     h.push_back(r.h);
+    inverse_dofs.push_back(1.0 / r.dofs);
     l2.push_back(r.l2);
     h1.push_back(r.h1);
     h2.push_back(r.h2);
@@ -147,6 +163,12 @@ void write_summary_json(const StudySettings& settings, const StudyResult& result
   j["least_squares_rates"] = {{"l2", optional_json(least_squares_rate(h, l2))},
                               {"h1", optional_json(least_squares_rate(h, h1))},
                               {"h2", optional_json(least_squares_rate(h, h2))}};
+  // e ~ N^(-rate): the slope against 1/N.
+  j["least_squares_rates_dofs"] = {{"l2", optional_json(least_squares_rate(inverse_dofs, l2))},
+                                   {"h1", optional_json(least_squares_rate(inverse_dofs, h1))},
+                                   {"h2", optional_json(least_squares_rate(inverse_dofs, h2))}};
+  j["refinement"] = result.adaptive ? "adaptive" : "uniform";
+  if (!result.stop_reason.empty()) j["adaptive_stop_reason"] = result.stop_reason;
   j["expected_rates"] = {{"l2", result.expected.l2}, {"h1", result.expected.h1}, {"h2", result.expected.h2}};
   double total = 0;
   for (const LevelResult& r : result.rows) total += r.t_space + r.t_assemble + r.t_solve + r.t_errors;

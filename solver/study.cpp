@@ -4,6 +4,8 @@
 #include <cstdio>
 #include <filesystem>
 
+#include "assembly/error_indicator.hpp"
+#include "solver/dorfler_marking.hpp"
 #include "solver/errors.hpp"
 #include "solver/solve_problem.hpp"
 #include "solver/vtk_writer.hpp"
@@ -42,10 +44,31 @@ StudySettings parse_study(const ConfigNode& root, const std::string& config_path
                        " (raise space.degree/space.regularity)");
 
   if (auto refinement = root.find("refinement")) {
-    refinement->check_keys({"levels"});
+    refinement->check_keys({"type", "levels", "marking", "max_dofs"});
+    if (auto type = refinement->find("type")) s.adaptive = type->as_choice({"uniform", "adaptive"}) == "adaptive";
+    if (!s.adaptive) {
+      for (const char* key : {"marking", "max_dofs"})
+        if (auto k = refinement->find(key)) k->fail(std::string(key) + " is only used with refinement.type: adaptive");
+    }
+    const int max_levels = s.adaptive ? 40 : 12;
     if (auto levels = refinement->find("levels")) {
       s.levels = levels->as_int();
-      if (s.levels < 1 || s.levels > 12) levels->fail("levels must be between 1 and 12 (got " + std::to_string(s.levels) + ")");
+      if (s.levels < 1 || s.levels > max_levels)
+        levels->fail("levels must be between 1 and " + std::to_string(max_levels) + " (got " + std::to_string(s.levels) + ")");
+    }
+    if (auto marking = refinement->find("marking")) {
+      s.marking = marking->as_double();
+      if (!(s.marking > 0.0 && s.marking <= 1.0)) marking->fail("the Dörfler parameter marking must be in (0, 1]");
+    }
+    if (auto max_dofs = refinement->find("max_dofs")) {
+      s.max_dofs = max_dofs->as_int();
+      if (s.max_dofs < 1) max_dofs->fail("max_dofs must be positive");
+    }
+    if (s.adaptive) {
+      if (s.problem.pde != Pde::poisson || s.problem.form != BilinearForm::laplace)
+        refinement->fail("adaptive refinement needs the residual indicator, implemented for Poisson (form laplace) only");
+      if (!coarse->refined({}))
+        refinement->fail("adaptive refinement: the " + coarse->type() + " space does not support local refinement");
     }
   }
   if (levels_override > 0) s.levels = levels_override;
@@ -84,12 +107,15 @@ StudyResult run_study(const StudySettings& settings, const std::string& director
   const ConfigNode domain = settings.root["domain"], space_node = settings.root["space"];
   const ExactSolution exact = settings.problem.exact_solution();
   std::vector<std::string> vtu_files, mesh_files;
+  result.adaptive = settings.adaptive;
+  SpacePtr next;  // adaptive: the refined space for the next level
+  double t_next = 0.0;
   for (int level = 0; level < settings.levels; ++level) {
     const std::string tag = "[level " + std::to_string(level) + "] ";
     progress(tag + "building space");
     auto t0 = Clock::now();
-    const SpacePtr space = make_space(domain, space_node, level);
-    const double t_space = seconds_since(t0);
+    const SpacePtr space = next ? next : make_space(domain, space_node, settings.adaptive ? 0 : level);
+    const double t_space = seconds_since(t0) + t_next;
     progress(tag + "space: " + std::to_string(space->dimension()) + " dofs, " +
              std::to_string(space->num_elements()) + " elements (" + format_seconds(t_space) + ")");
 
@@ -113,12 +139,44 @@ StudyResult run_study(const StudySettings& settings, const std::string& director
       write_mesh_vtu(*space, settings.vtk_samples, (std::filesystem::path(directory) / mesh).string());
       mesh_files.push_back(mesh);
     }
+    std::optional<double> estimator;
+    next.reset();
+    if (settings.adaptive) {
+      const SymbolicFunction source = settings.problem.source;
+      const std::vector<double> eta = poisson_residual_indicators(
+          *space, sol.coefficients, [source](const Point2& x) { return source(x); }, error_quadrature_degree(*space));
+      estimator = total_indicator(eta);
+      if (level + 1 < settings.levels) {
+        auto t1 = Clock::now();
+        const std::vector<int> marked = dorfler_marking(eta, settings.marking);
+        progress(tag + "estimator " + std::to_string(*estimator) + ", refining " + std::to_string(marked.size()) +
+                 " of " + std::to_string(space->num_elements()) + " elements");
+        SpacePtr refined;
+        try {
+          refined = space->refined(marked);
+        } catch (const std::runtime_error& e) {
+          // E.g. a T-mesh whose integer lattice is exhausted at a singularity: the study ends here.
+          progress(tag + "cannot refine further (" + e.what() + "): stopping");
+          result.stop_reason = e.what();
+        }
+        t_next = seconds_since(t1);
+        if (!refined) {
+          if (result.stop_reason.empty()) throw std::logic_error("adaptive study on a space without local refinement");
+        } else if (settings.max_dofs > 0 && refined->dimension() > settings.max_dofs) {
+          progress(tag + "next level would have " + std::to_string(refined->dimension()) + " dofs > max_dofs: stopping");
+          result.stop_reason = "max_dofs";
+        } else
+          next = std::move(refined);
+      }
+    }
+    result.estimators.push_back(estimator);
     result.rows.push_back(sol.result);
     result.solver_methods.push_back(sol.solve.method);
     result.relative_residuals.push_back(sol.solve.relative_residual);
     result.space_parameters = space->parameters();
     result.space_type = space->type();
     result.expected = optimal_rates(settings.problem.pde, space->degree());
+    if (settings.adaptive && !next) break;
   }
   if (settings.write_vtk) {
     write_pvd(vtu_files, (std::filesystem::path(directory) / "solution.pvd").string());

@@ -22,6 +22,11 @@ struct StudySettings {
   ConfigNode root;
   ProblemSpec problem;
   int levels = 4;          ///< number of levels solved: 0 .. levels-1
+  /// refinement.type: uniform (level l = make_space(..., l)) or adaptive (level l+1 = the space of
+  /// level l refined where Dörfler marking of the residual indicator says; Poisson only).
+  bool adaptive = false;
+  double marking = 0.5;    ///< Dörfler θ (refinement.marking), adaptive only
+  int max_dofs = 0;        ///< adaptive: stop before a level would exceed this many DOFs (0: no limit)
   SolverKind solver = SolverKind::cholmod;
   std::string output_dir;  ///< final destination of the results
   bool write_vtk = true;
@@ -43,6 +48,11 @@ struct StudyResult {
   OptimalRates expected;     ///< for the space degree and PDE
   std::vector<std::string> solver_methods;  ///< per level
   std::vector<double> relative_residuals;   ///< per level
+  /// Per level, (Σ η_K²)^{1/2} of the residual indicator (adaptive runs; nullopt otherwise).
+  std::vector<std::optional<double>> estimators;
+  bool adaptive = false;
+  /// Adaptive runs that ended before refinement.levels: "max_dofs" or why refinement failed.
+  std::string stop_reason;
 };
 
 /// Run all levels, writing solution_<l>.vtu and solution.pvd into `directory` (which exists).

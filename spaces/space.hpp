@@ -141,6 +141,12 @@ class Space {
     return std::nullopt;
   }
 
+  /// Optional adaptive refinement: a new space on a mesh where every element in `marked_elements`
+  /// is refined (and possibly more elements, to keep the mesh valid for the space, e.g. an
+  /// admissible T-mesh). Element numbers of the new space are unrelated to this one's.
+  /// nullptr (the default) means the space does not support local refinement.
+  virtual std::shared_ptr<const Space> refined(const std::vector<int>& /*marked_elements*/) const { return nullptr; }
+
   /// Sub-cells to draw element `element` with about `resolution` samples per edge.
   /// The default samples the reference cell uniformly.
   virtual SampleCell sample_cell(int element, int resolution) const;

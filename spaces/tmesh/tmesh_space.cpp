@@ -7,6 +7,7 @@
 
 #include "solver/errors.hpp"
 #include "spaces/push_forward.hpp"
+#include "spaces/tmesh/tmesh_refinement.hpp"
 
 namespace iga {
 
@@ -108,6 +109,7 @@ TMeshSpace::TMeshSpace(TMesh mesh, int regularity, bool rectangular, std::string
         "a cell side lies partly on the boundary (a re-entrant corner inside a cell side); boundary edges "
         "of the Space interface are whole element edges, so refine that cell first");
   extraction_ = hermite_extraction(mesh_, r_);
+  normalize_basis();
   // Exact lattice lengths as keys: dyadic meshes have a handful of distinct cell sizes.
   for (int c = 0; c < mesh_.num_cells(); ++c) {
     const TCell& cell = mesh_.cells()[c];
@@ -116,6 +118,25 @@ TMeshSpace::TMeshSpace(TMesh mesh, int regularity, bool rectangular, std::string
     if (!bernstein_.count(ky)) bernstein_.emplace(ky, SectionBernstein(mesh_.sections()[ky.first], mesh_.height(c)));
   }
   for (int c = 0; c < mesh_.num_cells(); ++c) mesh_size_ = std::max(mesh_size_, std::hypot(mesh_.width(c), mesh_.height(c)));
+}
+
+void TMeshSpace::normalize_basis() {
+  // The function dual to D_s^a D_t^b p(w) has size ~ h^(a+b) of the cells around w; on strongly
+  // graded (adaptive) meshes that spreads the scales of the basis over many orders of magnitude
+  // and makes mass and stiffness matrices needlessly ill-conditioned. Scaling every function to
+  // largest Bernstein coefficient 1 (its sup norm up to a factor, since the Bernstein basis is a
+  // nonnegative partition of unity) keeps the same space with O(1) functions.
+  std::vector<double> scale(extraction_.dimension, 0.0);
+  for (std::size_t c = 0; c < extraction_.matrix.size(); ++c)
+    for (std::size_t a = 0; a < extraction_.dofs[c].size(); ++a) {
+      double& s = scale[extraction_.dofs[c][a]];
+      s = std::max(s, extraction_.matrix[c].row(static_cast<Eigen::Index>(a)).cwiseAbs().maxCoeff());
+    }
+  for (std::size_t c = 0; c < extraction_.matrix.size(); ++c)
+    for (std::size_t a = 0; a < extraction_.dofs[c].size(); ++a) {
+      const double s = scale[extraction_.dofs[c][a]];
+      if (s > 0.0) extraction_.matrix[c].row(static_cast<Eigen::Index>(a)) /= s;
+    }
 }
 
 int TMeshSpace::extra_points() const {
@@ -157,6 +178,10 @@ RulePtr TMeshSpace::edge_quadrature(int, int edge, int degree) const {
   RulePtr& r = edge_rules_[{edge, degree}];
   if (!r) r = std::make_shared<const QuadratureRule>(edge_rule(CellShape::quadrilateral, edge, gauss_legendre_for_degree(degree)));
   return r;
+}
+
+SpacePtr TMeshSpace::refined(const std::vector<int>& marked_elements) const {
+  return std::make_shared<const TMeshSpace>(refine_admissibly(mesh_, marked_elements), r_, rectangular_, domain_);
 }
 
 std::vector<std::string> TMeshSpace::boundary_names() const {

@@ -8,6 +8,7 @@
 /// Global functions are the Hermite-DOF basis of hermite_extraction.hpp (vertex jets, edge
 /// derivatives, cell bubbles). The local basis of a cell is the tensor generalized Bernstein basis
 /// of section_space.hpp; the active functions of a cell are E_c times it (E_c: n_active x (n+1)^2).
+/// Each global function is the Hermite-dual function scaled to largest Bernstein coefficient 1.
 
 #include <map>
 #include <memory>
@@ -48,6 +49,10 @@ class TMeshSpace final : public Space {
   std::vector<std::string> boundary_names() const override;
   std::vector<BoundaryEdge> boundary_edges(const std::string& name) const override;
 
+  /// Split the marked cells dyadically, plus the cells refine_admissibly adds (2:1 balance, and a
+  /// buffer when the result would not be regular and acyclic); same sections and regularity.
+  SpacePtr refined(const std::vector<int>& marked_elements) const override;
+
   const TMesh& mesh() const { return mesh_; }
   const HermiteExtraction& extraction() const { return extraction_; }
   /// The section space of the first cell (all cells share its n).
@@ -62,6 +67,9 @@ class TMeshSpace final : public Space {
  private:
   class TMeshEvaluator;
   int extra_points() const;
+  /// Scale every global function to largest Bernstein coefficient 1 (the Hermite DOFs stay the
+  /// construction; only the basis is rescaled, so dimension and span are unchanged).
+  void normalize_basis();
 
   TMesh mesh_;
   int r_;
