@@ -1,6 +1,8 @@
 #include "assembly/parallel.hpp"
 #include "assembly/assembler.hpp"
 
+#include <memory>
+
 namespace iga {
 
 
@@ -44,12 +46,30 @@ SparseMatrix Assembler::matrix(BilinearForm form, int quad_degree) const {
 }
 
 Eigen::VectorXd Assembler::load(const ScalarField& f, int quad_degree) const {
+  // Geometry first, then the transposed evaluation Σ_q f(x_q) JxW_q N_i(x_q) (Space::Evaluator::
+  // integrate_values), so a space never has to tabulate all its functions for a load vector.
   Eigen::VectorXd b = Eigen::VectorXd::Zero(space_.dimension());
-  for_each_element<Eigen::VectorXd>(update_values, [&](int e, ElementValues& ev, Eigen::VectorXd& local) {
-    ev.reinit(e, *space_.quadrature(e, quad_degree));
-    element_load(f, ev, local);
-    for (int i = 0; i < local.size(); ++i) b(ev.dofs()[i]) += local(i);
-  });
+  #pragma omp parallel if (worth_threads(space_.num_elements()))
+  {
+    const std::unique_ptr<Space::Evaluator> evaluator = space_.make_evaluator();
+    PointValues geometry;
+    Eigen::VectorXd jxw, fw, local;
+    for (const std::vector<int>& group : colours_) {
+      const int m = static_cast<int>(group.size());
+#pragma omp for schedule(dynamic, 16)
+      for (int k = 0; k < m; ++k) {
+        const int e = group[k];
+        const RulePtr rule_ptr = space_.quadrature(e, quad_degree);  // keeps the rule alive
+        const QuadratureRule& rule = *rule_ptr;
+        evaluator->evaluate_geometry(e, rule, geometry);
+        integration_weights(rule, geometry, jxw);
+        fw.resize(rule.size());
+        for (int q = 0; q < rule.size(); ++q) fw(q) = f(geometry.x.col(q)) * jxw(q);
+        evaluator->integrate_values(e, rule, geometry, fw, local);
+        for (int i = 0; i < local.size(); ++i) b(geometry.dofs[i]) += local(i);
+      }
+    }
+  }
   return b;
 }
 

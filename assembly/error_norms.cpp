@@ -3,7 +3,9 @@
 
 #include <cmath>
 
-#include "spaces/element_values.hpp"
+#include <memory>
+
+#include "spaces/space.hpp"
 
 namespace iga {
 
@@ -15,28 +17,30 @@ ErrorNorms error_norms(const Space& space, const Eigen::VectorXd& coefficients, 
   double l2 = 0, h1 = 0, h2 = 0;
 #pragma omp parallel reduction(+ : l2, h1, h2) if (worth_threads(ne))
   {
-    ElementValues ev(space, flags);
-    Eigen::VectorXd c;
+    // u_h and its derivatives come from Space::Evaluator::evaluate_function (one contraction per
+    // element instead of one table per active function).
+    const std::unique_ptr<Space::Evaluator> evaluator = space.make_evaluator();
+    PointValues geometry;
+    FunctionValues uh;
+    Eigen::VectorXd jxw;
 #pragma omp for schedule(dynamic, 16)
     for (int e = 0; e < ne; ++e) {
-      ev.reinit(e, *space.quadrature(e, quad_degree));
-      const PointValues& v = ev.values();
-      const int n = ev.num_functions();
-      c.resize(n);
-      for (int i = 0; i < n; ++i) c(i) = coefficients(ev.dofs()[i]);
-      const Eigen::VectorXd uh = v.value.transpose() * c;
-      for (int k = 0; k < ev.num_points(); ++k) {
-        const Point2 x = v.x.col(k);
-        const double w = ev.jxw()(k);
-        l2 += w * std::pow(uh(k) - exact.u(x), 2);
+      const RulePtr rule_ptr = space.quadrature(e, quad_degree);  // keeps the rule alive
+      const QuadratureRule& rule = *rule_ptr;
+      evaluator->evaluate_function(e, rule, coefficients, flags, geometry, uh);
+      integration_weights(rule, geometry, jxw);
+      for (int k = 0; k < rule.size(); ++k) {
+        const Point2 x = geometry.x.col(k);
+        const double w = jxw(k);
+        l2 += w * std::pow(uh.value(k) - exact.u(x), 2);
         if (grad) {
-          const double ex = v.dx.col(k).dot(c) - exact.ux(x), ey = v.dy.col(k).dot(c) - exact.uy(x);
+          const double ex = uh.dx(k) - exact.ux(x), ey = uh.dy(k) - exact.uy(x);
           h1 += w * (ex * ex + ey * ey);
         }
         if (hess) {
-          const double exx = v.dxx.col(k).dot(c) - exact.uxx(x);
-          const double exy = v.dxy.col(k).dot(c) - exact.uxy(x);
-          const double eyy = v.dyy.col(k).dot(c) - exact.uyy(x);
+          const double exx = uh.dxx(k) - exact.uxx(x);
+          const double exy = uh.dxy(k) - exact.uxy(x);
+          const double eyy = uh.dyy(k) - exact.uyy(x);
           h2 += w * (exx * exx + 2 * exy * exy + eyy * eyy);
         }
       }
@@ -55,15 +59,19 @@ std::pair<double, double> integral_and_area(const Space& space, const Eigen::Vec
   const int ne = space.num_elements();
 #pragma omp parallel reduction(+ : integral, area) if (worth_threads(ne))
   {
-    ElementValues ev(space, update_values);
+    const std::unique_ptr<Space::Evaluator> evaluator = space.make_evaluator();
+    PointValues geometry;
+    FunctionValues uh;
+    Eigen::VectorXd jxw;
 #pragma omp for schedule(dynamic, 16)
     for (int e = 0; e < ne; ++e) {
-      ev.reinit(e, *space.quadrature(e, quad_degree));
-      for (int k = 0; k < ev.num_points(); ++k) {
-        double uh = 0;
-        for (int i = 0; i < ev.num_functions(); ++i) uh += coefficients(ev.dofs()[i]) * ev.values().value(i, k);
-        integral += ev.jxw()(k) * uh;
-        area += ev.jxw()(k);
+      const RulePtr rule_ptr = space.quadrature(e, quad_degree);  // keeps the rule alive
+      const QuadratureRule& rule = *rule_ptr;
+      evaluator->evaluate_function(e, rule, coefficients, update_values, geometry, uh);
+      integration_weights(rule, geometry, jxw);
+      for (int k = 0; k < rule.size(); ++k) {
+        integral += jxw(k) * uh.value(k);
+        area += jxw(k);
       }
     }
   }

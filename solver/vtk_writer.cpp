@@ -20,10 +20,10 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
-#include <optional>
+#include <memory>
 #include <stdexcept>
 
-#include "spaces/element_values.hpp"
+#include "spaces/space.hpp"
 
 namespace iga {
 
@@ -123,48 +123,42 @@ void write_solution_vtu(const Space& space, const Eigen::VectorXd& coefficients,
   double* const laplace_ptr = options.laplacian ? laplace_u->GetPointer(0) : nullptr;
 
   // Pass 2: evaluate element by element. Elements write disjoint point ranges, so threads need no
-  // synchronisation beyond one ElementValues each; an exception is carried out of the parallel region.
+  // synchronisation beyond one Evaluator each; an exception is carried out of the parallel region.
   const unsigned flags = update_values | update_gradients | (options.laplacian ? update_hessians : 0u);
   std::exception_ptr failure;
 #pragma omp parallel if (num_elements > 1)
   {
-    std::optional<ElementValues> values;
+    std::unique_ptr<Space::Evaluator> evaluator;
     try {
-      values.emplace(space, flags);
+      evaluator = space.make_evaluator();
     } catch (...) {
 #pragma omp critical(iga_vtk_failure)
       if (!failure) failure = std::current_exception();
     }
+    PointValues geometry;
+    FunctionValues uh;
 #pragma omp for schedule(dynamic, 8)
     for (int e = 0; e < num_elements; ++e) {
-      if (!values) continue;
+      if (!evaluator) continue;
       try {
-        values->reinit(e, *layout.rule[e]);
-        const PointValues& v = values->values();
+        evaluator->evaluate_function(e, *layout.rule[e], coefficients, flags, geometry, uh);
         const vtkIdType first = layout.point_offset[e];
         const int q = static_cast<int>(layout.point_offset[e + 1] - first);
-        if (v.num_points() != q)
+        if (geometry.num_points() != q)
           throw std::logic_error("write_solution_vtu: element " + std::to_string(e) + " evaluated at " +
-                                 std::to_string(v.num_points()) + " points instead of " + std::to_string(q));
-        Eigen::VectorXd c(v.num_functions());
-        for (int i = 0; i < v.num_functions(); ++i) c(i) = coefficients(v.dofs[i]);
-        const Eigen::VectorXd uq = v.value.transpose() * c;
-        const Eigen::VectorXd dxq = v.dx.transpose() * c;
-        const Eigen::VectorXd dyq = v.dy.transpose() * c;
+                                 std::to_string(geometry.num_points()) + " points instead of " + std::to_string(q));
         for (int k = 0; k < q; ++k) {
           const vtkIdType p = first + k;
-          xyz[3 * p] = v.x(0, k);
-          xyz[3 * p + 1] = v.x(1, k);
+          xyz[3 * p] = geometry.x(0, k);
+          xyz[3 * p + 1] = geometry.x(1, k);
           xyz[3 * p + 2] = 0.0;
-          u_ptr[p] = uq(k);
-          grad_ptr[3 * p] = dxq(k);
-          grad_ptr[3 * p + 1] = dyq(k);
+          u_ptr[p] = uh.value(k);
+          grad_ptr[3 * p] = uh.dx(k);
+          grad_ptr[3 * p + 1] = uh.dy(k);
           grad_ptr[3 * p + 2] = 0.0;
         }
-        if (laplace_ptr) {
-          const Eigen::VectorXd lq = (v.dxx + v.dyy).transpose() * c;
-          for (int k = 0; k < q; ++k) laplace_ptr[first + k] = lq(k);
-        }
+        if (laplace_ptr)
+          for (int k = 0; k < q; ++k) laplace_ptr[first + k] = uh.dxx(k) + uh.dyy(k);
       } catch (...) {
 #pragma omp critical(iga_vtk_failure)
         if (!failure) failure = std::current_exception();
@@ -207,7 +201,8 @@ void write_mesh_vtu(const Space& space, int samples, const std::string& filename
   vtkNew<vtkCellArray> lines;
   auto cell_element = vtkSmartPointer<vtkIntArray>::New();
   cell_element->SetName("element");
-  ElementValues ev(space, update_values);
+  const std::unique_ptr<Space::Evaluator> evaluator = space.make_evaluator();
+  PointValues geometry;
   std::vector<vtkIdType> ids;
   for (int e = 0; e < ne; ++e) {
     // The closed boundary of the reference cell, m samples per edge, mapped like the solution.
@@ -218,10 +213,10 @@ void write_mesh_vtu(const Space& space, int samples, const std::string& filename
         outline.points.push_back(reference_edge_point(shape, edge, double(j) / m));
         outline.weights.push_back(0.0);
       }
-    ev.reinit(e, outline);
+    evaluator->evaluate_geometry(e, outline, geometry);
     ids.clear();
     for (int k = 0; k < outline.size(); ++k)
-      ids.push_back(points->InsertNextPoint(ev.values().x(0, k), ev.values().x(1, k), 0.0));
+      ids.push_back(points->InsertNextPoint(geometry.x(0, k), geometry.x(1, k), 0.0));
     ids.push_back(ids.front());
     lines->InsertNextCell(static_cast<vtkIdType>(ids.size()), ids.data());
     cell_element->InsertNextValue(e);

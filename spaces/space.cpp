@@ -1,5 +1,7 @@
 #include "spaces/space.hpp"
 
+#include <Eigen/LU>  // Matrix2d::determinant
+#include <cmath>
 #include <stdexcept>
 
 namespace iga {
@@ -35,6 +37,39 @@ QuadratureRule edge_rule(CellShape shape, int edge, const QuadratureRule& rule_0
   r.points.reserve(rule_01.points.size());
   for (const Point2& p : rule_01.points) r.points.push_back(reference_edge_point(shape, edge, p.x()));
   return r;
+}
+
+void integration_weights(const QuadratureRule& rule, const PointValues& geometry, Eigen::VectorXd& jxw) {
+  const int q = rule.size();
+  jxw.resize(q);
+  for (int k = 0; k < q; ++k) jxw(k) = rule.weights[k] * std::abs(geometry.jacobian[k].determinant());
+}
+
+void Space::Evaluator::evaluate_function(int element, const QuadratureRule& points, const Eigen::VectorXd& coefficients,
+                                         unsigned flags, PointValues& geometry, FunctionValues& out) {
+  evaluate(element, points, flags, geometry);
+  const int n = geometry.num_functions();
+  Eigen::VectorXd c(n);
+  for (int i = 0; i < n; ++i) c(i) = coefficients(geometry.dofs[i]);
+  if (flags & update_values) out.value.noalias() = geometry.value.transpose() * c;
+  if (flags & update_gradients) {
+    out.dx.noalias() = geometry.dx.transpose() * c;
+    out.dy.noalias() = geometry.dy.transpose() * c;
+  }
+  if (flags & update_hessians) {
+    out.dxx.noalias() = geometry.dxx.transpose() * c;
+    out.dxy.noalias() = geometry.dxy.transpose() * c;
+    out.dyy.noalias() = geometry.dyy.transpose() * c;
+  }
+}
+
+void Space::Evaluator::evaluate_geometry(int element, const QuadratureRule& points, PointValues& out) {
+  evaluate(element, points, update_values, out);
+}
+
+void Space::Evaluator::integrate_values(int /*element*/, const QuadratureRule& /*points*/, const PointValues& geometry,
+                                        const Eigen::VectorXd& weights, Eigen::VectorXd& local) {
+  local.noalias() = geometry.value * weights;
 }
 
 void Space::element_dofs(int element, std::vector<int>& out) const {

@@ -65,6 +65,18 @@ struct PointValues {
   int num_points() const { return static_cast<int>(x.cols()); }
 };
 
+/// One discrete function u_h = Σ_i c_i N_i and its physical derivatives at the q points of a rule
+/// (vectors of length q). Filled by Space::Evaluator::evaluate_function; only the vectors asked for
+/// by the flags are set (update_values: value, update_gradients: dx, dy, update_hessians: dxx, dxy, dyy).
+struct FunctionValues {
+  Eigen::VectorXd value;
+  Eigen::VectorXd dx, dy;
+  Eigen::VectorXd dxx, dxy, dyy;
+};
+
+/// Integration weights w_q |det J(x_q)| of `rule` on an element whose geometry is in `geometry`.
+void integration_weights(const QuadratureRule& rule, const PointValues& geometry, Eigen::VectorXd& jxw);
+
 /// A boundary edge: edge `local_edge` of element `element`.
 struct BoundaryEdge {
   int element = 0;
@@ -90,6 +102,24 @@ class Space {
     /// Fill out.dofs, out.x, out.jacobian and the arrays requested by `flags` at the reference
     /// points of `points` (weights are ignored).
     virtual void evaluate(int element, const QuadratureRule& points, unsigned flags, PointValues& out) = 0;
+
+    /// u_h = Σ_i coefficients(i) N_i (coefficients: one per global function, dimension() entries)
+    /// and, per `flags`, its physical gradient and Hessian at the points of `points`. `geometry`
+    /// receives at least dofs, x and jacobian (other arrays are scratch). The default evaluates all
+    /// active functions and contracts them; a space with a large extraction overrides it and
+    /// contracts the coefficients first (one table product instead of n).
+    virtual void evaluate_function(int element, const QuadratureRule& points, const Eigen::VectorXd& coefficients,
+                                   unsigned flags, PointValues& geometry, FunctionValues& out);
+
+    /// Geometry for integrate_values: fills out.dofs, out.x and out.jacobian, plus whatever the
+    /// space's integrate_values reads from `out` (the default also fills out.value).
+    virtual void evaluate_geometry(int element, const QuadratureRule& points, PointValues& out);
+
+    /// The transposed evaluation (load vectors): local(i) = Σ_q weights(q) N_i(x_q), i in
+    /// element_dofs order, for point weights that already include f(x_q) and JxW. `geometry` is the
+    /// output of evaluate_geometry(element, points, geometry). The default is geometry.value * weights.
+    virtual void integrate_values(int element, const QuadratureRule& points, const PointValues& geometry,
+                                  const Eigen::VectorXd& weights, Eigen::VectorXd& local);
   };
   virtual std::unique_ptr<Evaluator> make_evaluator() const = 0;
 

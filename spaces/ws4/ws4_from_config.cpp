@@ -2,6 +2,7 @@
 
 #include <sstream>
 
+#include "spaces/ws4/ws4_jitter.hpp"
 #include "spaces/ws4/ws4_space.hpp"
 
 namespace iga {
@@ -43,9 +44,9 @@ SpacePtr make_ws4_space(const ConfigNode& domain, const ConfigNode& space, int l
   const std::string type = domain["type"].as_choice({"unit_square", "rectangle"});
   Point2 lo(0, 0), hi(1, 1);
   if (type == "unit_square") {
-    domain.check_keys({"type"});
+    domain.check_keys({"type", "jitter", "seed"});
   } else {
-    domain.check_keys({"type", "min", "max"});
+    domain.check_keys({"type", "min", "max", "jitter", "seed"});
     lo = read_point(domain["min"]);
     hi = read_point(domain["max"]);
     if (!(lo.x() < hi.x()) || !(lo.y() < hi.y()))
@@ -53,8 +54,18 @@ SpacePtr make_ws4_space(const ConfigNode& domain, const ConfigNode& space, int l
   }
   ws4::Triangulation mesh = ws4::Triangulation::rectangle(nx, ny, lo, hi);
   for (int l = 0; l < level; ++l) mesh = mesh.refined();
-  return std::make_shared<const ws4::Ws4Space>(std::move(mesh), "rectangle " + box(lo, hi) + ", " + std::to_string(nx) +
-                                                                   "x" + std::to_string(ny) + " squares");
+  std::string description = "rectangle " + box(lo, hi) + ", " + std::to_string(nx) + "x" + std::to_string(ny) + " squares";
+  if (const auto jn = domain.find("jitter")) {
+    const double jitter = jn->as_double();
+    if (!(jitter >= 0.0 && jitter <= 0.2)) jn->fail("jitter must be in [0, 0.2] (fraction of the shortest edge)");
+    const int seed = domain.has("seed") ? domain["seed"].as_int() : 1;
+    // Each level is jittered afresh from the regular refinement (seed + level: reproducible).
+    ws4::jitter_interior_vertices(mesh, jitter, static_cast<unsigned>(seed + level));
+    std::ostringstream s;
+    s << ", interior vertices jittered by " << jitter << " (seed " << seed << ")";
+    description += s.str();
+  }
+  return std::make_shared<const ws4::Ws4Space>(std::move(mesh), description);
 }
 
 }  // namespace iga

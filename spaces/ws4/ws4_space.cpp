@@ -67,6 +67,60 @@ class Ws4Space::Ws4Evaluator final : public Space::Evaluator {
       ref_.detaeta.noalias() = c.transpose() * t.ref.detaeta;
     }
     space_.element_dofs(element, out.dofs);
+    fill_jets(element, rule);
+    push_forward(jets_, ref_, flags, out);
+  }
+
+  /// b = C_K c_K (coefficients of u_h in the reference basis), then one table product per array.
+  void evaluate_function(int element, const QuadratureRule& rule, const Eigen::VectorXd& coefficients, unsigned flags,
+                         PointValues& geometry, FunctionValues& out) override {
+    const Tables& t = tables(rule);
+    space_.element_dofs(element, geometry.dofs);
+    Eigen::Matrix<double, Ws4Space::dofs_per_element, 1> c;
+    for (int i = 0; i < Ws4Space::dofs_per_element; ++i) c(i) = coefficients(geometry.dofs[i]);
+    b_.noalias() = space_.extraction(element) * c;
+    const bool grads = (flags & (update_gradients | update_hessians)) != 0;
+    const bool hess = (flags & update_hessians) != 0;
+    if (flags & update_values) one_.value.noalias() = b_.transpose() * t.ref.value;
+    if (grads) {
+      one_.dxi.noalias() = b_.transpose() * t.ref.dxi;
+      one_.deta.noalias() = b_.transpose() * t.ref.deta;
+    }
+    if (hess) {
+      one_.dxixi.noalias() = b_.transpose() * t.ref.dxixi;
+      one_.dxieta.noalias() = b_.transpose() * t.ref.dxieta;
+      one_.detaeta.noalias() = b_.transpose() * t.ref.detaeta;
+    }
+    fill_jets(element, rule);
+    push_forward(jets_, one_, flags, single_);
+    geometry.x = single_.x;
+    geometry.jacobian = single_.jacobian;
+    if (flags & update_values) out.value = single_.value.row(0).transpose();
+    if (flags & update_gradients) {
+      out.dx = single_.dx.row(0).transpose();
+      out.dy = single_.dy.row(0).transpose();
+    }
+    if (flags & update_hessians) {
+      out.dxx = single_.dxx.row(0).transpose();
+      out.dxy = single_.dxy.row(0).transpose();
+      out.dyy = single_.dyy.row(0).transpose();
+    }
+  }
+
+  /// Geometry only (no table product); integrate_values works from the cached tables.
+  void evaluate_geometry(int element, const QuadratureRule& rule, PointValues& out) override {
+    evaluate(element, rule, 0u, out);
+  }
+
+  /// local = C_Kᵀ (B g): one table product with the weights, then the extraction.
+  void integrate_values(int element, const QuadratureRule& rule, const PointValues& /*geometry*/,
+                        const Eigen::VectorXd& weights, Eigen::VectorXd& local) override {
+    b_.noalias() = tables(rule).ref.value * weights;
+    local.noalias() = space_.extraction(element).transpose() * b_;
+  }
+
+ private:
+  void fill_jets(int element, const QuadratureRule& rule) {
     const Eigen::Matrix2d j = space_.jacobian(element);
     const Point2 p0 = space_.mesh_.vertices()[space_.mesh_.triangle(element)[0]];
     jets_.resize(rule.size());
@@ -74,10 +128,8 @@ class Ws4Space::Ws4Evaluator final : public Space::Evaluator {
       jets_[k].x = p0 + j * rule.points[k];
       jets_[k].jacobian = j;
     }
-    push_forward(jets_, ref_, flags, out);
   }
 
- private:
   struct Tables {
     std::vector<Point2> points;  // copy, to detect a different rule at a reused address
     ReferenceDerivatives ref;
@@ -96,6 +148,9 @@ class Ws4Space::Ws4Evaluator final : public Space::Evaluator {
   std::map<const QuadratureRule*, Tables> cache_;
   ReferenceDerivatives ref_;
   std::vector<GeometryJet> jets_;
+  Eigen::VectorXd b_;            // C_K c_K or B g (51)
+  ReferenceDerivatives one_;     // u_h in reference derivatives (1 x q)
+  PointValues single_;           // u_h pushed forward (1 x q)
 };
 
 // ---------------------------------------------------------------------------------------------

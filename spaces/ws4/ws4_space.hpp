@@ -61,6 +61,10 @@ class Ws4Space final : public Space {
   /// C_Kᵀ K_B C_K with K_B from the universal reference matrices (ws4_reference_matrices.hpp).
   bool closed_form_element_matrix(int element, BilinearForm form, Eigen::MatrixXd& local) const override;
 
+  /// Draws the element on its split (ws4_sample_cell.hpp): the 342 fan triangles over the 178 split
+  /// vertices, each subdivided further for resolution >= 16, so linear cells never straddle a piece.
+  SampleCell sample_cell(int element, int resolution) const override;
+
   std::vector<std::string> boundary_names() const override { return mesh_.part_names(); }
   /// Throws InputError for an unknown name.
   std::vector<BoundaryEdge> boundary_edges(const std::string& name) const override;
