@@ -4,6 +4,8 @@
 
 #include "solver/errors.hpp"
 #include "spaces/bspline/bspline_basis_1d.hpp"
+#include "spaces/g1/boundary_parts.hpp"
+#include "spaces/g1/gradient_jump.hpp"
 #include "spaces/push_forward.hpp"
 
 namespace iga {
@@ -125,13 +127,21 @@ RulePtr G1Space::edge_quadrature(int, int edge, int degree) const {
   return r;
 }
 
+std::vector<std::string> G1Space::boundary_names() const { return boundary_part_names(*mesh_); }
+
 std::vector<BoundaryEdge> G1Space::boundary_edges(const std::string& name) const {
-  if (name != "all")
-    throw InputError("unknown boundary '" + name + "' of a multipatch G1 space (valid: all)");
-  std::vector<BoundaryEdge> out;
-  for (int e = 0; e < mesh_->num_edges(); ++e)
-    if (mesh_->edge(e).boundary()) out.push_back({mesh_->edge(e).first.face, mesh_->edge(e).first.local_edge});
-  return out;
+  return boundary_part_edges(*mesh_, name);
+}
+
+std::optional<double> G1Space::max_gradient_jump(const Eigen::VectorXd& coefficients) const {
+  std::vector<Eigen::VectorXd> faces(mesh_->num_faces());
+  for (int f = 0; f < mesh_->num_faces(); ++f) {
+    const std::vector<int>& dofs = basis_.face_dofs[f];
+    Eigen::VectorXd local(dofs.size());
+    for (std::size_t i = 0; i < dofs.size(); ++i) local[static_cast<Eigen::Index>(i)] = coefficients[dofs[i]];
+    faces[f] = basis_.extraction[f] * local;
+  }
+  return iga::max_gradient_jump(*mesh_, basis_.degree, faces);
 }
 
 }  // namespace iga

@@ -42,9 +42,14 @@ class G1Space final : public Space {
   RulePtr quadrature(int element, int degree) const override;
   RulePtr edge_quadrature(int element, int edge, int degree) const override;
 
-  /// Only "all" (every boundary edge); named parts are not defined on these meshes.
-  std::vector<std::string> boundary_names() const override { return {}; }
+  /// Sides of the domain's bounding box that boundary edges lie on: `left` (x = x_min), `right`,
+  /// `bottom` (y = y_min), `top`; only the nonempty ones (see boundary_parts.hpp). "all" is implied.
+  std::vector<std::string> boundary_names() const override;
   std::vector<BoundaryEdge> boundary_edges(const std::string& name) const override;
+
+  /// Largest physical gradient jump of Σ c_i N_i over every interior interface, sampled at
+  /// gradient_jump_samples(k) points per edge (gradient_jump.hpp).
+  std::optional<double> max_gradient_jump(const Eigen::VectorXd& coefficients) const override;
 
   const QuadMesh& mesh() const { return *mesh_; }
   const std::vector<EdgeGluing>& gluing() const { return gluing_; }
