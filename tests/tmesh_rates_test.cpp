@@ -11,32 +11,8 @@ using namespace iga;
 
 namespace {
 
-struct Rates {
-  double l2, h1, h2;
-};
-
-/// Solve on levels 0..levels-1, print the table, return the rates between the last two levels.
-Rates last_rates(const std::string& yaml, int levels) {
-  const ProblemSpec problem = test::problem_from_yaml(yaml);
-  std::vector<LevelResult> rows;
-  for (int level = 0; level < levels; ++level) {
-    const SpacePtr space = test::space_from_yaml(yaml, level);
-    rows.push_back(solve_problem(*space, problem, SolverKind::cholmod).result);
-    const LevelResult& b = rows.back();
-    std::printf("level %d cells %d dofs %d h %.4f  L2 %.3e H1 %.3e H2 %.3e", level, space->num_elements(),
-                space->dimension(), b.h, *b.l2, *b.h1, b.h2.value_or(0.0));
-    if (level > 0) {
-      const LevelResult& a = rows[level - 1];
-      std::printf("  rates %.2f %.2f", *rate(a.l2, b.l2, a.h, b.h), *rate(a.h1, b.h1, a.h, b.h));
-      if (a.h2 && b.h2) std::printf(" %.2f", *rate(a.h2, b.h2, a.h, b.h));
-    }
-    std::printf("\n");
-  }
-  const LevelResult &a = rows[levels - 2], &b = rows[levels - 1];
-  Rates r{*rate(a.l2, b.l2, a.h, b.h), *rate(a.h1, b.h1, a.h, b.h), 0.0};
-  if (a.h2 && b.h2) r.h2 = *rate(a.h2, b.h2, a.h, b.h);
-  return r;
-}
+using test::last_rates;
+using test::Rates;
 
 const char* kDyadic =
     "domain: {type: rectangle, min: [0, 0], max: [3.141592653589793, 3.141592653589793]}\n";

@@ -109,23 +109,9 @@ std::vector<std::pair<std::string, std::string>> G1Space::parameters() const {
           {"domain", mesh_->name()}};
 }
 
-RulePtr G1Space::quadrature(int, int degree) const {
-  degree = std::max(degree, 0);
-  std::lock_guard<std::mutex> lock(rule_mutex_);
-  RulePtr& r = cell_rules_[degree];
-  if (!r) r = std::make_shared<const QuadratureRule>(tensor_gauss(degree));
-  return r;
-}
+RulePtr G1Space::quadrature(int, int degree) const { return rules_.cell(degree); }
 
-RulePtr G1Space::edge_quadrature(int, int edge, int degree) const {
-  degree = std::max(degree, 0);
-  std::lock_guard<std::mutex> lock(rule_mutex_);
-  RulePtr& r = edge_rules_[{edge, degree}];
-  if (!r)
-    r = std::make_shared<const QuadratureRule>(
-        edge_rule(CellShape::quadrilateral, edge, gauss_legendre_for_degree(degree)));
-  return r;
-}
+RulePtr G1Space::edge_quadrature(int, int edge, int degree) const { return rules_.edge(edge, degree); }
 
 std::vector<std::string> G1Space::boundary_names() const { return boundary_part_names(*mesh_); }
 

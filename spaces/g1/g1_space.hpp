@@ -12,6 +12,7 @@
 #include <memory>
 #include <mutex>
 
+#include "spaces/gauss_rule_cache.hpp"
 #include "spaces/g1/g1_basis.hpp"
 #include "spaces/g1/gluing_data.hpp"
 #include "spaces/g1/quad_mesh.hpp"
@@ -64,9 +65,7 @@ class G1Space final : public Space {
   double mesh_size_ = 0.0;
   bool affine_ = false;
 
-  mutable std::mutex rule_mutex_;
-  mutable std::map<int, RulePtr> cell_rules_;
-  mutable std::map<std::pair<int, int>, RulePtr> edge_rules_;
+  GaussRuleCache rules_;
 };
 
 }  // namespace iga
