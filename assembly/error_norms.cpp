@@ -53,29 +53,4 @@ ErrorNorms error_norms(const Space& space, const Eigen::VectorXd& coefficients, 
   return r;
 }
 
-std::pair<double, double> integral_and_area(const Space& space, const Eigen::VectorXd& coefficients,
-                                            int quad_degree) {
-  double integral = 0, area = 0;
-  const int ne = space.num_elements();
-#pragma omp parallel reduction(+ : integral, area) if (worth_threads(ne))
-  {
-    const std::unique_ptr<Space::Evaluator> evaluator = space.make_evaluator();
-    PointValues geometry;
-    FunctionValues uh;
-    Eigen::VectorXd jxw;
-#pragma omp for schedule(dynamic, 16)
-    for (int e = 0; e < ne; ++e) {
-      const RulePtr rule_ptr = space.quadrature(e, quad_degree);  // keeps the rule alive
-      const QuadratureRule& rule = *rule_ptr;
-      evaluator->evaluate_function(e, rule, coefficients, update_values, geometry, uh);
-      integration_weights(rule, geometry, jxw);
-      for (int k = 0; k < rule.size(); ++k) {
-        integral += jxw(k) * uh.value(k);
-        area += jxw(k);
-      }
-    }
-  }
-  return {integral, area};
-}
-
 }  // namespace iga

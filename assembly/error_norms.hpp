@@ -22,7 +22,5 @@ struct ErrorNorms {
 ErrorNorms error_norms(const Space& space, const Eigen::VectorXd& coefficients, const ExactSolution& exact,
                        int quad_degree);
 
-/// ∫ u_h over the domain and the domain area (checks and mean values).
-std::pair<double, double> integral_and_area(const Space& space, const Eigen::VectorXd& coefficients, int quad_degree);
 
 }  // namespace iga
