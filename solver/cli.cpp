@@ -39,9 +39,14 @@ int run_config(const std::string& config_path, const std::string& output, int le
   staged.commit();
 
   std::cout << result.space_type << " / " << to_string(settings.problem.pde) << " — " << config_path << '\n'
-            << format_convergence_table(result.rows) << "expected rates: L2 " << result.expected.l2 << ", H1 "
-            << result.expected.h1 << ", H2 " << result.expected.h2 << "   (H1, H2 are seminorms)\n"
-            << "results: " << settings.output_dir << '\n';
+            << format_convergence_table(result.rows, result.adaptive);
+  if (result.adaptive)  // optimal order k in h is k/2 in the number of DOFs N (2D)
+    std::cout << "optimal rates against N: L2 " << result.expected.l2 / 2.0 << ", H1 " << result.expected.h1 / 2.0
+              << ", H2 " << result.expected.h2 / 2.0;
+  else
+    std::cout << "expected rates: L2 " << result.expected.l2 << ", H1 " << result.expected.h1 << ", H2 "
+              << result.expected.h2;
+  std::cout << "   (H1, H2 are seminorms)\nresults: " << settings.output_dir << '\n';
   return 0;
 }
 

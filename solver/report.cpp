@@ -88,17 +88,19 @@ void write_convergence_csv(const std::vector<LevelResult>& rows, const std::stri
   }
 }
 
-std::string format_convergence_table(const std::vector<LevelResult>& rows) {
+std::string format_convergence_table(const std::vector<LevelResult>& rows, bool rates_against_dofs) {
   // The gradient-jump column appears only for spaces that compute it.
   const bool jumps = std::any_of(rows.begin(), rows.end(), [](const LevelResult& r) { return r.g1_jump.has_value(); });
   std::ostringstream s;
   char line[256];
+  // Against DOFs, "rate" is log(e_prev/e)/log(N/N_prev): h^k corresponds to N^(k/2) in 2D.
+  const char* rate_label = rates_against_dofs ? "rate/N" : "rate";
   std::snprintf(line, sizeof line, "%5s %10s %8s %11s %6s %11s %6s %11s %6s %9s %9s", "level", "h", "dofs", "L2",
-                "rate", "H1-semi", "rate", "H2-semi", "rate", "assemble", "solve");
+                rate_label, "H1-semi", rate_label, "H2-semi", rate_label, "assemble", "solve");
   s << line << (jumps ? "   g1_jump\n" : "\n");
   for (std::size_t i = 0; i < rows.size(); ++i) {
     const LevelResult& r = rows[i];
-    const Rates q = rates_at(rows, i);
+    const Rates q = rates_against_dofs ? dof_rates_at(rows, i) : rates_at(rows, i);
     auto e = [](std::optional<double> v) { return v ? number(v, "%.3e") : std::string("-"); };
     auto k = [](std::optional<double> v) { return v ? number(v, "%.2f") : std::string(""); };
     std::snprintf(line, sizeof line, "%5d %10.4e %8d %11s %6s %11s %6s %11s %6s %8.3fs %8.3fs", r.level, r.h, r.dofs,

@@ -14,7 +14,8 @@ namespace iga {
 void write_convergence_csv(const std::vector<LevelResult>& rows, const std::string& filename);
 
 /// The convergence table as aligned text, one row per level, rates from consecutive levels.
-std::string format_convergence_table(const std::vector<LevelResult>& rows);
+/// With `rates_against_dofs` (adaptive studies) the rate columns are log(e_prev/e)/log(N/N_prev).
+std::string format_convergence_table(const std::vector<LevelResult>& rows, bool rates_against_dofs = false);
 
 /// Config echo, space and parameters, rows, least-squares rates, timings.
 void write_summary_json(const StudySettings& settings, const StudyResult& result, const std::string& filename);
