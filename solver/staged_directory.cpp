@@ -18,6 +18,16 @@ std::string unique_suffix() {
   std::random_device rd;
   return std::to_string(::getpid()) + "-" + std::to_string(rd() % 1000000);
 }
+/// ".NAME<tag><unique>": a hidden sibling of `target`. Built by appending (GCC 12 warns, wrongly,
+/// about `"." + std::string` with -Wrestrict).
+std::string hidden_sibling(const fs::path& target, const char* tag) {
+  std::string name(".");
+  name += target.filename().string();
+  name += tag;
+  name += unique_suffix();
+  return name;
+}
+
 }  // namespace
 
 void check_output_location(const std::string& final_path) {
@@ -51,8 +61,8 @@ void StagedDirectory::commit() {
   if (target.has_parent_path()) fs::create_directories(target.parent_path());
   // Copy next to the target first (the temp dir may be on another file system), then swap by
   // renames, which are atomic within one file system.
-  const fs::path incoming = target.parent_path() / ("." + target.filename().string() + ".incoming-" + unique_suffix());
-  const fs::path old = target.parent_path() / ("." + target.filename().string() + ".old-" + unique_suffix());
+  const fs::path incoming = target.parent_path() / hidden_sibling(target, ".incoming-");
+  const fs::path old = target.parent_path() / hidden_sibling(target, ".old-");
   std::error_code ec;
   bool replaced = false;
   try {
