@@ -71,6 +71,9 @@ class ConfigNode {
   YAML::Mark key_mark_ = YAML::Mark::null_mark();  ///< of the key; an empty value has no place of its own
 };
 
+/// A number as messages show it: shortest natural form ("0.5", "3", "1e-06").
+std::string format_number(double x);
+
 /// Levenshtein-nearest of `candidates` to `word`, or empty when none is close (for suggestions).
 std::string nearest_word(const std::string& word, const std::vector<std::string>& candidates);
 

@@ -1,3 +1,4 @@
+#include "solver/config_node.hpp"
 #include "spaces/bspline/bspline_from_config.hpp"
 
 #include <sstream>
@@ -9,12 +10,6 @@
 namespace iga {
 
 namespace {
-
-std::string fmt(double x) {
-  std::ostringstream s;
-  s << x;
-  return s.str();
-}
 
 Point2 read_point(const ConfigNode& node) {
   const std::vector<double> v = node.as_doubles();
@@ -55,7 +50,7 @@ PatchGeometry read_patch(const ConfigNode& domain) {
       wn->fail("need one weight per control point: " + std::to_string(cp.size()) + " (got " +
                std::to_string(w.size()) + ")");
     for (size_t i = 0; i < w.size(); ++i)
-      if (!(w[i] > 0.0)) wn->fail("weights must be positive (weight " + std::to_string(i) + " is " + fmt(w[i]) + ")");
+      if (!(w[i] > 0.0)) wn->fail("weights must be positive (weight " + std::to_string(i) + " is " + format_number(w[i]) + ")");
   }
   try {
     return PatchGeometry(ku, kv, std::move(cp), std::move(w),
@@ -86,16 +81,16 @@ std::shared_ptr<const PatchGeometry> make_patch_geometry(const ConfigNode& domai
     domain.check_keys({"type", "min", "max"});
     const Point2 lo = read_point(domain["min"]), hi = read_point(domain["max"]);
     if (!(lo.x() < hi.x()) || !(lo.y() < hi.y()))
-      domain["max"].fail("max must be greater than min in both coordinates (got min = [" + fmt(lo.x()) + ", " +
-                         fmt(lo.y()) + "], max = [" + fmt(hi.x()) + ", " + fmt(hi.y()) + "])");
+      domain["max"].fail("max must be greater than min in both coordinates (got min = [" + format_number(lo.x()) + ", " +
+                         format_number(lo.y()) + "], max = [" + format_number(hi.x()) + ", " + format_number(hi.y()) + "])");
     g = std::make_shared<const PatchGeometry>(PatchGeometry::rectangle(lo, hi));
   } else if (type == "quarter_annulus") {
     domain.check_keys({"type", "inner", "outer"});
     const double r0 = domain["inner"].as_double(), r1 = domain["outer"].as_double();
-    if (!(r0 > 0.0)) domain["inner"].fail("the inner radius must be > 0 (got " + fmt(r0) + ")");
+    if (!(r0 > 0.0)) domain["inner"].fail("the inner radius must be > 0 (got " + format_number(r0) + ")");
     if (!(r0 < r1))
-      domain["outer"].fail("the outer radius must be greater than the inner one (got inner = " + fmt(r0) +
-                           ", outer = " + fmt(r1) + ")");
+      domain["outer"].fail("the outer radius must be greater than the inner one (got inner = " + format_number(r0) +
+                           ", outer = " + format_number(r1) + ")");
     g = std::make_shared<const PatchGeometry>(PatchGeometry::quarter_annulus(r0, r1));
   } else {
     g = std::make_shared<const PatchGeometry>(read_patch(domain));

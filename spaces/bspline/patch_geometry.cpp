@@ -1,3 +1,4 @@
+#include "solver/config_node.hpp"
 #include "spaces/bspline/patch_geometry.hpp"
 
 #include <Eigen/LU>  // Matrix2d::determinant
@@ -23,12 +24,6 @@ KnotVector to_unit_interval(const KnotVector& kv) {
   return KnotVector(kv.degree(), std::move(t));
 }
 
-std::string fmt(double x) {
-  std::ostringstream s;
-  s << x;
-  return s.str();
-}
-
 }  // namespace
 
 PatchGeometry::PatchGeometry(const KnotVector& knots_u, const KnotVector& knots_v, std::vector<Point2> control_points,
@@ -50,7 +45,7 @@ PatchGeometry::PatchGeometry(const KnotVector& knots_u, const KnotVector& knots_
                        std::to_string(weights_.size()) + ")");
     for (int i = 0; i < n; ++i)
       if (!(weights_[i] > 0.0) || !std::isfinite(weights_[i]))
-        throw InputError("weights must be positive (weight " + std::to_string(i) + " is " + fmt(weights_[i]) + ")");
+        throw InputError("weights must be positive (weight " + std::to_string(i) + " is " + format_number(weights_[i]) + ")");
   } else {
     weights_.assign(n, 1.0);
   }
@@ -60,21 +55,21 @@ PatchGeometry::PatchGeometry(const KnotVector& knots_u, const KnotVector& knots_
 
 PatchGeometry PatchGeometry::rectangle(const Point2& min, const Point2& max) {
   if (!(min.x() < max.x()) || !(min.y() < max.y()))
-    throw InputError("rectangle needs min < max in both coordinates (got min = [" + fmt(min.x()) + ", " +
-                     fmt(min.y()) + "], max = [" + fmt(max.x()) + ", " + fmt(max.y()) + "])");
+    throw InputError("rectangle needs min < max in both coordinates (got min = [" + format_number(min.x()) + ", " +
+                     format_number(min.y()) + "], max = [" + format_number(max.x()) + ", " + format_number(max.y()) + "])");
   const KnotVector linear(1, {0.0, 0.0, 1.0, 1.0});
   PatchGeometry g(linear, linear,
                   {Point2(min.x(), min.y()), Point2(max.x(), min.y()), Point2(min.x(), max.y()), Point2(max.x(), max.y())},
                   {},
-                  "rectangle [" + fmt(min.x()) + "," + fmt(max.x()) + "]x[" + fmt(min.y()) + "," + fmt(max.y()) + "]");
+                  "rectangle [" + format_number(min.x()) + "," + format_number(max.x()) + "]x[" + format_number(min.y()) + "," + format_number(max.y()) + "]");
   g.affine_ = true;
   return g;
 }
 
 PatchGeometry PatchGeometry::quarter_annulus(double inner, double outer) {
   if (!(inner > 0.0) || !(inner < outer) || !std::isfinite(outer))
-    throw InputError("quarter annulus needs 0 < inner < outer (got inner = " + fmt(inner) + ", outer = " +
-                     fmt(outer) + ")");
+    throw InputError("quarter annulus needs 0 < inner < outer (got inner = " + format_number(inner) + ", outer = " +
+                     format_number(outer) + ")");
   const KnotVector radial(1, {0.0, 0.0, 1.0, 1.0});
   const KnotVector angular(2, {0.0, 0.0, 0.0, 1.0, 1.0, 1.0});
   const double w = 1.0 / std::sqrt(2.0);  // the middle weight that makes the conic a circle
@@ -87,7 +82,7 @@ PatchGeometry PatchGeometry::quarter_annulus(double inner, double outer) {
       wt.push_back(j == 1 ? w : 1.0);
     }
   return PatchGeometry(radial, angular, std::move(cp), std::move(wt),
-                       "quarter annulus r in [" + fmt(inner) + "," + fmt(outer) + "]");
+                       "quarter annulus r in [" + format_number(inner) + "," + format_number(outer) + "]");
 }
 
 GeometryJet PatchGeometry::evaluate(const Point2& uv) const {
@@ -164,7 +159,7 @@ void PatchGeometry::check_orientation(const std::string& name) const {
           }
         }
   if (nonpositive == 0) return;
-  const std::string at = "det J = " + fmt(worst) + " at parameter (" + fmt(worst_uv.x()) + ", " + fmt(worst_uv.y()) + ")";
+  const std::string at = "det J = " + format_number(worst) + " at parameter (" + format_number(worst_uv.x()) + ", " + format_number(worst_uv.y()) + ")";
   if (positive == 0)
     throw InputError(name + ": the geometry map (" + description_ + ") reverses orientation (" + at +
                      "); order the control points so that the u and v directions turn counterclockwise");

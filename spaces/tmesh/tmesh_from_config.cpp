@@ -1,3 +1,4 @@
+#include "solver/config_node.hpp"
 #include "spaces/tmesh/tmesh_from_config.hpp"
 
 #include <cmath>
@@ -10,12 +11,6 @@
 namespace iga {
 
 namespace {
-
-std::string fmt(double x) {
-  std::ostringstream s;
-  s << x;
-  return s.str();
-}
 
 Eigen::Vector2d read_point(const ConfigNode& node) {
   const std::vector<double> v = node.as_doubles();
@@ -44,7 +39,7 @@ SpacePtr make_tmesh_space(const ConfigNode& domain, const ConfigNode& space, int
   }
   if (auto wn = space.find("frequency")) {
     spec.w = wn->as_double();
-    if (!(spec.w > 0.0)) wn->fail("the frequency must be > 0 (got " + fmt(spec.w) + ")");
+    if (!(spec.w > 0.0)) wn->fail("the frequency must be > 0 (got " + format_number(spec.w) + ")");
   }
   std::vector<int> elements{2, 2};
   if (auto en = space.find("elements")) {
@@ -85,14 +80,14 @@ SpacePtr make_tmesh_space(const ConfigNode& domain, const ConfigNode& space, int
     double hmax = 0.0;
     for (int c = 0; c < mesh.num_cells(); ++c) hmax = std::max({hmax, mesh.width(c), mesh.height(c)});
     if (spec.w * hmax >= std::numbers::pi) {
-      const std::string msg = "trigonometric sections need w*h < pi on every cell: w = " + fmt(spec.w) +
-                              ", largest cell side h = " + fmt(hmax) + " gives w*h = " + fmt(spec.w * hmax) +
+      const std::string msg = "trigonometric sections need w*h < pi on every cell: w = " + format_number(spec.w) +
+                              ", largest cell side h = " + format_number(hmax) + " gives w*h = " + format_number(spec.w * hmax) +
                               "; use more elements, a higher level or a lower frequency";
       if (auto wn = space.find("frequency")) wn->fail(msg);
       space.fail(msg);
     }
   }
-  const std::string desc = type + " [" + fmt(lo.x()) + ", " + fmt(hi.x()) + "] x [" + fmt(lo.y()) + ", " + fmt(hi.y()) + "]";
+  const std::string desc = type + " [" + format_number(lo.x()) + ", " + format_number(hi.x()) + "] x [" + format_number(lo.y()) + ", " + format_number(hi.y()) + "]";
   try {
     return std::make_shared<const TMeshSpace>(std::move(mesh), r, type == "rectangle", desc);
   } catch (const std::invalid_argument& e) {
