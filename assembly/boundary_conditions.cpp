@@ -1,6 +1,8 @@
 #include "assembly/parallel.hpp"
 #include "assembly/boundary_conditions.hpp"
 
+#include <Eigen/Cholesky>
+#include <Eigen/QR>
 #include <Eigen/SparseCholesky>
 #include <algorithm>
 #include <cmath>
@@ -21,6 +23,64 @@ struct EdgeKind {
   bool value = false;
   bool normal = false;
 };
+
+// Dense work on the boundary functions only; beyond this many the fallback would be too slow.
+constexpr int kMaxDenseBoundary = 6000;
+
+/// The singular case of impose_essential: M (m x m, Gram matrix of the boundary data of the
+/// functions `order`) has dependent columns. Constrain an independent subset, keep the others free
+/// with their trace combinations subtracted. Fills c.values, c.constrained, c.free, c.basis_change.
+void split_dependent_traces(const Eigen::MatrixXd& M, const Eigen::VectorXd& r, const std::vector<int>& order,
+                            const std::vector<int>& local_of, Constraints& c) {
+  const int m = static_cast<int>(M.rows());
+  if (m > kMaxDenseBoundary)
+    throw NumericalError("boundary projection is singular (dependent boundary traces) and too large (" +
+                         std::to_string(m) + " functions) for the dense fallback");
+  Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(M);
+  qr.setThreshold(1e-10);
+  const int rank = static_cast<int>(qr.rank());
+  const auto& perm = qr.colsPermutation().indices();
+  std::vector<int> independent(perm.data(), perm.data() + rank), dependent(perm.data() + rank, perm.data() + m);
+  const Eigen::MatrixXd M_ii = M(independent, independent);
+  const Eigen::LLT<Eigen::MatrixXd> llt(M_ii);
+  if (llt.info() != Eigen::Success) throw NumericalError("boundary projection: independent boundary traces not found");
+  const Eigen::VectorXd a = llt.solve(r(independent));
+  for (int j = 0; j < rank; ++j) c.values(order[independent[j]]) = a(j);
+
+  // Each dependent φ_k: its trace equals Σ α_j tr φ_j exactly, α = M_ii^{-1} M_ik (check that).
+  std::vector<std::pair<int, Eigen::VectorXd>> alphas;
+  for (int k : dependent) {
+    const Eigen::VectorXd mik = M(independent, std::vector<int>{k});
+    const Eigen::VectorXd alpha = llt.solve(mik);
+    const double residual = M(k, k) - 2 * alpha.dot(mik) + alpha.dot(M_ii * alpha);
+    if (residual > 1e-8 * M(k, k))
+      throw NumericalError("boundary projection: a boundary trace is neither independent nor dependent (ill-conditioned)");
+    alphas.emplace_back(order[k], alpha);
+  }
+
+  for (int j : independent) c.constrained.push_back(order[j]);
+  std::sort(c.constrained.begin(), c.constrained.end());
+  std::vector<char> is_constrained(local_of.size(), 0);
+  for (int g : c.constrained) is_constrained[g] = 1;
+  for (int i = 0; i < static_cast<int>(local_of.size()); ++i)
+    if (!is_constrained[i]) c.free.push_back(i);
+  for (const auto& [k, alpha] : alphas) {
+    const int column = static_cast<int>(std::lower_bound(c.free.begin(), c.free.end(), k) - c.free.begin());
+    const double amax = alpha.cwiseAbs().maxCoeff();
+    for (int j = 0; j < rank; ++j)
+      if (std::abs(alpha(j)) > 1e-14 * amax) c.basis_change.emplace_back(order[independent[j]], column, -alpha(j));
+  }
+}
+
+/// Columns of the free unknowns in terms of the global functions (dim x free): identity columns,
+/// plus the basis change of dependent boundary functions.
+SparseMatrix free_basis(const Constraints& c, int dim) {
+  std::vector<Eigen::Triplet<double>> t = c.basis_change;
+  for (int k = 0; k < static_cast<int>(c.free.size()); ++k) t.emplace_back(c.free[k], k, 1.0);
+  SparseMatrix T(dim, static_cast<int>(c.free.size()));
+  T.setFromTriplets(t.begin(), t.end());
+  return T;
+}
 
 }  // namespace
 
@@ -99,22 +159,29 @@ Constraints impose_essential(const Space& space, const EssentialBoundary& bounda
   for (const auto& [i, val] : rhs_entries) r(i) += val;
   Eigen::SimplicialLDLT<SparseMatrix> ldlt(M);
   const double dmax = ldlt.info() == Eigen::Success ? ldlt.vectorD().cwiseAbs().maxCoeff() : 0.0;
-  if (ldlt.info() != Eigen::Success || ldlt.vectorD().minCoeff() <= 1e-13 * dmax)
-    throw NumericalError(
-        "boundary projection is singular: the boundary traces of the constrained functions are linearly dependent");
-  const Eigen::VectorXd u = ldlt.solve(r);
-
-  for (int k = 0; k < m; ++k) c.values(order[k]) = u(k);
-  c.constrained = order;
-  std::sort(c.constrained.begin(), c.constrained.end());
-  for (int i = 0; i < dim; ++i)
-    if (local_of[i] < 0) c.free.push_back(i);
+  if (ldlt.info() == Eigen::Success && ldlt.vectorD().minCoeff() > 1e-13 * dmax) {
+    const Eigen::VectorXd u = ldlt.solve(r);
+    for (int k = 0; k < m; ++k) c.values(order[k]) = u(k);
+    c.constrained = order;
+    std::sort(c.constrained.begin(), c.constrained.end());
+    for (int i = 0; i < dim; ++i)
+      if (local_of[i] < 0) c.free.push_back(i);
+    return c;
+  }
+  split_dependent_traces(Eigen::MatrixXd(M), r, order, local_of, c);
   return c;
 }
 
 void reduce_system(const SparseMatrix& A, const Eigen::VectorXd& b, const Constraints& c, SparseMatrix& A_free,
                    Eigen::VectorXd& b_free) {
   const int dim = static_cast<int>(A.rows());
+  if (!c.basis_change.empty()) {  // rare: dependent boundary traces (see impose_essential)
+    const SparseMatrix T = free_basis(c, dim);
+    const SparseMatrix AT = A * T;
+    A_free = SparseMatrix(T.transpose() * AT);
+    b_free = T.transpose() * (b - A * c.values);
+    return;
+  }
   std::vector<int> free_of(dim, -1);
   for (int k = 0; k < static_cast<int>(c.free.size()); ++k) free_of[c.free[k]] = k;
   const int nf = static_cast<int>(c.free.size());
@@ -145,6 +212,7 @@ void reduce_system(const SparseMatrix& A, const Eigen::VectorXd& b, const Constr
 }
 
 Eigen::VectorXd expand_solution(const Eigen::VectorXd& u_free, const Constraints& c) {
+  if (!c.basis_change.empty()) return c.values + free_basis(c, static_cast<int>(c.values.size())) * u_free;
   Eigen::VectorXd u = c.values;
   for (int k = 0; k < static_cast<int>(c.free.size()); ++k) u(c.free[k]) = u_free(k);
   return u;

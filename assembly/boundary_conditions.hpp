@@ -11,8 +11,11 @@
 ///     over the constrained functions (all others held at zero): a boundary L2 projection. The h_E²
 ///     weight makes both terms scale alike, so both data are matched to optimal order.
 ///  3. The constrained coefficients are fixed and eliminated: A_ff u_f = b_f − A_fc u_c.
-/// The projection matrix is SPD when the boundary traces of the constrained functions are
-/// linearly independent; otherwise NumericalError is thrown.
+/// The projection matrix is SPD when the boundary traces of those functions are linearly
+/// independent. When they are not (e.g. vertex functions of G1 spaces where boundary parts with
+/// different conditions meet), a column-pivoted QR picks an independent subset to constrain, and each
+/// dependent function stays free after subtracting its trace's combination of the others (a local
+/// change of basis, recorded in Constraints::basis_change).
 
 #include <Eigen/Core>
 #include <vector>
@@ -34,6 +37,10 @@ struct Constraints {
   std::vector<int> constrained;  ///< sorted global indices
   std::vector<int> free;         ///< sorted global indices
   Eigen::VectorXd values;        ///< length dimension; the fixed values at constrained indices, 0 elsewhere
+  /// Usually empty. Where the boundary traces of the functions seen by the data are linearly
+  /// dependent, a dependent one, φ_k, stays free as φ_k − Σ_j α_j φ_j (zero boundary data; the φ_j
+  /// constrained): triplet (row j, column = position of k in `free`, value −α_j).
+  std::vector<Eigen::Triplet<double>> basis_change;
 };
 
 /// Find the constrained functions and their values by the boundary projection above.
