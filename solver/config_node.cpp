@@ -262,6 +262,12 @@ std::string nearest_word(const std::string& word, const std::vector<std::string>
   return best;
 }
 
+Eigen::Vector2d ConfigNode::as_point() const {
+  const std::vector<double> v = as_doubles();
+  if (v.size() != 2) fail("expected a point [x, y] (got " + std::to_string(v.size()) + " numbers)");
+  return {v[0], v[1]};
+}
+
 std::string format_number(double x) {
   std::ostringstream s;
   s << x;

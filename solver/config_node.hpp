@@ -5,6 +5,8 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include <Eigen/Core>
+
 #include <memory>
 #include <optional>
 #include <string>
@@ -51,6 +53,8 @@ class ConfigNode {
   bool as_bool() const;
   std::vector<double> as_doubles() const;
   std::vector<int> as_ints() const;
+  /// A point [x, y]; anything else is an InputError naming the place.
+  Eigen::Vector2d as_point() const;
   /// The scalar must be one of `choices`; otherwise InputError listing them (with a suggestion).
   std::string as_choice(const std::vector<std::string>& choices) const;
 

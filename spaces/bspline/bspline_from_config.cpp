@@ -11,12 +11,6 @@ namespace iga {
 
 namespace {
 
-Point2 read_point(const ConfigNode& node) {
-  const std::vector<double> v = node.as_doubles();
-  if (v.size() != 2) node.fail("expected a point [x, y] (got " + std::to_string(v.size()) + " numbers)");
-  return Point2(v[0], v[1]);
-}
-
 KnotVector read_knots(const ConfigNode& node, int degree) {
   try {
     return KnotVector(degree, node.as_doubles());
@@ -37,7 +31,7 @@ PatchGeometry read_patch(const ConfigNode& domain) {
 
   const ConfigNode cn = domain["control_points"];
   std::vector<Point2> cp;
-  for (const ConfigNode& item : cn.items()) cp.push_back(read_point(item));
+  for (const ConfigNode& item : cn.items()) cp.push_back(item.as_point());
   const int nu = ku.num_functions(), nv = kv.num_functions();
   if (static_cast<int>(cp.size()) != nu * nv)
     cn.fail("the knot vectors need " + std::to_string(nu) + " x " + std::to_string(nv) + " = " +
@@ -79,7 +73,7 @@ std::shared_ptr<const PatchGeometry> make_patch_geometry(const ConfigNode& domai
   std::shared_ptr<const PatchGeometry> g;
   if (type == "rectangle") {
     domain.check_keys({"type", "min", "max"});
-    const Point2 lo = read_point(domain["min"]), hi = read_point(domain["max"]);
+    const Point2 lo = domain["min"].as_point(), hi = domain["max"].as_point();
     if (!(lo.x() < hi.x()) || !(lo.y() < hi.y()))
       domain["max"].fail("max must be greater than min in both coordinates (got min = [" + format_number(lo.x()) + ", " +
                          format_number(lo.y()) + "], max = [" + format_number(hi.x()) + ", " + format_number(hi.y()) + "])");

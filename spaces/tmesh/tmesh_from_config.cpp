@@ -10,16 +10,6 @@
 
 namespace iga {
 
-namespace {
-
-Eigen::Vector2d read_point(const ConfigNode& node) {
-  const std::vector<double> v = node.as_doubles();
-  if (v.size() != 2) node.fail("expected a point [x, y] (got " + std::to_string(v.size()) + " numbers)");
-  return {v[0], v[1]};
-}
-
-}  // namespace
-
 SpacePtr make_tmesh_space(const ConfigNode& domain, const ConfigNode& space, int level) {
   space.check_keys({"type", "section", "n", "regularity", "frequency", "elements", "refine"});
   SectionSpec spec;
@@ -51,7 +41,7 @@ SpacePtr make_tmesh_space(const ConfigNode& domain, const ConfigNode& space, int
 
   const std::string type = domain["type"].as_choice({"rectangle", "l_shape"});
   domain.check_keys({"type", "min", "max"});
-  const Eigen::Vector2d lo = read_point(domain["min"]), hi = read_point(domain["max"]);
+  const Eigen::Vector2d lo = domain["min"].as_point(), hi = domain["max"].as_point();
   if (!(lo.x() < hi.x()) || !(lo.y() < hi.y())) domain["max"].fail("max must be greater than min in both coordinates");
   if (type == "l_shape" && (elements[0] % 2 || elements[1] % 2))
     space.fail("an l_shape domain needs even element counts (the removed quarter must be whole cells)");

@@ -9,12 +9,6 @@ namespace iga {
 
 namespace {
 
-Point2 read_point(const ConfigNode& node) {
-  const std::vector<double> v = node.as_doubles();
-  if (v.size() != 2) node.fail("expected a point [x, y] (got " + std::to_string(v.size()) + " numbers)");
-  return Point2(v[0], v[1]);
-}
-
 std::string box(const Point2& lo, const Point2& hi) {
   std::ostringstream s;
   s << "[" << lo.x() << ", " << hi.x() << "] x [" << lo.y() << ", " << hi.y() << "]";
@@ -47,8 +41,8 @@ SpacePtr make_ws4_space(const ConfigNode& domain, const ConfigNode& space, int l
     domain.check_keys({"type", "jitter", "seed"});
   } else {
     domain.check_keys({"type", "min", "max", "jitter", "seed"});
-    lo = read_point(domain["min"]);
-    hi = read_point(domain["max"]);
+    lo = domain["min"].as_point();
+    hi = domain["max"].as_point();
     if (!(lo.x() < hi.x()) || !(lo.y() < hi.y()))
       domain["max"].fail("max must be greater than min in both coordinates (got " + box(lo, hi) + ")");
   }
