@@ -93,20 +93,24 @@ SampleCell Space::sample_cell(int element, int resolution) const {
         s.cells.push_back({a, a + 1, a + m + 2, a + m + 1});
       }
   } else {
-    // Row j holds m + 1 - j points; index of (i, j) is offset(j) + i.
-    std::vector<int> offset(m + 2, 0);
-    for (int j = 0; j <= m; ++j) {
-      offset[j + 1] = offset[j] + (m + 1 - j);
-      for (int i = 0; i <= m - j; ++i) s.points.emplace_back(double(i) / m, double(j) / m);
-    }
-    for (int j = 0; j < m; ++j)
-      for (int i = 0; i < m - j; ++i) {
-        const int a = offset[j] + i, b = a + 1, c = offset[j + 1] + i;
-        s.cells.push_back({a, b, c});
-        if (i + 1 < m - j) s.cells.push_back({b, c + 1, c});
-      }
+    append_triangle_grid(s, Point2(0, 0), Point2(1, 0), Point2(0, 1), m);
   }
   return s;
+}
+
+void append_triangle_grid(SampleCell& cell, const Point2& a, const Point2& b, const Point2& c, int m) {
+  // Row j holds m + 1 - j points; index of (i, j) is offset(j) + i.
+  std::vector<int> offset(m + 2, static_cast<int>(cell.points.size()));
+  for (int j = 0; j <= m; ++j) {
+    offset[j + 1] = offset[j] + (m + 1 - j);
+    for (int i = 0; i <= m - j; ++i) cell.points.push_back(a + (double(i) / m) * (b - a) + (double(j) / m) * (c - a));
+  }
+  for (int j = 0; j < m; ++j)
+    for (int i = 0; i < m - j; ++i) {
+      const int p = offset[j] + i, q = p + 1, r = offset[j + 1] + i;
+      cell.cells.push_back({p, q, r});
+      if (i + 1 < m - j) cell.cells.push_back({q, r + 1, r});
+    }
 }
 
 }  // namespace iga

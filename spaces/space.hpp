@@ -90,6 +90,10 @@ struct SampleCell {
   std::vector<std::vector<int>> cells;
 };
 
+/// Append to `cell` a uniform grid of the triangle (a, b, c) with `m` intervals per edge: its
+/// (m+1)(m+2)/2 points and m² sub-triangles (points along shared edges are not merged).
+void append_triangle_grid(SampleCell& cell, const Point2& a, const Point2& b, const Point2& c, int m);
+
 class Space {
  public:
   virtual ~Space() = default;

@@ -16,19 +16,7 @@ SampleCell split_sample_cell(int resolution) {
   }
   for (const auto& t : split.fan_triangles()) {
     const Point2 a = split.vertex_point(t[0]), b = split.vertex_point(t[1]), c = split.vertex_point(t[2]);
-    const int first = static_cast<int>(s.points.size());
-    // Row j holds m + 1 - j points; index of (i, j) is first + offset(j) + i.
-    std::vector<int> offset(m + 2, first);
-    for (int j = 0; j <= m; ++j) {
-      offset[j + 1] = offset[j] + (m + 1 - j);
-      for (int i = 0; i <= m - j; ++i) s.points.push_back(a + (double(i) / m) * (b - a) + (double(j) / m) * (c - a));
-    }
-    for (int j = 0; j < m; ++j)
-      for (int i = 0; i < m - j; ++i) {
-        const int p = offset[j] + i, q = p + 1, r = offset[j + 1] + i;
-        s.cells.push_back({p, q, r});
-        if (i + 1 < m - j) s.cells.push_back({q, r + 1, r});
-      }
+    append_triangle_grid(s, a, b, c, m);
   }
   return s;
 }
