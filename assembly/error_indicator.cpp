@@ -42,6 +42,33 @@ std::vector<double> element_residuals(const Space& space, const Eigen::VectorXd&
   return out;
 }
 
+/// Per element, Σ over its edges in `edges` of h_E ‖g − Δu_h‖²_E (h_E: the edge's length).
+std::vector<double> boundary_laplacian_residuals(const Space& space, const Eigen::VectorXd& coefficients,
+                                                 const std::vector<BoundaryEdge>& edges, const BoundaryField& g,
+                                                 int quadrature_degree) {
+  std::vector<double> out(space.num_elements(), 0.0);
+  std::unique_ptr<Space::Evaluator> evaluator = space.make_evaluator();
+  PointValues geometry;
+  FunctionValues u;
+  for (const BoundaryEdge& edge : edges) {
+    const RulePtr rule = space.edge_quadrature(edge.element, edge.local_edge, quadrature_degree);
+    evaluator->evaluate_function(edge.element, *rule, coefficients, update_gradients | update_hessians, geometry, u);
+    const Point2 tangent = reference_edge_tangent(space.cell_shape(edge.element), edge.local_edge);
+    double length = 0.0, residual2 = 0.0;
+    for (int q = 0; q < rule->size(); ++q) {
+      const Eigen::Vector2d t = geometry.jacobian[q] * tangent;
+      const double dl = rule->weights[q] * t.norm();
+      // Outward normal of a counterclockwise edge.
+      const Point2 n = (geometry.jacobian[q].determinant() > 0 ? 1.0 : -1.0) * Point2(t.y(), -t.x()) / t.norm();
+      const double r = g(Point2(geometry.x.col(q)), n) - (u.dxx[q] + u.dyy[q]);
+      length += dl;
+      residual2 += dl * r * r;
+    }
+    out[edge.element] += length * residual2;
+  }
+  return out;
+}
+
 }  // namespace
 
 std::vector<double> poisson_residual_indicators(const Space& space, const Eigen::VectorXd& coefficients,
@@ -60,7 +87,9 @@ std::vector<double> poisson_residual_indicators(const Space& space, const Eigen:
 }
 
 std::vector<double> plate_residual_indicators(const Space& space, const Eigen::VectorXd& coefficients,
-                                              const ScalarField& source, int quadrature_degree) {
+                                              const ScalarField& source, int quadrature_degree,
+                                              const std::vector<BoundaryEdge>& simply_supported,
+                                              const BoundaryField& laplacian) {
   if (!space.higher_derivatives() || (space.num_elements() > 1 && space.interior_edges().empty()))
     throw std::invalid_argument("plate_residual_indicators: the space needs higher_derivatives() and interior_edges()");
   // h_K⁴ ‖f − Δ²u_h‖², h_K⁴ = |K|².
@@ -68,7 +97,14 @@ std::vector<double> plate_residual_indicators(const Space& space, const Eigen::V
       space, coefficients, source, quadrature_degree, update_bilaplacian,
       [](const FunctionValues& u, int q) { return u.bilaplacian[q]; }, 2);
   const std::vector<double> jumps = laplacian_jump_terms(space, coefficients, quadrature_degree);
-  for (std::size_t e = 0; e < eta.size(); ++e) eta[e] = std::sqrt(eta[e] + jumps[e]);
+  for (std::size_t e = 0; e < eta.size(); ++e) eta[e] += jumps[e];
+  if (!simply_supported.empty()) {
+    if (!laplacian) throw std::invalid_argument("plate_residual_indicators: simply supported edges need the data Δu = g_L");
+    const std::vector<double> boundary =
+        boundary_laplacian_residuals(space, coefficients, simply_supported, laplacian, quadrature_degree);
+    for (std::size_t e = 0; e < eta.size(); ++e) eta[e] += boundary[e];
+  }
+  for (double& x : eta) x = std::sqrt(x);
   return eta;
 }
 

@@ -8,11 +8,12 @@
 /// Space::interior_edges() (edge_jumps.hpp). A C0 space without interior_edges() gets
 /// only the element part, which is not a reliable estimator (adaptive studies reject that case).
 ///
-/// Clamped plates, Δ²u = f with a C1 space (∫ΔuΔv):
-///   η_K² = h_K⁴ ‖f − Δ²u_h‖²_K + ½ Σ_{E ⊂ ∂K interior} (h_E ‖[Δu_h]‖²_E + h_E³ ‖[∂(Δu_h)/∂n]‖²_E),
+/// Plates, Δ²u = f with a C1 space (∫ΔuΔv), clamped or simply supported:
+///   η_K² = h_K⁴ ‖f − Δ²u_h‖²_K + ½ Σ_{E ⊂ ∂K interior} (h_E ‖[Δu_h]‖²_E + h_E³ ‖[∂(Δu_h)/∂n]‖²_E)
+///          + Σ_{E ⊂ ∂K simply supported} h_E ‖g_L − Δu_h‖²_E,
 /// the terms left by integrating ∫_K Δu_h Δv by parts twice (Δu_h pairs with ∂v/∂n, ∂(Δu_h)/∂n
-/// with v on each edge). Needs third and fourth derivatives (Space::higher_derivatives()) and
-/// Space::interior_edges(); clamped boundaries add no boundary terms (u and ∂u/∂n are essential).
+/// with v on each edge; on the boundary v = 0, and ∂v/∂n = 0 where clamped). Needs third and fourth
+/// derivatives (Space::higher_derivatives()) and Space::interior_edges().
 
 #include <Eigen/Core>
 #include <vector>
@@ -27,11 +28,14 @@ namespace iga {
 std::vector<double> poisson_residual_indicators(const Space& space, const Eigen::VectorXd& coefficients,
                                                 const ScalarField& source, int quadrature_degree);
 
-/// η_K of the clamped-plate residual above, one per element (not squared). Throws
+/// η_K of the plate residual above, one per element (not squared); `simply_supported` are the
+/// boundary edges where Δu = `laplacian` (g_L) is the natural condition (empty: all clamped). Throws
 /// std::invalid_argument unless space.higher_derivatives() and the space lists its interior edges
 /// (or has a single element).
 std::vector<double> plate_residual_indicators(const Space& space, const Eigen::VectorXd& coefficients,
-                                              const ScalarField& source, int quadrature_degree);
+                                              const ScalarField& source, int quadrature_degree,
+                                              const std::vector<BoundaryEdge>& simply_supported = {},
+                                              const BoundaryField& laplacian = nullptr);
 
 /// (Σ_K η_K²)^{1/2}.
 double total_indicator(const std::vector<double>& eta);

@@ -5,6 +5,7 @@
 #include <filesystem>
 
 #include "assembly/error_indicator.hpp"
+#include "solver/boundary_edge_kinds.hpp"
 #include "solver/dorfler_marking.hpp"
 #include "solver/errors.hpp"
 #include "solver/solve_problem.hpp"
@@ -72,10 +73,6 @@ StudySettings parse_study(const ConfigNode& root, const std::string& config_path
       if (s.problem.pde == Pde::poisson && s.problem.form != BilinearForm::laplace)
         refinement->fail("adaptive refinement needs the residual indicator, implemented for Poisson with form laplace");
       if (s.problem.pde == Pde::biharmonic) {
-        for (const BoundaryPart& part : s.problem.boundary)
-          if (part.kind != BoundaryKind::clamped)
-            refinement->fail("adaptive biharmonic refinement: the plate residual indicator is implemented for clamped "
-                             "boundaries only (part '" + part.name + "' is " + to_string(part.kind) + ")");
         if (!coarse->higher_derivatives() || (coarse->num_elements() > 1 && coarse->interior_edges().empty()))
           refinement->fail("adaptive biharmonic refinement needs third and fourth derivatives and the interior edges "
                            "of the space (the plate residual indicator); the " + coarse->type() + " space has not both");
@@ -165,7 +162,10 @@ StudyResult run_study(const StudySettings& settings, const std::string& director
       const std::vector<double> eta =
           settings.problem.pde == Pde::poisson
               ? poisson_residual_indicators(*space, sol.coefficients, f, error_quadrature_degree(*space))
-              : plate_residual_indicators(*space, sol.coefficients, f, error_quadrature_degree(*space));
+              : plate_residual_indicators(
+                    *space, sol.coefficients, f, error_quadrature_degree(*space),
+                    boundary_edges_of_kind(*space, settings.problem, BoundaryKind::simply_supported),
+                    [g = settings.problem.laplacian](const Point2& x, const Point2&) { return g(x); });
       estimator = total_indicator(eta);
       if (settings.tolerance > 0.0 && *estimator <= settings.tolerance) {
         progress(tag + "estimator " + std::to_string(*estimator) + " <= tolerance: stopping");

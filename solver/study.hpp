@@ -23,7 +23,7 @@ struct StudySettings {
   ProblemSpec problem;
   int levels = 4;          ///< number of levels solved: 0 .. levels-1
   /// refinement.type: uniform (level l = make_space(..., l)) or adaptive (level l+1 = the space of
-  /// level l refined where Dörfler marking of the residual indicator says; Poisson, clamped plates).
+  /// level l refined where Dörfler marking of the residual indicator says; Poisson and plates).
   bool adaptive = false;
   double marking = 0.5;    ///< Dörfler θ (refinement.marking), adaptive only
   int max_dofs = 0;        ///< adaptive: stop before a level would exceed this many DOFs (0: no limit)
