@@ -26,6 +26,16 @@ std::string yaml(const std::string& section, const std::string& frequency = "1")
          ", n: 3, regularity: 1, elements: [2, 2], refine: [[0, 0, 0.5, 0.5]]}\n";
 }
 
+/// The InputError message building the space of `text` gives, or "" when it builds.
+std::string error_of(const std::string& text) {
+  try {
+    test::space_from_yaml(text);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
 double l2_error(const std::string& text) {
   const SpacePtr space = test::space_from_yaml(text, 1);
   const DiscreteSolution sol = solve_problem(*space, test::problem_from_yaml(text), SolverKind::cholmod);
@@ -54,14 +64,6 @@ TEST(MixedSections, TrigInXPolyInYReproducesSinXTimesCubic) {
 }
 
 TEST(MixedSections, ConfigErrors) {
-  auto error_of = [](const std::string& text) -> std::string {
-    try {
-      test::space_from_yaml(text);
-    } catch (const InputError& e) {
-      return e.what();
-    }
-    return "";
-  };
   EXPECT_NE(error_of(yaml("[trig]")).find("[family in x, family in y]"), std::string::npos);
   EXPECT_NE(error_of(yaml("[trig, poyl]")).find("poly"), std::string::npos);
   EXPECT_NE(error_of(yaml("[trig, poly]", "[1, 0]")).find("frequency must be > 0"), std::string::npos);
@@ -114,14 +116,6 @@ TEST(SectionRegions, TrigBaseCellInAPolySpaceHasTheFormulaAndBruteForceDimension
 }
 
 TEST(SectionRegions, ConfigErrors) {
-  auto error_of = [](const std::string& text) -> std::string {
-    try {
-      test::space_from_yaml(text);
-    } catch (const InputError& e) {
-      return e.what();
-    }
-    return "";
-  };
   // d_e = 0 edges need n >= 2r + 3.
   EXPECT_NE(error_of(regions_yaml(3, 1)).find("n >= 5"), std::string::npos) << error_of(regions_yaml(3, 1));
   std::string outside = regions_yaml(5, 1);
