@@ -17,10 +17,10 @@ SpacePtr make_g1_space(const ConfigNode& domain, const ConfigNode& space, int le
   if (k < 3) dn.fail("G1 splines need degree >= 3 (got " + std::to_string(k) + "); generic vertices need 5");
   if (k > 10) dn.fail("G1 degree must be at most 10 (got " + std::to_string(k) + ")");
   if (level < 0 || level > 8) space.fail("refinement level must be in 0..8 (got " + std::to_string(level) + ")");
-  QuadMesh mesh = multipatch_domain(name);
+  PatchMesh mesh = multipatch_domain(name);
   for (int l = 0; l < level; ++l) mesh = mesh.refined();
   try {
-    return std::make_shared<const G1Space>(std::make_shared<const QuadMesh>(std::move(mesh)), k);
+    return std::make_shared<const G1Space>(std::make_shared<const PatchMesh>(std::move(mesh)), k);
   } catch (const InputError& e) {
     dn.fail(e.what());
   }

@@ -1,14 +1,14 @@
 #pragma once
 /// @file
-/// QuadMesh: a planar multipatch mesh of bilinear quadrilaterals with its topology (shared edges,
-/// orientation, vertex fans, boundary) and validation. The geometry of every face is the bilinear
-/// map of its four corners; refinement splits each face into four with the same map.
+/// PatchMesh: a planar multipatch mesh of bilinear quadrilaterals and affine triangles with its
+/// topology (shared edges, orientation, vertex fans, boundary) and validation. The geometry of a
+/// quad is the bilinear map of its four corners, of a triangle the affine map of its three;
+/// refinement splits each face into four with the same map.
 ///
-/// Conventions: a face lists its corners counterclockwise; corner c maps to the reference corner
-/// (0,0),(1,0),(1,1),(0,1) for c = 0..3; local edge e runs from corner e to corner e+1 (mod 4), as
-/// in reference_edge_point.
+/// Conventions: a face lists its n = 3 or 4 corners counterclockwise; corner c maps to the
+/// reference corner (0,0),(1,0),(1,1),(0,1) (quad) or (0,0),(1,0),(0,1) (triangle); local edge e
+/// runs from corner e to corner e+1 (mod n), as in reference_edge_point.
 
-#include <array>
 #include <string>
 #include <vector>
 
@@ -16,7 +16,7 @@
 
 namespace iga {
 
-/// One side of a face: face index and local edge 0..3.
+/// One side of a face: face index and local edge 0..n-1.
 struct FaceEdge {
   int face = -1;
   int local_edge = -1;
@@ -40,48 +40,53 @@ struct VertexFan {
   int valence() const { return static_cast<int>(edge.size()); }
 };
 
-class QuadMesh {
+class PatchMesh {
  public:
-  /// Build and validate. `name` is used in messages. Throws InputError for an inverted or folded
-  /// face (det DG <= 0 at a corner), a repeated corner, an edge shared by more than two faces
+  /// Build and validate. `name` is used in messages. Throws InputError for a face with other than
+  /// 3 or 4 corners, an inverted or folded face (det DG <= 0 at a corner), a repeated corner, an edge shared by more than two faces
   /// (non-manifold), an edge traversed in the same direction by two faces (inconsistent
   /// orientation) and a vertex whose faces do not form one fan; the message names the patch.
-  QuadMesh(std::vector<Point2> vertices, std::vector<std::array<int, 4>> faces, std::string name);
+  PatchMesh(std::vector<Point2> vertices, std::vector<std::vector<int>> faces, std::string name);
 
   /// Each face split into four (edge midpoints and centre of the bilinear map); same geometry.
-  QuadMesh refined() const;
+  PatchMesh refined() const;
 
   const std::string& name() const { return name_; }
   int num_vertices() const { return static_cast<int>(vertices_.size()); }
   int num_faces() const { return static_cast<int>(faces_.size()); }
   int num_edges() const { return static_cast<int>(edges_.size()); }
   const Point2& vertex(int v) const { return vertices_[v]; }
-  const std::array<int, 4>& face(int f) const { return faces_[f]; }
+  const std::vector<int>& face(int f) const { return faces_[f]; }
+  int num_corners(int f) const { return static_cast<int>(faces_[f].size()); }
+  CellShape shape(int f) const { return faces_[f].size() == 3 ? CellShape::triangle : CellShape::quadrilateral; }
+  bool has_triangles() const;
   const MeshEdge& edge(int e) const { return edges_[e]; }
   /// Mesh edge of local edge `local_edge` of face f.
   int face_edge(int f, int local_edge) const { return face_edges_[f][local_edge]; }
   const VertexFan& fan(int v) const { return fans_[v]; }
 
-  /// Bilinear map of face f at reference point (u,v), with first and second derivatives.
+  /// Bilinear (quad) or affine (triangle) map of face f at reference point (u,v), with first and
+  /// second derivatives.
   GeometryJet map(int f, const Point2& uv) const;
-  /// Largest corner-to-corner distance of a face (its diameter: bilinear faces have straight edges).
+  /// Largest corner-to-corner distance of a face (its diameter: the faces have straight edges).
   double diameter(int f) const;
-  /// True when face f is a parallelogram (affine map).
-  bool is_parallelogram(int f) const;
+  /// True when the map of face f is affine (a triangle or a parallelogram).
+  bool is_affine(int f) const;
 
  private:
   void build_topology();
   void build_fans();
 
   std::vector<Point2> vertices_;
-  std::vector<std::array<int, 4>> faces_;
+  std::vector<std::vector<int>> faces_;
   std::string name_;
   std::vector<MeshEdge> edges_;
-  std::vector<std::array<int, 4>> face_edges_;
+  std::vector<std::vector<int>> face_edges_;
   std::vector<VertexFan> fans_;
 };
 
-/// Reference coordinates of corner c (0..3) of the unit square.
-Point2 reference_corner(int c);
+/// Reference coordinates of corner c (taken mod the number of corners) of the unit square or the
+/// unit triangle.
+Point2 reference_corner(CellShape shape, int c);
 
 }  // namespace iga
