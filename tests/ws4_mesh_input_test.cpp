@@ -62,6 +62,18 @@ TEST(Ws4MeshInput, GmshLShapeDimensionAndBoundaryParts) {
   EXPECT_NEAR(part_length(as_ws4(level1), "all"), 8.0, 1e-12);
 }
 
+TEST(Ws4MeshInput, MshPhysicalCurvesNameTheParts) {
+  const std::string msh = std::string(IGA_SOURCE_DIR) + "/tests/data/square_groups.msh";
+  const PlanarMesh read = read_mesh_file(msh);
+  const int v = static_cast<int>(read.vertices.size()), e = count_edges(read), t = static_cast<int>(read.cells.size());
+  const SpacePtr space = test::space_from_yaml("domain: {type: mesh_file, file: " + msh + "}\nspace: {type: ws4}\n");
+  EXPECT_EQ(space->dimension(), 10 * v + 6 * e + 3 * t);
+  EXPECT_EQ(space->boundary_names(), (std::vector<std::string>{"7", "bottom", "sides"}));
+  EXPECT_NEAR(part_length(as_ws4(space), "bottom"), 1.0, 1e-15);
+  EXPECT_NEAR(part_length(as_ws4(space), "sides"), 2.0, 1e-15);
+  EXPECT_NEAR(part_length(as_ws4(space), "7"), 1.0, 1e-15);
+}
+
 TEST(Ws4MeshInput, GmshLShapePoissonConvergesAtOptimalRates) {
   // Smooth solution, Dirichlet on `outer` and the exact normal derivative on `reentrant`.
   const test::Rates r = test::last_rates(geo_domain(0.5) + R"yaml(

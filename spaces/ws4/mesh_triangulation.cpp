@@ -35,31 +35,27 @@ Triangulation triangulation_from_mesh(const PlanarMesh& mesh) {
 }
 
 PlanarMesh l_shape_mesh(int n) {
+  // The checkerboard-split grid of [-1,1]² without the triangles of the removed quarter; the
+  // vertices that only those used are dropped.
+  const Triangulation square = Triangulation::rectangle(2 * n, 2 * n, Point2(-1, -1), Point2(1, 1));
   PlanarMesh mesh;
   mesh.source = "l_shape";
-  const int m = 2 * n;  // squares per side of [-1,1]²
-  std::vector<int> id((m + 1) * (m + 1), -1);
-  auto removed = [n](int i, int j) { return i >= n && j < n; };  // square (i, j) in the lower right quarter
-  auto vertex = [&](int i, int j) {
-    int& v = id[i + j * (m + 1)];
-    if (v < 0) {
-      v = static_cast<int>(mesh.vertices.size());
-      mesh.vertices.emplace_back(-1.0 + 2.0 * i / m, -1.0 + 2.0 * j / m);
-    }
-    return v;
-  };
-  for (int j = 0; j < m; ++j)
-    for (int i = 0; i < m; ++i) {
-      if (removed(i, j)) continue;
-      const int a = vertex(i, j), b = vertex(i + 1, j), c = vertex(i + 1, j + 1), d = vertex(i, j + 1);
-      if ((i + j) % 2 == 0) {
-        mesh.cells.push_back({a, b, c});
-        mesh.cells.push_back({a, c, d});
-      } else {
-        mesh.cells.push_back({a, b, d});
-        mesh.cells.push_back({b, c, d});
+  std::vector<int> id(square.num_vertices(), -1);
+  for (int t = 0; t < square.num_triangles(); ++t) {
+    const auto& corners = square.triangle(t);
+    Point2 centroid = Point2::Zero();
+    for (int v : corners) centroid += square.vertices()[v] / 3.0;
+    if (centroid.x() > 0.0 && centroid.y() < 0.0) continue;
+    std::vector<int> cell;
+    for (int v : corners) {
+      if (id[v] < 0) {
+        id[v] = static_cast<int>(mesh.vertices.size());
+        mesh.vertices.push_back(square.vertices()[v]);
       }
+      cell.push_back(id[v]);
     }
+    mesh.cells.push_back(std::move(cell));
+  }
   for (const auto& e : boundary_edges(mesh)) {
     const Eigen::Vector2d &p = mesh.vertices[e[0]], &q = mesh.vertices[e[1]];
     const std::string side = p.x() == -1 && q.x() == -1 ? "left"
