@@ -224,6 +224,7 @@ TEST(G1Triangles, BoundaryAdaptedFunctionsSpanTheDirichletAndClampedSubspaces) {
   // The basis functions vanishing on the boundary (to first order) are as many as the brute-force
   // Dirichlet (clamped) subspaces: the generic boundary projection only touches the others.
   for (const Case& c : cases()) {
+    if (c.name == "4t_star level 1") continue;  // the mixed level 1 covers refined meshes (and costs less)
     const PatchMesh m = c.mesh();
     const G1Space s(share(m), c.k);
     const auto [dirichlet, clamped] = boundary_subspace_counts(s);
