@@ -140,59 +140,24 @@ TEST(G1Space, RefusesDegreesBelowSeparabilityNamingTheSmallestThatWorks) {
 }
 
 TEST(G1Space, EveryBasisFunctionIsC1AcrossInterfaces) {
-  for (const Case& c : cases()) {
-    const G1Space s(std::make_shared<const PatchMesh>(c.mesh()), c.k);
-    double vj, gj, gmax;
-    max_jumps(s, vj, gj, gmax);
-    EXPECT_LT(vj, 1e-12) << c.name;
-    EXPECT_LT(gj, 1e-11) << c.name << " (largest gradient " << gmax << ")";
-    EXPECT_GT(gmax, 1.0) << c.name;  // the check saw real gradients
-  }
+  for (const Case& c : cases())
+    expect_c1(G1Space(std::make_shared<const PatchMesh>(c.mesh()), c.k), c.name + " k=" + std::to_string(c.k));
 }
 
 TEST(G1Space, LinearlyIndependent) {
-  for (const Case& c : cases()) {
-    const G1Space s(std::make_shared<const PatchMesh>(c.mesh()), c.k);
-    Eigen::JacobiSVD<Eigen::MatrixXd> svd(global_extraction(s));
-    const Eigen::VectorXd& sv = svd.singularValues();
-    EXPECT_GT(sv[sv.size() - 1], 1e-6 * sv[0]) << c.name << " k=" << c.k;
-  }
+  for (const Case& c : cases())
+    expect_linearly_independent(G1Space(std::make_shared<const PatchMesh>(c.mesh()), c.k),
+                                c.name + " k=" + std::to_string(c.k));
 }
 
 TEST(G1Space, PartitionOfUnityThroughVertexValueFunctions) {
-  for (const Case& c : cases()) {
-    const G1Space s(std::make_shared<const PatchMesh>(c.mesh()), c.k);
-    const Eigen::MatrixXd e = global_extraction(s);
-    const Eigen::VectorXd one = face_coefficients(s, [](P) { return 1.0; });
-    const Eigen::VectorXd x = e.colPivHouseholderQr().solve(one);
-    EXPECT_LT((e * x - one).cwiseAbs().maxCoeff(), 1e-11) << c.name;
-    int values = 0;
-    for (int g = 0; g < s.dimension(); ++g) {
-      const G1FunctionInfo& i = s.basis().info[g];
-      if (i.entity != G1Entity::vertex) continue;
-      EXPECT_NEAR(x[g], i.value_function ? 1.0 : 0.0, 1e-10) << c.name << " function " << g;
-      values += i.value_function ? 1 : 0;
-    }
-    EXPECT_EQ(values, s.mesh().num_vertices());
-  }
+  for (const Case& c : cases())
+    expect_partition_of_unity(G1Space(std::make_shared<const PatchMesh>(c.mesh()), c.k), c.name);
 }
 
 TEST(G1Space, ReproducesPolynomialsUpToDegreeK) {
-  for (const Case& c : cases()) {
-    const G1Space s(std::make_shared<const PatchMesh>(c.mesh()), c.k);
-    const Eigen::MatrixXd e = global_extraction(s);
-    const Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(e);
-    for (int d = 0; d <= c.k; ++d)
-      for (int i = 0; i <= d; ++i) {
-        const int j = d - i;
-        const Eigen::VectorXd b =
-            face_coefficients(s, [&](P x) { return std::pow(x.x() - 0.3, i) * std::pow(x.y() + 0.2, j); });
-        const Eigen::VectorXd r = e * qr.solve(b) - b;
-        EXPECT_LT(r.cwiseAbs().maxCoeff(), 1e-10 * std::max(1.0, b.cwiseAbs().maxCoeff()))
-            << c.name << " x^" << i << " y^" << j;
-      }
-    // Degree k+1 is not reproduced on non-parallelogram meshes: the test can fail.
-  }
+  for (const Case& c : cases())
+    expect_reproduces_degree_k(G1Space(std::make_shared<const PatchMesh>(c.mesh()), c.k), c.name);
 }
 
 TEST(G1Space, BoundaryAdaptedVertexFunctionsGiveTheBoundarySubspaces) {

@@ -10,6 +10,7 @@
 #include <cmath>
 #include <functional>
 #include <map>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -99,6 +100,75 @@ inline void max_jumps(const G1Space& s, double& value_jump, double& gradient_jum
         gradient_max = std::max(gradient_max, ga.norm());
       }
   }
+}
+
+/// Largest C0 + G1 row (edge_constraint_rows) applied to any basis function, relative to that
+/// function's largest Bernstein coefficient: exactly 0 in exact arithmetic (notes §9.5.1).
+inline double max_g1_residual(const G1Space& s) {
+  const Eigen::MatrixXd e = global_extraction(s);
+  const std::vector<int> off = face_offsets(s.mesh(), s.degree());
+  const Eigen::ArrayXd scale = e.cwiseAbs().colwise().maxCoeff().transpose().array();
+  double residual = 0.0;
+  for (int id = 0; id < s.mesh().num_edges(); ++id) {
+    if (s.mesh().edge(id).boundary()) continue;
+    for (const auto& row : edge_constraint_rows(s.mesh(), s.gluing()[id], s.degree())) {
+      Eigen::RowVectorXd r = Eigen::RowVectorXd::Zero(e.rows());
+      for (const FaceCoefficient& fc : row) r[off[fc.face] + fc.index] += fc.value;
+      residual = std::max(residual, ((r * e).transpose().array().abs() / scale).maxCoeff());
+    }
+  }
+  return residual;
+}
+
+/// Property checks of a G1 space (notes §9.5), failures reported with `name`:
+/// G1 residual <= 1e-12 and physical C1 continuity of every basis function (value jumps < 1e-12,
+/// gradient jumps < 1e-11, with real gradients seen).
+inline void expect_c1(const G1Space& s, const std::string& name) {
+  EXPECT_LT(max_g1_residual(s), 1e-12) << name;
+  double vj, gj, gmax;
+  max_jumps(s, vj, gj, gmax);
+  EXPECT_LT(vj, 1e-12) << name;
+  EXPECT_LT(gj, 1e-11) << name << " (largest gradient " << gmax << ")";
+  EXPECT_GT(gmax, 1.0) << name;  // the check saw real gradients
+}
+
+/// Full rank of the extraction (smallest singular value > 1e-6 x largest).
+inline void expect_linearly_independent(const G1Space& s, const std::string& name) {
+  Eigen::JacobiSVD<Eigen::MatrixXd> svd(global_extraction(s));
+  const Eigen::VectorXd& sv = svd.singularValues();
+  EXPECT_GT(sv[sv.size() - 1], 1e-6 * sv[0]) << name;
+}
+
+/// 1 = Σ (vertex value functions): coordinate 1 on every value function (one per vertex), 0 on the
+/// other vertex functions.
+inline void expect_partition_of_unity(const G1Space& s, const std::string& name) {
+  const Eigen::MatrixXd e = global_extraction(s);
+  const Eigen::VectorXd one = face_coefficients(s, [](Point2) { return 1.0; });
+  const Eigen::VectorXd x = e.colPivHouseholderQr().solve(one);
+  EXPECT_LT((e * x - one).cwiseAbs().maxCoeff(), 1e-11) << name;
+  int values = 0;
+  for (int g = 0; g < s.dimension(); ++g) {
+    const G1FunctionInfo& i = s.basis().info[g];
+    if (i.entity != G1Entity::vertex) continue;
+    EXPECT_NEAR(x[g], i.value_function ? 1.0 : 0.0, 1e-10) << name << " function " << g;
+    values += i.value_function ? 1 : 0;
+  }
+  EXPECT_EQ(values, s.mesh().num_vertices()) << name;
+}
+
+/// Every polynomial (x − 0.3)^i (y + 0.2)^j with i + j <= k lies in the space (least-squares
+/// residual of its Bernstein coefficients <= 1e-10 relative). Degree k+1 is not reproduced on
+/// non-affine meshes, so this can fail.
+inline void expect_reproduces_degree_k(const G1Space& s, const std::string& name) {
+  const Eigen::MatrixXd e = global_extraction(s);
+  const Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(e);
+  for (int d = 0; d <= s.degree(); ++d)
+    for (int i = 0; i <= d; ++i) {
+      const Eigen::VectorXd b =
+          face_coefficients(s, [&](Point2 p) { return std::pow(p.x() - 0.3, i) * std::pow(p.y() + 0.2, d - i); });
+      EXPECT_LT((e * qr.solve(b) - b).cwiseAbs().maxCoeff(), 1e-10 * std::max(1.0, b.cwiseAbs().maxCoeff()))
+          << name << " x^" << i << " y^" << d - i;
+    }
 }
 
 /// Numbers of basis functions vanishing on the boundary (row 0 of every boundary edge: the
