@@ -112,6 +112,14 @@ TEST(G1MeshFile, BadMeshesAreRejectedNamingTheFileAndTheCell) {
   cw.source = "cw";
   EXPECT_NE(error_of([&] { patch_mesh_from_planar(cw); }).find("cw: cell 0"), std::string::npos);
   EXPECT_NE(error_of([&] { patch_mesh_from_planar(cw); }).find("is clockwise (inverted)"), std::string::npos);
+  // Boundary groups: "all" is reserved, and a group edge must be a boundary edge.
+  const std::vector<Point2> square{{0, 0}, {1, 0}, {1, 1}, {0, 1}, {0.5, 0.5}};
+  const std::vector<std::vector<int>> fan{{0, 1, 4}, {1, 2, 4}, {2, 3, 4}, {3, 0, 4}};
+  EXPECT_NE(error_of([&] { PatchMesh(square, fan, "g", {{"all", {{0, 1}}}}); }).find("'all' is reserved"),
+            std::string::npos);
+  EXPECT_NE(error_of([&] { PatchMesh(square, fan, "g", {{"diag", {{0, 4}}}}); })
+                .find("g: boundary group 'diag' has the edge between vertices 0 and 4, which is not a boundary edge"),
+            std::string::npos);
 }
 
 TEST(G1MeshFile, ConfigErrorsNameTheConfigPlace) {
@@ -130,4 +138,38 @@ TEST(G1MeshFile, ConfigErrorsNameTheConfigPlace) {
   const std::string e4 =
       error_of([&] { test::space_from_yaml(yaml_for("{type: mesh_file, file: " + kDomains + "g1_valence5_plate.obj}", 4)); });
   EXPECT_NE(e4.find("use degree >= 5"), std::string::npos) << e4;
+}
+
+TEST(G1MeshFile, GmshPhysicalCurvesAreTheBoundaryParts) {
+  // tests/data/square_groups.msh: the unit square in triangles, physical curves "bottom" (y = 0),
+  // "sides" (x = 0 and x = 1) and an unnamed one (tag 7, y = 1). Lengths stay under refinement.
+  const std::string file = std::string(IGA_SOURCE_DIR) + "/tests/data/square_groups.msh";
+  for (int level = 0; level <= 1; ++level) {
+    const SpacePtr s = test::space_from_yaml(yaml_for("{type: mesh_file, file: " + file + "}"), level);
+    EXPECT_EQ(s->boundary_names(), (std::vector<std::string>{"7", "bottom", "sides"}));
+    auto length = [&](const std::string& part) {
+      double sum = 0.0;
+      const auto& mesh = dynamic_cast<const G1Space&>(*s).mesh();
+      for (const BoundaryEdge& e : s->boundary_edges(part)) {
+        const Point2 a = mesh.map(e.element, reference_edge_point(s->cell_shape(e.element), e.local_edge, 0.0)).x;
+        const Point2 b = mesh.map(e.element, reference_edge_point(s->cell_shape(e.element), e.local_edge, 1.0)).x;
+        sum += (b - a).norm();
+      }
+      return sum;
+    };
+    EXPECT_NEAR(length("bottom"), 1.0, 1e-14);
+    EXPECT_NEAR(length("sides"), 2.0, 1e-14);
+    EXPECT_NEAR(length("7"), 1.0, 1e-14);
+    EXPECT_NEAR(length("all"), 4.0, 1e-14);
+  }
+  // Mixed conditions on the named parts: a quintic is still reproduced.
+  const std::string text = yaml_for("{type: mesh_file, file: " + file + "}") +
+                           "problem: {pde: poisson, exact: \"x^5 - 2*x^2*y^3 + y^4 - x*y + 1\", "
+                           "boundary: {all: dirichlet, sides: neumann}}\n";
+  const LevelResult r =
+      solve_problem(*test::space_from_yaml(text, 0), test::problem_from_yaml(text), SolverKind::cholmod).result;
+  EXPECT_LT(*r.l2, 1e-11);
+  EXPECT_LT(*r.h1, 1e-10);
+  EXPECT_NE(error_of([&] { test::space_from_yaml(text)->boundary_edges("left"); }).find("valid: all, 7, bottom, sides"),
+            std::string::npos);
 }

@@ -46,6 +46,11 @@ std::vector<std::vector<BoundaryEdge>> group(const PatchMesh& mesh) {
 }  // namespace
 
 std::vector<std::string> boundary_part_names(const PatchMesh& mesh) {
+  if (!mesh.boundary_groups().empty()) {
+    std::vector<std::string> names;
+    for (const auto& [name, edges] : mesh.boundary_groups()) names.push_back(name);
+    return names;
+  }
   const auto g = group(mesh);
   std::vector<std::string> names;
   for (int s = 0; s < 4; ++s)
@@ -56,8 +61,20 @@ std::vector<std::string> boundary_part_names(const PatchMesh& mesh) {
 std::vector<BoundaryEdge> boundary_part_edges(const PatchMesh& mesh, const std::string& name) {
   auto g = group(mesh);
   if (name == "all") return g[4];
-  for (int s = 0; s < 4; ++s)
-    if (name == kSides[s] && !g[s].empty()) return g[s];
+  if (!mesh.boundary_groups().empty()) {
+    const auto it = mesh.boundary_groups().find(name);
+    if (it != mesh.boundary_groups().end()) {
+      std::vector<BoundaryEdge> out;
+      for (const auto& [a, b] : it->second) {
+        const MeshEdge& e = mesh.edge(mesh.find_edge(a, b));
+        out.push_back({e.first.face, e.first.local_edge});
+      }
+      return out;
+    }
+  } else {
+    for (int s = 0; s < 4; ++s)
+      if (name == kSides[s] && !g[s].empty()) return g[s];
+  }
   std::string valid = "all";
   for (const std::string& n : boundary_part_names(mesh)) valid += ", " + n;
   throw InputError("unknown boundary '" + name + "' of multipatch domain '" + mesh.name() + "' (valid: " + valid + ")");

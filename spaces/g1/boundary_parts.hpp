@@ -1,6 +1,7 @@
 #pragma once
 /// @file
-/// Named boundary parts of a multipatch PatchMesh: the sides of the domain's bounding box. A boundary
+/// Named boundary parts of a multipatch PatchMesh: its boundary groups when it has any (e.g. the
+/// physical curves of a Gmsh file), otherwise the sides of the domain's bounding box. A boundary
 /// edge whose two ends lie on x = x_min (within 1e-10 of the domain size) belongs to `left`, on
 /// x = x_max to `right`, on y = y_min to `bottom`, on y = y_max to `top`. Edges on no side of the
 /// box (e.g. the re-entrant sides of an L-shape, the slanted sides of a pentagon) are only in "all".
@@ -13,7 +14,7 @@
 
 namespace iga {
 
-/// The nonempty parts among left, right, bottom, top, in that order.
+/// The group names (in order), or the nonempty sides among left, right, bottom, top, in that order.
 std::vector<std::string> boundary_part_names(const PatchMesh& mesh);
 
 /// Boundary edges of part `name` ("all": every boundary edge). Throws InputError for a name that

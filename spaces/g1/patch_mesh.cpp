@@ -25,8 +25,9 @@ std::string patch_name(const std::string& mesh, int f) {
 
 }  // namespace
 
-PatchMesh::PatchMesh(std::vector<Point2> vertices, std::vector<std::vector<int>> faces, std::string name)
-    : vertices_(std::move(vertices)), faces_(std::move(faces)), name_(std::move(name)) {
+PatchMesh::PatchMesh(std::vector<Point2> vertices, std::vector<std::vector<int>> faces, std::string name,
+                     BoundaryGroups groups)
+    : vertices_(std::move(vertices)), faces_(std::move(faces)), name_(std::move(name)), groups_(std::move(groups)) {
   if (faces_.empty()) throw InputError(name_ + ": a multipatch mesh needs at least one patch");
   for (int f = 0; f < num_faces(); ++f) {
     const auto& q = faces_[f];
@@ -59,6 +60,25 @@ PatchMesh::PatchMesh(std::vector<Point2> vertices, std::vector<std::vector<int>>
   }
   build_topology();
   build_fans();
+  check_groups();
+}
+
+int PatchMesh::find_edge(int a, int b) const {
+  const auto it = edge_ids_.find({std::min(a, b), std::max(a, b)});
+  return it == edge_ids_.end() ? -1 : it->second;
+}
+
+void PatchMesh::check_groups() const {
+  for (const auto& [group, edges] : groups_) {
+    if (group == "all")
+      throw InputError(name_ + ": boundary group name 'all' is reserved (every boundary edge); rename it");
+    for (const auto& [a, b] : edges) {
+      const int e = find_edge(a, b);
+      if (e < 0 || !edges_[e].boundary())
+        throw InputError(name_ + ": boundary group '" + group + "' has the edge between vertices " + std::to_string(a) +
+                         " and " + std::to_string(b) + ", which is not a boundary edge");
+    }
+  }
 }
 
 bool PatchMesh::has_triangles() const {
@@ -97,6 +117,7 @@ void PatchMesh::build_topology() {
                          " traverse their shared edge in the same direction (inconsistent orientation)");
     }
     const int id = num_edges();
+    edge_ids_[key] = id;
     edges_.push_back(edge);
     for (const FaceEdge& fe : list) face_edges_[fe.face][fe.local_edge] = id;
   }
@@ -212,7 +233,14 @@ PatchMesh PatchMesh::refined() const {
     // Child c keeps corner c: (corner c, mid of edge c, centre, mid of edge c-1), counterclockwise.
     for (int c = 0; c < 4; ++c) faces.push_back({q[c], m[c], centre, m[(c + 3) % 4]});
   }
-  return PatchMesh(std::move(v), std::move(faces), name_);
+  BoundaryGroups groups;
+  for (const auto& [group, edges] : groups_)
+    for (const auto& [a, b] : edges) {
+      const int m = mid[find_edge(a, b)];
+      groups[group].push_back({a, m});
+      groups[group].push_back({m, b});
+    }
+  return PatchMesh(std::move(v), std::move(faces), name_, std::move(groups));
 }
 
 }  // namespace iga

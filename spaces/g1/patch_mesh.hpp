@@ -9,7 +9,9 @@
 /// reference corner (0,0),(1,0),(1,1),(0,1) (quad) or (0,0),(1,0),(0,1) (triangle); local edge e
 /// runs from corner e to corner e+1 (mod n), as in reference_edge_point.
 
+#include <map>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "spaces/push_forward.hpp"
@@ -40,15 +42,23 @@ struct VertexFan {
   int valence() const { return static_cast<int>(edge.size()); }
 };
 
+/// Named boundary parts as lists of boundary edges, each edge given by its two end vertices.
+using BoundaryGroups = std::map<std::string, std::vector<std::pair<int, int>>>;
+
 class PatchMesh {
  public:
   /// Build and validate. `name` is used in messages. Throws InputError for a face with other than
-  /// 3 or 4 corners, an inverted or folded face (det DG <= 0 at a corner), a repeated corner, an edge shared by more than two faces
-  /// (non-manifold), an edge traversed in the same direction by two faces (inconsistent
-  /// orientation) and a vertex whose faces do not form one fan; the message names the patch.
-  PatchMesh(std::vector<Point2> vertices, std::vector<std::vector<int>> faces, std::string name);
+  /// 3 or 4 corners, an inverted, folded or degenerate face (det DG <= 0 at a corner), a repeated
+  /// corner, an edge shared by more than two faces (non-manifold), an edge traversed in the same
+  /// direction by two faces (inconsistent orientation) and a vertex whose faces do not form one
+  /// fan; the message names the patch. `groups` are optional named boundary parts (e.g. Gmsh
+  /// physical curves); a group named "all" or with an edge that is not a boundary edge is an
+  /// InputError too.
+  PatchMesh(std::vector<Point2> vertices, std::vector<std::vector<int>> faces, std::string name,
+            BoundaryGroups groups = {});
 
-  /// Each face split into four (edge midpoints and centre of the bilinear map); same geometry.
+  /// Each face split into four (edge midpoints, and the centre of the bilinear map for quads); same
+  /// geometry. Boundary groups follow (each group edge becomes its two halves).
   PatchMesh refined() const;
 
   const std::string& name() const { return name_; }
@@ -64,6 +74,10 @@ class PatchMesh {
   /// Mesh edge of local edge `local_edge` of face f.
   int face_edge(int f, int local_edge) const { return face_edges_[f][local_edge]; }
   const VertexFan& fan(int v) const { return fans_[v]; }
+  /// The mesh edge between vertices a and b (either order), or -1.
+  int find_edge(int a, int b) const;
+  /// Named boundary parts given at construction (empty for most meshes).
+  const BoundaryGroups& boundary_groups() const { return groups_; }
 
   /// Bilinear (quad) or affine (triangle) map of face f at reference point (u,v), with first and
   /// second derivatives.
@@ -76,6 +90,7 @@ class PatchMesh {
  private:
   void build_topology();
   void build_fans();
+  void check_groups() const;
 
   std::vector<Point2> vertices_;
   std::vector<std::vector<int>> faces_;
@@ -83,6 +98,8 @@ class PatchMesh {
   std::vector<MeshEdge> edges_;
   std::vector<std::vector<int>> face_edges_;
   std::vector<VertexFan> fans_;
+  std::map<std::pair<int, int>, int> edge_ids_;  ///< (min, max) vertex pair -> edge
+  BoundaryGroups groups_;
 };
 
 /// Reference coordinates of corner c (taken mod the number of corners) of the unit square or the
