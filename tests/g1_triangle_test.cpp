@@ -14,7 +14,9 @@
 #include "g1_test_support.hpp"
 #include "solver/errors.hpp"
 #include "spaces/g1/g1_space.hpp"
+#include "spaces/g1/gradient_jump.hpp"
 #include "spaces/g1/multipatch_domains.hpp"
+#include "test_support.hpp"
 
 using namespace iga;
 using namespace iga::test;
@@ -233,4 +235,36 @@ TEST(G1Triangles, RefinementSplitsTrianglesIntoFourWithTheSameGeometry) {
   ASSERT_EQ(m.shape(tri), CellShape::triangle);
   EXPECT_LT((r.map(4 * tri, P(1, 0)).x - m.map(tri, P(0.5, 0)).x).norm(), 1e-15);
   EXPECT_LT((r.map(4 * tri + 3, P(1.0 / 3, 1.0 / 3)).x - m.map(tri, P(1.0 / 3, 1.0 / 3)).x).norm(), 1e-15);
+}
+
+TEST(G1Triangles, GradientJumpOfTentIsExactAndOfDiscreteSolutionsRoundOff) {
+  // Two triangles of the unit square meeting on the diagonal x + y = 1: u = 0 below, x + y − 1
+  // above, gradient jump |(1, 1)| = √2 along the whole diagonal; the smooth x·y has none.
+  const PatchMesh m = mesh_from_patches({{P(0, 0), P(1, 0), P(0, 1)}, {P(1, 0), P(1, 1), P(0, 1)}}, "two");
+  const int k = 5;
+  auto coefficients = [&](const std::function<double(P)>& fn) {
+    std::vector<P> pts;
+    for (int j = 0; j <= k; ++j)
+      for (int i = 0; i + j <= k; ++i) pts.push_back(P(double(i) / k, double(j) / k));
+    Eigen::MatrixXd b(pts.size(), pts.size());
+    for (size_t p = 0; p < pts.size(); ++p) b.row(static_cast<Eigen::Index>(p)) = bernstein_jet(CellShape::triangle, k, pts[p]).row(0);
+    std::vector<Eigen::VectorXd> out;
+    for (int f = 0; f < 2; ++f) {
+      Eigen::VectorXd v(pts.size());
+      for (size_t p = 0; p < pts.size(); ++p) v[static_cast<Eigen::Index>(p)] = fn(m.map(f, pts[p]).x);
+      out.push_back(b.partialPivLu().solve(v));
+    }
+    return out;
+  };
+  const double tent = max_gradient_jump(m, k, coefficients([](P x) { return std::max(0.0, x.x() + x.y() - 1.0); }));
+  EXPECT_NEAR(tent, std::sqrt(2.0), 1e-12);
+  EXPECT_LT(max_gradient_jump(m, k, coefficients([](P x) { return x.x() * x.y(); })), 1e-12);
+  // A discrete clamped-plate solution on the triangle config's mesh (level 1): round-off.
+  const std::string text =
+      "problem: {pde: biharmonic, exact: \"(cos(2*pi*x)-1)*(cos(2*pi*y)-1)\", boundary: {all: clamped}}\n"
+      "domain: {type: multipatch, name: 4t_star}\nspace: {type: g1, degree: 5}\n";
+  const LevelResult r =
+      solve_problem(*test::space_from_yaml(text, 1), test::problem_from_yaml(text), SolverKind::cholmod).result;
+  ASSERT_TRUE(r.g1_jump.has_value());
+  EXPECT_LT(*r.g1_jump, 1e-11);
 }
