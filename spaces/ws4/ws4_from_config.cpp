@@ -1,7 +1,12 @@
 #include "spaces/ws4/ws4_from_config.hpp"
 
+#include <filesystem>
+#include <optional>
 #include <sstream>
 
+#include "spaces/mesh_io/mesh_polygon.hpp"
+#include "spaces/mesh_io/read_mesh_file.hpp"
+#include "spaces/ws4/mesh_triangulation.hpp"
 #include "spaces/ws4/ws4_jitter.hpp"
 #include "spaces/ws4/ws4_space.hpp"
 
@@ -15,14 +20,18 @@ std::string box(const Point2& lo, const Point2& hi) {
   return s.str();
 }
 
-}  // namespace
+/// The level-0 mesh of a domain and its description for parameters().
+struct BaseMesh {
+  std::optional<ws4::Triangulation> mesh;
+  std::string description;
+};
 
-SpacePtr make_ws4_space(const ConfigNode& domain, const ConfigNode& space, int level) {
-  space.check_keys({"type", "elements"});
-  if (space.has("type")) space["type"].as_choice({"ws4"});
+/// `space.elements`: N or [nx, ny] (default 2 x 2); `single` demands one N.
+std::array<int, 2> element_counts(const ConfigNode& space, bool single) {
   int nx = 2, ny = 2;
   if (const auto en = space.find("elements")) {
     if (en->is_sequence()) {
+      if (single) en->fail("expected one number N (squares per unit length) for an l_shape domain");
       const std::vector<int> n = en->as_ints();
       if (n.size() != 2) en->fail("expected N or [nx, ny] (got " + std::to_string(n.size()) + " numbers)");
       nx = n[0];
@@ -33,9 +42,11 @@ SpacePtr make_ws4_space(const ConfigNode& domain, const ConfigNode& space, int l
     if (nx < 1 || ny < 1)
       en->fail("element counts must be >= 1 (got [" + std::to_string(nx) + ", " + std::to_string(ny) + "])");
   }
-  if (level < 0 || level > 12) space.fail("refinement level must be in 0..12 (got " + std::to_string(level) + ")");
+  return {nx, ny};
+}
 
-  const std::string type = domain["type"].as_choice({"unit_square", "rectangle"});
+BaseMesh rectangle_mesh(const ConfigNode& domain, const ConfigNode& space, const std::string& type) {
+  const auto [nx, ny] = element_counts(space, false);
   Point2 lo(0, 0), hi(1, 1);
   if (type == "unit_square") {
     domain.check_keys({"type", "jitter", "seed"});
@@ -46,9 +57,91 @@ SpacePtr make_ws4_space(const ConfigNode& domain, const ConfigNode& space, int l
     if (!(lo.x() < hi.x()) || !(lo.y() < hi.y()))
       domain["max"].fail("max must be greater than min in both coordinates (got " + box(lo, hi) + ")");
   }
-  ws4::Triangulation mesh = ws4::Triangulation::rectangle(nx, ny, lo, hi);
+  return {ws4::Triangulation::rectangle(nx, ny, lo, hi),
+          "rectangle " + box(lo, hi) + ", " + std::to_string(nx) + "x" + std::to_string(ny) + " squares"};
+}
+
+BaseMesh l_shape(const ConfigNode& domain, const ConfigNode& space) {
+  domain.check_keys({"type", "jitter", "seed"});
+  const int n = element_counts(space, true)[0];
+  return {ws4::triangulation_from_mesh(ws4::l_shape_mesh(n)),
+          "L-shape [-1,1]^2 minus [0,1]x[-1,0], " + std::to_string(n) + "x" + std::to_string(n) + " squares per unit square"};
+}
+
+void reject_elements(const ConfigNode& space, const std::string& type) {
+  if (const auto en = space.find("elements"))
+    en->fail("'elements' sets the grid of unit_square, rectangle and l_shape domains; a " + type +
+             " domain is sized by domain.mesh_size");
+}
+
+std::vector<Eigen::Vector2d> points(const ConfigNode& list) {
+  if (!list.is_sequence()) list.fail("expected a list of points [[x, y], ...]");
+  std::vector<Eigen::Vector2d> result;
+  for (const ConfigNode& p : list.items()) result.push_back(p.as_point());
+  return result;
+}
+
+/// Runs `build`, prefixing its InputError with the config place `node` (file:line:col: key).
+template <class F>
+auto at_config(const ConfigNode& node, F&& build) {
+  try {
+    return build();
+  } catch (const InputError& e) {
+    node.fail(e.what());
+  }
+}
+
+BaseMesh polygon(const ConfigNode& domain, const ConfigNode& space) {
+  domain.check_keys({"type", "vertices", "holes", "mesh_size", "jitter", "seed"});
+  reject_elements(space, "polygon");
+  PolygonDomain shape;
+  shape.outer = points(domain["vertices"]);
+  if (const auto holes = domain.find("holes")) {
+    if (!holes->is_sequence()) holes->fail("expected a list of polygons [[[x, y], ...], ...]");
+    for (const ConfigNode& hole : holes->items()) shape.holes.push_back(points(hole));
+  }
+  const double h = domain["mesh_size"].as_double();
+  if (!(h > 0.0)) domain["mesh_size"].fail("mesh_size must be > 0");
+  // Messages name the domain's place; the mesh's own source stays "polygon".
+  const PlanarMesh mesh = at_config(domain, [&] { return mesh_polygon(shape, h, false, "polygon"); });
+  return {at_config(domain, [&] { return ws4::triangulation_from_mesh(mesh); }),
+          "polygon with " + std::to_string(shape.outer.size()) + " vertices and " + std::to_string(shape.holes.size()) +
+              " holes, mesh size " + format_number(h) + " (Gmsh)"};
+}
+
+BaseMesh mesh_file(const ConfigNode& domain, const ConfigNode& space) {
+  domain.check_keys({"type", "file", "mesh_size", "jitter", "seed"});
+  reject_elements(space, "mesh_file");
+  const ConfigNode file = domain["file"];
+  std::filesystem::path path = file.as_string();
+  if (path.is_relative()) path = std::filesystem::path(file.file()).parent_path() / path;  // next to the config
+  MeshFileOptions options;
+  if (const auto hn = domain.find("mesh_size")) {
+    if (path.extension() != ".geo") hn->fail("mesh_size applies to .geo files only (a mesh file is used as it is)");
+    options.mesh_size = hn->as_double();
+    if (!(options.mesh_size > 0.0)) hn->fail("mesh_size must be > 0");
+  }
+  const PlanarMesh mesh = at_config(file, [&] { return read_mesh_file(path.string(), options); });
+  std::string description = "mesh file " + path.filename().string();
+  if (options.mesh_size > 0.0) description += " (mesh size " + format_number(options.mesh_size) + ")";
+  return {at_config(file, [&] { return ws4::triangulation_from_mesh(mesh); }), description};
+}
+
+}  // namespace
+
+SpacePtr make_ws4_space(const ConfigNode& domain, const ConfigNode& space, int level) {
+  space.check_keys({"type", "elements"});
+  if (space.has("type")) space["type"].as_choice({"ws4"});
+  if (level < 0 || level > 12) space.fail("refinement level must be in 0..12 (got " + std::to_string(level) + ")");
+
+  const std::string type = domain["type"].as_choice({"unit_square", "rectangle", "l_shape", "polygon", "mesh_file"});
+  BaseMesh base = type == "l_shape"     ? l_shape(domain, space)
+                  : type == "polygon"   ? polygon(domain, space)
+                  : type == "mesh_file" ? mesh_file(domain, space)
+                                        : rectangle_mesh(domain, space, type);
+  ws4::Triangulation mesh = std::move(*base.mesh);
   for (int l = 0; l < level; ++l) mesh = mesh.refined();
-  std::string description = "rectangle " + box(lo, hi) + ", " + std::to_string(nx) + "x" + std::to_string(ny) + " squares";
+  std::string description = base.description;
   if (const auto jn = domain.find("jitter")) {
     const double jitter = jn->as_double();
     if (!(jitter >= 0.0 && jitter <= 0.2)) jn->fail("jitter must be in [0, 0.2] (fraction of the shortest edge)");

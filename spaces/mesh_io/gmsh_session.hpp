@@ -1,0 +1,16 @@
+#pragma once
+/// @file
+/// Access to the Gmsh SDK, which is a process-wide singleton and not thread-safe: gmsh is
+/// initialised once per process (terminal output off, no user config files, one thread) and
+/// finalised at exit; every use holds one lock and starts from an empty model.
+
+#include <functional>
+#include <string>
+
+namespace iga {
+
+/// Runs `work` with Gmsh initialised, locked and cleared (cleared again afterwards). Anything Gmsh
+/// throws becomes an InputError "<source>: gmsh: <message>"; InputErrors from `work` pass through.
+void with_gmsh(const std::string& source, const std::function<void()>& work);
+
+}  // namespace iga
