@@ -306,7 +306,7 @@ Eigen::VectorXd Ws4Space::interpolate(const Jet3& f) const {
 
 bool Ws4Space::closed_form_element_matrix(int element, BilinearForm form, Eigen::MatrixXd& local) const {
   const Eigen::MatrixXd& c = extraction_[element];
-  local.noalias() = c.transpose() * ws4_form_matrix(form, jacobian(element)) * c;
+  local = symmetric_congruence_extended(c, ws4_form_matrix(form, jacobian(element)));
   return true;
 }
 

@@ -61,7 +61,8 @@ class Ws4Space final : public Space {
   /// Gauss rule on each quarter of the edge (the pieces of the split along it).
   RulePtr edge_quadrature(int element, int edge, int degree) const override;
 
-  /// C_Kᵀ K_B C_K with K_B from the universal reference matrices (ws4_reference_matrices.hpp).
+  /// C_Kᵀ K_B C_K with K_B from the universal reference matrices, the product accumulated in long
+  /// double (ws4_reference_matrices.hpp).
   bool closed_form_element_matrix(int element, BilinearForm form, Eigen::MatrixXd& local) const override;
 
   /// Draws the element on its split (ws4_sample_cell.hpp): the 342 fan triangles over the 178 split
