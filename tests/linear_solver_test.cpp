@@ -14,19 +14,25 @@
 namespace iga {
 namespace {
 
-/// T² (n x n, pentadiagonal 1, −4, 6, −4, 1 with 5 in the first and last diagonal entries): SPD,
-/// integer entries, both triangles stored.
-SparseMatrix squared_second_difference(int n) {
+/// tridiag(−1, d, −1), n x n, both triangles stored.
+SparseMatrix tridiagonal(int n, double d) {
   SparseMatrix t(n, n);
   std::vector<Eigen::Triplet<double>> entries;
   for (int i = 0; i < n; ++i) {
-    entries.emplace_back(i, i, 2.0);
+    entries.emplace_back(i, i, d);
     if (i + 1 < n) {
       entries.emplace_back(i, i + 1, -1.0);
       entries.emplace_back(i + 1, i, -1.0);
     }
   }
   t.setFromTriplets(entries.begin(), entries.end());
+  return t;
+}
+
+/// T² with T the second-difference matrix (pentadiagonal 1, −4, 6, −4, 1; 5 in the first and last
+/// diagonal entries): SPD, integer entries.
+SparseMatrix squared_second_difference(int n) {
+  const SparseMatrix t = tridiagonal(n, 2.0);
   return t * t;
 }
 
@@ -74,18 +80,9 @@ TEST(LinearSolver, UmfpackIsRefinedToo) {
 }
 
 TEST(LinearSolver, WellConditionedSystemStopsAtRoundOff) {
-  // T + 4 I: cond < 2, the first solve is already at round-off.
+  // tridiag(−1, 6, −1): cond < 2, the first solve is already at round-off.
   const int n = 200;
-  SparseMatrix a(n, n);
-  std::vector<Eigen::Triplet<double>> entries;
-  for (int i = 0; i < n; ++i) {
-    entries.emplace_back(i, i, 6.0);
-    if (i + 1 < n) {
-      entries.emplace_back(i, i + 1, -1.0);
-      entries.emplace_back(i + 1, i, -1.0);
-    }
-  }
-  a.setFromTriplets(entries.begin(), entries.end());
+  const SparseMatrix a = tridiagonal(n, 6.0);
   const Eigen::VectorXd exact = integer_solution(n);
   SolveReport report;
   const Eigen::VectorXd x = solve_linear_system(a, a * exact, SolverKind::cholmod, report);
