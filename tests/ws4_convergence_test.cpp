@@ -1,8 +1,8 @@
 /// @file
 /// WS4 Poisson and clamped-plate solutions on the alternating-diagonal N x N unit-square meshes
 /// against the error tables of the WS4 notes §10 (N = 1, 2, 4; N = 8 for the plate), through the
-/// generic assembler and boundary projection: errors to the printed digits, free-DOF counts, and rates; and a clamped plate
-/// whose solution lies in the space, solved to round-off.
+/// generic assembler and boundary projection: errors to the printed digits, free-DOF counts, and
+/// rates; and a clamped plate whose solution lies in the space, solved to round-off.
 
 #include <gtest/gtest.h>
 

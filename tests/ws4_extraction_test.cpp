@@ -107,7 +107,8 @@ TEST(Ws4Extraction, FunctionalTransformTimesFunctionalMatrixIsTheCollocationMatr
   const Eigen::MatrixXd a = ws4_collocation_matrix();
   double worst = 0.0;
   for (int t = 0; t < space.num_elements(); ++t) {
-    const Eigen::MatrixXd ta = ws4_functionals_from_dofs(space.dof_geometry(t)).cast<double>() * space.element_functionals(t);
+    const Eigen::MatrixXd t_k = ws4_functionals_from_dofs(space.dof_geometry(t)).cast<double>();
+    const Eigen::MatrixXd ta = t_k * space.element_functionals(t);
     worst = std::max(worst, (ta - a).cwiseAbs().maxCoeff() / a.cwiseAbs().maxCoeff());
   }
   std::cout << "max |T_K G_K - A| / max |A| over " << space.num_elements() << " elements: " << worst << "\n";

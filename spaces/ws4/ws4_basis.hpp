@@ -25,7 +25,9 @@ class Ws4Basis {
   /// Piece of B_{i+1} on region r (i = 0..50), a polynomial in x - center(r).
   const Poly4& piece(int region, int i) const { return pieces_[region * size + i]; }
   /// The same piece in long double, as built (for the extended-precision reference matrices).
-  const BasicPoly4<long double>& piece_extended(int region, int i) const { return pieces_extended_[region * size + i]; }
+  const BasicPoly4<long double>& piece_extended(int region, int i) const {
+    return pieces_extended_[region * size + i];
+  }
   /// Origin of the local coordinates of the pieces of region r (its vertex average).
   const Point2& center(int region) const { return split_.regions()[region].centroid; }
   /// Weight c_i |Δ| / 480 of B_{i+1} = ∫ B_{i+1} over the reference triangle (|Δ| = 1/2).

@@ -20,7 +20,8 @@ using MatrixL = Eigen::Matrix<Real, Eigen::Dynamic, Eigen::Dynamic>;
 struct Gauss5 {
   Real x[5], w[5];
   Gauss5() {
-    const Real a = std::sqrt(Real(5) - 2 * std::sqrt(Real(10) / 7)) / 3, b = std::sqrt(Real(5) + 2 * std::sqrt(Real(10) / 7)) / 3;
+    const Real a = std::sqrt(Real(5) - 2 * std::sqrt(Real(10) / 7)) / 3;
+    const Real b = std::sqrt(Real(5) + 2 * std::sqrt(Real(10) / 7)) / 3;
     const Real wa = (322 + 13 * std::sqrt(Real(70))) / 900, wb = (322 - 13 * std::sqrt(Real(70))) / 900;
     const Real nodes[5] = {-b, -a, 0, a, b}, weights[5] = {wb, wa, Real(128) / 225, wa, wb};
     for (int k = 0; k < 5; ++k) {
@@ -88,7 +89,8 @@ Ws4ReferenceMatrices build() {
   // Round once; a symmetric integrand gives an exactly symmetric matrix.
   auto rounded = [&](int p) {
     Eigen::MatrixXd m = sums[p].cast<double>();
-    if (pairs[p][0] == pairs[p][1]) m = m.triangularView<Eigen::Upper>().toDenseMatrix().selfadjointView<Eigen::Upper>();
+    if (pairs[p][0] == pairs[p][1])
+      m = m.triangularView<Eigen::Upper>().toDenseMatrix().selfadjointView<Eigen::Upper>();
     return m;
   };
   Ws4ReferenceMatrices m;
@@ -168,8 +170,8 @@ long double dot_extended(const double* a, const T* b, int n) {
 
 Eigen::MatrixXd symmetric_congruence_extended(const Eigen::MatrixXd& c, const Eigen::MatrixXd& k) {
   const int n = static_cast<int>(c.rows());
-  // (Cᵀ K)(m, j) = Σ_i C(i, m) K(i, j), kept in long double, row m contiguous. K is used as
-  // stored (not as Kᵀ): its own round-off is not symmetric, and Kᵀ would add that asymmetry.
+  // (Cᵀ K)(m, j) = Σ_i C(i, m) K(i, j), kept in long double, row m contiguous; then the upper
+  // triangle of (Cᵀ K) C, mirrored.
   std::vector<long double> ctk(static_cast<size_t>(n) * n);
   for (int m = 0; m < n; ++m)
     for (int j = 0; j < n; ++j) ctk[static_cast<size_t>(m) * n + j] = dot_extended(c.col(m).data(), k.col(j).data(), n);
