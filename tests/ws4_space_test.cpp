@@ -168,10 +168,11 @@ TEST(Ws4Space, ReproducesQuarticsExactlyOnAPerturbedMesh) {
   }
   std::cout << "quartic reproduction, max errors: value " << err[0] << ", gradient " << std::max(err[1], err[2])
             << ", Hessian " << std::max({err[3], err[4], err[5]}) << "\n";
-  // Round-off of the 51 x 51 inversion (cond ~ 1e6 with scaled DOFs); quartic magnitudes O(1..10).
-  EXPECT_LT(err[0], 1e-11);
-  EXPECT_LT(std::max(err[1], err[2]), 1e-9);
-  EXPECT_LT(std::max({err[3], err[4], err[5]}), 1e-7);
+  // Exact extraction (A⁻¹ exact, T_K in long double); quartic magnitudes O(1..10), h = 1/4. (The
+  // former LU inverse of G_K gave 1e-12 / 5e-11 / 4e-9.)
+  EXPECT_LT(err[0], 1e-13);
+  EXPECT_LT(std::max(err[1], err[2]), 1e-11);
+  EXPECT_LT(std::max({err[3], err[4], err[5]}), 1e-9);
 }
 
 TEST(Ws4Space, ShapeFunctionsAreDualToTheirDegreesOfFreedom) {

@@ -82,13 +82,14 @@ class BasicPoly4 {
     return r;
   }
 
-  T operator()(const Point2& x) const {
+  T operator()(const Point2& x) const { return (*this)(T(x.x()), T(x.y())); }
+  T operator()(T x, T y) const {
     // Horner in y within each power of x: sum_a x^a (sum_b c_ab y^b).
     T result = T(0);
     for (int a = max_degree; a >= 0; --a) {
       T inner = T(0);
-      for (int b = max_degree - a; b >= 0; --b) inner = inner * T(x.y()) + c_[index(a, b)];
-      result = result * T(x.x()) + inner;
+      for (int b = max_degree - a; b >= 0; --b) inner = inner * y + c_[index(a, b)];
+      result = result * x + inner;
     }
     return result;
   }

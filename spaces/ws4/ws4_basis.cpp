@@ -119,12 +119,14 @@ Ws4Basis::Ws4Basis() : split_(Ws4Split::reference()) {
   for (const KnotSet& s : sets) weight_.push_back(s.c * 0.5 / 480.0);
   const int nr = static_cast<int>(split_.regions().size());
   pieces_.resize(static_cast<size_t>(nr) * size);
+  pieces_extended_.resize(static_cast<size_t>(nr) * size);
   for (int r = 0; r < nr; ++r) {
     RegionRecurrence rec(split_.regions()[r].centroid);
     for (int i = 0; i < size; ++i) {
       PolyL scaled;
       scaled.add_scaled(Real(sets[i].c) / 960, rec.M(sets[i].multiplicity));
       pieces_[r * size + i] = scaled.cast<double>();
+      pieces_extended_[r * size + i] = scaled;
     }
   }
 }

@@ -24,6 +24,10 @@ class Ws4Basis {
   const Ws4Split& split() const { return split_; }
   /// Piece of B_{i+1} on region r (i = 0..50), a polynomial in x - center(r).
   const Poly4& piece(int region, int i) const { return pieces_[region * size + i]; }
+  /// The same piece in long double, as built (for the extended-precision reference matrices).
+  const BasicPoly4<long double>& piece_extended(int region, int i) const {
+    return pieces_extended_[region * size + i];
+  }
   /// Origin of the local coordinates of the pieces of region r (its vertex average).
   const Point2& center(int region) const { return split_.regions()[region].centroid; }
   /// Weight c_i |Δ| / 480 of B_{i+1} = ∫ B_{i+1} over the reference triangle (|Δ| = 1/2).
@@ -42,6 +46,7 @@ class Ws4Basis {
 
   const Ws4Split& split_;
   std::vector<Poly4> pieces_;  ///< regions x 51
+  std::vector<BasicPoly4<long double>> pieces_extended_;
   std::vector<double> weight_;
 };
 

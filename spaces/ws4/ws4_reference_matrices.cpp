@@ -2,6 +2,7 @@
 
 #include <Eigen/LU>
 #include <cmath>
+#include <vector>
 
 #include "spaces/ws4/ws4_basis.hpp"
 
@@ -12,20 +13,98 @@ namespace {
 /// Index in {ξξ, ξη, ηη} of the second derivative ∂_a ∂_b.
 int hessian_index(int a, int b) { return a + b; }
 
+using Real = long double;
+using MatrixL = Eigen::Matrix<Real, Eigen::Dynamic, Eigen::Dynamic>;
+
+/// 5-point Gauss–Legendre on [0, 1] in long double (exact to degree 9).
+struct Gauss5 {
+  Real x[5], w[5];
+  Gauss5() {
+    const Real a = std::sqrt(Real(5) - 2 * std::sqrt(Real(10) / 7)) / 3;
+    const Real b = std::sqrt(Real(5) + 2 * std::sqrt(Real(10) / 7)) / 3;
+    const Real wa = (322 + 13 * std::sqrt(Real(70))) / 900, wb = (322 - 13 * std::sqrt(Real(70))) / 900;
+    const Real nodes[5] = {-b, -a, 0, a, b}, weights[5] = {wb, wa, Real(128) / 225, wa, wb};
+    for (int k = 0; k < 5; ++k) {
+      x[k] = (nodes[k] + 1) / 2;
+      w[k] = weights[k] / 2;
+    }
+  }
+};
+
+/// The reference matrices in long double, rounded once. Every integrand is a polynomial of degree
+/// <= 8 on each fan triangle of the split: a collapsed 5 x 5 Gauss rule (degree 9 in the collapsed
+/// direction) integrates it exactly, with nodes, split vertices (exact rationals) and the pieces in
+/// long double. A double computation leaves round-off of ε Σ_q w_q |∂²B_i ∂²B_j| (x_q) in the
+/// entries, much more than ε |K_ij| where the pieces cancel, and that error does not annihilate
+/// linear functions: the biharmonic system amplifies it into an L2 error floor.
 Ws4ReferenceMatrices build() {
   const Ws4Basis& basis = Ws4Basis::reference();
-  const QuadratureRule rule = basis.split().composite_rule(8);
-  ReferenceDerivatives t;
-  basis.tabulate(rule.points, t);
-  const Eigen::VectorXd w = Eigen::Map<const Eigen::VectorXd>(rule.weights.data(), rule.size());
-  const Eigen::MatrixXd* d1[2] = {&t.dxi, &t.deta};
-  const Eigen::MatrixXd* d2[3] = {&t.dxixi, &t.dxieta, &t.detaeta};
+  const Ws4Split& split = basis.split();
+  const Gauss5 g;
+  constexpr int n = Ws4Basis::size, q = 25;
+  // Six tables: value, ∂ξ, ∂η, ∂ξξ, ∂ξη, ∂ηη; sums[k][l] = ∫ table_k table_lᵀ for the pairs used.
+  const int pairs[10][2] = {{0, 0}, {1, 1}, {1, 2}, {2, 2}, {3, 3}, {3, 4}, {3, 5}, {4, 4}, {4, 5}, {5, 5}};
+  std::vector<MatrixL> sums(10, MatrixL::Zero(n, n));
+  MatrixL table[6];
+  for (MatrixL& t : table) t.resize(n, q);
+  Eigen::Matrix<Real, 1, q> weights;
+  std::vector<BasicPoly4<Real>> d(6 * n);
+  int cached_region = -1;
+  for (size_t f = 0; f < split.fan_triangles().size(); ++f) {
+    const int r = split.fan_region()[f];
+    if (r != cached_region) {
+      for (int i = 0; i < n; ++i) {
+        const BasicPoly4<Real>& p = basis.piece_extended(r, i);
+        d[i] = p;
+        d[n + i] = p.derivative(0);
+        d[2 * n + i] = p.derivative(1);
+        d[3 * n + i] = d[n + i].derivative(0);
+        d[4 * n + i] = d[n + i].derivative(1);
+        d[5 * n + i] = d[2 * n + i].derivative(1);
+      }
+      cached_region = r;
+    }
+    Real vx[3], vy[3];  // fan-triangle corners relative to the region's center, from exact barycentrics
+    for (int k = 0; k < 3; ++k) {
+      const Triple& b = split.vertices()[split.fan_triangles()[f][k]];
+      const Real sum = Real(b[0]) + Real(b[1]) + Real(b[2]);
+      vx[k] = Real(b[1]) / sum - Real(basis.center(r).x());
+      vy[k] = Real(b[2]) / sum - Real(basis.center(r).y());
+    }
+    const Real twice_area = std::abs((vx[1] - vx[0]) * (vy[2] - vy[0]) - (vy[1] - vy[0]) * (vx[2] - vx[0]));
+    int k = 0;
+    for (int a = 0; a < 5; ++a)
+      for (int c = 0; c < 5; ++c, ++k) {
+        // Collapsed coordinates: x = v0 + s (v1 − v0) + (1 − s) t (v2 − v0), dx = (1 − s) 2|T| ds dt.
+        const Real s = g.x[a], t = (1 - s) * g.x[c];
+        const Real x = vx[0] + s * (vx[1] - vx[0]) + t * (vx[2] - vx[0]);
+        const Real y = vy[0] + s * (vy[1] - vy[0]) + t * (vy[2] - vy[0]);
+        weights(k) = g.w[a] * g.w[c] * (1 - s) * twice_area;
+        for (int j = 0; j < 6; ++j)
+          for (int i = 0; i < n; ++i) table[j](i, k) = d[j * n + i](x, y);
+      }
+    for (int p = 0; p < 10; ++p)
+      sums[p].noalias() += table[pairs[p][0]] * weights.asDiagonal() * table[pairs[p][1]].transpose();
+  }
+  // Round once; a symmetric integrand gives an exactly symmetric matrix.
+  auto rounded = [&](int p) {
+    Eigen::MatrixXd m = sums[p].cast<double>();
+    if (pairs[p][0] == pairs[p][1])
+      m = m.triangularView<Eigen::Upper>().toDenseMatrix().selfadjointView<Eigen::Upper>();
+    return m;
+  };
   Ws4ReferenceMatrices m;
-  m.mass = t.value * w.asDiagonal() * t.value.transpose();
-  for (int a = 0; a < 2; ++a)
-    for (int b = 0; b < 2; ++b) m.grad[a][b] = *d1[a] * w.asDiagonal() * d1[b]->transpose();
-  for (int p = 0; p < 3; ++p)
-    for (int q = 0; q < 3; ++q) m.hess[p][q] = *d2[p] * w.asDiagonal() * d2[q]->transpose();
+  m.mass = rounded(0);
+  m.grad[0][0] = rounded(1);
+  m.grad[0][1] = rounded(2);
+  m.grad[1][0] = m.grad[0][1].transpose();
+  m.grad[1][1] = rounded(3);
+  int p = 4;
+  for (int a = 0; a < 3; ++a)
+    for (int b = a; b < 3; ++b) {
+      m.hess[a][b] = rounded(p++);
+      m.hess[b][a] = m.hess[a][b].transpose();
+    }
   return m;
 }
 
@@ -68,6 +147,39 @@ Eigen::MatrixXd ws4_form_matrix(BilinearForm form, const Eigen::Matrix2d& jacobi
       break;
   }
   return k;
+}
+
+namespace {
+
+/// Σ_k a_k b_k in long double, four independent partial sums (the x87 adds pipeline).
+template <class T>
+long double dot_extended(const double* a, const T* b, int n) {
+  long double s0 = 0, s1 = 0, s2 = 0, s3 = 0;
+  int k = 0;
+  for (; k + 3 < n; k += 4) {
+    s0 += static_cast<long double>(a[k]) * b[k];
+    s1 += static_cast<long double>(a[k + 1]) * b[k + 1];
+    s2 += static_cast<long double>(a[k + 2]) * b[k + 2];
+    s3 += static_cast<long double>(a[k + 3]) * b[k + 3];
+  }
+  for (; k < n; ++k) s0 += static_cast<long double>(a[k]) * b[k];
+  return (s0 + s1) + (s2 + s3);
+}
+
+}  // namespace
+
+Eigen::MatrixXd symmetric_congruence_extended(const Eigen::MatrixXd& c, const Eigen::MatrixXd& k) {
+  const int n = static_cast<int>(c.rows());
+  // (Cᵀ K)(m, j) = Σ_i C(i, m) K(i, j), kept in long double, row m contiguous; then the upper
+  // triangle of (Cᵀ K) C, mirrored.
+  std::vector<long double> ctk(static_cast<size_t>(n) * n);
+  for (int m = 0; m < n; ++m)
+    for (int j = 0; j < n; ++j) ctk[static_cast<size_t>(m) * n + j] = dot_extended(c.col(m).data(), k.col(j).data(), n);
+  Eigen::MatrixXd out(n, n);
+  for (int m = 0; m < n; ++m)
+    for (int p = m; p < n; ++p)
+      out(m, p) = out(p, m) = static_cast<double>(dot_extended(c.col(p).data(), &ctk[static_cast<size_t>(m) * n], n));
+  return out;
 }
 
 }  // namespace iga::ws4

@@ -23,4 +23,10 @@ struct Ws4ReferenceMatrices {
 /// Element matrix of `form` in the basis B_i of the triangle x = P0 + J ξ (51 x 51).
 Eigen::MatrixXd ws4_form_matrix(BilinearForm form, const Eigen::Matrix2d& jacobian);
 
+/// Cᵀ K C for a symmetric K (n x n) and C (n x n), accumulated in long double and rounded once.
+/// The element matrices of the Hermite basis need it: the extraction mixes B-coefficients of very
+/// different sizes, and a double product loses digits to cancellation that the biharmonic system
+/// (conditioned like h⁻⁴) then amplifies into an L2 error floor.
+Eigen::MatrixXd symmetric_congruence_extended(const Eigen::MatrixXd& c, const Eigen::MatrixXd& k);
+
 }  // namespace iga::ws4

@@ -7,26 +7,19 @@
 #include "solver/errors.hpp"
 #include "spaces/push_forward.hpp"
 #include "spaces/ws4/ws4_basis.hpp"
+#include "spaces/ws4/ws4_dof_layout.hpp"
+#include "spaces/ws4/ws4_hermite_transform.hpp"
 #include "spaces/ws4/ws4_reference_matrices.hpp"
 
 namespace iga::ws4 {
 
 namespace {
 
-const Point2 kCorner[3] = {Point2(0, 0), Point2(1, 0), Point2(0, 1)};
-/// Interior DOF points in reference coordinates: v3, v1, v2 of the paper (order ρ49, ρ50, ρ51).
-const Point2 kInteriorPoint[3] = {Point2(0.375, 0.25), Point2(0.375, 0.375), Point2(0.25, 0.375)};
-/// Edge DOFs: parameter along the globally oriented edge and order of the normal derivative.
-const double kEdgeS[6] = {0.5, 0.25, 0.75, 0.25, 0.5, 0.75};
-const int kEdgeOrder[6] = {1, 2, 2, 3, 3, 3};
-/// Vertex DOFs: number of x and y derivatives.
-const int kVertexDx[10] = {0, 1, 0, 2, 1, 0, 3, 2, 1, 0};
-const int kVertexDy[10] = {0, 0, 1, 0, 1, 2, 0, 1, 2, 3};
+using namespace dof_layout;
 
 /// D_{v_1} ... D_{v_k} f from the Cartesian derivatives of f (order <= 3, vertex-DOF order).
 double directional_from_jet(const std::array<double, 10>& d, const std::vector<Point2>& dirs) {
-  static const int index_of[4][4] = {{0, 2, 5, 9}, {1, 4, 8, -1}, {3, 7, -1, -1}, {6, -1, -1, -1}};  // [nx][ny]
-  const int k = static_cast<int>(dirs.size());
+    const int k = static_cast<int>(dirs.size());
   double sum = 0.0;
   for (int choice = 0; choice < (1 << k); ++choice) {  // bit m set: direction m contributes its y part
     double w = 1.0;
@@ -36,7 +29,7 @@ double directional_from_jet(const std::array<double, 10>& d, const std::vector<P
       w *= y ? dirs[m].y() : dirs[m].x();
       (y ? ny : nx)++;
     }
-    sum += w * d[index_of[nx][ny]];
+    sum += w * d[vertex_index[nx][ny]];
   }
   return sum;
 }
@@ -166,7 +159,7 @@ Ws4Space::Ws4Space(Triangulation mesh, std::string description)
   compute_vertex_frames();
   extraction_.resize(mesh_.num_triangles());
 #pragma omp parallel for schedule(static)
-  for (int t = 0; t < mesh_.num_triangles(); ++t) extraction_[t] = element_functionals(t).partialPivLu().inverse();
+  for (int t = 0; t < mesh_.num_triangles(); ++t) extraction_[t] = ws4_exact_extraction(dof_geometry(t));
 }
 
 void Ws4Space::compute_vertex_frames() {
@@ -226,6 +219,19 @@ Eigen::Matrix2d Ws4Space::jacobian(int element) const {
   return j;
 }
 
+ElementDofGeometry Ws4Space::dof_geometry(int element) const {
+  ElementDofGeometry g;
+  const auto& tri = mesh_.triangle(element);
+  for (int a = 0; a < 3; ++a) {
+    g.corner[a] = mesh_.vertices()[tri[a]];
+    g.frame[a] = vertex_frame_[tri[a]];
+    g.vertex_scale[a] = h_;
+    g.edge_reversed[a] = mesh_.edge(mesh_.triangle_edge(element, a))[0] != tri[a];
+    g.edge_scale[a] = h_;
+  }
+  return g;
+}
+
 Eigen::MatrixXd Ws4Space::element_functionals(int element) const {
   const Ws4Basis& basis = Ws4Basis::reference();
   const Eigen::Matrix2d jinv = jacobian(element).inverse();
@@ -244,9 +250,9 @@ Eigen::MatrixXd Ws4Space::element_functionals(int element) const {
     const Eigen::Matrix2d& f = vertex_frame_[tri[a]];
     const Point2 w1 = jinv * f.col(0), w2 = jinv * f.col(1);
     for (int k = 0; k < dofs_per_vertex; ++k) {
-      std::vector<Point2> dirs(kVertexDx[k], w1);
-      dirs.insert(dirs.end(), kVertexDy[k], w2);
-      put(kCorner[a], dirs);
+      std::vector<Point2> dirs(vertex_dx[k], w1);
+      dirs.insert(dirs.end(), vertex_dy[k], w2);
+      put(corner[a], dirs);
     }
   }
   for (int k = 0; k < 3; ++k) {
@@ -256,9 +262,9 @@ Eigen::MatrixXd Ws4Space::element_functionals(int element) const {
     const Point2 t = (mesh_.vertices()[e[1]] - mesh_.vertices()[e[0]]).normalized();
     const Point2 wn = jinv * Point2(-t.y(), t.x());
     for (int d = 0; d < dofs_per_edge; ++d)
-      put(kCorner[a] + kEdgeS[d] * (kCorner[b] - kCorner[a]), std::vector<Point2>(kEdgeOrder[d], wn));
+      put(corner[a] + edge_s[d] * (corner[b] - corner[a]), std::vector<Point2>(edge_order[d], wn));
   }
-  for (const Point2& xi : kInteriorPoint) put(xi, {});
+  for (const Point2& xi : interior_point) put(xi, {});
   return g;
 }
 
@@ -268,9 +274,9 @@ Eigen::VectorXd Ws4Space::interpolate(const Jet3& f) const {
   for (int v = 0; v < mesh_.num_vertices(); ++v) {
     const std::array<double, 10> d = f(x[v]);
     for (int k = 0; k < dofs_per_vertex; ++k) {
-      std::vector<Point2> dirs(kVertexDx[k], Point2(vertex_frame_[v].col(0)));
-      dirs.insert(dirs.end(), kVertexDy[k], Point2(vertex_frame_[v].col(1)));
-      u(dofs_per_vertex * v + k) = std::pow(h_, kVertexDx[k] + kVertexDy[k]) * directional_from_jet(d, dirs);
+      std::vector<Point2> dirs(vertex_dx[k], Point2(vertex_frame_[v].col(0)));
+      dirs.insert(dirs.end(), vertex_dy[k], Point2(vertex_frame_[v].col(1)));
+      u(dofs_per_vertex * v + k) = std::pow(h_, vertex_dx[k] + vertex_dy[k]) * directional_from_jet(d, dirs);
     }
   }
   const int edge0 = dofs_per_vertex * mesh_.num_vertices();
@@ -279,28 +285,28 @@ Eigen::VectorXd Ws4Space::interpolate(const Jet3& f) const {
     const Point2 t = (xb - xa).normalized();
     const double nx = -t.y(), ny = t.x();
     for (int k = 0; k < dofs_per_edge; ++k) {
-      const std::array<double, 10> d = f(xa + kEdgeS[k] * (xb - xa));
+      const std::array<double, 10> d = f(xa + edge_s[k] * (xb - xa));
       double dn = 0.0;
-      switch (kEdgeOrder[k]) {
+      switch (edge_order[k]) {
         case 1: dn = nx * d[1] + ny * d[2]; break;
         case 2: dn = nx * nx * d[3] + 2 * nx * ny * d[4] + ny * ny * d[5]; break;
         default: dn = nx * nx * nx * d[6] + 3 * nx * nx * ny * d[7] + 3 * nx * ny * ny * d[8] + ny * ny * ny * d[9];
       }
-      u(edge0 + dofs_per_edge * e + k) = std::pow(h_, kEdgeOrder[k]) * dn;
+      u(edge0 + dofs_per_edge * e + k) = std::pow(h_, edge_order[k]) * dn;
     }
   }
   const int tri0 = edge0 + dofs_per_edge * mesh_.num_edges();
   for (int t = 0; t < mesh_.num_triangles(); ++t) {
     const Eigen::Matrix2d j = jacobian(t);
     const Point2 p0 = x[mesh_.triangle(t)[0]];
-    for (int k = 0; k < dofs_per_triangle; ++k) u(tri0 + dofs_per_triangle * t + k) = f(p0 + j * kInteriorPoint[k])[0];
+    for (int k = 0; k < dofs_per_triangle; ++k) u(tri0 + dofs_per_triangle * t + k) = f(p0 + j * interior_point[k])[0];
   }
   return u;
 }
 
 bool Ws4Space::closed_form_element_matrix(int element, BilinearForm form, Eigen::MatrixXd& local) const {
   const Eigen::MatrixXd& c = extraction_[element];
-  local.noalias() = c.transpose() * ws4_form_matrix(form, jacobian(element)) * c;
+  local = symmetric_congruence_extended(c, ws4_form_matrix(form, jacobian(element)));
   return true;
 }
 

@@ -21,14 +21,17 @@
 /// Element t (reference triangle -> (P0, P1, P2) affinely) has 51 active functions in the order:
 /// vertex P0 (10), P1 (10), P2 (10), local edge 0 = P0P1 (6), 1 = P1P2 (6), 2 = P2P0 (6), interior (3).
 /// Its local basis is the 51 reference simplex splines B_i; the extraction C_K (51 x 51) gives the
-/// active function m as Σ_i C_K(i, m) B_i, C_K = G_K^{-1} with G_K(m, i) = (DOF functional m)(B_i)
-/// (notes §8.4). Both neighbours of an edge use the same normal and points, hence C³ (notes §2.3).
+/// active function m as Σ_i C_K(i, m) B_i, C_K = G_K^{-1} with G_K(m, i) = (DOF functional m)(B_i),
+/// computed without inversion as C_K = A⁻¹ T_K (exact A⁻¹, T_K from the corners; notes §8.2–8.3,
+/// ws4_hermite_transform.hpp). Both neighbours of an edge use the same normal and points, hence C³
+/// (notes §2.3).
 
 #include <map>
 #include <mutex>
 
 #include "spaces/space.hpp"
 #include "spaces/ws4/triangulation.hpp"
+#include "spaces/ws4/ws4_hermite_transform.hpp"
 
 namespace iga::ws4 {
 
@@ -58,7 +61,8 @@ class Ws4Space final : public Space {
   /// Gauss rule on each quarter of the edge (the pieces of the split along it).
   RulePtr edge_quadrature(int element, int edge, int degree) const override;
 
-  /// C_Kᵀ K_B C_K with K_B from the universal reference matrices (ws4_reference_matrices.hpp).
+  /// C_Kᵀ K_B C_K with K_B from the universal reference matrices, the product accumulated in long
+  /// double (ws4_reference_matrices.hpp).
   bool closed_form_element_matrix(int element, BilinearForm form, Eigen::MatrixXd& local) const override;
 
   /// Draws the element on its split (ws4_sample_cell.hpp): the 342 fan triangles over the 178 split
@@ -76,8 +80,12 @@ class Ws4Space final : public Space {
   Eigen::Matrix2d jacobian(int element) const;
   /// Extraction C_K of element t (51 x 51, see the file comment).
   const Eigen::MatrixXd& extraction(int element) const { return extraction_[element]; }
-  /// G_K: the 51 DOF functionals of element t applied to the 51 reference B_i (rows: functionals).
+  /// G_K: the 51 DOF functionals of element t applied to the 51 reference B_i (rows: functionals);
+  /// C_K G_K = I (an independent route to the extraction, for tests).
   Eigen::MatrixXd element_functionals(int element) const;
+
+  /// Corners, frames, edge orientations and DOF scales of element t (ws4_exact_extraction's input).
+  ElementDofGeometry dof_geometry(int element) const;
 
   /// Vertex frame (d1, d2) of vertex v as columns (see the file comment).
   const Eigen::Matrix2d& vertex_frame(int v) const { return vertex_frame_[v]; }
