@@ -198,6 +198,13 @@ TEST(Ws4MeshInput, ConfigErrorsNameTheKeyAndTheTriangle) {
   EXPECT_EQ(m, "test.yaml:1:9: domain: polygon: outer side 1 ((0, 0)-(1, 1)) crosses outer side 3 ((1, 0)-(0, 1)); "
                "the polygon must be simple");
 
+  // A thin triangle (height 0.03 under a vertex whose shortest edge is 0.5) turned over by the jitter.
+  const std::string thin = write_file("thin.obj", "v 0 0\nv 1 0\nv 1 1\nv 0 1\nv 0.5 0.03\nf 1 2 5\nf 2 3 5\nf 3 4 5\nf 4 1 5\n");
+  m = config_error("domain: {type: mesh_file, file: " + thin + ", jitter: 0.2, seed: 10}\nspace: {type: ws4}\n");
+  EXPECT_NE(m.find("domain.jitter: the jitter turns over triangle 0 of level 0 (seed 10); use a smaller jitter"),
+            std::string::npos)
+      << m;
+
   m = config_error("domain: {type: l_shape}\nspace: {type: ws4, elements: [2, 3]}\n");
   EXPECT_NE(m.find("space.elements: expected one number N"), std::string::npos) << m;
 }

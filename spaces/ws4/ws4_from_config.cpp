@@ -148,6 +148,14 @@ SpacePtr make_ws4_space(const ConfigNode& domain, const ConfigNode& space, int l
     const int seed = domain.has("seed") ? domain["seed"].as_int() : 1;
     // Each level is jittered afresh from the regular refinement (seed + level: reproducible).
     ws4::jitter_interior_vertices(mesh, jitter, static_cast<unsigned>(seed + level));
+    // Thin triangles (possible in file meshes) can be turned over by the moves.
+    for (int t = 0; t < mesh.num_triangles(); ++t) {
+      const auto& v = mesh.triangle(t);
+      const Point2 e1 = mesh.vertices()[v[1]] - mesh.vertices()[v[0]], e2 = mesh.vertices()[v[2]] - mesh.vertices()[v[0]];
+      if (!(e1.x() * e2.y() - e1.y() * e2.x() > 0.0))
+        jn->fail("the jitter turns over triangle " + std::to_string(t) + " of level " + std::to_string(level) +
+                 " (seed " + std::to_string(seed) + "); use a smaller jitter");
+    }
     std::ostringstream s;
     s << ", interior vertices jittered by " << jitter << " (seed " << seed << ")";
     description += s.str();
