@@ -64,8 +64,9 @@ BaseMesh rectangle_mesh(const ConfigNode& domain, const ConfigNode& space, const
 BaseMesh l_shape(const ConfigNode& domain, const ConfigNode& space) {
   domain.check_keys({"type", "jitter", "seed"});
   const int n = element_counts(space, true)[0];
-  return {ws4::triangulation_from_mesh(ws4::l_shape_mesh(n)),
-          "L-shape [-1,1]^2 minus [0,1]x[-1,0], " + std::to_string(n) + "x" + std::to_string(n) + " squares per unit square"};
+  return {ws4::triangulation_from_mesh(ws4::l_shape_mesh(n)), "L-shape [-1,1]^2 minus [0,1]x[-1,0], " +
+                                                                  std::to_string(n) + "x" + std::to_string(n) +
+                                                                  " squares per unit square"};
 }
 
 void reject_elements(const ConfigNode& space, const std::string& type) {
@@ -151,7 +152,8 @@ SpacePtr make_ws4_space(const ConfigNode& domain, const ConfigNode& space, int l
     // Thin triangles (possible in file meshes) can be turned over by the moves.
     for (int t = 0; t < mesh.num_triangles(); ++t) {
       const auto& v = mesh.triangle(t);
-      const Point2 e1 = mesh.vertices()[v[1]] - mesh.vertices()[v[0]], e2 = mesh.vertices()[v[2]] - mesh.vertices()[v[0]];
+      const Point2 e1 = mesh.vertices()[v[1]] - mesh.vertices()[v[0]],
+                   e2 = mesh.vertices()[v[2]] - mesh.vertices()[v[0]];
       if (!(e1.x() * e2.y() - e1.y() * e2.x() > 0.0))
         jn->fail("the jitter turns over triangle " + std::to_string(t) + " of level " + std::to_string(level) +
                  " (seed " + std::to_string(seed) + "); use a smaller jitter");
