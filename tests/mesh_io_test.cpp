@@ -250,6 +250,9 @@ TEST(MeshIo, FileErrorsNameTheFileAndLine) {
   // A Gmsh error does not spoil the next file (the SDK is restarted after errors).
   EXPECT_THROW(read_mesh_file(test::scratch_file("again.geo", "Line(1) = {1, 2};\n")), InputError);
   EXPECT_NEAR(total_area(read_mesh_file(l_shape_geo, {0.5, false})), 3.0, 1e-12);
+  const std::string obj = test::scratch_file("options.obj", "v 0 0\nv 1 0\nv 0 1\nf 1 2 3\n");
+  EXPECT_EQ(input_error([&] { read_mesh_file(obj, {0.1, false}); }),
+            obj + ": a mesh size or recombination applies to .geo files only (a mesh is used as it is)");
   const std::string missing = input_error([] { read_mesh_file("/nonexistent/domain.msh"); });
   EXPECT_EQ(missing, "/nonexistent/domain.msh: cannot read the mesh file");
 }

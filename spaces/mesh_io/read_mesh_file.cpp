@@ -41,6 +41,8 @@ PlanarMesh read_mesh_file(const std::string& path, const MeshFileOptions& option
   std::string extension = std::filesystem::path(path).extension().string();
   std::transform(extension.begin(), extension.end(), extension.begin(),
                  [](unsigned char c) { return std::tolower(c); });
+  if (extension != ".geo" && (options.mesh_size > 0.0 || options.recombine))
+    throw InputError(path + ": a mesh size or recombination applies to .geo files only (a mesh is used as it is)");
   if (extension == ".msh") return read_with_gmsh(path, options, false);
   if (extension == ".geo") return read_with_gmsh(path, options, true);
   if (extension == ".obj") return read_obj_mesh(in, path);

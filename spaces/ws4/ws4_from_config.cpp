@@ -118,7 +118,9 @@ BaseMesh mesh_file(const ConfigNode& domain, const ConfigNode& space) {
   if (path.is_relative()) path = std::filesystem::path(file.file()).parent_path() / path;  // next to the config
   MeshFileOptions options;
   if (const auto hn = domain.find("mesh_size")) {
-    if (path.extension() != ".geo") hn->fail("mesh_size applies to .geo files only (a mesh file is used as it is)");
+    std::string extension = path.extension().string();
+    for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    if (extension != ".geo") hn->fail("mesh_size applies to .geo files only (a mesh file is used as it is)");
     options.mesh_size = hn->as_double();
     if (!(options.mesh_size > 0.0)) hn->fail("mesh_size must be > 0");
   }
