@@ -106,8 +106,8 @@ BaseMesh polygon(const ConfigNode& domain, const ConfigNode& space) {
   // Messages name the domain's place; the mesh's own source stays "polygon".
   const PlanarMesh mesh = at_config(domain, [&] { return mesh_polygon(shape, h, false, "polygon"); });
   return {at_config(domain, [&] { return ws4::triangulation_from_mesh(mesh); }),
-          "polygon with " + std::to_string(shape.outer.size()) + " vertices and " + std::to_string(shape.holes.size()) +
-              " holes, mesh size " + format_number(h) + " (Gmsh)"};
+          "polygon, " + std::to_string(shape.outer.size()) + " vertices, " + std::to_string(shape.holes.size()) +
+              (shape.holes.size() == 1 ? " hole" : " holes") + ", mesh size " + format_number(h) + " (Gmsh)"};
 }
 
 BaseMesh mesh_file(const ConfigNode& domain, const ConfigNode& space) {
