@@ -6,7 +6,13 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
 #include <set>
+#include <sstream>
+
+#include <sys/wait.h>
 
 #include "scratch_files.hpp"
 #include "solver/errors.hpp"
@@ -200,6 +206,27 @@ TEST(Ws4MeshInput, ConfigErrorsNameTheKeyAndTheTriangle) {
 
   m = config_error("domain: {type: l_shape}\nspace: {type: ws4, elements: [2, 3]}\n");
   EXPECT_NE(m.find("space.elements: expected one number N"), std::string::npos) << m;
+}
+
+TEST(Ws4MeshInput, CommandLineExitsWithCode2NamingTheTriangle) {
+  const std::string flat =
+      test::scratch_file("cli_flat.obj", "v 0 0\nv 1 0\nv 0 1\nv 2 0\nf 1 2 3\nf 2 4 3\nf 1 2 4\n");
+  const std::string config = test::scratch_file("cli.yaml",
+                                                "problem: {pde: poisson, exact: \"x*y\", boundary: {all: dirichlet}}\n"
+                                                "domain: {type: mesh_file, file: cli_flat.obj}\n"
+                                                "space: {type: ws4}\n");
+  const std::string out = test::scratch_file("cli_out", ""), err = test::scratch_file("cli.err", "");
+  std::filesystem::remove(out);
+  const int status =
+      std::system((std::string(IGA_RUN_BINARY) + " " + config + " --quiet --output " + out + " 2>" + err).c_str());
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 2);
+  std::stringstream message;
+  message << std::ifstream(err).rdbuf();
+  EXPECT_EQ(message.str(), "iga-run: error: " + config + ":2:33: domain.file: " + flat +
+                               ": cell 2 (line 7: triangle (0, 0), (1, 0), (2, 0)) is degenerate (area 0, longest "
+                               "edge 2)\n");
+  EXPECT_FALSE(std::filesystem::exists(out));  // no result directory for bad input
 }
 
 }  // namespace
