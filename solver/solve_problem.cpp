@@ -3,10 +3,10 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <map>
 
 #include "assembly/assembler.hpp"
 #include "assembly/boundary_conditions.hpp"
+#include "solver/boundary_edge_kinds.hpp"
 #include "solver/errors.hpp"
 
 namespace iga {
@@ -53,14 +53,9 @@ DiscreteSolution solve_problem(const Space& space, const ProblemSpec& problem, S
   r.elements = space.num_elements();
   const int qa = assembly_quadrature_degree(space);
 
-  // Which condition holds on every boundary edge: "all" first, named parts override it.
-  std::map<std::pair<int, int>, BoundaryKind> kind_of_edge;
-  for (const BoundaryPart& part : problem.boundary)
-    for (const BoundaryEdge& e : space.boundary_edges(part.name)) kind_of_edge[{e.element, e.local_edge}] = part.kind;
   EssentialBoundary essential;
   std::vector<BoundaryEdge> neumann_edges, simply_supported_edges;
-  for (const auto& [key, kind] : kind_of_edge) {
-    const BoundaryEdge e{key.first, key.second};
+  for (const auto& [e, kind] : boundary_edge_kinds(space, problem)) {
     if (kind != BoundaryKind::neumann) essential.value_edges.push_back(e);
     if (kind == BoundaryKind::clamped) essential.normal_edges.push_back(e);
     if (kind == BoundaryKind::neumann) neumann_edges.push_back(e);

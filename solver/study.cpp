@@ -5,6 +5,7 @@
 #include <filesystem>
 
 #include "assembly/error_indicator.hpp"
+#include "solver/boundary_edge_kinds.hpp"
 #include "solver/dorfler_marking.hpp"
 #include "solver/errors.hpp"
 #include "solver/solve_problem.hpp"
@@ -44,10 +45,10 @@ StudySettings parse_study(const ConfigNode& root, const std::string& config_path
                        " (raise space.degree/space.regularity)");
 
   if (auto refinement = root.find("refinement")) {
-    refinement->check_keys({"type", "levels", "marking", "max_dofs"});
+    refinement->check_keys({"type", "levels", "marking", "max_dofs", "tolerance"});
     if (auto type = refinement->find("type")) s.adaptive = type->as_choice({"uniform", "adaptive"}) == "adaptive";
     if (!s.adaptive) {
-      for (const char* key : {"marking", "max_dofs"})
+      for (const char* key : {"marking", "max_dofs", "tolerance"})
         if (auto k = refinement->find(key)) k->fail(std::string(key) + " is only used with refinement.type: adaptive");
     }
     const int max_levels = s.adaptive ? 40 : 12;
@@ -64,11 +65,25 @@ StudySettings parse_study(const ConfigNode& root, const std::string& config_path
       s.max_dofs = max_dofs->as_int();
       if (s.max_dofs < 1) max_dofs->fail("max_dofs must be positive");
     }
+    if (auto tolerance = refinement->find("tolerance")) {
+      s.tolerance = tolerance->as_double();
+      if (!(s.tolerance > 0.0)) tolerance->fail("the estimator tolerance must be > 0 (got " + format_number(s.tolerance) + ")");
+    }
     if (s.adaptive) {
-      if (s.problem.pde != Pde::poisson || s.problem.form != BilinearForm::laplace)
-        refinement->fail("adaptive refinement needs the residual indicator, implemented for Poisson (form laplace) only");
+      if (s.problem.pde == Pde::poisson && s.problem.form != BilinearForm::laplace)
+        refinement->fail("adaptive refinement needs the residual indicator, implemented for Poisson with form laplace");
+      if (s.problem.pde == Pde::biharmonic) {
+        if (!coarse->higher_derivatives() || (coarse->num_elements() > 1 && coarse->interior_edges().empty()))
+          refinement->fail("adaptive biharmonic refinement needs third and fourth derivatives and the interior edges "
+                           "of the space (the plate residual indicator); the " + coarse->type() + " space has not both");
+      }
       if (!coarse->refined({}))
         refinement->fail("adaptive refinement: the " + coarse->type() + " space does not support local refinement");
+      // Without the normal-derivative jumps the indicator of a C0 space misses its dominant part.
+      if (coarse->continuity() < 1 && coarse->num_elements() > 1 && coarse->interior_edges().empty())
+        refinement->fail("adaptive refinement: this C0 " + coarse->type() +
+                         " space cannot list its interior edges, so the residual indicator would miss the "
+                         "normal-derivative jumps; use a C1 space");
     }
   }
   if (levels_override > 0) s.levels = levels_override;
@@ -143,10 +158,19 @@ StudyResult run_study(const StudySettings& settings, const std::string& director
     next.reset();
     if (settings.adaptive) {
       const SymbolicFunction source = settings.problem.source;
-      const std::vector<double> eta = poisson_residual_indicators(
-          *space, sol.coefficients, [source](const Point2& x) { return source(x); }, error_quadrature_degree(*space));
+      const ScalarField f = [source](const Point2& x) { return source(x); };
+      const std::vector<double> eta =
+          settings.problem.pde == Pde::poisson
+              ? poisson_residual_indicators(*space, sol.coefficients, f, error_quadrature_degree(*space))
+              : plate_residual_indicators(
+                    *space, sol.coefficients, f, error_quadrature_degree(*space),
+                    boundary_edges_of_kind(*space, settings.problem, BoundaryKind::simply_supported),
+                    [g = settings.problem.laplacian](const Point2& x, const Point2&) { return g(x); });
       estimator = total_indicator(eta);
-      if (level + 1 < settings.levels) {
+      if (settings.tolerance > 0.0 && *estimator <= settings.tolerance) {
+        progress(tag + "estimator " + std::to_string(*estimator) + " <= tolerance: stopping");
+        result.stop_reason = "tolerance";
+      } else if (level + 1 < settings.levels) {
         auto t1 = Clock::now();
         const std::vector<int> marked = dorfler_marking(eta, settings.marking);
         progress(tag + "estimator " + std::to_string(*estimator) + ", refining " + std::to_string(marked.size()) +

@@ -23,10 +23,11 @@ struct StudySettings {
   ProblemSpec problem;
   int levels = 4;          ///< number of levels solved: 0 .. levels-1
   /// refinement.type: uniform (level l = make_space(..., l)) or adaptive (level l+1 = the space of
-  /// level l refined where Dörfler marking of the residual indicator says; Poisson only).
+  /// level l refined where Dörfler marking of the residual indicator says; Poisson and plates).
   bool adaptive = false;
   double marking = 0.5;    ///< Dörfler θ (refinement.marking), adaptive only
   int max_dofs = 0;        ///< adaptive: stop before a level would exceed this many DOFs (0: no limit)
+  double tolerance = 0.0;  ///< adaptive: stop once the estimator (Σ η_K²)^½ is <= this (0: no tolerance)
   SolverKind solver = SolverKind::cholmod;
   std::string output_dir;  ///< final destination of the results
   bool write_vtk = true;
@@ -51,7 +52,7 @@ struct StudyResult {
   /// Per level, (Σ η_K²)^{1/2} of the residual indicator (adaptive runs; nullopt otherwise).
   std::vector<std::optional<double>> estimators;
   bool adaptive = false;
-  /// Adaptive runs that ended before refinement.levels: "max_dofs" or why refinement failed.
+  /// Adaptive runs that ended before refinement.levels: "max_dofs", "tolerance" or why refinement failed.
   std::string stop_reason;
 };
 

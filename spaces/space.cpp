@@ -47,6 +47,8 @@ void integration_weights(const QuadratureRule& rule, const PointValues& geometry
 
 void Space::Evaluator::evaluate_function(int element, const QuadratureRule& points, const Eigen::VectorXd& coefficients,
                                          unsigned flags, PointValues& geometry, FunctionValues& out) {
+  if (flags & (update_laplacian_gradient | update_bilaplacian))
+    throw std::logic_error("evaluate_function: this space provides derivatives up to order 2 only");
   evaluate(element, points, flags, geometry);
   const int n = geometry.num_functions();
   Eigen::VectorXd c(n);

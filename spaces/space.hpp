@@ -48,6 +48,11 @@ enum UpdateFlags : unsigned {
   update_values = 1u,
   update_gradients = 2u,
   update_hessians = 4u,
+  /// Third and fourth derivatives of a discrete function, as the biharmonic residual needs them:
+  /// ∇(Δu_h) and Δ²u_h. Only Evaluator::evaluate_function fills them, and only for spaces whose
+  /// higher_derivatives() is true (the default evaluate_function throws std::logic_error).
+  update_laplacian_gradient = 8u,
+  update_bilaplacian = 16u,
 };
 
 /// Values of the active global functions of one element at a set of points, in physical
@@ -72,6 +77,8 @@ struct FunctionValues {
   Eigen::VectorXd value;
   Eigen::VectorXd dx, dy;
   Eigen::VectorXd dxx, dxy, dyy;
+  Eigen::VectorXd laplacian_dx, laplacian_dy;  ///< ∂x Δu_h, ∂y Δu_h (update_laplacian_gradient)
+  Eigen::VectorXd bilaplacian;                 ///< Δ²u_h (update_bilaplacian)
 };
 
 /// Integration weights w_q |det J(x_q)| of `rule` on an element whose geometry is in `geometry`.
@@ -81,6 +88,19 @@ void integration_weights(const QuadratureRule& rule, const PointValues& geometry
 struct BoundaryEdge {
   int element = 0;
   int local_edge = 0;
+};
+
+/// A piece of interior edge shared by two elements: where edge `edge_a` of `element_a` and edge
+/// `edge_b` of `element_b` coincide. With the edge parameters of reference_edge_point, the physical
+/// point at s in [0,1] is at t = a0 + s (a1 - a0) on edge_a and at t = b0 + s (b1 - b0) on edge_b
+/// (a linear correspondence; b0 > b1 where the edges run in opposite directions). A whole shared
+/// edge has [a0, a1] = [0, 1]; a T-junction edge of a large cell meets several small cells, one
+/// piece each, with [a0, a1] a sub-range of the large cell's edge.
+struct InteriorEdge {
+  int element_a = 0, edge_a = 0;
+  double a0 = 0.0, a1 = 1.0;
+  int element_b = 0, edge_b = 0;
+  double b0 = 1.0, b1 = 0.0;
 };
 
 /// A piece of an element to draw: points in reference coordinates and linear sub-cells over them
@@ -146,6 +166,9 @@ class Space {
   /// Global smoothness: the space is C^k (k = continuity()) in physical coordinates. Biharmonic
   /// problems need k >= 1 (H2-conforming). The default 0 is the safe answer for a new space.
   virtual int continuity() const { return 0; }
+  /// True when evaluate_function provides update_laplacian_gradient and update_bilaplacian (third
+  /// and fourth derivatives, for the biharmonic residual estimator). Default false.
+  virtual bool higher_derivatives() const { return false; }
   /// True when every element map is affine (then a rule of degree 2p is exact for mass matrices).
   virtual bool affine_elements() const = 0;
 
@@ -174,6 +197,11 @@ class Space {
   virtual std::optional<double> max_gradient_jump(const Eigen::VectorXd& /*coefficients*/) const {
     return std::nullopt;
   }
+
+  /// Optional: every interior edge piece (each once), for estimators that need both sides of an
+  /// edge (the normal-derivative jumps of the residual estimator). Empty (the default) means the
+  /// space cannot locate the element across its edges; callers then treat jumps as unavailable.
+  virtual std::vector<InteriorEdge> interior_edges() const { return {}; }
 
   /// Optional adaptive refinement: a new space on a mesh where every element in `marked_elements`
   /// is refined (and possibly more elements, to keep the mesh valid for the space, e.g. an

@@ -6,30 +6,23 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "spaces/tmesh/refine_near_from_config.hpp"
+#include "spaces/tmesh/sections_from_config.hpp"
 #include "spaces/tmesh/tmesh_space.hpp"
 
 namespace iga {
 
 SpacePtr make_tmesh_space(const ConfigNode& domain, const ConfigNode& space, int level) {
-  space.check_keys({"type", "section", "n", "regularity", "frequency", "elements", "refine"});
-  SectionSpec spec;
-  const std::string family = space.has("section") ? space["section"].as_choice({"poly", "trig", "hyperbolic"}) : "poly";
-  spec.family = family == "trig" ? SectionFamily::trigonometric
-                : family == "hyperbolic" ? SectionFamily::hyperbolic
-                                         : SectionFamily::polynomial;
+  space.check_keys({"type", "section", "n", "regularity", "frequency", "elements", "refine", "refine_near", "sections_in"});
   const ConfigNode nn = space["n"];
-  spec.n = nn.as_int();
-  if (spec.n < 2) nn.fail("section spaces need n >= 2 (got " + std::to_string(spec.n) + ")");
-  int r = (spec.n - 1) / 2;
+  const int n = nn.as_int();
+  if (n < 2) nn.fail("section spaces need n >= 2 (got " + std::to_string(n) + ")");
+  int r = (n - 1) / 2;
   if (auto rn = space.find("regularity")) {
     r = rn->as_int();
-    if (r < 0 || spec.n < 2 * r + 1)
-      rn->fail("regularity must be between 0 and (n-1)/2 = " + std::to_string((spec.n - 1) / 2) +
+    if (r < 0 || n < 2 * r + 1)
+      rn->fail("regularity must be between 0 and (n-1)/2 = " + std::to_string((n - 1) / 2) +
                " so that n >= 2r+1 (got " + std::to_string(r) + ")");
-  }
-  if (auto wn = space.find("frequency")) {
-    spec.w = wn->as_double();
-    if (!(spec.w > 0.0)) wn->fail("the frequency must be > 0 (got " + format_number(spec.w) + ")");
   }
   std::vector<int> elements{2, 2};
   if (auto en = space.find("elements")) {
@@ -45,8 +38,9 @@ SpacePtr make_tmesh_space(const ConfigNode& domain, const ConfigNode& space, int
   if (!(lo.x() < hi.x()) || !(lo.y() < hi.y())) domain["max"].fail("max must be greater than min in both coordinates");
   if (type == "l_shape" && (elements[0] % 2 || elements[1] % 2))
     space.fail("an l_shape domain needs even element counts (the removed quarter must be whole cells)");
-  TMesh mesh = type == "rectangle" ? TMesh::rectangle(lo, hi, elements[0], elements[1], spec)
-                                   : TMesh::l_shape(lo, hi, elements[0], elements[1], spec);
+  TMesh mesh = with_sections_from_config(type == "rectangle" ? TMesh::rectangle(lo, hi, elements[0], elements[1], SectionSpec{})
+                                                             : TMesh::l_shape(lo, hi, elements[0], elements[1], SectionSpec{}),
+                                         space, n);
   if (auto rn = space.find("refine")) {
     for (const ConfigNode& box : rn->items()) {
       const std::vector<double> b = box.as_doubles();
@@ -64,19 +58,10 @@ SpacePtr make_tmesh_space(const ConfigNode& domain, const ConfigNode& space, int
       mesh = mesh.refined(inside);
     }
   }
+  if (auto rn = space.find("refine_near")) mesh = refine_near_from_config(std::move(mesh), *rn);
   for (int l = 0; l < level; ++l) mesh = mesh.refined_uniformly();
   if (!mesh.admissibility_problem().empty()) space.fail("the refined T-mesh is not admissible: " + mesh.admissibility_problem());
-  if (spec.family == SectionFamily::trigonometric) {
-    double hmax = 0.0;
-    for (int c = 0; c < mesh.num_cells(); ++c) hmax = std::max({hmax, mesh.width(c), mesh.height(c)});
-    if (spec.w * hmax >= std::numbers::pi) {
-      const std::string msg = "trigonometric sections need w*h < pi on every cell: w = " + format_number(spec.w) +
-                              ", largest cell side h = " + format_number(hmax) + " gives w*h = " + format_number(spec.w * hmax) +
-                              "; use more elements, a higher level or a lower frequency";
-      if (auto wn = space.find("frequency")) wn->fail(msg);
-      space.fail(msg);
-    }
-  }
+  check_trigonometric_cells(mesh, space);
   const std::string desc = type + " [" + format_number(lo.x()) + ", " + format_number(hi.x()) + "] x [" + format_number(lo.y()) + ", " + format_number(hi.y()) + "]";
   try {
     return std::make_shared<const TMeshSpace>(std::move(mesh), r, type == "rectangle", desc);

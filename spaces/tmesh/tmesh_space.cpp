@@ -18,6 +18,10 @@ class TMeshSpace::TMeshEvaluator final : public Space::Evaluator {
  public:
   explicit TMeshEvaluator(const TMeshSpace& space) : space_(space) {}
   void evaluate(int element, const QuadratureRule& rule, unsigned flags, PointValues& out) override;
+  /// Adds ∇Δu_h and Δ²u_h: the cell map is a diagonal scaling, so ∂x^a ∂y^b = hx^-a hy^-b ∂ξ^a ∂η^b
+  /// of the Bernstein coefficients E_cᵀ c.
+  void evaluate_function(int element, const QuadratureRule& rule, const Eigen::VectorXd& coefficients, unsigned flags,
+                         PointValues& geometry, FunctionValues& out) override;
 
  private:
   /// Reference derivatives (orders 0..2) of the Bernstein basis along x and y: (n+1) x q each.
@@ -99,6 +103,42 @@ void TMeshSpace::TMeshEvaluator::evaluate(int element, const QuadratureRule& rul
   push_forward(jets_, ref_, flags, out);
 }
 
+void TMeshSpace::TMeshEvaluator::evaluate_function(int element, const QuadratureRule& rule,
+                                                   const Eigen::VectorXd& coefficients, unsigned flags,
+                                                   PointValues& geometry, FunctionValues& out) {
+  const unsigned higher = flags & (update_laplacian_gradient | update_bilaplacian);
+  Space::Evaluator::evaluate_function(element, rule, coefficients, (flags & ~higher) | update_values, geometry, out);
+  if (!higher) return;
+  // u_h on the cell in its tensor Bernstein basis: b = E_cᵀ c (index i + j (n+1)).
+  const Eigen::MatrixXd& E = space_.extraction().matrix[element];
+  Eigen::VectorXd c(geometry.num_functions());
+  for (int a = 0; a < c.size(); ++a) c(a) = coefficients(geometry.dofs[a]);
+  const Eigen::VectorXd b = E.transpose() * c;
+  const TCell& cell = space_.mesh().cells()[element];
+  const SectionBernstein& bx = space_.bernstein(cell.section_s, cell.x1 - cell.x0);
+  const SectionBernstein& by = space_.bernstein(cell.section_t, cell.y1 - cell.y0);
+  const double hx = bx.h(), hy = by.h();
+  const int n = bx.n(), q = rule.size();
+  // D(a, b) = ∂x^a ∂y^b u_h at point k (reference derivatives carry h^d, see SectionBernstein).
+  auto derivative = [&](const Eigen::MatrixXd& X, const Eigen::MatrixXd& Y, int ax, int ay) {
+    double sum = 0.0;
+    for (int j = 0; j <= n; ++j)
+      for (int i = 0; i <= n; ++i) sum += b(i + j * (n + 1)) * X(ax, i) * Y(ay, j);
+    return sum / (std::pow(hx, ax) * std::pow(hy, ay));
+  };
+  if (higher & update_laplacian_gradient) out.laplacian_dx.resize(q), out.laplacian_dy.resize(q);
+  if (higher & update_bilaplacian) out.bilaplacian.resize(q);
+  for (int k = 0; k < q; ++k) {
+    const Eigen::MatrixXd X = bx.derivatives(rule.points[k].x(), 4), Y = by.derivatives(rule.points[k].y(), 4);
+    if (higher & update_laplacian_gradient) {
+      out.laplacian_dx(k) = derivative(X, Y, 3, 0) + derivative(X, Y, 1, 2);
+      out.laplacian_dy(k) = derivative(X, Y, 2, 1) + derivative(X, Y, 0, 3);
+    }
+    if (higher & update_bilaplacian)
+      out.bilaplacian(k) = derivative(X, Y, 4, 0) + 2.0 * derivative(X, Y, 2, 2) + derivative(X, Y, 0, 4);
+  }
+}
+
 // ---------------------------------------------------------------------------------------------
 
 TMeshSpace::TMeshSpace(TMesh mesh, int regularity, bool rectangular, std::string domain_description)
@@ -178,6 +218,44 @@ RulePtr TMeshSpace::edge_quadrature(int, int edge, int degree) const {
   RulePtr& r = edge_rules_[{edge, degree}];
   if (!r) r = std::make_shared<const QuadratureRule>(edge_rule(CellShape::quadrilateral, edge, gauss_legendre_for_degree(degree)));
   return r;
+}
+
+namespace {
+
+/// Parameter of reference_edge_point on side `side` of a cell spanning [lo, hi] along that side, at
+/// lattice coordinate `at`: bottom (0) and right (1) run with the coordinate, top (2) and left (3)
+/// against it (counterclockwise).
+double side_parameter(int side, std::int64_t lo, std::int64_t hi, std::int64_t at) {
+  const double t = double(at - lo) / double(hi - lo);
+  return side < 2 ? t : 1.0 - t;
+}
+
+}  // namespace
+
+std::vector<InteriorEdge> TMeshSpace::interior_edges() const {
+  std::vector<InteriorEdge> out;
+  const auto& cells = mesh_.cells();
+  for (auto [a, b] : side_neighbours(mesh_)) {
+    const TCell &ca = cells[a], &cb = cells[b];
+    InteriorEdge e;
+    e.element_a = a;
+    e.element_b = b;
+    if (ca.x1 == cb.x0 || cb.x1 == ca.x0) {  // vertical common segment [lo, hi] in y
+      const std::int64_t lo = std::max(ca.y0, cb.y0), hi = std::min(ca.y1, cb.y1);
+      e.edge_a = ca.x1 == cb.x0 ? 1 : 3;
+      e.edge_b = e.edge_a == 1 ? 3 : 1;
+      e.a0 = side_parameter(e.edge_a, ca.y0, ca.y1, lo), e.a1 = side_parameter(e.edge_a, ca.y0, ca.y1, hi);
+      e.b0 = side_parameter(e.edge_b, cb.y0, cb.y1, lo), e.b1 = side_parameter(e.edge_b, cb.y0, cb.y1, hi);
+    } else {  // horizontal common segment [lo, hi] in x
+      const std::int64_t lo = std::max(ca.x0, cb.x0), hi = std::min(ca.x1, cb.x1);
+      e.edge_a = ca.y1 == cb.y0 ? 2 : 0;
+      e.edge_b = e.edge_a == 2 ? 0 : 2;
+      e.a0 = side_parameter(e.edge_a, ca.x0, ca.x1, lo), e.a1 = side_parameter(e.edge_a, ca.x0, ca.x1, hi);
+      e.b0 = side_parameter(e.edge_b, cb.x0, cb.x1, lo), e.b1 = side_parameter(e.edge_b, cb.x0, cb.x1, hi);
+    }
+    out.push_back(e);
+  }
+  return out;
 }
 
 SpacePtr TMeshSpace::refined(const std::vector<int>& marked_elements) const {

@@ -40,6 +40,8 @@ class TMeshSpace final : public Space {
   int degree() const override { return section().n; }
   int continuity() const override { return r_; }
   bool affine_elements() const override { return true; }
+  /// Cells are tensor products of section spaces under a diagonal scaling: any derivative is exact.
+  bool higher_derivatives() const override { return true; }
 
   /// Tensor Gauss rule exact for `degree`; for trigonometric / hyperbolic sections 8 more points
   /// per direction, since Gauss rules are not exact for those integrands (notes P6).
@@ -48,6 +50,10 @@ class TMeshSpace final : public Space {
 
   std::vector<std::string> boundary_names() const override;
   std::vector<BoundaryEdge> boundary_edges(const std::string& name) const override;
+
+  /// One piece per pair of side neighbours, over their common segment: a T-junction edge of a large
+  /// cell yields one piece per small cell along it.
+  std::vector<InteriorEdge> interior_edges() const override;
 
   /// Split the marked cells dyadically, plus the cells refine_admissibly adds (2:1 balance, and a
   /// buffer when the result would not be regular and acyclic); same sections and regularity.

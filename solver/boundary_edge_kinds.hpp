@@ -1,0 +1,20 @@
+#pragma once
+/// @file
+/// Which boundary condition holds on each boundary edge of a space: the parts of the problem in
+/// config order, "all" first, later (named) parts overriding earlier ones.
+
+#include <utility>
+#include <vector>
+
+#include "solver/problem.hpp"
+#include "spaces/space.hpp"
+
+namespace iga {
+
+/// Every boundary edge once, ordered by (element, local edge), with its condition.
+std::vector<std::pair<BoundaryEdge, BoundaryKind>> boundary_edge_kinds(const Space& space, const ProblemSpec& problem);
+
+/// The boundary edges where `kind` holds, in the order above.
+std::vector<BoundaryEdge> boundary_edges_of_kind(const Space& space, const ProblemSpec& problem, BoundaryKind kind);
+
+}  // namespace iga
