@@ -1,8 +1,9 @@
 #pragma once
 /// @file
-/// The Gauss rules a quadrilateral-element space hands out, built once and shared: one tensor rule
-/// per degree and one edge rule per (edge, degree). Sharing matters beyond saving work: evaluators
-/// cache reference tables by rule address. Thread-safe.
+/// The rules a space of plain (non-split) quadrilaterals and triangles hands out, built once and
+/// shared: one cell rule per degree and one edge rule per (edge, degree) for each reference cell.
+/// Sharing matters beyond saving work: evaluators cache reference tables by rule address.
+/// Thread-safe.
 
 #include <map>
 #include <mutex>
@@ -18,11 +19,17 @@ class GaussRuleCache {
   RulePtr cell(int degree) const;
   /// Gauss rule on edge `edge` of the reference square (space.hpp numbering), exact for `degree`.
   RulePtr edge(int edge, int degree) const;
+  /// triangle_rule(degree) on the unit triangle (exact for total degree `degree`).
+  RulePtr triangle(int degree) const;
+  /// Gauss rule on edge `edge` of the reference triangle (space.hpp numbering), exact for `degree`.
+  RulePtr triangle_edge(int edge, int degree) const;
 
  private:
   mutable std::mutex mutex_;
   mutable std::map<int, RulePtr> cells_;
   mutable std::map<std::pair<int, int>, RulePtr> edges_;
+  mutable std::map<int, RulePtr> triangles_;
+  mutable std::map<std::pair<int, int>, RulePtr> triangle_edges_;
 };
 
 }  // namespace iga

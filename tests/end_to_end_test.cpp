@@ -9,11 +9,13 @@
 #include <vtkUnstructuredGrid.h>
 #include <vtkXMLUnstructuredGridReader.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <sstream>
+#include <vector>
 
 namespace fs = std::filesystem;
 
@@ -84,60 +86,78 @@ std::string with_replaced(const std::string& from, const std::string& to) { retu
 
 }  // namespace
 
-TEST(EndToEnd, EveryShippedConfigRunsAndWritesReadableOutput) {
-  int count = 0;
-  for (const auto& entry : fs::directory_iterator(fs::path(IGA_SOURCE_DIR) / "configs")) {
-    if (entry.path().extension() != ".yaml") continue;
-    ++count;
-    const std::string name = entry.path().stem().string();
-    const fs::path out = scratch_dir() / ("out-" + name);
-    const RunResult r = run_iga(entry.path().string() + " --levels 2 --quiet --output " + out.string());
-    ASSERT_EQ(r.exit_code, 0) << name << ": " << r.err;
-    EXPECT_TRUE(r.err.empty()) << "--quiet still printed: " << r.err;
-    EXPECT_NE(r.out.find("level"), std::string::npos);
-
-    const std::string csv = slurp(out / "convergence.csv");
-    EXPECT_EQ(csv.rfind("level,h,dofs,l2,h1,h2,rate_l2,rate_h1,rate_h2,t_assemble,t_solve", 0), 0u) << name;
-    EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 3) << name;  // header + 2 levels
-
-    const nlohmann::json summary = nlohmann::json::parse(slurp(out / "summary.json"));
-    EXPECT_EQ(summary["levels"].size(), 2u);
-    EXPECT_TRUE(summary.contains("config"));
-    EXPECT_TRUE(summary["space"].contains("type"));
-
-    EXPECT_TRUE(fs::exists(out / "solution.pvd"));
-    EXPECT_TRUE(fs::exists(out / "mesh.pvd"));
-    EXPECT_GT(fs::file_size(out / "convergence.svg"), 1000u);
-    const bool biharmonic = summary["problem"]["pde"] == "biharmonic";
-    for (int level = 0; level < 2; ++level) {
-      auto reader = vtkSmartPointer<vtkXMLUnstructuredGridReader>::New();
-      reader->SetFileName((out / ("solution_" + std::to_string(level) + ".vtu")).c_str());
-      reader->Update();
-      vtkUnstructuredGrid* grid = reader->GetOutput();
-      ASSERT_GT(grid->GetNumberOfPoints(), 0) << name;
-      ASSERT_GT(grid->GetNumberOfCells(), 0) << name;
-      vtkPointData* pd = grid->GetPointData();
-      for (const char* field : {"u", "grad_u", "u_exact", "error"}) EXPECT_NE(pd->GetArray(field), nullptr) << field;
-      EXPECT_EQ(pd->GetArray("grad_u")->GetNumberOfComponents(), 3);
-      // The mesh outline: one closed poly-line per element of the solution file.
-      auto mesh_reader = vtkSmartPointer<vtkXMLUnstructuredGridReader>::New();
-      mesh_reader->SetFileName((out / ("mesh_" + std::to_string(level) + ".vtu")).c_str());
-      mesh_reader->Update();
-      vtkUnstructuredGrid* mesh = mesh_reader->GetOutput();
-      ASSERT_GT(mesh->GetNumberOfCells(), 0) << name;
-      EXPECT_EQ(mesh->GetCellType(0), VTK_POLY_LINE);
-      EXPECT_EQ(mesh->GetNumberOfCells(), summary["levels"][level]["elements"].get<int>()) << name;
-      if (biharmonic) EXPECT_NE(pd->GetArray("laplace_u"), nullptr);
-      // The error field is small against the solution (the exact solutions are resolved).
-      double range_u[2], range_e[2];
-      pd->GetArray("u_exact")->GetRange(range_u);
-      pd->GetArray("error")->GetRange(range_e);
-      const double scale = std::max(std::abs(range_u[0]), std::abs(range_u[1]));
-      EXPECT_LT(std::max(std::abs(range_e[0]), std::abs(range_e[1])), 0.2 * scale) << name;
-    }
-  }
-  EXPECT_GE(count, 5);
+/// Every configs/*.yaml, listed when the test program starts, so that each shipped config is its
+/// own test case (ctest runs them in parallel; a failure names the config).
+std::vector<std::string> shipped_configs() {
+  std::vector<std::string> names;
+  for (const auto& entry : fs::directory_iterator(fs::path(IGA_SOURCE_DIR) / "configs"))
+    if (entry.path().extension() == ".yaml") names.push_back(entry.path().stem().string());
+  std::sort(names.begin(), names.end());
+  return names;
 }
+
+class ShippedConfig : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(ShippedConfig, RunsAndWritesReadableOutput) {
+  const std::string name = GetParam();
+  const fs::path config = fs::path(IGA_SOURCE_DIR) / "configs" / (name + ".yaml");
+  const fs::path out = scratch_dir() / ("out-" + name);
+  // A shipped config is a documented one: README's table lists it.
+  EXPECT_NE(slurp(fs::path(IGA_SOURCE_DIR) / "README.md").find(name + ".yaml"), std::string::npos)
+      << name << ".yaml is not in README.md";
+  const RunResult r = run_iga(config.string() + " --levels 2 --quiet --output " + out.string());
+  ASSERT_EQ(r.exit_code, 0) << name << ": " << r.err;
+  EXPECT_TRUE(r.err.empty()) << "--quiet still printed: " << r.err;
+  EXPECT_NE(r.out.find("level"), std::string::npos);
+
+  const std::string csv = slurp(out / "convergence.csv");
+  EXPECT_EQ(csv.rfind("level,h,dofs,l2,h1,h2,rate_l2,rate_h1,rate_h2,t_assemble,t_solve", 0), 0u) << name;
+  EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 3) << name;  // header + 2 levels
+
+  const nlohmann::json summary = nlohmann::json::parse(slurp(out / "summary.json"));
+  EXPECT_EQ(summary["levels"].size(), 2u);
+  EXPECT_TRUE(summary.contains("config"));
+  EXPECT_TRUE(summary["space"].contains("type"));
+
+  EXPECT_TRUE(fs::exists(out / "solution.pvd"));
+  EXPECT_TRUE(fs::exists(out / "mesh.pvd"));
+  EXPECT_GT(fs::file_size(out / "convergence.svg"), 1000u);
+  const bool biharmonic = summary["problem"]["pde"] == "biharmonic";
+  for (int level = 0; level < 2; ++level) {
+    auto reader = vtkSmartPointer<vtkXMLUnstructuredGridReader>::New();
+    reader->SetFileName((out / ("solution_" + std::to_string(level) + ".vtu")).c_str());
+    reader->Update();
+    vtkUnstructuredGrid* grid = reader->GetOutput();
+    ASSERT_GT(grid->GetNumberOfPoints(), 0) << name;
+    ASSERT_GT(grid->GetNumberOfCells(), 0) << name;
+    vtkPointData* pd = grid->GetPointData();
+    for (const char* field : {"u", "grad_u", "u_exact", "error"}) EXPECT_NE(pd->GetArray(field), nullptr) << field;
+    EXPECT_EQ(pd->GetArray("grad_u")->GetNumberOfComponents(), 3);
+    // The mesh outline: one closed poly-line per element of the solution file.
+    auto mesh_reader = vtkSmartPointer<vtkXMLUnstructuredGridReader>::New();
+    mesh_reader->SetFileName((out / ("mesh_" + std::to_string(level) + ".vtu")).c_str());
+    mesh_reader->Update();
+    vtkUnstructuredGrid* mesh = mesh_reader->GetOutput();
+    ASSERT_GT(mesh->GetNumberOfCells(), 0) << name;
+    EXPECT_EQ(mesh->GetCellType(0), VTK_POLY_LINE);
+    EXPECT_EQ(mesh->GetNumberOfCells(), summary["levels"][level]["elements"].get<int>()) << name;
+    if (biharmonic) EXPECT_NE(pd->GetArray("laplace_u"), nullptr);
+    // The error field is small against the solution (the exact solutions are resolved).
+    double range_u[2], range_e[2];
+    pd->GetArray("u_exact")->GetRange(range_u);
+    pd->GetArray("error")->GetRange(range_e);
+    const double scale = std::max(std::abs(range_u[0]), std::abs(range_u[1]));
+    EXPECT_LT(std::max(std::abs(range_e[0]), std::abs(range_e[1])), 0.2 * scale) << name;
+  }
+}
+
+// Test names may hold only letters, digits and underscores.
+INSTANTIATE_TEST_SUITE_P(EndToEnd, ShippedConfig, ::testing::ValuesIn(shipped_configs()),
+                         [](const ::testing::TestParamInfo<std::string>& info) {
+                           std::string name = info.param;
+                           std::replace(name.begin(), name.end(), '-', '_');
+                           return name;
+                         });
 
 TEST(EndToEnd, GoodConfigWritesToConfiguredDirectory) {
   const fs::path out = scratch_dir() / "good-out";

@@ -1,4 +1,4 @@
-// max_gradient_jump of piecewise polynomials on QuadMeshes and of G1Space functions: exact values
+// max_gradient_jump of piecewise polynomials on PatchMeshes and of G1Space functions: exact values
 // for C0-only tents (so the check can fail), round-off for smooth and G1 functions.
 #include <gtest/gtest.h>
 
@@ -28,9 +28,9 @@ Eigen::VectorXd bilinear_coefficients(int k, const std::array<double, 4>& c) {
 }
 
 /// [0,2] x [0,1] as two unit squares (interface x = 1), scaled by `s` in y.
-QuadMesh two_squares(double s) {
-  return mesh_from_patches({std::array<P, 4>{P(0, 0), P(1, 0), P(1, s), P(0, s)},
-                            std::array<P, 4>{P(1, 0), P(2, 0), P(2, s), P(1, s)}},
+PatchMesh two_squares(double s) {
+  return mesh_from_patches({PatchCorners{P(0, 0), P(1, 0), P(1, s), P(0, s)},
+                            PatchCorners{P(1, 0), P(2, 0), P(2, s), P(1, s)}},
                            "two_squares");
 }
 
@@ -38,7 +38,7 @@ QuadMesh two_squares(double s) {
 
 TEST(G1GradientJump, TentHasJumpTwoAcrossTheInterface) {
   // u = 1 - |x - 1|: gradients (1,0) and (-1,0), jump exactly 2 along the whole interface.
-  const QuadMesh m = two_squares(0.5);
+  const PatchMesh m = two_squares(0.5);
   for (int k : {1, 3, 5}) {
     std::vector<Eigen::VectorXd> c(2);
     // The corner order of a face is the mesh's own (counterclockwise from corner 0); recompute the
@@ -54,7 +54,7 @@ TEST(G1GradientJump, TentHasJumpTwoAcrossTheInterface) {
 
 TEST(G1GradientJump, SmoothFunctionHasNoJump) {
   // u = x + 3y + 2xy is bilinear in physical coordinates on both faces: C-infinity, no jump.
-  const QuadMesh m = two_squares(0.5);
+  const PatchMesh m = two_squares(0.5);
   const int k = 4;
   std::vector<Eigen::VectorXd> c(2);
   for (int f = 0; f < 2; ++f) {
@@ -69,7 +69,7 @@ TEST(G1GradientJump, SmoothFunctionHasNoJump) {
 }
 
 TEST(G1GradientJump, G1FunctionsAtRoundOffAndBrokenOnesNot) {
-  const auto mesh = std::make_shared<const QuadMesh>(multipatch_domain("3p_square"));
+  const auto mesh = std::make_shared<const PatchMesh>(multipatch_domain("3p_square"));
   const G1Space space(mesh, 5);
   const int k = 5;
   Eigen::VectorXd coef = Eigen::VectorXd::Random(space.dimension());
@@ -104,7 +104,7 @@ TEST(G1GradientJump, G1FunctionsAtRoundOffAndBrokenOnesNot) {
 }
 
 TEST(G1GradientJump, RefinedSpaceStaysAtRoundOff) {
-  auto mesh = std::make_shared<const QuadMesh>(multipatch_domain("pentagon").refined().refined());
+  auto mesh = std::make_shared<const PatchMesh>(multipatch_domain("pentagon").refined().refined());
   const G1Space space(mesh, 5);
   const Eigen::VectorXd coef = Eigen::VectorXd::Random(space.dimension());
   EXPECT_LT(*space.max_gradient_jump(coef), 1e-9);

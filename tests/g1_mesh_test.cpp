@@ -16,20 +16,20 @@ struct Counts {
   int interior_edges = 0, boundary_edges = 0, interior_vertices = 0;
 };
 
-Counts count(const QuadMesh& m) {
+Counts count(const PatchMesh& m) {
   Counts c;
   for (int e = 0; e < m.num_edges(); ++e) (m.edge(e).boundary() ? c.boundary_edges : c.interior_edges)++;
   for (int v = 0; v < m.num_vertices(); ++v) c.interior_vertices += m.fan(v).boundary ? 0 : 1;
   return c;
 }
 
-int vertex_at(const QuadMesh& m, Point2 p) {
+int vertex_at(const PatchMesh& m, Point2 p) {
   for (int v = 0; v < m.num_vertices(); ++v)
     if ((m.vertex(v) - p).norm() < 1e-12) return v;
   return -1;
 }
 
-double total_area(const QuadMesh& m) {
+double total_area(const PatchMesh& m) {
   double a = 0;
   for (int f = 0; f < m.num_faces(); ++f)
     for (double u : {0.2113248654051871, 0.7886751345948129})
@@ -40,7 +40,7 @@ double total_area(const QuadMesh& m) {
 }  // namespace
 
 TEST(G1Mesh, ThreePatchSquareTopology) {
-  const QuadMesh m = multipatch_domain("3p_square");
+  const PatchMesh m = multipatch_domain("3p_square");
   EXPECT_EQ(m.num_faces(), 3);
   EXPECT_EQ(m.num_vertices(), 7);
   EXPECT_EQ(m.num_edges(), 9);
@@ -62,7 +62,7 @@ TEST(G1Mesh, ThreePatchSquareTopology) {
 }
 
 TEST(G1Mesh, FivePatchSquareAndPentagonTopology) {
-  const QuadMesh s = multipatch_domain("5p_square");
+  const PatchMesh s = multipatch_domain("5p_square");
   EXPECT_EQ(s.num_faces(), 5);
   EXPECT_EQ(s.num_vertices(), 8);
   EXPECT_EQ(count(s).interior_edges, 8);
@@ -72,7 +72,7 @@ TEST(G1Mesh, FivePatchSquareAndPentagonTopology) {
     EXPECT_EQ(s.fan(vertex_at(s, p)).valence(), 3);
   EXPECT_NEAR(total_area(s), 1.0, 1e-14);
 
-  const QuadMesh p = multipatch_domain("pentagon");
+  const PatchMesh p = multipatch_domain("pentagon");
   EXPECT_EQ(p.num_faces(), 5);
   EXPECT_EQ(p.num_vertices(), 11);
   EXPECT_EQ(count(p).interior_edges, 5);
@@ -85,8 +85,8 @@ TEST(G1Mesh, FivePatchSquareAndPentagonTopology) {
 }
 
 TEST(G1Mesh, RefinementSplitsEachPatchIntoFourWithTheSameGeometry) {
-  const QuadMesh m = multipatch_domain("3p_square");
-  const QuadMesh r = m.refined();
+  const PatchMesh m = multipatch_domain("3p_square");
+  const PatchMesh r = m.refined();
   EXPECT_EQ(r.num_faces(), 12);
   EXPECT_EQ(r.num_vertices(), 19);
   EXPECT_EQ(r.num_edges(), 30);
@@ -101,14 +101,14 @@ TEST(G1Mesh, RejectsInvalidMeshesNamingThePatch) {
   const std::vector<Point2> v{{0, 0}, {1, 0}, {1, 1}, {0, 1}, {2, 0}, {2, 1}};
   // Clockwise patch.
   try {
-    QuadMesh({v[0], v[1], v[2], v[3]}, {{0, 3, 2, 1}}, "cw");
+    PatchMesh({v[0], v[1], v[2], v[3]}, {{0, 3, 2, 1}}, "cw");
     FAIL() << "clockwise patch accepted";
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("patch 0 is inverted"), std::string::npos) << e.what();
   }
   // Folded (non-convex) patch: the 4th corner pulled inside.
   try {
-    QuadMesh({{0, 0}, {1, 0}, {1, 1}, {0.8, 0.2}}, {{0, 1, 2, 3}}, "fold");
+    PatchMesh({{0, 0}, {1, 0}, {1, 1}, {0.8, 0.2}}, {{0, 1, 2, 3}}, "fold");
     FAIL() << "folded patch accepted";
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("patch 0 is folded"), std::string::npos) << e.what();
@@ -118,13 +118,13 @@ TEST(G1Mesh, RejectsInvalidMeshesNamingThePatch) {
     std::vector<Point2> w = v;
     w.push_back({1.5, 0.2});
     w.push_back({1.5, 0.8});
-    QuadMesh(w, {{0, 1, 2, 3}, {1, 4, 5, 2}, {2, 1, 6, 7}}, "three");
+    PatchMesh(w, {{0, 1, 2, 3}, {1, 4, 5, 2}, {2, 1, 6, 7}}, "three");
     FAIL() << "overlapping patches accepted";
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("non-manifold edge between vertices 1 and 2 is shared by patches 0 1 2"), std::string::npos) << e.what();
   }
   try {
-    QuadMesh({{0, 0}, {1, 0}, {1, 1}, {0, 1}, {-0.5, 1}, {2, 2}}, {{0, 1, 2, 3}, {0, 1, 5, 4}}, "same-direction");
+    PatchMesh({{0, 0}, {1, 0}, {1, 1}, {0, 1}, {-0.5, 1}, {2, 2}}, {{0, 1, 2, 3}, {0, 1, 5, 4}}, "same-direction");
     FAIL() << "inconsistent orientation accepted";
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("patch 1 and patch 0 traverse their shared edge in the same direction"),
@@ -136,7 +136,7 @@ TEST(G1Mesh, RejectsInvalidMeshesNamingThePatch) {
 TEST(G1Gluing, CompatibleAtEveryInteriorVertex) {
   for (const std::string& name : multipatch_domain_names())
     for (int level = 0; level <= 1; ++level) {
-      QuadMesh m = multipatch_domain(name);
+      PatchMesh m = multipatch_domain(name);
       if (level) m = m.refined();
       const std::vector<EdgeGluing> g = gluing_from_geometry(m);
       int checked = 0;
@@ -155,7 +155,7 @@ TEST(G1Gluing, CompatibleAtEveryInteriorVertex) {
 }
 
 TEST(G1Gluing, DegreesAndCrossingsOfBilinearEdges) {
-  const QuadMesh m = multipatch_domain("3p_square");
+  const PatchMesh m = multipatch_domain("3p_square");
   const std::vector<EdgeGluing> g = gluing_from_geometry(m);
   const int centre = vertex_at(m, Point2(0.6, 0.6));
   for (int e = 0; e < m.num_edges(); ++e) {
@@ -168,7 +168,7 @@ TEST(G1Gluing, DegreesAndCrossingsOfBilinearEdges) {
   }
   // After refinement, the new edges inside a patch are parametric C1: a = 0, crossing at both ends,
   // d_τ(k) = 2k + 1.
-  const QuadMesh r = m.refined();
+  const PatchMesh r = m.refined();
   const std::vector<EdgeGluing> gr = gluing_from_geometry(r);
   int parametric = 0;
   for (int e = 0; e < r.num_edges(); ++e) {
@@ -184,17 +184,17 @@ TEST(G1Gluing, DegreesAndCrossingsOfBilinearEdges) {
 
 TEST(G1Mesh, BenchmarkDomainsFromTheAnchors) {
   // 5p_pentagon: valence 5 at the origin; area of the regular pentagon with apothem a.
-  const QuadMesh p = multipatch_domain("5p_pentagon");
+  const PatchMesh p = multipatch_domain("5p_pentagon");
   EXPECT_EQ(p.fan(vertex_at(p, Point2(0, 0))).valence(), 5);
   EXPECT_EQ(count(p).interior_vertices, 1);
   EXPECT_NEAR(total_area(p), 5 * 0.6881909602355869 * 0.5, 1e-12);
   // 3p_hexagon: valence 3 at the origin, regular hexagon of circumradius 1.
-  const QuadMesh h = multipatch_domain("3p_hexagon");
+  const PatchMesh h = multipatch_domain("3p_hexagon");
   EXPECT_EQ(h.fan(vertex_at(h, Point2(0, 0))).valence(), 3);
   EXPECT_NEAR(total_area(h), 1.5 * std::sqrt(3.0), 1e-12);
-  for (int f = 0; f < 3; ++f) EXPECT_TRUE(h.is_parallelogram(f));
+  for (int f = 0; f < 3; ++f) EXPECT_TRUE(h.is_affine(f));
   // lshape_8p: (-1,1)^2 minus the fourth quadrant; the re-entrant corner (0,0) is a boundary vertex.
-  const QuadMesh l = multipatch_domain("lshape_8p");
+  const PatchMesh l = multipatch_domain("lshape_8p");
   EXPECT_EQ(l.num_faces(), 8);
   EXPECT_NEAR(total_area(l), 3.0, 1e-13);
   EXPECT_TRUE(l.fan(vertex_at(l, Point2(0, 0))).boundary);

@@ -12,7 +12,7 @@ namespace {
 const char* const kSides[4] = {"left", "right", "bottom", "top"};
 
 /// Side index 0..3 of a boundary edge (as in kSides), or -1 when it lies on no side of the box.
-int side_of(const QuadMesh& mesh, const MeshEdge& e, const Eigen::Vector2d& lo, const Eigen::Vector2d& hi) {
+int side_of(const PatchMesh& mesh, const MeshEdge& e, const Eigen::Vector2d& lo, const Eigen::Vector2d& hi) {
   const double tol = 1e-10 * std::max((hi - lo).maxCoeff(), 1e-300);
   const Point2& a = mesh.vertex(e.x);
   const Point2& b = mesh.vertex(e.y);
@@ -25,7 +25,7 @@ int side_of(const QuadMesh& mesh, const MeshEdge& e, const Eigen::Vector2d& lo, 
 }
 
 /// Boundary edges of the mesh grouped by side; index 4 holds every boundary edge.
-std::vector<std::vector<BoundaryEdge>> group(const QuadMesh& mesh) {
+std::vector<std::vector<BoundaryEdge>> group(const PatchMesh& mesh) {
   Eigen::Vector2d lo = mesh.vertex(0), hi = mesh.vertex(0);
   for (int v = 1; v < mesh.num_vertices(); ++v) {
     lo = lo.cwiseMin(mesh.vertex(v));
@@ -45,7 +45,12 @@ std::vector<std::vector<BoundaryEdge>> group(const QuadMesh& mesh) {
 
 }  // namespace
 
-std::vector<std::string> boundary_part_names(const QuadMesh& mesh) {
+std::vector<std::string> boundary_part_names(const PatchMesh& mesh) {
+  if (!mesh.boundary_groups().empty()) {
+    std::vector<std::string> names;
+    for (const auto& [name, edges] : mesh.boundary_groups()) names.push_back(name);
+    return names;
+  }
   const auto g = group(mesh);
   std::vector<std::string> names;
   for (int s = 0; s < 4; ++s)
@@ -53,11 +58,23 @@ std::vector<std::string> boundary_part_names(const QuadMesh& mesh) {
   return names;
 }
 
-std::vector<BoundaryEdge> boundary_part_edges(const QuadMesh& mesh, const std::string& name) {
+std::vector<BoundaryEdge> boundary_part_edges(const PatchMesh& mesh, const std::string& name) {
   auto g = group(mesh);
   if (name == "all") return g[4];
-  for (int s = 0; s < 4; ++s)
-    if (name == kSides[s] && !g[s].empty()) return g[s];
+  if (!mesh.boundary_groups().empty()) {
+    const auto it = mesh.boundary_groups().find(name);
+    if (it != mesh.boundary_groups().end()) {
+      std::vector<BoundaryEdge> out;
+      for (const auto& [a, b] : it->second) {
+        const MeshEdge& e = mesh.edge(mesh.find_edge(a, b));
+        out.push_back({e.first.face, e.first.local_edge});
+      }
+      return out;
+    }
+  } else {
+    for (int s = 0; s < 4; ++s)
+      if (name == kSides[s] && !g[s].empty()) return g[s];
+  }
   std::string valid = "all";
   for (const std::string& n : boundary_part_names(mesh)) valid += ", " + n;
   throw InputError("unknown boundary '" + name + "' of multipatch domain '" + mesh.name() + "' (valid: " + valid + ")");

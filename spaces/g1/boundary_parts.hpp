@@ -1,6 +1,7 @@
 #pragma once
 /// @file
-/// Named boundary parts of a multipatch QuadMesh: the sides of the domain's bounding box. A boundary
+/// Named boundary parts of a multipatch PatchMesh: its boundary groups when it has any (e.g. the
+/// physical curves of a Gmsh file), otherwise the sides of the domain's bounding box. A boundary
 /// edge whose two ends lie on x = x_min (within 1e-10 of the domain size) belongs to `left`, on
 /// x = x_max to `right`, on y = y_min to `bottom`, on y = y_max to `top`. Edges on no side of the
 /// box (e.g. the re-entrant sides of an L-shape, the slanted sides of a pentagon) are only in "all".
@@ -8,16 +9,16 @@
 #include <string>
 #include <vector>
 
-#include "spaces/g1/quad_mesh.hpp"
+#include "spaces/g1/patch_mesh.hpp"
 #include "spaces/space.hpp"
 
 namespace iga {
 
-/// The nonempty parts among left, right, bottom, top, in that order.
-std::vector<std::string> boundary_part_names(const QuadMesh& mesh);
+/// The group names (in order), or the nonempty sides among left, right, bottom, top, in that order.
+std::vector<std::string> boundary_part_names(const PatchMesh& mesh);
 
 /// Boundary edges of part `name` ("all": every boundary edge). Throws InputError for a name that
 /// is not "all" and not in boundary_part_names (the message lists the valid names).
-std::vector<BoundaryEdge> boundary_part_edges(const QuadMesh& mesh, const std::string& name);
+std::vector<BoundaryEdge> boundary_part_edges(const PatchMesh& mesh, const std::string& name);
 
 }  // namespace iga

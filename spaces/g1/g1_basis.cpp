@@ -7,7 +7,7 @@
 #include <unordered_map>
 
 #include "quadrature/quadrature_rule.hpp"
-#include "spaces/g1/bernstein_quad.hpp"
+#include "spaces/g1/bernstein_face.hpp"
 
 namespace iga {
 
@@ -16,10 +16,14 @@ namespace {
 // Relative singular-value threshold of the local null spaces (the Bernstein rows are O(1)).
 constexpr double kRankTolerance = 1e-10;
 
-/// Local indices in rows 0-1 along local edge e with m in [m0, m1].
-void add_edge_rows(int k, int face, int e, int m0, int m1, std::vector<std::pair<int, int>>& out) {
+/// Local indices in rows 0-1 along local edge e of a face, without the first `skip_start` and the
+/// last `skip_end` coefficients of each row (2 skips a corner set).
+void add_edge_rows(const PatchMesh& mesh, int k, int face, int e, int skip_start, int skip_end,
+                   std::vector<std::pair<int, int>>& out) {
+  const CellShape shape = mesh.shape(face);
   for (int r = 0; r <= 1; ++r)
-    for (int m = m0; m <= m1; ++m) out.push_back({face, edge_coefficient(k, e, m, r)});
+    for (int m = skip_start; m <= edge_row_last(shape, k, r) - skip_end; ++m)
+      out.push_back({face, edge_coefficient(shape, k, e, m, r)});
 }
 
 /// Unknown set: (face, index) pairs, deduplicated, with a lookup.
@@ -131,38 +135,37 @@ Eigen::MatrixXd vertex_targets(const Eigen::MatrixXd& ur, const Eigen::VectorXd&
 
 }  // namespace
 
-std::vector<std::vector<FaceCoefficient>> edge_constraint_rows(const QuadMesh& mesh, const EdgeGluing& g, int k) {
+std::vector<std::vector<FaceCoefficient>> edge_constraint_rows(const PatchMesh& mesh, const EdgeGluing& g, int k) {
   const MeshEdge& me = mesh.edge(g.edge);
   const EdgeFrame fr = edge_frame(mesh, g.edge);
   const int e1 = me.first.local_edge, e2 = me.second.local_edge;
+  const CellShape s1 = mesh.shape(fr.face1), s2 = mesh.shape(fr.face2);
   std::vector<std::vector<FaceCoefficient>> rows;
   // C0: straight edges parametrised linearly from X to Y on both faces, so traces match coefficient
   // by coefficient (the second face runs Y -> X).
   for (int m = 0; m <= k; ++m)
-    rows.push_back({{fr.face1, edge_coefficient(k, e1, m, 0), 1.0}, {fr.face2, edge_coefficient(k, e2, k - m, 0), -1.0}});
+    rows.push_back(
+        {{fr.face1, edge_coefficient(s1, k, e1, m, 0), 1.0}, {fr.face2, edge_coefficient(s2, k, e2, k - m, 0), -1.0}});
   // G1 by collocation at k+3 Gauss points: the residual has degree <= k+2 in t.
   const QuadratureRule pts = gauss_legendre(k + 3);
-  std::vector<int> rows1, rows2;
-  for (int r = 0; r <= 1; ++r)
-    for (int m = 0; m <= k; ++m) {
-      rows1.push_back(edge_coefficient(k, e1, m, r));
-      rows2.push_back(edge_coefficient(k, e2, m, r));
-    }
+  std::vector<std::pair<int, int>> near1, near2;
+  add_edge_rows(mesh, k, fr.face1, e1, 0, 0, near1);
+  add_edge_rows(mesh, k, fr.face2, e2, 0, 0, near2);
   for (const Point2& p : pts.points) {
     const double t = p.x();
-    const Eigen::MatrixXd j1 = bernstein_tensor_jet(k, fr.start1 + t * fr.tangent1);
-    const Eigen::MatrixXd j2 = bernstein_tensor_jet(k, fr.start2 + t * fr.tangent2);
+    const Eigen::MatrixXd j1 = bernstein_jet(s1, k, fr.start1 + t * fr.tangent1);
+    const Eigen::MatrixXd j2 = bernstein_jet(s2, k, fr.start2 + t * fr.tangent2);
     const double a = eval_poly(g.a, t), b = eval_poly(g.b, t), c = eval_poly(g.c, t);
     std::vector<FaceCoefficient> row;
     double big = 0.0;
-    for (int i : rows1) {
+    for (const auto& [f1, i] : near1) {
       const double cross = j1(1, i) * fr.cross1.x() + j1(2, i) * fr.cross1.y();
       const double along = j1(1, i) * fr.tangent1.x() + j1(2, i) * fr.tangent1.y();
       const double v = c * cross - a * along;
       if (v != 0.0) row.push_back({fr.face1, i, v});
       big = std::max(big, std::abs(v));
     }
-    for (int i : rows2) {
+    for (const auto& [f2, i] : near2) {
       const double v = -b * (j2(1, i) * fr.cross2.x() + j2(2, i) * fr.cross2.y());
       if (v != 0.0) row.push_back({fr.face2, i, v});
       big = std::max(big, std::abs(v));
@@ -173,7 +176,7 @@ std::vector<std::vector<FaceCoefficient>> edge_constraint_rows(const QuadMesh& m
   return rows;
 }
 
-int vertex_function_count(const QuadMesh& mesh, const std::vector<EdgeGluing>& gluing, int v) {
+int vertex_function_count(const PatchMesh& mesh, const std::vector<EdgeGluing>& gluing, int v) {
   const VertexFan& fan = mesh.fan(v);
   int crossing = 0;
   for (int e : fan.edge) crossing += crossing_at(mesh, gluing, e, v) ? 1 : 0;
@@ -182,10 +185,14 @@ int vertex_function_count(const QuadMesh& mesh, const std::vector<EdgeGluing>& g
   return 3 + faces - crossing + (crossing_vertex ? 1 : 0);
 }
 
-int theorem_dimension(const QuadMesh& mesh, const std::vector<EdgeGluing>& gluing, int k) {
+int theorem_dimension(const PatchMesh& mesh, const std::vector<EdgeGluing>& gluing, int k) {
   int sum_d = 0, crossing_vertices = 0, used_vertices = 0;
-  for (int e = 0; e < mesh.num_edges(); ++e)
-    sum_d += mesh.edge(e).boundary() ? 2 * k + 3 : syzygy_dimension(gluing[e], k);
+  for (int e = 0; e < mesh.num_edges(); ++e) {
+    const MeshEdge& me = mesh.edge(e);
+    // Boundary edges count as d = 2k + 3 − F_Δ(σ) (Remark 4.14).
+    const bool triangle = mesh.shape(me.first.face) == CellShape::triangle;
+    sum_d += me.boundary() ? 2 * k + 3 - (triangle ? 1 : 0) : syzygy_dimension(gluing[e], k);
+  }
   for (int v = 0; v < mesh.num_vertices(); ++v) {
     const VertexFan& fan = mesh.fan(v);
     if (fan.face.empty()) continue;
@@ -195,12 +202,16 @@ int theorem_dimension(const QuadMesh& mesh, const std::vector<EdgeGluing>& gluin
     for (int e : fan.edge) all = all && crossing_at(mesh, gluing, e, v);
     crossing_vertices += all ? 1 : 0;
   }
-  const int fq = mesh.num_faces();
-  return (k - 3) * (k - 3) * fq + sum_d + 4 * fq - 9 * mesh.num_edges() + 3 * used_vertices + crossing_vertices;
+  int quads = 0, triangles = 0;
+  for (int f = 0; f < mesh.num_faces(); ++f) (mesh.shape(f) == CellShape::triangle ? triangles : quads) += 1;
+  return (k - 3) * (k - 3) * quads + (k - 5) * (k - 4) / 2 * triangles + sum_d + 4 * quads + 3 * triangles -
+         9 * mesh.num_edges() + 3 * used_vertices + crossing_vertices;
 }
 
-G1Basis build_g1_basis(const QuadMesh& mesh, const std::vector<EdgeGluing>& gluing, int k) {
+G1Basis build_g1_basis(const PatchMesh& mesh, const std::vector<EdgeGluing>& gluing, int k) {
   if (k < 3) throw IncompleteBasis("G1 basis needs degree >= 3");
+  // Below 4 the corner sets of a triangle overlap (λ0 λ1 λ2 belongs to all three).
+  if (k < 4 && mesh.has_triangles()) throw IncompleteBasis("G1 basis on triangles needs degree >= 4");
   G1Basis basis;
   basis.degree = k;
   std::vector<std::vector<FaceCoefficient>> functions;
@@ -221,13 +232,13 @@ G1Basis build_g1_basis(const QuadMesh& mesh, const std::vector<EdgeGluing>& glui
     const MeshEdge& me = mesh.edge(e);
     Unknowns u(k);
     std::vector<std::pair<int, int>> items;
-    add_edge_rows(k, me.first.face, me.first.local_edge, 2, k - 2, items);
+    add_edge_rows(mesh, k, me.first.face, me.first.local_edge, 2, 2, items);
     if (me.boundary()) {
       for (const auto& [f, i] : items) add({{f, i, 1.0}}, {G1Entity::edge, e});
       edge_count[e] = static_cast<int>(items.size());
       continue;
     }
-    add_edge_rows(k, me.second.face, me.second.local_edge, 2, k - 2, items);
+    add_edge_rows(mesh, k, me.second.face, me.second.local_edge, 2, 2, items);
     u.add(items);
     const Eigen::MatrixXd n = null_space(restrict_rows(rows[e], u), u.size());
     const int expected = syzygy_dimension(gluing[e], k) - 9 + (gluing[e].crossing_x ? 1 : 0) + (gluing[e].crossing_y ? 1 : 0);
@@ -247,9 +258,10 @@ G1Basis build_g1_basis(const QuadMesh& mesh, const std::vector<EdgeGluing>& glui
     std::vector<std::pair<int, int>> items, corner;
     for (int i = 0; i < nf; ++i) {
       const int f = fan.face[i], c = fan.corner[i];
-      add_edge_rows(k, f, c, 0, k - 2, items);          // along edge c, without corner c+1
-      add_edge_rows(k, f, (c + 3) % 4, 2, k, items);    // along edge c-1, without corner c-1
-      for (int idx : corner_coefficients(k, c)) corner.push_back({f, idx});
+      const int n = mesh.num_corners(f);
+      add_edge_rows(mesh, k, f, c, 0, 2, items);                // along edge c, without corner c+1
+      add_edge_rows(mesh, k, f, (c + n - 1) % n, 2, 0, items);  // along edge c-1, without corner c-1
+      for (int idx : corner_coefficients(mesh.shape(f), k, c)) corner.push_back({f, idx});
     }
     u.add(items);
     std::vector<std::vector<FaceCoefficient>> vrows;
@@ -293,11 +305,13 @@ G1Basis build_g1_basis(const QuadMesh& mesh, const std::vector<EdgeGluing>& glui
       };
       const int f0 = fan.face.front(), c0 = fan.corner.front();
       const int fl = fan.face.back(), cl = fan.corner.back();
+      const CellShape s0 = mesh.shape(f0), sl = mesh.shape(fl);
+      const int before = cl + mesh.num_corners(fl) - 1;  // the last face's edge ending at v
       for (int m = 0; m <= 1; ++m) {
-        trace_rows.push_back(position(f0, edge_coefficient(k, c0, m, 0)));
-        normal_rows.push_back(position(f0, edge_coefficient(k, c0, m, 1)));
-        trace_rows.push_back(position(fl, edge_coefficient(k, cl + 3, k - m, 0)));
-        normal_rows.push_back(position(fl, edge_coefficient(k, cl + 3, k - m, 1)));
+        trace_rows.push_back(position(f0, edge_coefficient(s0, k, c0, m, 0)));
+        normal_rows.push_back(position(f0, edge_coefficient(s0, k, c0, m, 1)));
+        trace_rows.push_back(position(fl, edge_coefficient(sl, k, before, edge_row_last(sl, k, 0) - m, 0)));
+        normal_rows.push_back(position(fl, edge_coefficient(sl, k, before, edge_row_last(sl, k, 1) - m, 1)));
       }
     }
     const Eigen::MatrixXd targets = vertex_targets(ur, ur.transpose() * ones, trace_rows, normal_rows);
@@ -307,11 +321,9 @@ G1Basis build_g1_basis(const QuadMesh& mesh, const std::vector<EdgeGluing>& glui
 
   // Face functions: interior Bernstein coefficients.
   for (int f = 0; f < mesh.num_faces(); ++f)
-    for (int j = 2; j <= k - 2; ++j)
-      for (int i = 2; i <= k - 2; ++i) add({{f, i + j * (k + 1), 1.0}}, {G1Entity::face, f});
+    for (int i : interior_coefficients(mesh.shape(f), k)) add({{f, i, 1.0}}, {G1Entity::face, f});
 
   // Per-face extraction.
-  const int nb = (k + 1) * (k + 1);
   basis.face_dofs.assign(mesh.num_faces(), {});
   for (int g = 0; g < static_cast<int>(functions.size()); ++g)
     for (const FaceCoefficient& c : functions[g])
@@ -325,7 +337,7 @@ G1Basis build_g1_basis(const QuadMesh& mesh, const std::vector<EdgeGluing>& glui
       triplets[c.face].push_back({c.index, col, c.value});
     }
   for (int f = 0; f < mesh.num_faces(); ++f) {
-    basis.extraction[f].resize(nb, static_cast<Eigen::Index>(basis.face_dofs[f].size()));
+    basis.extraction[f].resize(bernstein_count(mesh.shape(f), k), static_cast<Eigen::Index>(basis.face_dofs[f].size()));
     basis.extraction[f].setFromTriplets(triplets[f].begin(), triplets[f].end());
   }
   return basis;

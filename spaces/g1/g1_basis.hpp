@@ -1,6 +1,7 @@
 #pragma once
 /// @file
-/// The local-nullspace basis of S¹_k (notes §4.5) on a QuadMesh with geometry-derived gluing data:
+/// The local-nullspace basis of S¹_k (notes §4.5) on a PatchMesh (bilinear quads and affine
+/// triangles) with geometry-derived gluing data:
 /// face functions (interior Bernstein coefficients), edge functions (null space of the edge's C0 and
 /// G1 rows on rows 0–1 along the edge minus the corner sets), vertex functions (null space of the
 /// rows of the vertex's edges on rows 0–1 along its edges minus the other corners, reduced to a
@@ -14,7 +15,7 @@
 #include <vector>
 
 #include "spaces/g1/gluing_data.hpp"
-#include "spaces/g1/quad_mesh.hpp"
+#include "spaces/g1/patch_mesh.hpp"
 
 namespace iga {
 
@@ -28,7 +29,7 @@ struct FaceCoefficient {
 /// Sparse rows of the C0 and G1 conditions of interior edge `edge` (notes §1.4/§1.5): k+1 trace
 /// equalities and k+3 collocations of c ∂_{X→Z1} f1 − a ∂_{X→Y} f1 − b ∂_{X→Z2} f2 (a polynomial of
 /// degree k+2, so exact), each row scaled to max-norm 1.
-std::vector<std::vector<FaceCoefficient>> edge_constraint_rows(const QuadMesh& mesh, const EdgeGluing& gluing, int k);
+std::vector<std::vector<FaceCoefficient>> edge_constraint_rows(const PatchMesh& mesh, const EdgeGluing& gluing, int k);
 
 enum class G1Entity { vertex, edge, face };
 
@@ -43,7 +44,7 @@ struct G1Basis {
   int degree = 0;
   std::vector<G1FunctionInfo> info;                      ///< per global function
   std::vector<std::vector<int>> face_dofs;               ///< per face: sorted active global functions
-  std::vector<Eigen::SparseMatrix<double>> extraction;   ///< per face: (k+1)^2 x face_dofs.size()
+  std::vector<Eigen::SparseMatrix<double>> extraction;   ///< per face: bernstein_count x face_dofs.size()
   int dimension() const { return static_cast<int>(info.size()); }
 };
 
@@ -54,12 +55,12 @@ struct IncompleteBasis : std::runtime_error {
 };
 
 /// Build the basis of degree k >= 3. Throws IncompleteBasis when a local count disagrees.
-G1Basis build_g1_basis(const QuadMesh& mesh, const std::vector<EdgeGluing>& gluing, int k);
+G1Basis build_g1_basis(const PatchMesh& mesh, const std::vector<EdgeGluing>& gluing, int k);
 
 /// dim H(γ) of Prop. 5.1: 3 + F − Σ c_τ(γ) + c₊(γ) (number of vertex functions at v).
-int vertex_function_count(const QuadMesh& mesh, const std::vector<EdgeGluing>& gluing, int v);
+int vertex_function_count(const PatchMesh& mesh, const std::vector<EdgeGluing>& gluing, int v);
 
-/// Theorem 6.3: the dimension of S¹_k for k >= s*, from d_τ(k) of every edge.
-int theorem_dimension(const QuadMesh& mesh, const std::vector<EdgeGluing>& gluing, int k);
+/// Theorem 6.3: the dimension of S¹_k for k >= s*, from d_τ(k) of every edge (quads and triangles).
+int theorem_dimension(const PatchMesh& mesh, const std::vector<EdgeGluing>& gluing, int k);
 
 }  // namespace iga

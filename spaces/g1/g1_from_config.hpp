@@ -1,7 +1,8 @@
 #pragma once
 /// @file
 /// Building G1 multipatch spaces from config:
-///   domain: {type: multipatch, name: 3p_square | 5p_square | pentagon}
+///   domain: {type: multipatch, name: NAME}   (multipatch_domain_names())
+///   domain: {type: mesh_file, file: PATH, mesh_size: h, recombine: true|false}   (.geo keys only)
 ///   space:  {type: g1, degree: k}
 /// Errors are InputErrors naming the config place (exit code 2).
 
@@ -10,8 +11,8 @@
 
 namespace iga {
 
-/// The G1 space of degree k on the named multipatch domain, every patch split uniformly into
-/// 4^level bilinear sub-patches (the geometry unchanged).
+/// The G1 space of degree k on the named multipatch domain or the mesh file's mesh, every patch
+/// split uniformly into 4^level sub-patches (the geometry unchanged).
 SpacePtr make_g1_space(const ConfigNode& domain, const ConfigNode& space, int level);
 
 }  // namespace iga

@@ -3,60 +3,47 @@
 #include <algorithm>
 
 #include "solver/errors.hpp"
-#include "spaces/bspline/bspline_basis_1d.hpp"
+#include "spaces/g1/bernstein_face.hpp"
 #include "spaces/g1/boundary_parts.hpp"
 #include "spaces/g1/gradient_jump.hpp"
 #include "spaces/push_forward.hpp"
 
 namespace iga {
 
-// Evaluator: tensor Bernstein tables per rule, then per element extraction^T * tables + push-forward.
+// Evaluator: Bernstein tables per (rule, face shape), then per element extraction^T * tables +
+// push-forward.
 class G1Space::G1Evaluator final : public Space::Evaluator {
  public:
   explicit G1Evaluator(const G1Space& space) : space_(space) {}
   void evaluate(int element, const QuadratureRule& rule, unsigned flags, PointValues& out) override;
 
  private:
-  /// (k+1)^2 x q tables of value, d/du, d/dv, d2/du2, d2/dudv, d2/dv2.
+  /// bernstein_count x q tables of value, d/du, d/dv, d2/du2, d2/dudv, d2/dv2.
   struct Tables {
     std::vector<Point2> points;
     Eigen::MatrixXd t[6];
   };
-  const Tables& tables(const QuadratureRule& rule);
+  const Tables& tables(const QuadratureRule& rule, CellShape shape);
 
   const G1Space& space_;
-  std::map<const QuadratureRule*, Tables> cache_;
+  std::map<std::pair<const QuadratureRule*, CellShape>, Tables> cache_;
   ReferenceDerivatives ref_;
   std::vector<GeometryJet> jets_;
 };
 
-const G1Space::G1Evaluator::Tables& G1Space::G1Evaluator::tables(const QuadratureRule& rule) {
-  auto it = cache_.find(&rule);
+const G1Space::G1Evaluator::Tables& G1Space::G1Evaluator::tables(const QuadratureRule& rule, CellShape shape) {
+  const auto key = std::make_pair(&rule, shape);
+  auto it = cache_.find(key);
   if (it != cache_.end() && it->second.points == rule.points) return it->second;
   if (it == cache_.end() && cache_.size() >= 64) cache_.clear();
-  Tables& t = cache_[&rule];
+  Tables& t = cache_[key];
   t.points = rule.points;
-  const int k = space_.degree(), nb = (k + 1) * (k + 1), q = rule.size();
-  for (auto& m : t.t) m.resize(nb, q);
-  for (int p = 0; p < q; ++p) {
-    const Eigen::MatrixXd bu = bernstein_derivatives(k, rule.points[p].x(), 2);
-    const Eigen::MatrixXd bv = bernstein_derivatives(k, rule.points[p].y(), 2);
-    for (int j = 0; j <= k; ++j)
-      for (int i = 0; i <= k; ++i) {
-        const int id = i + j * (k + 1);
-        t.t[0](id, p) = bu(0, i) * bv(0, j);
-        t.t[1](id, p) = bu(1, i) * bv(0, j);
-        t.t[2](id, p) = bu(0, i) * bv(1, j);
-        t.t[3](id, p) = bu(2, i) * bv(0, j);
-        t.t[4](id, p) = bu(1, i) * bv(1, j);
-        t.t[5](id, p) = bu(0, i) * bv(2, j);
-      }
-  }
+  bernstein_tables(shape, space_.degree(), rule.points, t.t);
   return t;
 }
 
 void G1Space::G1Evaluator::evaluate(int element, const QuadratureRule& rule, unsigned flags, PointValues& out) {
-  const Tables& t = tables(rule);
+  const Tables& t = tables(rule, space_.mesh_->shape(element));
   const Eigen::SparseMatrix<double>& c = space_.basis_.extraction[element];
   const bool grads = (flags & (update_gradients | update_hessians)) != 0;
   const bool hess = (flags & update_hessians) != 0;
@@ -76,7 +63,7 @@ void G1Space::G1Evaluator::evaluate(int element, const QuadratureRule& rule, uns
   push_forward(jets_, ref_, flags, out);
 }
 
-G1Space::G1Space(std::shared_ptr<const QuadMesh> mesh, int k) : mesh_(std::move(mesh)) {
+G1Space::G1Space(std::shared_ptr<const PatchMesh> mesh, int k) : mesh_(std::move(mesh)) {
   gluing_ = gluing_from_geometry(*mesh_);
   try {
     basis_ = build_g1_basis(*mesh_, gluing_, k);
@@ -97,7 +84,7 @@ G1Space::G1Space(std::shared_ptr<const QuadMesh> mesh, int k) : mesh_(std::move(
   affine_ = true;
   for (int f = 0; f < mesh_->num_faces(); ++f) {
     mesh_size_ = std::max(mesh_size_, mesh_->diameter(f));
-    affine_ = affine_ && mesh_->is_parallelogram(f);
+    affine_ = affine_ && mesh_->is_affine(f);
   }
 }
 
@@ -109,9 +96,15 @@ std::vector<std::pair<std::string, std::string>> G1Space::parameters() const {
           {"domain", mesh_->name()}};
 }
 
-RulePtr G1Space::quadrature(int, int degree) const { return rules_.cell(degree); }
+RulePtr G1Space::quadrature(int element, int degree) const {
+  // A quad rule exact per direction; a triangle rule exact for total degree `degree` covers the
+  // same polynomials (total degree k on a triangle) and affine maps.
+  return mesh_->shape(element) == CellShape::triangle ? rules_.triangle(degree) : rules_.cell(degree);
+}
 
-RulePtr G1Space::edge_quadrature(int, int edge, int degree) const { return rules_.edge(edge, degree); }
+RulePtr G1Space::edge_quadrature(int element, int edge, int degree) const {
+  return mesh_->shape(element) == CellShape::triangle ? rules_.triangle_edge(edge, degree) : rules_.edge(edge, degree);
+}
 
 std::vector<std::string> G1Space::boundary_names() const { return boundary_part_names(*mesh_); }
 
@@ -123,7 +116,7 @@ std::optional<double> G1Space::max_gradient_jump(const Eigen::VectorXd& coeffici
   std::vector<Eigen::VectorXd> faces(mesh_->num_faces());
   for (int f = 0; f < mesh_->num_faces(); ++f) {
     const std::vector<int>& dofs = basis_.face_dofs[f];
-    Eigen::VectorXd local(dofs.size());
+    Eigen::VectorXd local(static_cast<Eigen::Index>(dofs.size()));
     for (std::size_t i = 0; i < dofs.size(); ++i) local[static_cast<Eigen::Index>(i)] = coefficients[dofs[i]];
     faces[f] = basis_.extraction[f] * local;
   }

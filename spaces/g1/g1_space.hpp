@@ -1,11 +1,12 @@
 #pragma once
 /// @file
-/// G1Space: the C1 space S¹_k(M) ∘ G⁻¹ on a planar multipatch mesh of bilinear quads (notes §7,
-/// route A: gluing data derived from the geometry). One polynomial of bidegree (k,k) per face,
+/// G1Space: the C1 space S¹_k(M) ∘ G⁻¹ on a planar multipatch mesh of bilinear quads and affine
+/// triangles (notes §7, route A: gluing data derived from the geometry). One polynomial of
+/// bidegree (k,k) per quad and of total degree k per triangle,
 /// C1 across all interior edges; the basis is the local-nullspace basis of g1_basis.hpp, stored as
 /// a sparse extraction onto each face's Bernstein basis.
 ///
-/// Elements are the mesh faces, with the reference square and the face's bilinear map; the active
+/// Elements are the mesh faces, with the reference square or triangle and the face's map; the active
 /// functions of an element are G1Basis::face_dofs in that order.
 
 #include <map>
@@ -15,7 +16,7 @@
 #include "spaces/gauss_rule_cache.hpp"
 #include "spaces/g1/g1_basis.hpp"
 #include "spaces/g1/gluing_data.hpp"
-#include "spaces/g1/quad_mesh.hpp"
+#include "spaces/g1/patch_mesh.hpp"
 #include "spaces/space.hpp"
 
 namespace iga {
@@ -24,7 +25,7 @@ class G1Space final : public Space {
  public:
   /// Build on `mesh` with degree k. Throws InputError when k is below the degree the local
   /// construction needs on this mesh (the message names the smallest degree that works).
-  G1Space(std::shared_ptr<const QuadMesh> mesh, int k);
+  G1Space(std::shared_ptr<const PatchMesh> mesh, int k);
 
   std::unique_ptr<Evaluator> make_evaluator() const override;
   std::string type() const override { return "g1"; }
@@ -34,7 +35,7 @@ class G1Space final : public Space {
   int dimension() const override { return basis_.dimension(); }
   void element_dofs(int element, std::vector<int>& out) const override { out = basis_.face_dofs[element]; }
   int num_elements() const override { return mesh_->num_faces(); }
-  CellShape cell_shape(int) const override { return CellShape::quadrilateral; }
+  CellShape cell_shape(int element) const override { return mesh_->shape(element); }
   double mesh_size() const override { return mesh_size_; }
   int degree() const override { return basis_.degree; }
   int continuity() const override { return 1; }  // physical C1 by construction (route A)
@@ -52,14 +53,14 @@ class G1Space final : public Space {
   /// gradient_jump_samples(k) points per edge (gradient_jump.hpp).
   std::optional<double> max_gradient_jump(const Eigen::VectorXd& coefficients) const override;
 
-  const QuadMesh& mesh() const { return *mesh_; }
+  const PatchMesh& mesh() const { return *mesh_; }
   const std::vector<EdgeGluing>& gluing() const { return gluing_; }
   const G1Basis& basis() const { return basis_; }
 
  private:
   class G1Evaluator;
 
-  std::shared_ptr<const QuadMesh> mesh_;
+  std::shared_ptr<const PatchMesh> mesh_;
   std::vector<EdgeGluing> gluing_;
   G1Basis basis_;
   double mesh_size_ = 0.0;

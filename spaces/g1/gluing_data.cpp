@@ -17,7 +17,7 @@ Eigen::Vector3d quadratic_through(double v0, double vh, double v1) {
 }
 
 /// Physical tangent e and cross directions w1, w2 at parameter t.
-void physical_vectors(const QuadMesh& mesh, const EdgeFrame& fr, double t, Point2& e, Point2& e2, Point2& w1,
+void physical_vectors(const PatchMesh& mesh, const EdgeFrame& fr, double t, Point2& e, Point2& e2, Point2& w1,
                       Point2& w2) {
   const Eigen::Matrix2d j1 = mesh.map(fr.face1, fr.start1 + t * fr.tangent1).jacobian;
   const Eigen::Matrix2d j2 = mesh.map(fr.face2, fr.start2 + t * fr.tangent2).jacobian;
@@ -31,32 +31,51 @@ void physical_vectors(const QuadMesh& mesh, const EdgeFrame& fr, double t, Point
 
 double eval_poly(const Eigen::Vector3d& p, double t) { return p[0] + t * (p[1] + t * p[2]); }
 
-EdgeFrame edge_frame(const QuadMesh& mesh, int edge) {
+EdgeFrame edge_frame(const PatchMesh& mesh, int edge) {
   const MeshEdge& me = mesh.edge(edge);
   EdgeFrame fr;
   fr.face1 = me.first.face;
   const int e1 = me.first.local_edge;
-  fr.start1 = reference_corner(e1);
-  fr.tangent1 = reference_corner(e1 + 1) - fr.start1;
-  fr.cross1 = reference_corner(e1 - 1) - fr.start1;
+  const CellShape s1 = mesh.shape(fr.face1);
+  fr.start1 = reference_corner(s1, e1);
+  fr.tangent1 = reference_corner(s1, e1 + 1) - fr.start1;
+  fr.cross1 = reference_corner(s1, e1 - 1) - fr.start1;
   if (!me.boundary()) {
     fr.face2 = me.second.face;
     const int e2 = me.second.local_edge;  // runs Y -> X on the second face
-    fr.start2 = reference_corner(e2 + 1);
-    fr.tangent2 = reference_corner(e2) - fr.start2;
-    fr.cross2 = reference_corner(e2 + 2) - fr.start2;
+    const CellShape s2 = mesh.shape(fr.face2);
+    fr.start2 = reference_corner(s2, e2 + 1);
+    fr.tangent2 = reference_corner(s2, e2) - fr.start2;
+    fr.cross2 = reference_corner(s2, e2 + 2) - fr.start2;
   }
   return fr;
 }
 
-std::vector<EdgeGluing> gluing_from_geometry(const QuadMesh& mesh) {
+namespace {
+
+/// Whether the cross edges of the two faces at the far end Y (towards their other neighbours of
+/// Y) are collinear: the edge is crossing at Y (notes §1.7, computed from the geometry).
+bool crossing_at_far_end(const PatchMesh& mesh, int edge) {
+  const MeshEdge& me = mesh.edge(edge);
+  const int f1 = me.first.face, f2 = me.second.face;
+  const CellShape s1 = mesh.shape(f1), s2 = mesh.shape(f2);
+  const int e1 = me.first.local_edge, e2 = me.second.local_edge;
+  const Point2 y1 = reference_corner(s1, e1 + 1), y2 = reference_corner(s2, e2);
+  const Point2 w1 = mesh.map(f1, y1).jacobian * (reference_corner(s1, e1 + 2) - y1);
+  const Point2 w2 = mesh.map(f2, y2).jacobian * (reference_corner(s2, e2 - 1) - y2);
+  return std::abs(det2(w1, w2)) <= 1e-10 * w1.norm() * w2.norm();
+}
+
+}  // namespace
+
+std::vector<EdgeGluing> gluing_from_geometry(const PatchMesh& mesh) {
   std::vector<EdgeGluing> out(mesh.num_edges());
   for (int id = 0; id < mesh.num_edges(); ++id) {
     if (mesh.edge(id).boundary()) continue;
     const EdgeFrame fr = edge_frame(mesh, id);
     const double ts[3] = {0.0, 0.5, 1.0};
     double av[3], bv[3], cv[3];
-    double wnorm[3];
+    double wnorm[3] = {0.0, 0.0, 0.0};
     const std::string where = mesh.name() + ": edge " + std::to_string(id) + " (patches " +
                               std::to_string(fr.face1) + ", " + std::to_string(fr.face2) + ")";
     for (int s = 0; s < 3; ++s) {
@@ -74,8 +93,10 @@ std::vector<EdgeGluing> gluing_from_geometry(const QuadMesh& mesh) {
     g.a = quadratic_through(av[0], av[1], av[2]);
     g.b = quadratic_through(bv[0], bv[1], bv[2]);
     g.c = quadratic_through(cv[0], cv[1], cv[2]);
+    g.triangle1 = mesh.shape(fr.face1) == CellShape::triangle;
+    g.triangle2 = mesh.shape(fr.face2) == CellShape::triangle;
     g.crossing_x = std::abs(av[0]) <= 1e-10 * wnorm[0];
-    g.crossing_y = std::abs(av[2]) <= 1e-10 * wnorm[2];
+    g.crossing_y = crossing_at_far_end(mesh, id);
     const double scale = std::max(std::abs(cv[0]), std::abs(cv[2]));
     g.a /= scale;
     g.b /= scale;
@@ -104,7 +125,7 @@ std::vector<EdgeGluing> gluing_from_geometry(const QuadMesh& mesh) {
   return out;
 }
 
-Eigen::Matrix2d vertex_jet_product(const QuadMesh& mesh, const std::vector<EdgeGluing>& gluing, int v) {
+Eigen::Matrix2d vertex_jet_product(const PatchMesh& mesh, const std::vector<EdgeGluing>& gluing, int v) {
   const VertexFan& fan = mesh.fan(v);
   Eigen::Matrix2d p = Eigen::Matrix2d::Identity();
   for (int i = 0; i < static_cast<int>(fan.face.size()); ++i) {
@@ -116,9 +137,10 @@ Eigen::Matrix2d vertex_jet_product(const QuadMesh& mesh, const std::vector<EdgeG
       a0 = eval_poly(g.a, 0.0) / eval_poly(g.c, 0.0);
       b0 = eval_poly(g.b, 0.0) / eval_poly(g.c, 0.0);
     } else {
-      // Rule (i) of §1.6 for quads: [a, c, b](1) with the roles exchanged.
-      a0 = eval_poly(g.a, 1.0) / eval_poly(g.b, 1.0);
-      b0 = eval_poly(g.c, 1.0) / eval_poly(g.b, 1.0);
+      // Rule (i) of §1.6: [a + δ₂ b − δ₁ c, c, b](1) with the roles exchanged.
+      const double a1 = eval_poly(g.a, 1.0), b1 = eval_poly(g.b, 1.0), c1 = eval_poly(g.c, 1.0);
+      a0 = (a1 + (g.triangle2 ? b1 : 0.0) - (g.triangle1 ? c1 : 0.0)) / b1;
+      b0 = c1 / b1;
     }
     Eigen::Matrix2d m;
     m << 0.0, 1.0, b0, a0;
@@ -128,13 +150,12 @@ Eigen::Matrix2d vertex_jet_product(const QuadMesh& mesh, const std::vector<EdgeG
 }
 
 int syzygy_dimension(const EdgeGluing& g, int k) {
-  // Unknown monomial coefficients: A (k), B (k+1), C (k+1); product degree <= k+1.
-  const int na = k, nb = k + 1, nc = k + 1;
-  Eigen::MatrixXd m = Eigen::MatrixXd::Zero(k + 2, na + nb + nc);
+  // Unknown monomial coefficients: A (k), B (k+1-δ₂), C (k+1-δ₁); product degree <= k+2.
+  const int na = k, nb = k + 1 - (g.triangle2 ? 1 : 0), nc = k + 1 - (g.triangle1 ? 1 : 0);
+  Eigen::MatrixXd m = Eigen::MatrixXd::Zero(k + 3, na + nb + nc);
   auto add = [&](const Eigen::Vector3d& poly, int offset, int count) {
     for (int j = 0; j < count; ++j)
-      for (int d = 0; d < 3; ++d)
-        if (j + d <= k + 1) m(j + d, offset + j) += poly[d];
+      for (int d = 0; d < 3; ++d) m(j + d, offset + j) += poly[d];
   };
   add(g.a, 0, na);
   add(g.b, na, nb);
@@ -147,7 +168,7 @@ int syzygy_dimension(const EdgeGluing& g, int k) {
   return na + nb + nc - rank;
 }
 
-bool crossing_at(const QuadMesh& mesh, const std::vector<EdgeGluing>& gluing, int e, int v) {
+bool crossing_at(const PatchMesh& mesh, const std::vector<EdgeGluing>& gluing, int e, int v) {
   const EdgeGluing& g = gluing[e];
   if (g.edge < 0) return false;
   return mesh.edge(e).x == v ? g.crossing_x : g.crossing_y;

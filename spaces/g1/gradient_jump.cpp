@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <Eigen/Dense>
 
-#include "spaces/g1/bernstein_quad.hpp"
+#include "spaces/g1/bernstein_face.hpp"
 
 namespace iga {
 
@@ -12,8 +12,8 @@ int gradient_jump_samples(int k) { return 2 * k + 4; }
 namespace {
 
 /// Physical gradient at reference point uv of face f with Bernstein coefficients c.
-Eigen::Vector2d physical_gradient(const QuadMesh& mesh, int k, int f, const Eigen::VectorXd& c, const Point2& uv) {
-  const Eigen::MatrixXd jet = bernstein_tensor_jet(k, uv);
+Eigen::Vector2d physical_gradient(const PatchMesh& mesh, int k, int f, const Eigen::VectorXd& c, const Point2& uv) {
+  const Eigen::MatrixXd jet = bernstein_jet(mesh.shape(f), k, uv);
   const Eigen::Vector2d ref(jet.row(1).dot(c), jet.row(2).dot(c));
   const Eigen::Matrix2d j = mesh.map(f, uv).jacobian;
   return j.transpose().partialPivLu().solve(ref);  // ∇̂u = Jᵀ ∇u
@@ -21,7 +21,7 @@ Eigen::Vector2d physical_gradient(const QuadMesh& mesh, int k, int f, const Eige
 
 }  // namespace
 
-double max_gradient_jump(const QuadMesh& mesh, int k, const std::vector<Eigen::VectorXd>& face_coefficients) {
+double max_gradient_jump(const PatchMesh& mesh, int k, const std::vector<Eigen::VectorXd>& face_coefficients) {
   const int n = gradient_jump_samples(k);
   double jump = 0.0;
   for (int e = 0; e < mesh.num_edges(); ++e) {
@@ -31,8 +31,8 @@ double max_gradient_jump(const QuadMesh& mesh, int k, const std::vector<Eigen::V
     for (int s = 0; s < n; ++s) {
       const double t = static_cast<double>(s) / (n - 1);
       // `second` traverses the edge in the opposite direction: parameter 1 - t is the same point.
-      const Point2 uv1 = reference_edge_point(CellShape::quadrilateral, edge.first.local_edge, t);
-      const Point2 uv2 = reference_edge_point(CellShape::quadrilateral, edge.second.local_edge, 1.0 - t);
+      const Point2 uv1 = reference_edge_point(mesh.shape(f1), edge.first.local_edge, t);
+      const Point2 uv2 = reference_edge_point(mesh.shape(f2), edge.second.local_edge, 1.0 - t);
       const Eigen::Vector2d g1 = physical_gradient(mesh, k, f1, face_coefficients[f1], uv1);
       const Eigen::Vector2d g2 = physical_gradient(mesh, k, f2, face_coefficients[f2], uv2);
       jump = std::max(jump, (g1 - g2).norm());

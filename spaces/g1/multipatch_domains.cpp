@@ -1,5 +1,6 @@
 #include "spaces/g1/multipatch_domains.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -7,28 +8,29 @@ namespace iga {
 
 namespace {
 
-double shoelace(const std::array<Point2, 4>& p) {
+double shoelace(const PatchCorners& p) {
   double a = 0.0;
-  for (int i = 0; i < 4; ++i) a += p[i].x() * p[(i + 1) % 4].y() - p[(i + 1) % 4].x() * p[i].y();
+  const size_t n = p.size();
+  for (size_t i = 0; i < n; ++i) a += p[i].x() * p[(i + 1) % n].y() - p[(i + 1) % n].x() * p[i].y();
   return a;
 }
 
 /// Tensor-order control points (0,0),(1,0),(0,1),(1,1) to cyclic order.
-std::array<Point2, 4> tensor(Point2 p00, Point2 p10, Point2 p01, Point2 p11) { return {p00, p10, p11, p01}; }
+PatchCorners tensor(Point2 p00, Point2 p10, Point2 p01, Point2 p11) { return {p00, p10, p11, p01}; }
 
 }  // namespace
 
-QuadMesh mesh_from_patches(const std::vector<std::array<Point2, 4>>& patches, const std::string& name) {
+PatchMesh mesh_from_patches(const std::vector<PatchCorners>& patches, const std::string& name) {
   double size = 0.0;
   for (const auto& p : patches)
     for (const Point2& x : p) size = std::max(size, x.cwiseAbs().maxCoeff());
   const double tol = 1e-12 * std::max(size, 1.0);
   std::vector<Point2> vertices;
-  std::vector<std::array<int, 4>> faces;
+  std::vector<std::vector<int>> faces;
   for (auto p : patches) {
-    if (shoelace(p) < 0.0) std::swap(p[1], p[3]);
-    std::array<int, 4> f{};
-    for (int c = 0; c < 4; ++c) {
+    if (shoelace(p) < 0.0) std::reverse(p.begin() + 1, p.end());
+    std::vector<int> f(p.size());
+    for (size_t c = 0; c < p.size(); ++c) {
       int found = -1;
       for (int v = 0; v < static_cast<int>(vertices.size()) && found < 0; ++v)
         if ((vertices[v] - p[c]).cwiseAbs().maxCoeff() <= tol) found = v;
@@ -40,14 +42,15 @@ QuadMesh mesh_from_patches(const std::vector<std::array<Point2, 4>>& patches, co
     }
     faces.push_back(f);
   }
-  return QuadMesh(std::move(vertices), std::move(faces), name);
+  return PatchMesh(std::move(vertices), std::move(faces), name);
 }
 
 std::vector<std::string> multipatch_domain_names() {
-  return {"3p_square", "5p_square", "pentagon", "5p_pentagon", "3p_hexagon", "lshape_8p"};
+  return {"3p_square", "5p_square",     "pentagon", "5p_pentagon", "3p_hexagon", "lshape_8p",
+          "4t_crisscross", "4t_star", "2q2t_square"};
 }
 
-QuadMesh multipatch_domain(const std::string& name) {
+PatchMesh multipatch_domain(const std::string& name) {
   using P = Point2;
   if (name == "3p_square")
     return mesh_from_patches({tensor(P(0, 0), P(0.4, 0), P(0, 1), P(0.6, 0.6)),
@@ -70,7 +73,7 @@ QuadMesh multipatch_domain(const std::string& name) {
     }
     for (int i = 0; i < 5; ++i) m[i] = 0.5 * (v[i] + v[(i + 1) % 5]);
     const P o(0.07, -0.04);
-    std::vector<std::array<P, 4>> patches;
+    std::vector<PatchCorners> patches;
     for (int i = 0; i < 5; ++i) patches.push_back({o, m[(i + 4) % 5], v[i], m[i]});
     return mesh_from_patches(patches, name);
   }
@@ -101,6 +104,16 @@ QuadMesh multipatch_domain(const std::string& name) {
                               tensor(P(-u, u), P(u, u), P(-t, t), P(u, t)),
                               tensor(P(-1, 1), P(1, 1), P(-u, u), P(u, u)),
                               tensor(P(u, t), P(u, u), P(1, 0), P(1, 1))},
+                             name);
+  }
+  if (name == "4t_crisscross" || name == "4t_star") {
+    const P c = name == "4t_crisscross" ? P(0.5, 0.5) : P(0.45, 0.6);
+    return mesh_from_patches({{P(0, 0), P(1, 0), c}, {P(1, 0), P(1, 1), c}, {P(1, 1), P(0, 1), c}, {P(0, 1), P(0, 0), c}},
+                             name);
+  }
+  if (name == "2q2t_square") {
+    const P e(0.55, 0.45), right(1, 0.5), left(0, 0.5);
+    return mesh_from_patches({{P(0, 0), P(1, 0), right, e}, {right, P(1, 1), e}, {P(1, 1), P(0, 1), left, e}, {left, P(0, 0), e}},
                              name);
   }
   throw std::invalid_argument("unknown multipatch domain '" + name + "'");

@@ -1,4 +1,4 @@
-#include "spaces/g1/quad_mesh.hpp"
+#include "spaces/g1/patch_mesh.hpp"
 
 #include <Eigen/Dense>
 #include <algorithm>
@@ -10,9 +10,11 @@
 
 namespace iga {
 
-Point2 reference_corner(int c) {
-  static const Point2 corners[4] = {{0.0, 0.0}, {1.0, 0.0}, {1.0, 1.0}, {0.0, 1.0}};
-  return corners[((c % 4) + 4) % 4];
+Point2 reference_corner(CellShape shape, int c) {
+  static const Point2 square[4] = {{0.0, 0.0}, {1.0, 0.0}, {1.0, 1.0}, {0.0, 1.0}};
+  static const Point2 triangle[3] = {{0.0, 0.0}, {1.0, 0.0}, {0.0, 1.0}};
+  if (shape == CellShape::triangle) return triangle[((c % 3) + 3) % 3];
+  return square[((c % 4) + 4) % 4];
 }
 
 namespace {
@@ -23,44 +25,78 @@ std::string patch_name(const std::string& mesh, int f) {
 
 }  // namespace
 
-QuadMesh::QuadMesh(std::vector<Point2> vertices, std::vector<std::array<int, 4>> faces, std::string name)
-    : vertices_(std::move(vertices)), faces_(std::move(faces)), name_(std::move(name)) {
+PatchMesh::PatchMesh(std::vector<Point2> vertices, std::vector<std::vector<int>> faces, std::string name,
+                     BoundaryGroups groups)
+    : vertices_(std::move(vertices)), faces_(std::move(faces)), name_(std::move(name)), groups_(std::move(groups)) {
   if (faces_.empty()) throw InputError(name_ + ": a multipatch mesh needs at least one patch");
   for (int f = 0; f < num_faces(); ++f) {
     const auto& q = faces_[f];
-    for (int c = 0; c < 4; ++c) {
+    const int n = num_corners(f);
+    if (n != 3 && n != 4)
+      throw InputError(patch_name(name_, f) + " has " + std::to_string(n) +
+                       " corners (patches are triangles or quadrilaterals)");
+    for (int c = 0; c < n; ++c) {
       if (q[c] < 0 || q[c] >= num_vertices())
         throw InputError(patch_name(name_, f) + " refers to vertex " + std::to_string(q[c]) + " of " +
                          std::to_string(num_vertices()));
       for (int d = 0; d < c; ++d)
         if (q[c] == q[d]) throw InputError(patch_name(name_, f) + " repeats a corner vertex");
     }
-    // det DG of a bilinear map is affine in u and in v: positive at the corners <=> positive inside.
+    // det DG of a bilinear map is affine in u and in v (constant for a triangle): positive at the
+    // corners <=> positive inside.
     const double scale = std::max(diameter(f), 1e-300);
     int positive = 0, negative = 0;
-    for (int c = 0; c < 4; ++c) {
-      const double det = map(f, reference_corner(c)).jacobian.determinant();
+    for (int c = 0; c < n; ++c) {
+      const double det = map(f, reference_corner(shape(f), c)).jacobian.determinant();
       if (det > 1e-12 * scale * scale) ++positive;
       else if (det < -1e-12 * scale * scale) ++negative;
     }
-    if (negative == 4) throw InputError(patch_name(name_, f) + " is inverted (corners listed clockwise)");
-    if (positive != 4)
+    if (negative == n) throw InputError(patch_name(name_, f) + " is inverted (corners listed clockwise)");
+    if (positive != n)
       throw InputError(patch_name(name_, f) +
-                       " is folded or degenerate (det DG changes sign or vanishes at a corner: not strictly convex)");
+                       (n == 3 ? std::string(" is degenerate (its corners are collinear)")
+                               : std::string(" is folded or degenerate (det DG changes sign or vanishes at a corner: "
+                                             "not strictly convex)")));
   }
   build_topology();
   build_fans();
+  check_groups();
 }
 
-void QuadMesh::build_topology() {
+int PatchMesh::find_edge(int a, int b) const {
+  const auto it = edge_ids_.find({std::min(a, b), std::max(a, b)});
+  return it == edge_ids_.end() ? -1 : it->second;
+}
+
+void PatchMesh::check_groups() const {
+  for (const auto& [group, edges] : groups_) {
+    if (group == "all")
+      throw InputError(name_ + ": boundary group name 'all' is reserved (every boundary edge); rename it");
+    for (const auto& [a, b] : edges) {
+      const int e = find_edge(a, b);
+      if (e < 0 || !edges_[e].boundary())
+        throw InputError(name_ + ": boundary group '" + group + "' has the edge between vertices " + std::to_string(a) +
+                         " and " + std::to_string(b) + ", which is not a boundary edge");
+    }
+  }
+}
+
+bool PatchMesh::has_triangles() const {
+  for (const auto& f : faces_)
+    if (f.size() == 3) return true;
+  return false;
+}
+
+void PatchMesh::build_topology() {
   // Key: unordered vertex pair. Value: the face sides using it.
   std::map<std::pair<int, int>, std::vector<FaceEdge>> uses;
   for (int f = 0; f < num_faces(); ++f)
-    for (int e = 0; e < 4; ++e) {
-      const int a = faces_[f][e], b = faces_[f][(e + 1) % 4];
+    for (int e = 0, n = num_corners(f); e < n; ++e) {
+      const int a = faces_[f][e], b = faces_[f][(e + 1) % n];
       uses[{std::min(a, b), std::max(a, b)}].push_back({f, e});
     }
-  face_edges_.assign(num_faces(), {-1, -1, -1, -1});
+  face_edges_.resize(num_faces());
+  for (int f = 0; f < num_faces(); ++f) face_edges_[f].assign(num_corners(f), -1);
   for (const auto& [key, list] : uses) {
     if (list.size() > 2) {
       std::ostringstream s;
@@ -72,7 +108,7 @@ void QuadMesh::build_topology() {
     MeshEdge edge;
     edge.first = list[0];
     edge.x = faces_[list[0].face][list[0].local_edge];
-    edge.y = faces_[list[0].face][(list[0].local_edge + 1) % 4];
+    edge.y = faces_[list[0].face][(list[0].local_edge + 1) % num_corners(list[0].face)];
     if (list.size() == 2) {
       edge.second = list[1];
       const int x2 = faces_[list[1].face][list[1].local_edge];
@@ -81,17 +117,18 @@ void QuadMesh::build_topology() {
                          " traverse their shared edge in the same direction (inconsistent orientation)");
     }
     const int id = num_edges();
+    edge_ids_[key] = id;
     edges_.push_back(edge);
     for (const FaceEdge& fe : list) face_edges_[fe.face][fe.local_edge] = id;
   }
 }
 
-void QuadMesh::build_fans() {
+void PatchMesh::build_fans() {
   // Faces at each vertex, then walk counterclockwise: from face i at corner c the next face is the
   // neighbour across local edge c-1 (the edge from the vertex to corner c-1).
   std::vector<std::vector<std::pair<int, int>>> at(num_vertices());
   for (int f = 0; f < num_faces(); ++f)
-    for (int c = 0; c < 4; ++c) at[faces_[f][c]].push_back({f, c});
+    for (int c = 0; c < num_corners(f); ++c) at[faces_[f][c]].push_back({f, c});
   fans_.assign(num_vertices(), VertexFan{});
   auto other_side = [&](int edge_id, int face) -> FaceEdge {
     const MeshEdge& e = edges_[edge_id];
@@ -115,7 +152,7 @@ void QuadMesh::build_fans() {
       fan.face.push_back(f);
       fan.corner.push_back(c);
       fan.edge.push_back(face_edges_[f][c]);
-      const int next_edge = face_edges_[f][(c + 3) % 4];
+      const int next_edge = face_edges_[f][(c + num_corners(f) - 1) % num_corners(f)];
       const FaceEdge n = other_side(next_edge, f);
       if (n.face < 0) {
         fan.edge.push_back(next_edge);
@@ -132,11 +169,20 @@ void QuadMesh::build_fans() {
   }
 }
 
-GeometryJet QuadMesh::map(int f, const Point2& uv) const {
+GeometryJet PatchMesh::map(int f, const Point2& uv) const {
   const auto& q = faces_[f];
-  const Point2 &p0 = vertices_[q[0]], &p1 = vertices_[q[1]], &p2 = vertices_[q[2]], &p3 = vertices_[q[3]];
   const double u = uv.x(), v = uv.y();
   GeometryJet g;
+  if (q.size() == 3) {
+    const Point2 &p0 = vertices_[q[0]], &p1 = vertices_[q[1]], &p2 = vertices_[q[2]];
+    g.x = p0 + u * (p1 - p0) + v * (p2 - p0);
+    g.jacobian.col(0) = p1 - p0;
+    g.jacobian.col(1) = p2 - p0;
+    g.hessian_x.setZero();
+    g.hessian_y.setZero();
+    return g;
+  }
+  const Point2 &p0 = vertices_[q[0]], &p1 = vertices_[q[1]], &p2 = vertices_[q[2]], &p3 = vertices_[q[3]];
   g.x = (1 - u) * (1 - v) * p0 + u * (1 - v) * p1 + u * v * p2 + (1 - u) * v * p3;
   g.jacobian.col(0) = (1 - v) * (p1 - p0) + v * (p2 - p3);
   g.jacobian.col(1) = (1 - u) * (p3 - p0) + u * (p2 - p1);
@@ -146,38 +192,55 @@ GeometryJet QuadMesh::map(int f, const Point2& uv) const {
   return g;
 }
 
-double QuadMesh::diameter(int f) const {
+double PatchMesh::diameter(int f) const {
   double h = 0.0;
-  for (int a = 0; a < 4; ++a)
-    for (int b = a + 1; b < 4; ++b) h = std::max(h, (vertices_[faces_[f][a]] - vertices_[faces_[f][b]]).norm());
+  const int n = num_corners(f);
+  for (int a = 0; a < n; ++a)
+    for (int b = a + 1; b < n; ++b) h = std::max(h, (vertices_[faces_[f][a]] - vertices_[faces_[f][b]]).norm());
   return h;
 }
 
-bool QuadMesh::is_parallelogram(int f) const {
+bool PatchMesh::is_affine(int f) const {
   const auto& q = faces_[f];
+  if (q.size() == 3) return true;
   const Point2 twist = vertices_[q[0]] - vertices_[q[1]] + vertices_[q[2]] - vertices_[q[3]];
   return twist.norm() <= 1e-14 * diameter(f);
 }
 
-QuadMesh QuadMesh::refined() const {
+PatchMesh PatchMesh::refined() const {
   std::vector<Point2> v = vertices_;
   std::vector<int> mid(num_edges(), -1);
   for (int e = 0; e < num_edges(); ++e) {
     mid[e] = static_cast<int>(v.size());
     v.push_back(0.5 * (vertices_[edges_[e].x] + vertices_[edges_[e].y]));
   }
-  std::vector<std::array<int, 4>> faces;
+  std::vector<std::vector<int>> faces;
   faces.reserve(4 * faces_.size());
   for (int f = 0; f < num_faces(); ++f) {
+    const auto& q = faces_[f];
+    const int n = num_corners(f);
+    std::vector<int> m(n);
+    for (int e = 0; e < n; ++e) m[e] = mid[face_edges_[f][e]];
+    if (n == 3) {
+      // Corner children keep corner c; the middle triangle is the medial one (counterclockwise:
+      // it is the parent turned by 180 degrees).
+      for (int c = 0; c < 3; ++c) faces.push_back({q[c], m[c], m[(c + 2) % 3]});
+      faces.push_back({m[0], m[1], m[2]});
+      continue;
+    }
     const int centre = static_cast<int>(v.size());
     v.push_back(map(f, Point2(0.5, 0.5)).x);
-    const auto& q = faces_[f];
-    int m[4];
-    for (int e = 0; e < 4; ++e) m[e] = mid[face_edges_[f][e]];
     // Child c keeps corner c: (corner c, mid of edge c, centre, mid of edge c-1), counterclockwise.
     for (int c = 0; c < 4; ++c) faces.push_back({q[c], m[c], centre, m[(c + 3) % 4]});
   }
-  return QuadMesh(std::move(v), std::move(faces), name_);
+  BoundaryGroups groups;
+  for (const auto& [group, edges] : groups_)
+    for (const auto& [a, b] : edges) {
+      const int m = mid[find_edge(a, b)];
+      groups[group].push_back({a, m});
+      groups[group].push_back({m, b});
+    }
+  return PatchMesh(std::move(v), std::move(faces), name_, std::move(groups));
 }
 
 }  // namespace iga
