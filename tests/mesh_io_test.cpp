@@ -3,11 +3,10 @@
 
 #include <gtest/gtest.h>
 
-#include <filesystem>
-#include <fstream>
 #include <algorithm>
 #include <set>
 
+#include "scratch_files.hpp"
 #include "solver/errors.hpp"
 #include "spaces/mesh_io/mesh_polygon.hpp"
 #include "spaces/mesh_io/read_mesh_file.hpp"
@@ -18,17 +17,6 @@ namespace {
 
 const std::string source_dir = IGA_SOURCE_DIR;
 const std::string l_shape_geo = source_dir + "/configs/domains/l_shape.geo";
-
-/// Writes `text` to a fresh file named `name` in a per-test temporary folder; returns its path.
-std::string write_file(const std::string& name, const std::string& text) {
-  const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-  const auto dir = std::filesystem::temp_directory_path() /
-                   ("iga_mesh_io_" + std::string(info->name()) + "_" + std::to_string(::getpid()));
-  std::filesystem::create_directories(dir);
-  const auto path = dir / name;
-  std::ofstream(path) << text;
-  return path.string();
-}
 
 double total_area(const PlanarMesh& m) {
   double a = 0.0;
@@ -105,7 +93,7 @@ TEST(MeshIo, GeoRecombinedGivesQuadrilaterals) {
   const PlanarMesh m = read_mesh_file(l_shape_geo, {0.25, true});
   int quads = 0;
   for (const auto& cell : m.cells) quads += cell.size() == 4;
-  EXPECT_GT(quads, static_cast<int>(m.cells.size()) / 2);
+  EXPECT_EQ(quads, static_cast<int>(m.cells.size()));  // Blossom recombination leaves no triangle here
   EXPECT_NO_THROW(validate_planar_mesh(m));
   EXPECT_NEAR(total_area(m), 3.0, 1e-12);
   EXPECT_EQ(euler_characteristic(m), 1);
@@ -136,16 +124,16 @@ TEST(MeshIo, MshPhysicalCurvesBecomeBoundaryGroups) {
 TEST(MeshIo, ObjTrianglesAndQuadsOnAPlane) {
   // Two unit squares side by side at z = 2: a quad (clockwise in the file, with texture/normal
   // indices) and two triangles (negative indices), plus statements that carry no geometry.
-  const std::string path = write_file("mixed.obj",
-                                      "# mixed mesh\n"
-                                      "o part\n"
-                                      "v 0 0 2\nv 1 0 2\nv 1 1 2\nv 0 1 2\n"
-                                      "vt 0 0\nvn 0 0 1\n"
-                                      "f 1/1/1 4/1/1 3//1 2\n"
-                                      "v 2 0 2\nv 2 1 2\n"
-                                      "s off\n"
-                                      "f 2 -2 -1\n"
-                                      "f 2 6 3\n");
+  const std::string path = test::scratch_file("mixed.obj",
+                                              "# mixed mesh\n"
+                                              "o part\n"
+                                              "v 0 0 2\nv 1 0 2\nv 1 1 2\nv 0 1 2\n"
+                                              "vt 0 0\nvn 0 0 1\n"
+                                              "f 1/1/1 4/1/1 3//1 2\n"
+                                              "v 2 0 2\nv 2 1 2\n"
+                                              "s off\n"
+                                              "f 2 -2 -1\n"
+                                              "f 2 6 3\n");
   const PlanarMesh m = read_mesh_file(path);
   ASSERT_EQ(m.vertices.size(), 6u);
   ASSERT_EQ(m.cells.size(), 3u);
@@ -160,10 +148,10 @@ TEST(MeshIo, ObjTrianglesAndQuadsOnAPlane) {
 }
 
 TEST(MeshIo, OffTrianglesAndQuads) {
-  const std::string path = write_file("mixed.off",
-                                      "OFF\n# a quad and two triangles\n6 3 0\n"
-                                      "0 0 0\n1 0 0\n1 1 0\n0 1 0\n2 0 0\n2 1 0\n"
-                                      "4 0 1 2 3\n3 1 4 5 255 0 0\n3 1 5 2\n");
+  const std::string path = test::scratch_file("mixed.off",
+                                              "OFF\n# a quad and two triangles\n6 3 0\n"
+                                              "0 0 0\n1 0 0\n1 1 0\n0 1 0\n2 0 0\n2 1 0\n"
+                                              "4 0 1 2 3\n3 1 4 5 255 0 0\n3 1 5 2\n");
   const PlanarMesh m = read_mesh_file(path);
   ASSERT_EQ(m.cells.size(), 3u);
   EXPECT_EQ(m.cells[0], (std::vector<int>{0, 1, 2, 3}));
@@ -172,7 +160,8 @@ TEST(MeshIo, OffTrianglesAndQuads) {
   EXPECT_NEAR(total_area(m), 2.0, 1e-15);
   EXPECT_EQ(euler_characteristic(m), 1);
   // Counts on the header line are accepted too.
-  EXPECT_EQ(read_mesh_file(write_file("inline.off", "OFF 3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n")).cells.size(), 1u);
+  EXPECT_EQ(read_mesh_file(test::scratch_file("inline.off", "OFF 3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n")).cells.size(),
+            1u);
 }
 
 TEST(MeshIo, PolygonWithHoleMeshedByGmsh) {
@@ -185,9 +174,11 @@ TEST(MeshIo, PolygonWithHoleMeshedByGmsh) {
   EXPECT_EQ(euler_characteristic(m), 0);
   EXPECT_LE(longest_edge(m), 1.5 * 0.4);
   ASSERT_EQ(m.boundary_groups.size(), 5u);
-  for (const char* side : {"side1", "side2", "side3", "side4"}) EXPECT_NEAR(length(m, m.boundary_groups.at(side)), 3.0, 1e-12);
+  for (const char* side : {"side1", "side2", "side3", "side4"})
+    EXPECT_NEAR(length(m, m.boundary_groups.at(side)), 3.0, 1e-12);
   EXPECT_NEAR(length(m, m.boundary_groups.at("hole1")), 4.0, 1e-12);
-  for (const auto& e : m.boundary_groups.at("side2")) EXPECT_TRUE(m.vertices[e[0]].x() == 3.0 && m.vertices[e[1]].x() == 3.0);
+  for (const auto& e : m.boundary_groups.at("side2"))
+    EXPECT_TRUE(m.vertices[e[0]].x() == 3.0 && m.vertices[e[1]].x() == 3.0);
   EXPECT_NEAR(length(m, boundary_edges(m)), 16.0, 1e-12);
   // Recombined: quadrilaterals, same domain.
   const PlanarMesh q = mesh_polygon(domain, 0.4, true, "polygon");
@@ -197,17 +188,23 @@ TEST(MeshIo, PolygonWithHoleMeshedByGmsh) {
 
 TEST(MeshIo, PolygonRejectionsNameTheSides) {
   using V = Eigen::Vector2d;
-  auto message = [](const PolygonDomain& d) { return input_error([&] { mesh_polygon(d, 0.5, false, "cfg.yaml:3:5: domain"); }); };
-  EXPECT_EQ(message({{V(0, 0), V(1, 1), V(1, 0), V(0, 1)}, {}}),
-            "cfg.yaml:3:5: domain: outer side 1 ((0, 0)-(1, 1)) crosses outer side 3 ((1, 0)-(0, 1)); the polygon must be "
-            "simple");
-  EXPECT_EQ(message({{V(0, 0), V(1, 0)}, {}}), "cfg.yaml:3:5: domain: the outer polygon needs at least 3 vertices (got 2)");
-  EXPECT_EQ(message({{V(0, 0), V(2, 0), V(1, 0), V(1, 1)}, {}}),
-            "cfg.yaml:3:5: domain: outer side 1 ((0, 0)-(2, 0)) folds back onto outer side 2 ((2, 0)-(1, 0)); the polygon "
-            "must be simple");
+  auto message = [](const PolygonDomain& d) {
+    return input_error([&] { mesh_polygon(d, 0.5, false, "cfg.yaml:3:5: domain"); });
+  };
+  EXPECT_EQ(
+      message({{V(0, 0), V(1, 1), V(1, 0), V(0, 1)}, {}}),
+      "cfg.yaml:3:5: domain: outer side 1 ((0, 0)-(1, 1)) crosses outer side 3 ((1, 0)-(0, 1)); the polygon must be "
+      "simple");
+  EXPECT_EQ(message({{V(0, 0), V(1, 0)}, {}}),
+            "cfg.yaml:3:5: domain: the outer polygon needs at least 3 vertices (got 2)");
+  EXPECT_EQ(
+      message({{V(0, 0), V(2, 0), V(1, 0), V(1, 1)}, {}}),
+      "cfg.yaml:3:5: domain: outer side 1 ((0, 0)-(2, 0)) folds back onto outer side 2 ((2, 0)-(1, 0)); the polygon "
+      "must be simple");
   EXPECT_EQ(message({{V(0, 0), V(1, 0), V(1, 1)}, {{V(5, 5), V(6, 5), V(6, 6)}}}),
             "cfg.yaml:3:5: domain: hole 1 is not inside the outer polygon");
-  EXPECT_NE(message({{V(0, 0), V(4, 0), V(4, 4), V(0, 4)}, {{V(1, 1), V(5, 2), V(1, 3)}}}).find("outer side 2 ((4, 0)-(4, 4)) crosses hole 1 side 1"),
+  EXPECT_NE(message({{V(0, 0), V(4, 0), V(4, 4), V(0, 4)}, {{V(1, 1), V(5, 2), V(1, 3)}}})
+                .find("outer side 2 ((4, 0)-(4, 4)) crosses hole 1 side 1"),
             std::string::npos);
 }
 
@@ -245,14 +242,17 @@ TEST(MeshIo, FileErrorsNameTheFileAndLine) {
        "the mesh must lie in a plane z = const"},
   };
   for (const Rejection& c : cases) {
-    const std::string path = write_file(c.file, c.text);
+    const std::string path = test::scratch_file(c.file, c.text);
     const std::string message = input_error([&] { read_mesh_file(path); });
     EXPECT_NE(message.find(c.expected), std::string::npos) << c.file << ": " << message;
     EXPECT_EQ(message.rfind(path, 0), 0u) << "message starts with the file: " << message;
   }
   // A Gmsh error does not spoil the next file (the SDK is restarted after errors).
-  EXPECT_THROW(read_mesh_file(write_file("again.geo", "Line(1) = {1, 2};\n")), InputError);
+  EXPECT_THROW(read_mesh_file(test::scratch_file("again.geo", "Line(1) = {1, 2};\n")), InputError);
   EXPECT_NEAR(total_area(read_mesh_file(l_shape_geo, {0.5, false})), 3.0, 1e-12);
+  const std::string obj = test::scratch_file("options.obj", "v 0 0\nv 1 0\nv 0 1\nf 1 2 3\n");
+  EXPECT_EQ(input_error([&] { read_mesh_file(obj, {0.1, false}); }),
+            obj + ": a mesh size or recombination applies to .geo files only (a mesh is used as it is)");
   const std::string missing = input_error([] { read_mesh_file("/nonexistent/domain.msh"); });
   EXPECT_EQ(missing, "/nonexistent/domain.msh: cannot read the mesh file");
 }
@@ -277,8 +277,9 @@ TEST(MeshIo, ValidationRejectsBadMeshesNamingTheCell) {
   EXPECT_EQ(m, "test.obj: cell 1 (triangle (0, 0), (1, 0), (2, 0)) is degenerate (area 0, longest edge 2)");
   // Clockwise cell (built in code; the readers would have reversed it).
   m = validation_error(mesh_of(square, {{0, 1, 2}, {0, 3, 2}}));
-  EXPECT_EQ(m, "test.obj: cell 1 (triangle (0, 0), (0, 1), (1, 1)) is clockwise (inverted); list its vertices "
-               "counterclockwise");
+  EXPECT_EQ(m,
+            "test.obj: cell 1 (triangle (0, 0), (0, 1), (1, 1)) is clockwise (inverted); list its vertices "
+            "counterclockwise");
   // Non-convex quad (arrowhead): the corner (0.5, 0.3) has a negative Jacobian.
   m = validation_error(mesh_of({V(0, 0), V(1, 0), V(0.5, 0.3), V(0.5, 1)}, {{0, 1, 2, 3}}));
   EXPECT_NE(m.find("cell 0 (quadrilateral (0, 0), (1, 0), (0.5, 0.3), (0.5, 1)) is folded or not convex at corner "
@@ -294,19 +295,22 @@ TEST(MeshIo, ValidationRejectsBadMeshesNamingTheCell) {
   EXPECT_EQ(m, "test.obj: edge (0, 0)-(1, 0) is shared by 3 cells (0, 1, 2): the mesh is not a manifold");
   // Two cells on the same side of their edge: the mesh folds over itself.
   m = validation_error(mesh_of({V(0, 0), V(1, 0), V(0.5, 1), V(0.5, 0.5)}, {{0, 1, 2}, {0, 1, 3}}));
-  EXPECT_EQ(m, "test.obj: cell 0 (triangle (0, 0), (1, 0), (0.5, 1)) and cell 1 (triangle (0, 0), (1, 0), (0.5, 0.5)) "
-               "lie on the same side of their common edge (0, 0)-(1, 0): the mesh folds over itself");
+  EXPECT_EQ(m,
+            "test.obj: cell 0 (triangle (0, 0), (1, 0), (0.5, 1)) and cell 1 (triangle (0, 0), (1, 0), (0.5, 0.5)) "
+            "lie on the same side of their common edge (0, 0)-(1, 0): the mesh folds over itself");
   // An unused vertex.
   m = validation_error(mesh_of({V(0, 0), V(1, 0), V(0, 1), V(5, 5)}, {{0, 1, 2}}));
   EXPECT_EQ(m, "test.obj: vertex 3 (5, 5) belongs to no cell");
   // Duplicate nodes: the two triangles are not connected.
   m = validation_error(mesh_of({V(0, 0), V(1, 0), V(1, 1), V(0, 0), V(1, 1), V(0, 1)}, {{0, 1, 2}, {3, 4, 5}}));
-  EXPECT_EQ(m, "test.obj: vertex 0 (0, 0) and vertex 3 coincide; merge duplicate nodes (cells meeting there are not "
-               "connected)");
+  EXPECT_EQ(m,
+            "test.obj: vertex 0 (0, 0) and vertex 3 coincide; merge duplicate nodes (cells meeting there are not "
+            "connected)");
   // Two triangles touching at one vertex only.
   m = validation_error(mesh_of({V(0, 0), V(1, 0), V(0, 1), V(-1, 0), V(0, -1)}, {{0, 1, 2}, {0, 3, 4}}));
-  EXPECT_EQ(m, "test.obj: the boundary touches itself at vertex 0 (0, 0) (4 boundary edges meet there); cells must be "
-               "connected through edges");
+  EXPECT_EQ(m,
+            "test.obj: the boundary touches itself at vertex 0 (0, 0) (4 boundary edges meet there); cells must be "
+            "connected through edges");
   // Repeated vertex in a cell, vertex out of range, polygon.
   m = validation_error(mesh_of(square, {{0, 1, 1}}));
   EXPECT_NE(m.find("uses vertex 1 twice"), std::string::npos) << m;
@@ -318,8 +322,9 @@ TEST(MeshIo, ValidationRejectsBadMeshesNamingTheCell) {
   PlanarMesh quads = mesh_of(square, {{0, 1, 2, 3}});
   quads.cell_origins = {"line 9"};
   m = validation_error(quads, {true, false, "ws4"});
-  EXPECT_EQ(m, "test.obj: cell 0 (line 9: quadrilateral (0, 0), (1, 0), (1, 1), (0, 1)) is a quadrilateral; the ws4 "
-               "space needs triangles");
+  EXPECT_EQ(m,
+            "test.obj: cell 0 (line 9: quadrilateral (0, 0), (1, 0), (1, 1), (0, 1)) is a quadrilateral; the ws4 "
+            "space needs triangles");
   m = validation_error(mesh_of(square, {{0, 1, 2}, {0, 2, 3}}), {false, true, "g1"});
   EXPECT_NE(m.find("cell 0 (triangle (0, 0), (1, 0), (1, 1)) is a triangle; the g1 space needs quadrilaterals"),
             std::string::npos)

@@ -6,10 +6,15 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <set>
+#include <sstream>
 
+#include <sys/wait.h>
+
+#include "scratch_files.hpp"
 #include "solver/errors.hpp"
 #include "spaces/mesh_io/read_mesh_file.hpp"
 #include "spaces/ws4/ws4_space.hpp"
@@ -87,8 +92,8 @@ problem: {pde: poisson, exact: "exp(0.5*x)*sin(2*y+0.3)", boundary: {all: dirich
 
 TEST(Ws4MeshInput, BuiltInLShape) {
   for (int n : {1, 2}) {
-    const SpacePtr space = test::space_from_yaml("domain: {type: l_shape}\nspace: {type: ws4, elements: " +
-                                                 std::to_string(n) + "}\n");
+    const SpacePtr space =
+        test::space_from_yaml("domain: {type: l_shape}\nspace: {type: ws4, elements: " + std::to_string(n) + "}\n");
     // (2n+1)² grid points minus the n² strictly inside the removed quarter; 2 triangles per square.
     const int v = (2 * n + 1) * (2 * n + 1) - n * n, t = 6 * n * n, e = v + t - 1;
     EXPECT_EQ(space->num_elements(), t);
@@ -126,16 +131,6 @@ problem: {pde: biharmonic, exact: "x^4 - 2*x^2*y^2 + x*y^3 + 3*y - 1", boundary:
   EXPECT_LT(*r.h2, 1e-7);
 }
 
-/// Writes `text` into a per-test temporary folder and returns the path.
-std::string write_file(const std::string& name, const std::string& text) {
-  const auto dir = std::filesystem::temp_directory_path() /
-                   ("iga_ws4_mesh_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) +
-                    "_" + std::to_string(::getpid()));
-  std::filesystem::create_directories(dir);
-  std::ofstream(dir / name) << text;
-  return (dir / name).string();
-}
-
 std::string config_error(const std::string& yaml) {
   try {
     test::space_from_yaml(yaml);
@@ -147,8 +142,9 @@ std::string config_error(const std::string& yaml) {
 }
 
 TEST(Ws4MeshInput, RelativeFilesAreFoundNextToTheConfig) {
-  const std::string obj = write_file("square.obj", "v 0 0\nv 1 0\nv 1 1\nv 0 1\nf 1 2 3\nf 1 3 4\n");
-  const std::string config = write_file("run.yaml", "domain: {type: mesh_file, file: square.obj}\nspace: {type: ws4}\n");
+  const std::string obj = test::scratch_file("square.obj", "v 0 0\nv 1 0\nv 1 1\nv 0 1\nf 1 2 3\nf 1 3 4\n");
+  const std::string config =
+      test::scratch_file("run.yaml", "domain: {type: mesh_file, file: square.obj}\nspace: {type: ws4}\n");
   const ConfigNode root = ConfigNode::load_file(config);
   const SpacePtr space = make_space(root["domain"], root["space"], 1);
   EXPECT_EQ(space->num_elements(), 8);
@@ -163,14 +159,14 @@ TEST(Ws4MeshInput, ConfigErrorsNameTheKeyAndTheTriangle) {
   EXPECT_EQ(m, "test.yaml:1:33: domain.file: /nonexistent/l.msh: cannot read the mesh file");
 
   const std::string flat =
-      write_file("flat.obj", "v 0 0\nv 1 0\nv 0 1\nv 2 0\nf 1 2 3\nf 2 4 3\nf 1 2 4\n");  // cell 2 is a segment
+      test::scratch_file("flat.obj", "v 0 0\nv 1 0\nv 0 1\nv 2 0\nf 1 2 3\nf 2 4 3\nf 1 2 4\n");  // cell 2 is a segment
   m = config_error("domain: {type: mesh_file, file: " + flat + "}\nspace: {type: ws4}\n");
   EXPECT_NE(m.find("test.yaml:1:33: domain.file: " + flat +
                    ": cell 2 (line 7: triangle (0, 0), (1, 0), (2, 0)) is degenerate"),
             std::string::npos)
       << m;
 
-  const std::string quads = write_file("quads.obj", "v 0 0\nv 1 0\nv 1 1\nv 0 1\nf 1 2 3 4\n");
+  const std::string quads = test::scratch_file("quads.obj", "v 0 0\nv 1 0\nv 1 1\nv 0 1\nf 1 2 3 4\n");
   m = config_error("domain: {type: mesh_file, file: " + quads + "}\nspace: {type: ws4}\n");
   EXPECT_NE(m.find("cell 0 (line 5: quadrilateral (0, 0), (1, 0), (1, 1), (0, 1)) is a quadrilateral; the ws4 space "
                    "needs triangles"),
@@ -185,21 +181,52 @@ TEST(Ws4MeshInput, ConfigErrorsNameTheKeyAndTheTriangle) {
             std::string::npos)
       << m;
 
-  const std::string all = write_file("all.geo",
-                                     "Point(1) = {0,0,0,1}; Point(2) = {1,0,0,1}; Point(3) = {0,1,0,1};\n"
-                                     "Line(1) = {1,2}; Line(2) = {2,3}; Line(3) = {3,1};\n"
-                                     "Curve Loop(1) = {1,2,3}; Plane Surface(1) = {1};\n"
-                                     "Physical Curve(\"all\") = {1};\n");
+  const std::string all = test::scratch_file("all.geo",
+                                             "Point(1) = {0,0,0,1}; Point(2) = {1,0,0,1}; Point(3) = {0,1,0,1};\n"
+                                             "Line(1) = {1,2}; Line(2) = {2,3}; Line(3) = {3,1};\n"
+                                             "Curve Loop(1) = {1,2,3}; Plane Surface(1) = {1};\n"
+                                             "Physical Curve(\"all\") = {1};\n");
   m = config_error("domain: {type: mesh_file, file: " + all + "}\nspace: {type: ws4}\n");
   EXPECT_NE(m.find("boundary group name 'all' is reserved"), std::string::npos) << m;
 
-  m = config_error("domain: {type: polygon, vertices: [[0, 0], [1, 1], [1, 0], [0, 1]], mesh_size: 0.5}\n"
-                   "space: {type: ws4}\n");
-  EXPECT_EQ(m, "test.yaml:1:9: domain: polygon: outer side 1 ((0, 0)-(1, 1)) crosses outer side 3 ((1, 0)-(0, 1)); "
-               "the polygon must be simple");
+  m = config_error(
+      "domain: {type: polygon, vertices: [[0, 0], [1, 1], [1, 0], [0, 1]], mesh_size: 0.5}\n"
+      "space: {type: ws4}\n");
+  EXPECT_EQ(m,
+            "test.yaml:1:9: domain: polygon: outer side 1 ((0, 0)-(1, 1)) crosses outer side 3 ((1, 0)-(0, 1)); "
+            "the polygon must be simple");
+
+  // A thin triangle (height 0.03 under a vertex whose shortest edge is 0.5) turned over by the jitter.
+  const std::string thin =
+      test::scratch_file("thin.obj", "v 0 0\nv 1 0\nv 1 1\nv 0 1\nv 0.5 0.03\nf 1 2 5\nf 2 3 5\nf 3 4 5\nf 4 1 5\n");
+  m = config_error("domain: {type: mesh_file, file: " + thin + ", jitter: 0.2, seed: 10}\nspace: {type: ws4}\n");
+  EXPECT_NE(m.find("domain.jitter: the jitter turns over triangle 0 of level 0 (seed 10); use a smaller jitter"),
+            std::string::npos)
+      << m;
 
   m = config_error("domain: {type: l_shape}\nspace: {type: ws4, elements: [2, 3]}\n");
   EXPECT_NE(m.find("space.elements: expected one number N"), std::string::npos) << m;
+}
+
+TEST(Ws4MeshInput, CommandLineExitsWithCode2NamingTheTriangle) {
+  const std::string flat =
+      test::scratch_file("cli_flat.obj", "v 0 0\nv 1 0\nv 0 1\nv 2 0\nf 1 2 3\nf 2 4 3\nf 1 2 4\n");
+  const std::string config = test::scratch_file("cli.yaml",
+                                                "problem: {pde: poisson, exact: \"x*y\", boundary: {all: dirichlet}}\n"
+                                                "domain: {type: mesh_file, file: cli_flat.obj}\n"
+                                                "space: {type: ws4}\n");
+  const std::string out = test::scratch_file("cli_out", ""), err = test::scratch_file("cli.err", "");
+  std::filesystem::remove(out);
+  const int status =
+      std::system((std::string(IGA_RUN_BINARY) + " " + config + " --quiet --output " + out + " 2>" + err).c_str());
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 2);
+  std::stringstream message;
+  message << std::ifstream(err).rdbuf();
+  EXPECT_EQ(message.str(), "iga-run: error: " + config + ":2:33: domain.file: " + flat +
+                               ": cell 2 (line 7: triangle (0, 0), (1, 0), (2, 0)) is degenerate (area 0, longest "
+                               "edge 2)\n");
+  EXPECT_FALSE(std::filesystem::exists(out));  // no result directory for bad input
 }
 
 }  // namespace

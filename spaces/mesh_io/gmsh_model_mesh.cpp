@@ -70,8 +70,9 @@ PlanarMesh planar_mesh_from_gmsh_model(const std::string& source) {
     }
   }
   if (cells.empty())
-    throw InputError(source + ": the mesh has no triangles or quadrilaterals (no meshed surface: a .geo needs a "
-                              "Plane Surface, a .msh its 2D elements)");
+    throw InputError(source +
+                     ": the mesh has no triangles or quadrilaterals (no meshed surface: a .geo needs a "
+                     "Plane Surface, a .msh its 2D elements)");
 
   // Only nodes used by cells become vertices, numbered by node tag.
   std::map<std::size_t, int> vertex_of;

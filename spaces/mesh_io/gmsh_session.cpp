@@ -14,11 +14,18 @@ namespace {
 
 // Options a .geo file or a reader may change; Gmsh 4.8 cannot restore defaults, so their start-up
 // values are saved and put back before every use (one file's settings must not leak into the next).
-const char* const mesh_options[] = {
-    "Mesh.MeshSizeMax",          "Mesh.MeshSizeMin",        "Mesh.MeshSizeFactor",
-    "Mesh.MeshSizeFromPoints",   "Mesh.MeshSizeFromCurvature", "Mesh.MeshSizeExtendFromBoundary",
-    "Mesh.RecombineAll",         "Mesh.RecombinationAlgorithm", "Mesh.Algorithm",
-    "Mesh.ElementOrder",         "Mesh.SubdivisionAlgorithm", "Mesh.SaveAll"};
+const char* const mesh_options[] = {"Mesh.MeshSizeMax",
+                                    "Mesh.MeshSizeMin",
+                                    "Mesh.MeshSizeFactor",
+                                    "Mesh.MeshSizeFromPoints",
+                                    "Mesh.MeshSizeFromCurvature",
+                                    "Mesh.MeshSizeExtendFromBoundary",
+                                    "Mesh.RecombineAll",
+                                    "Mesh.RecombinationAlgorithm",
+                                    "Mesh.Algorithm",
+                                    "Mesh.ElementOrder",
+                                    "Mesh.SubdivisionAlgorithm",
+                                    "Mesh.SaveAll"};
 
 struct GmshProcess {
   GmshProcess() {

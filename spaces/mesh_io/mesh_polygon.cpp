@@ -69,10 +69,12 @@ void check_polygon_domain(const PolygonDomain& domain, const std::string& source
           const bool neighbours = l == m && (j == i + 1 || (i == 0 && j == a.size() - 1));
           const Eigen::Vector2d &p = a[i], &q = a[(i + 1) % a.size()], &r = b[j], &s = b[(j + 1) % b.size()];
           // Neighbours share one vertex; they may only meet there (not overlap along a line).
-          const bool meet = neighbours ? cross(q - p, s - r) == 0.0 && (q - p).dot(s - r) < 0.0 : segments_meet(p, q, r, s);
+          const bool meet =
+              neighbours ? cross(q - p, s - r) == 0.0 && (q - p).dot(s - r) < 0.0 : segments_meet(p, q, r, s);
           if (meet)
-            throw InputError(source + ": " + side_name(loops, l, i) + " " + (neighbours ? "folds back onto" : "crosses") +
-                             " " + side_name(loops, m, j) + "; the polygon must be simple");
+            throw InputError(source + ": " + side_name(loops, l, i) + " " +
+                             (neighbours ? "folds back onto" : "crosses") + " " + side_name(loops, m, j) +
+                             "; the polygon must be simple");
         }
     }
   for (std::size_t l = 1; l < loops.size(); ++l) {
@@ -105,7 +107,8 @@ PlanarMesh mesh_polygon(const PolygonDomain& domain, double mesh_size, bool reco
     gmsh::model::geo::synchronize();
     // Physical groups on the synchronized model (a later geo synchronize would drop them).
     for (std::size_t k = 0; k < loop_lines[0].size(); ++k)
-      gmsh::model::setPhysicalName(1, gmsh::model::addPhysicalGroup(1, {loop_lines[0][k]}), "side" + std::to_string(k + 1));
+      gmsh::model::setPhysicalName(1, gmsh::model::addPhysicalGroup(1, {loop_lines[0][k]}),
+                                   "side" + std::to_string(k + 1));
     for (std::size_t l = 1; l < loop_lines.size(); ++l)
       gmsh::model::setPhysicalName(1, gmsh::model::addPhysicalGroup(1, loop_lines[l]), "hole" + std::to_string(l));
     gmsh::option::setNumber("Mesh.MeshSizeMax", mesh_size);

@@ -39,7 +39,12 @@ std::vector<std::array<int, 2>> boundary_edges(const PlanarMesh& mesh) {
 }
 
 std::string describe_point(const Eigen::Vector2d& x) {
-  return "(" + format_number(x.x()) + ", " + format_number(x.y()) + ")";
+  // Appended piece by piece: "(" + std::string&& trips GCC 12's false -Wrestrict warning.
+  std::string s = "(";
+  s += format_number(x.x());
+  s += ", ";
+  s += format_number(x.y());
+  return s + ")";
 }
 
 std::string describe_cell(const PlanarMesh& mesh, int c) {
@@ -52,7 +57,8 @@ std::string describe_cell(const PlanarMesh& mesh, int c) {
   for (std::size_t k = 0; k < cell.size(); ++k) {
     const int v = cell[k];
     const bool known = v >= 0 && v < static_cast<int>(mesh.vertices.size());
-    s += (k ? ", " : " ") + (known ? describe_point(mesh.vertices[v]) : "vertex " + std::to_string(v) + "?");
+    s += k ? ", " : " ";
+    s += known ? describe_point(mesh.vertices[v]) : "vertex " + std::to_string(v) + "?";
   }
   return s + ")";
 }

@@ -33,12 +33,16 @@ PlanarMesh read_with_gmsh(const std::string& path, const MeshFileOptions& option
 }  // namespace
 
 PlanarMesh read_mesh_file(const std::string& path, const MeshFileOptions& options) {
-  if (!(options.mesh_size >= 0.0)) throw InputError(path + ": mesh size must be >= 0 (got " + format_number(options.mesh_size) + ")");
+  if (!(options.mesh_size >= 0.0))
+    throw InputError(path + ": mesh size must be >= 0 (got " + format_number(options.mesh_size) + ")");
   // Gmsh 4.8 only logs a missing file, so readability is checked here for every format.
   std::ifstream in(path);
   if (!in || std::filesystem::is_directory(path)) throw InputError(path + ": cannot read the mesh file");
   std::string extension = std::filesystem::path(path).extension().string();
-  std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return std::tolower(c); });
+  std::transform(extension.begin(), extension.end(), extension.begin(),
+                 [](unsigned char c) { return std::tolower(c); });
+  if (extension != ".geo" && (options.mesh_size > 0.0 || options.recombine))
+    throw InputError(path + ": a mesh size or recombination applies to .geo files only (a mesh is used as it is)");
   if (extension == ".msh") return read_with_gmsh(path, options, false);
   if (extension == ".geo") return read_with_gmsh(path, options, true);
   if (extension == ".obj") return read_obj_mesh(in, path);

@@ -14,7 +14,8 @@
 /// folds over itself is still caught by validation, as two cells on the same side of an edge).
 /// Gmsh meshes keep only the nodes their 2D cells use and name boundary edges by physical curve;
 /// OBJ and OFF meshes have no boundary groups. Every failure (unreadable file, unknown extension,
-/// syntax, Gmsh error, unsupported element) is an InputError naming the file (and line).
+/// syntax, Gmsh error, unsupported element, options given for a file that is not `.geo`) is an
+/// InputError naming the file (and line).
 
 #include <string>
 

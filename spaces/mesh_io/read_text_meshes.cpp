@@ -107,7 +107,8 @@ PlanarMesh read_off_mesh(std::istream& in, const std::string& source) {
   std::vector<Eigen::Vector3d> points;
   std::vector<std::string> origins;
   for (long v = 0; v < nv; ++v) {
-    if (!reader.next(t)) reader.fail("the file ends after " + std::to_string(v) + " of " + std::to_string(nv) + " vertices");
+    if (!reader.next(t))
+      reader.fail("the file ends after " + std::to_string(v) + " of " + std::to_string(nv) + " vertices");
     if (t.size() != 3) reader.fail("a vertex needs 'x y z'");
     points.emplace_back(reader.number(t[0]), reader.number(t[1]), reader.number(t[2]));
     origins.push_back("line " + std::to_string(reader.line));
@@ -115,10 +116,12 @@ PlanarMesh read_off_mesh(std::istream& in, const std::string& source) {
   PlanarMesh mesh;
   mesh.source = source;
   for (long f = 0; f < nf; ++f) {
-    if (!reader.next(t)) reader.fail("the file ends after " + std::to_string(f) + " of " + std::to_string(nf) + " faces");
+    if (!reader.next(t))
+      reader.fail("the file ends after " + std::to_string(f) + " of " + std::to_string(nf) + " faces");
     const long n = reader.integer(t[0]);
     if (n != 3 && n != 4) reader.fail(cell_kind_error(static_cast<std::size_t>(std::max(n, 0L))));
-    if (static_cast<long>(t.size()) < n + 1) reader.fail("a face lists fewer vertices than its count " + std::to_string(n));
+    if (static_cast<long>(t.size()) < n + 1)
+      reader.fail("a face lists fewer vertices than its count " + std::to_string(n));
     std::vector<int> cell;
     for (long k = 1; k <= n; ++k) {  // tokens after the n indices are colour values
       const long id = reader.integer(t[k]);

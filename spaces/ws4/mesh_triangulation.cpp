@@ -58,11 +58,11 @@ PlanarMesh l_shape_mesh(int n) {
   }
   for (const auto& e : boundary_edges(mesh)) {
     const Eigen::Vector2d &p = mesh.vertices[e[0]], &q = mesh.vertices[e[1]];
-    const std::string side = p.x() == -1 && q.x() == -1 ? "left"
-                             : p.x() == 1 && q.x() == 1 ? "right"
+    const std::string side = p.x() == -1 && q.x() == -1   ? "left"
+                             : p.x() == 1 && q.x() == 1   ? "right"
                              : p.y() == -1 && q.y() == -1 ? "bottom"
-                             : p.y() == 1 && q.y() == 1 ? "top"
-                                                        : "reentrant";
+                             : p.y() == 1 && q.y() == 1   ? "top"
+                                                          : "reentrant";
     mesh.boundary_groups[side].push_back(e);
   }
   return mesh;

@@ -64,8 +64,9 @@ BaseMesh rectangle_mesh(const ConfigNode& domain, const ConfigNode& space, const
 BaseMesh l_shape(const ConfigNode& domain, const ConfigNode& space) {
   domain.check_keys({"type", "jitter", "seed"});
   const int n = element_counts(space, true)[0];
-  return {ws4::triangulation_from_mesh(ws4::l_shape_mesh(n)),
-          "L-shape [-1,1]^2 minus [0,1]x[-1,0], " + std::to_string(n) + "x" + std::to_string(n) + " squares per unit square"};
+  return {ws4::triangulation_from_mesh(ws4::l_shape_mesh(n)), "L-shape [-1,1]^2 minus [0,1]x[-1,0], " +
+                                                                  std::to_string(n) + "x" + std::to_string(n) +
+                                                                  " squares per unit square"};
 }
 
 void reject_elements(const ConfigNode& space, const std::string& type) {
@@ -105,8 +106,8 @@ BaseMesh polygon(const ConfigNode& domain, const ConfigNode& space) {
   // Messages name the domain's place; the mesh's own source stays "polygon".
   const PlanarMesh mesh = at_config(domain, [&] { return mesh_polygon(shape, h, false, "polygon"); });
   return {at_config(domain, [&] { return ws4::triangulation_from_mesh(mesh); }),
-          "polygon with " + std::to_string(shape.outer.size()) + " vertices and " + std::to_string(shape.holes.size()) +
-              " holes, mesh size " + format_number(h) + " (Gmsh)"};
+          "polygon, " + std::to_string(shape.outer.size()) + " vertices, " + std::to_string(shape.holes.size()) +
+              (shape.holes.size() == 1 ? " hole" : " holes") + ", mesh size " + format_number(h) + " (Gmsh)"};
 }
 
 BaseMesh mesh_file(const ConfigNode& domain, const ConfigNode& space) {
@@ -117,7 +118,9 @@ BaseMesh mesh_file(const ConfigNode& domain, const ConfigNode& space) {
   if (path.is_relative()) path = std::filesystem::path(file.file()).parent_path() / path;  // next to the config
   MeshFileOptions options;
   if (const auto hn = domain.find("mesh_size")) {
-    if (path.extension() != ".geo") hn->fail("mesh_size applies to .geo files only (a mesh file is used as it is)");
+    std::string extension = path.extension().string();
+    for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    if (extension != ".geo") hn->fail("mesh_size applies to .geo files only (a mesh file is used as it is)");
     options.mesh_size = hn->as_double();
     if (!(options.mesh_size > 0.0)) hn->fail("mesh_size must be > 0");
   }
@@ -148,6 +151,15 @@ SpacePtr make_ws4_space(const ConfigNode& domain, const ConfigNode& space, int l
     const int seed = domain.has("seed") ? domain["seed"].as_int() : 1;
     // Each level is jittered afresh from the regular refinement (seed + level: reproducible).
     ws4::jitter_interior_vertices(mesh, jitter, static_cast<unsigned>(seed + level));
+    // Thin triangles (possible in file meshes) can be turned over by the moves.
+    for (int t = 0; t < mesh.num_triangles(); ++t) {
+      const auto& v = mesh.triangle(t);
+      const Point2 e1 = mesh.vertices()[v[1]] - mesh.vertices()[v[0]],
+                   e2 = mesh.vertices()[v[2]] - mesh.vertices()[v[0]];
+      if (!(e1.x() * e2.y() - e1.y() * e2.x() > 0.0))
+        jn->fail("the jitter turns over triangle " + std::to_string(t) + " of level " + std::to_string(level) +
+                 " (seed " + std::to_string(seed) + "); use a smaller jitter");
+    }
     std::ostringstream s;
     s << ", interior vertices jittered by " << jitter << " (seed " << seed << ")";
     description += s.str();
