@@ -98,8 +98,14 @@ TEST(G1MeshFile, BadMeshesAreRejectedNamingTheFileAndTheCell) {
   EXPECT_NE(error_of([&] { patch_mesh_from_file(folded, {}); }).find("is folded or not convex"), std::string::npos);
   // Three cells on one edge (non-manifold).
   const std::string three = write_temp(
-      "three.obj", "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 2 0 0\nv 2 1 0\nv 1.5 2 0\nf 1 2 3 4\nf 2 5 6 3\nf 2 3 7\n");
+      "three.obj", "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 2 0 0\nv 2 1 0\nv 1.5 2 0\nf 1 2 3 4\nf 2 5 6 3\nf 3 2 7\n");
   EXPECT_NE(error_of([&] { patch_mesh_from_file(three, {}); }).find("is shared by 3 cells"), std::string::npos);
+  // Inconsistent orientation: the second patch is listed clockwise, the first counterclockwise.
+  const std::string turned =
+      write_temp("turned.obj", "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 2 0 0\nv 2 1 0\nf 1 2 3 4\nf 2 3 6 5\n");
+  EXPECT_NE(error_of([&] { patch_mesh_from_file(turned, {}); })
+                .find("turned.obj: cell 1 (line 8: quadrilateral (1, 0), (1, 1), (2, 1), (2, 0)) is listed clockwise"),
+            std::string::npos);
   // A mesh folding over itself: two cells on the same side of their common edge.
   const std::string overlap =
       write_temp("overlap.off", "OFF\n5 2 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n0.5 0.5 0\n4 0 1 2 3\n3 0 1 4\n");

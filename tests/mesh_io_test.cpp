@@ -122,8 +122,8 @@ TEST(MeshIo, MshPhysicalCurvesBecomeBoundaryGroups) {
 }
 
 TEST(MeshIo, ObjTrianglesAndQuadsOnAPlane) {
-  // Two unit squares side by side at z = 2: a quad (clockwise in the file, with texture/normal
-  // indices) and two triangles (negative indices), plus statements that carry no geometry.
+  // Two unit squares side by side at z = 2: a quad (with texture/normal indices) and two triangles
+  // (negative indices), all clockwise in the file, plus statements that carry no geometry.
   const std::string path = test::scratch_file("mixed.obj",
                                               "# mixed mesh\n"
                                               "o part\n"
@@ -132,8 +132,8 @@ TEST(MeshIo, ObjTrianglesAndQuadsOnAPlane) {
                                               "f 1/1/1 4/1/1 3//1 2\n"
                                               "v 2 0 2\nv 2 1 2\n"
                                               "s off\n"
-                                              "f 2 -2 -1\n"
-                                              "f 2 6 3\n");
+                                              "f 2 -1 -2\n"
+                                              "f 2 3 6\n");
   const PlanarMesh m = read_mesh_file(path);
   ASSERT_EQ(m.vertices.size(), 6u);
   ASSERT_EQ(m.cells.size(), 3u);
@@ -145,6 +145,24 @@ TEST(MeshIo, ObjTrianglesAndQuadsOnAPlane) {
   EXPECT_NEAR(total_area(m), 2.0, 1e-15);
   EXPECT_EQ(euler_characteristic(m), 1);
   EXPECT_TRUE(m.boundary_groups.empty());
+}
+
+TEST(MeshIo, InconsistentOrientationIsRejectedNamingTheCell) {
+  // The same two squares with the quad clockwise and the triangles counterclockwise: one of the
+  // two senses is a broken export, so the reader refuses to guess.
+  const std::string path = test::scratch_file("inconsistent.obj",
+                                              "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 2 0 0\nv 2 1 0\n"
+                                              "f 1 4 3 2\n"
+                                              "f 2 5 6\n"
+                                              "f 2 6 3\n");
+  EXPECT_EQ(input_error([&] { read_mesh_file(path); }),
+            path + ": cell 1 (line 8: triangle (1, 0), (2, 0), (2, 1)) is listed counterclockwise, but cell 0 "
+                   "(line 7: quadrilateral (0, 0), (0, 1), (1, 1), (1, 0)) is listed clockwise: inconsistent "
+                   "orientation (list the vertices of every cell in the same sense)");
+  // OFF files are checked the same way.
+  const std::string off = test::scratch_file("inconsistent.off",
+                                             "OFF\n4 2 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n3 0 1 2\n3 0 3 2\n");
+  EXPECT_NE(input_error([&] { read_mesh_file(off); }).find("inconsistent orientation"), std::string::npos);
 }
 
 TEST(MeshIo, OffTrianglesAndQuads) {

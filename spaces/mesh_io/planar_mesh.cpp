@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "solver/config_node.hpp"
+#include "solver/errors.hpp"
 
 namespace iga {
 
@@ -20,6 +21,25 @@ double twice_signed_area(const PlanarMesh& mesh, int c) {
 void orient_cells_counterclockwise(PlanarMesh& mesh) {
   for (int c = 0; c < static_cast<int>(mesh.cells.size()); ++c)
     if (twice_signed_area(mesh, c) < 0.0) std::reverse(mesh.cells[c].begin() + 1, mesh.cells[c].end());
+}
+
+void orient_consistently_counterclockwise(PlanarMesh& mesh) {
+  int first = -1;  // the first cell with an orientation (degenerate cells are left to validation)
+  for (int c = 0; c < static_cast<int>(mesh.cells.size()); ++c) {
+    const double area = twice_signed_area(mesh, c);
+    if (area == 0.0) continue;
+    if (first < 0) {
+      first = c;
+    } else if ((area > 0.0) != (twice_signed_area(mesh, first) > 0.0)) {
+      const auto sense = [&](int cell) {
+        return twice_signed_area(mesh, cell) > 0.0 ? std::string("counterclockwise") : std::string("clockwise");
+      };
+      throw InputError(mesh.source + ": " + describe_cell(mesh, c) + " is listed " + sense(c) + ", but " +
+                       describe_cell(mesh, first) + " is listed " + sense(first) +
+                       ": inconsistent orientation (list the vertices of every cell in the same sense)");
+    }
+  }
+  orient_cells_counterclockwise(mesh);
 }
 
 std::vector<std::array<int, 2>> boundary_edges(const PlanarMesh& mesh) {

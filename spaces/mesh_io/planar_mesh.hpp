@@ -32,6 +32,11 @@ double twice_signed_area(const PlanarMesh& mesh, int c);
 /// Reverses every cell with negative signed area, keeping its first vertex.
 void orient_cells_counterclockwise(PlanarMesh& mesh);
 
+/// For files that list cells one by one (OBJ, OFF): every cell must turn the same way as the
+/// first non-degenerate one (an InputError names the first that does not — inconsistent
+/// orientation is a broken export); a mesh listed clockwise throughout is then reversed.
+void orient_consistently_counterclockwise(PlanarMesh& mesh);
+
 /// The edges used by exactly one cell, each as that cell traverses it (domain on the left for
 /// counterclockwise cells), in cell order.
 std::vector<std::array<int, 2>> boundary_edges(const PlanarMesh& mesh);

@@ -9,9 +9,11 @@
 ///    `i/t/n`; 1-based, negative = relative to the end); `vt vn vp o g s l usemtl mtllib` ignored;
 ///  - `.off`: Object File Format: `OFF`, `nV nF nE`, nV lines `x y z`, nF lines `n i0 .. i(n-1)`
 ///    (0-based, n = 3 or 4; trailing colour values ignored).
-/// All z must be equal (the mesh is planar). Cells are oriented counterclockwise on reading: a
-/// clockwise cell is reversed (files and Gmsh surfaces may be oriented either way; a mesh that
-/// folds over itself is still caught by validation, as two cells on the same side of an edge).
+/// All z must be equal (the mesh is planar). Cells are oriented counterclockwise on reading. Gmsh
+/// surfaces may be oriented either way, so a clockwise Gmsh cell is reversed; an OBJ or OFF file
+/// must list all its cells in one sense (either; a clockwise file is reversed) and a cell listed
+/// the other way round is an InputError (inconsistent orientation). A mesh that folds over itself
+/// is caught by validation, as two cells on the same side of an edge.
 /// Gmsh meshes keep only the nodes their 2D cells use and name boundary edges by physical curve;
 /// OBJ and OFF meshes have no boundary groups. Every failure (unreadable file, unknown extension,
 /// syntax, Gmsh error, unsupported element, options given for a file that is not `.geo`) is an

@@ -90,7 +90,7 @@ PlanarMesh read_obj_mesh(std::istream& in, const std::string& source) {
     }
   }
   mesh.vertices = planar_coordinates(points, point_origins, source);
-  orient_cells_counterclockwise(mesh);
+  orient_consistently_counterclockwise(mesh);
   return mesh;
 }
 
@@ -135,7 +135,7 @@ PlanarMesh read_off_mesh(std::istream& in, const std::string& source) {
   }
   if (reader.next(t)) reader.fail("unexpected data after the " + std::to_string(nf) + " faces");
   mesh.vertices = planar_coordinates(points, origins, source);
-  orient_cells_counterclockwise(mesh);
+  orient_consistently_counterclockwise(mesh);
   return mesh;
 }
 
