@@ -56,22 +56,24 @@ Eigen::MatrixXd restrict_rows(const std::vector<std::vector<FaceCoefficient>>& r
   return m;
 }
 
-/// Orthonormal basis of the null space of m (n columns), n x nullity.
+/// Orthonormal basis of the null space of m (n columns), n x nullity: the trailing columns of Q in
+/// a column-pivoted QR of mᵀ (its leading `rank` columns span the row space of m). Several times
+/// cheaper than an SVD at the vertex problems' sizes (a few dozen rows and columns); the rows are
+/// O(1)-scaled, so the pivots reveal the rank as the singular values would.
 Eigen::MatrixXd null_space(const Eigen::MatrixXd& m, int n) {
   if (m.rows() == 0) return Eigen::MatrixXd::Identity(n, n);
-  Eigen::JacobiSVD<Eigen::MatrixXd> svd(m, Eigen::ComputeFullV);
-  const Eigen::VectorXd& s = svd.singularValues();
-  int rank = 0;
-  for (int i = 0; i < s.size(); ++i)
-    if (s[i] > kRankTolerance * s[0]) ++rank;
-  return svd.matrixV().rightCols(n - rank);
+  Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(m.transpose());
+  qr.setThreshold(kRankTolerance);
+  const Eigen::MatrixXd q = qr.householderQ() * Eigen::MatrixXd::Identity(n, n);
+  return q.rightCols(n - qr.rank());
 }
 
-std::vector<FaceCoefficient> to_function(const Eigen::VectorXd& x, const Unknowns& u, bool normalize) {
+std::vector<FaceCoefficient> to_function(const Eigen::VectorXd& x, const std::vector<std::pair<int, int>>& u,
+                                         bool normalize) {
   const double scale = normalize ? x.cwiseAbs().maxCoeff() : 1.0;
   std::vector<FaceCoefficient> f;
-  for (int i = 0; i < u.size(); ++i)
-    if (x[i] != 0.0) f.push_back({u.list[i].first, u.list[i].second, x[i] / scale});
+  for (size_t i = 0; i < u.size(); ++i)
+    if (x[static_cast<Eigen::Index>(i)] != 0.0) f.push_back({u[i].first, u[i].second, x[static_cast<Eigen::Index>(i)] / scale});
   return f;
 }
 
@@ -131,6 +133,40 @@ Eigen::MatrixXd vertex_targets(const Eigen::MatrixXd& ur, const Eigen::VectorXd&
   col += c2.cols();
   out.middleCols(col, k2.cols()) = k1 * k2;
   return out;
+}
+
+/// Loops over vertices or edges take a thread team only when there are enough of them (the same
+/// threshold as assembly/parallel.hpp, which spaces/ may not include).
+bool worth_local_threads(long items) { return items >= 512; }
+
+/// Throws IncompleteBasis with the first nonempty message (lowest entity index: deterministic
+/// whatever the number of threads).
+void throw_first(const std::vector<std::string>& errors) {
+  for (const std::string& e : errors)
+    if (!e.empty()) throw IncompleteBasis(e);
+}
+
+/// What one interior edge's local problem gives, kept for the vertex problems at its ends.
+/// With E = the edge's C0 + G1 rows restricted to `unknowns` (rows 0–1 along the edge minus both
+/// corner sets) and E = U S Vᵀ: `null` = ker E (the edge functions), `coker` = ker Eᵀ, `pinv` = E⁺.
+struct EdgeLocal {
+  std::vector<std::pair<int, int>> unknowns;
+  Eigen::MatrixXd null, coker, pinv;
+};
+
+void solve_edge_local(const std::vector<std::vector<FaceCoefficient>>& rows, int k, EdgeLocal& l) {
+  Unknowns u(k);
+  u.add(l.unknowns);
+  const Eigen::MatrixXd m = restrict_rows(rows, u);
+  Eigen::JacobiSVD<Eigen::MatrixXd> svd(m, Eigen::ComputeFullU | Eigen::ComputeFullV);
+  const Eigen::VectorXd& s = svd.singularValues();
+  Eigen::Index rank = 0;
+  for (Eigen::Index i = 0; i < s.size(); ++i)
+    if (s[i] > kRankTolerance * s[0]) ++rank;
+  l.null = svd.matrixV().rightCols(m.cols() - rank);
+  l.coker = svd.matrixU().rightCols(m.rows() - rank);
+  l.pinv = svd.matrixV().leftCols(rank) * s.head(rank).cwiseInverse().asDiagonal() *
+           svd.matrixU().leftCols(rank).transpose();
 }
 
 }  // namespace
@@ -208,6 +244,95 @@ int theorem_dimension(const PatchMesh& mesh, const std::vector<EdgeGluing>& glui
          9 * mesh.num_edges() + 3 * used_vertices + crossing_vertices;
 }
 
+namespace {
+
+/// The vertex functions of vertex v (notes §4.5), value function first. The local problem has the
+/// unknowns C (corner sets of v, 4 per face) and R_τ (each edge τ at v: rows 0–1 along τ minus the
+/// corner sets, the edge problem's unknowns); the rows of an interior edge τ at v are
+/// A_τ x_C + E_τ x_R_τ = 0 (coefficients with index >= 2 along τ meet no other edge's rows at v).
+/// So the corner data the local null space reaches are H = {x_C : coker_τᵀ A_τ x_C = 0 for every
+/// τ}, and the minimum-norm local function with corner data h ∈ H is x_R_τ = −E_τ⁺ A_τ h (0 on
+/// boundary edges). This is the null space of all rows on C ∪ R, reduced to its part orthogonal
+/// to the edge functions, without the large dense SVD of the whole local system: one SVD of a
+/// (Σ dim coker) x 4F matrix per vertex, the edge parts reused from the edge problems.
+std::vector<std::vector<FaceCoefficient>> build_vertex_functions(const PatchMesh& mesh,
+                                                                 const std::vector<EdgeGluing>& gluing, int k, int v,
+                                                                 const std::vector<std::vector<std::vector<FaceCoefficient>>>& rows,
+                                                                 const std::vector<EdgeLocal>& local,
+                                                                 const std::string& where) {
+  const VertexFan& fan = mesh.fan(v);
+  const int nf = static_cast<int>(fan.face.size());
+  Unknowns corners(k);
+  for (int i = 0; i < nf; ++i) {
+    std::vector<std::pair<int, int>> c;
+    for (int idx : corner_coefficients(mesh.shape(fan.face[i]), k, fan.corner[i])) c.push_back({fan.face[i], idx});
+    corners.add(c);
+  }
+  const int nc = corners.size();
+  // A_τ for the interior edges at v, and the compatibility rows coker_τᵀ A_τ.
+  std::vector<int> interior;
+  std::vector<Eigen::MatrixXd> a;
+  Eigen::Index compat_rows = 0;
+  for (int e : fan.edge)
+    if (!mesh.edge(e).boundary()) {
+      interior.push_back(e);
+      a.push_back(restrict_rows(rows[e], corners));
+      compat_rows += local[e].coker.cols();
+    }
+  Eigen::MatrixXd compat(compat_rows, nc);
+  Eigen::Index r0 = 0;
+  for (size_t i = 0; i < interior.size(); ++i) {
+    const Eigen::MatrixXd& coker = local[interior[i]].coker;
+    compat.middleRows(r0, coker.cols()) = coker.transpose() * a[i];
+    r0 += coker.cols();
+  }
+  const Eigen::MatrixXd ur = null_space(compat, nc);  // orthonormal basis of H
+  const int rank = static_cast<int>(ur.cols());
+  const int expected = vertex_function_count(mesh, gluing, v);
+  if (rank != expected)
+    throw IncompleteBasis(where + "vertex " + std::to_string(v) + " has " + std::to_string(rank) +
+                          " independent corner data; expected " + std::to_string(expected));
+  const Eigen::VectorXd ones = Eigen::VectorXd::Ones(nc);
+  if ((ur * (ur.transpose() * ones) - ones).norm() > 1e-8 * ones.norm())
+    throw IncompleteBasis(where + "vertex " + std::to_string(v) + ": constants are not locally representable");
+  // Minimum-norm local function with corner data h ∈ H (projected onto H against round-off).
+  std::vector<std::pair<int, int>> list = corners.list;  // C, then R_τ of each interior edge
+  for (int e : interior) list.insert(list.end(), local[e].unknowns.begin(), local[e].unknowns.end());
+  auto function = [&](const Eigen::VectorXd& h, bool normalize) {
+    Eigen::VectorXd x(static_cast<Eigen::Index>(list.size()));
+    x.head(nc) = ur * (ur.transpose() * h);
+    Eigen::Index n = nc;
+    for (size_t i = 0; i < interior.size(); ++i) {
+      const EdgeLocal& l = local[interior[i]];
+      x.segment(n, l.pinv.rows()) = -(l.pinv * (a[i] * x.head(nc)));
+      n += l.pinv.rows();
+    }
+    return to_function(x, list, normalize);
+  };
+  // Positions in the corner data of the trace (row 0) and next-row (row 1) coefficients along
+  // the boundary edges at a boundary vertex.
+  std::vector<int> trace_rows, normal_rows;
+  if (fan.boundary) {
+    const int f0 = fan.face.front(), c0 = fan.corner.front();
+    const int fl = fan.face.back(), cl = fan.corner.back();
+    const CellShape s0 = mesh.shape(f0), sl = mesh.shape(fl);
+    const int before = cl + mesh.num_corners(fl) - 1;  // the last face's edge ending at v
+    for (int m = 0; m <= 1; ++m) {
+      trace_rows.push_back(corners.find(f0, edge_coefficient(s0, k, c0, m, 0)));
+      normal_rows.push_back(corners.find(f0, edge_coefficient(s0, k, c0, m, 1)));
+      trace_rows.push_back(corners.find(fl, edge_coefficient(sl, k, before, edge_row_last(sl, k, 0) - m, 0)));
+      normal_rows.push_back(corners.find(fl, edge_coefficient(sl, k, before, edge_row_last(sl, k, 1) - m, 1)));
+    }
+  }
+  const Eigen::MatrixXd targets = vertex_targets(ur, ur.transpose() * ones, trace_rows, normal_rows);
+  std::vector<std::vector<FaceCoefficient>> out;
+  out.push_back(function(ones, false));
+  for (int j = 1; j < rank; ++j) out.push_back(function(ur * targets.col(j), true));
+  return out;
+}
+
+}  // namespace
+
 G1Basis build_g1_basis(const PatchMesh& mesh, const std::vector<EdgeGluing>& gluing, int k) {
   if (k < 3) throw IncompleteBasis("G1 basis needs degree >= 3");
   // Below 4 the corner sets of a triangle overlap (λ0 λ1 λ2 belongs to all three).
@@ -221,103 +346,52 @@ G1Basis build_g1_basis(const PatchMesh& mesh, const std::vector<EdgeGluing>& glu
   };
   const std::string where = mesh.name() + ", degree " + std::to_string(k) + ": ";
 
-  // Edge rows once per interior edge (shared by the edge and both vertex problems).
+  // Per interior edge: its rows (shared by the edge and both vertex problems), its edge functions
+  // and what the vertex problems reuse (EdgeLocal). Independent per edge: parallel, results by index.
   std::vector<std::vector<std::vector<FaceCoefficient>>> rows(mesh.num_edges());
-  for (int e = 0; e < mesh.num_edges(); ++e)
-    if (!mesh.edge(e).boundary()) rows[e] = edge_constraint_rows(mesh, gluing[e], k);
-
-  // Edge functions; their counts are needed by the vertex check.
-  std::vector<int> edge_count(mesh.num_edges(), 0);
+  std::vector<EdgeLocal> local(mesh.num_edges());
+  std::vector<std::string> errors(mesh.num_edges());
+#pragma omp parallel for schedule(dynamic, 16) if (worth_local_threads(mesh.num_edges()))
   for (int e = 0; e < mesh.num_edges(); ++e) {
     const MeshEdge& me = mesh.edge(e);
-    Unknowns u(k);
-    std::vector<std::pair<int, int>> items;
-    add_edge_rows(mesh, k, me.first.face, me.first.local_edge, 2, 2, items);
-    if (me.boundary()) {
-      for (const auto& [f, i] : items) add({{f, i, 1.0}}, {G1Entity::edge, e});
-      edge_count[e] = static_cast<int>(items.size());
+    EdgeLocal& l = local[e];
+    add_edge_rows(mesh, k, me.first.face, me.first.local_edge, 2, 2, l.unknowns);
+    if (me.boundary()) continue;
+    add_edge_rows(mesh, k, me.second.face, me.second.local_edge, 2, 2, l.unknowns);
+    rows[e] = edge_constraint_rows(mesh, gluing[e], k);
+    solve_edge_local(rows[e], k, l);
+    const int expected = syzygy_dimension(gluing[e], k) - 9 + (gluing[e].crossing_x ? 1 : 0) + (gluing[e].crossing_y ? 1 : 0);
+    if (l.null.cols() != expected)
+      errors[e] = where + "edge " + std::to_string(e) + " has " + std::to_string(l.null.cols()) +
+                  " local functions, expected " + std::to_string(expected);
+  }
+  throw_first(errors);
+  for (int e = 0; e < mesh.num_edges(); ++e) {
+    const EdgeLocal& l = local[e];
+    if (mesh.edge(e).boundary()) {
+      for (const auto& [f, i] : l.unknowns) add({{f, i, 1.0}}, {G1Entity::edge, e});
       continue;
     }
-    add_edge_rows(mesh, k, me.second.face, me.second.local_edge, 2, 2, items);
-    u.add(items);
-    const Eigen::MatrixXd n = null_space(restrict_rows(rows[e], u), u.size());
-    const int expected = syzygy_dimension(gluing[e], k) - 9 + (gluing[e].crossing_x ? 1 : 0) + (gluing[e].crossing_y ? 1 : 0);
-    if (n.cols() != expected)
-      throw IncompleteBasis(where + "edge " + std::to_string(e) + " has " + std::to_string(n.cols()) +
-                            " local functions, expected " + std::to_string(expected));
-    edge_count[e] = static_cast<int>(n.cols());
-    for (int j = 0; j < n.cols(); ++j) add(to_function(n.col(j), u, true), {G1Entity::edge, e});
+    for (Eigen::Index j = 0; j < l.null.cols(); ++j) add(to_function(l.null.col(j), l.unknowns, true), {G1Entity::edge, e});
   }
 
-  // Vertex functions.
+  // Vertex functions: per vertex a list of functions, built in parallel, appended in vertex order
+  // (the basis does not depend on the number of threads).
+  std::vector<std::vector<std::vector<FaceCoefficient>>> vertex_functions(mesh.num_vertices());
+  errors.assign(mesh.num_vertices(), {});
+#pragma omp parallel for schedule(dynamic, 16) if (worth_local_threads(mesh.num_vertices()))
   for (int v = 0; v < mesh.num_vertices(); ++v) {
-    const VertexFan& fan = mesh.fan(v);
-    const int nf = static_cast<int>(fan.face.size());
-    if (nf == 0) continue;
-    Unknowns u(k);
-    std::vector<std::pair<int, int>> items, corner;
-    for (int i = 0; i < nf; ++i) {
-      const int f = fan.face[i], c = fan.corner[i];
-      const int n = mesh.num_corners(f);
-      add_edge_rows(mesh, k, f, c, 0, 2, items);                // along edge c, without corner c+1
-      add_edge_rows(mesh, k, f, (c + n - 1) % n, 2, 0, items);  // along edge c-1, without corner c-1
-      for (int idx : corner_coefficients(mesh.shape(f), k, c)) corner.push_back({f, idx});
+    if (mesh.fan(v).face.empty()) continue;
+    try {
+      vertex_functions[v] = build_vertex_functions(mesh, gluing, k, v, rows, local, where);
+    } catch (const IncompleteBasis& ex) {
+      errors[v] = ex.what();
     }
-    u.add(items);
-    std::vector<std::vector<FaceCoefficient>> vrows;
-    int edge_functions = 0;
-    for (int e : fan.edge) {
-      edge_functions += edge_count[e];
-      if (!mesh.edge(e).boundary()) vrows.insert(vrows.end(), rows[e].begin(), rows[e].end());
-    }
-    const Eigen::MatrixXd n = null_space(restrict_rows(vrows, u), u.size());
-    // Corner data (Taylor map T_γ) of the null space.
-    Eigen::MatrixXd w(static_cast<Eigen::Index>(corner.size()), n.cols());
-    for (size_t r = 0; r < corner.size(); ++r) w.row(static_cast<Eigen::Index>(r)) = n.row(u.find(corner[r].first, corner[r].second));
-    Eigen::JacobiSVD<Eigen::MatrixXd> svd(w, Eigen::ComputeThinU | Eigen::ComputeThinV);
-    const Eigen::VectorXd& s = svd.singularValues();
-    int rank = 0;
-    for (int i = 0; i < s.size(); ++i)
-      if (s[i] > 1e-8 * s[0]) ++rank;
-    const int expected = vertex_function_count(mesh, gluing, v);
-    if (rank != expected || n.cols() != rank + edge_functions)
-      throw IncompleteBasis(where + "vertex " + std::to_string(v) + " has " + std::to_string(rank) +
-                            " independent corner data and " + std::to_string(n.cols()) +
-                            " local functions; expected " + std::to_string(expected) + " and " +
-                            std::to_string(expected + edge_functions));
-    const Eigen::MatrixXd ur = svd.matrixU().leftCols(rank);
-    // Minimum-norm solution of T_γ x = h: orthogonal to the edge functions inside the null space.
-    auto solve = [&](const Eigen::VectorXd& h) -> Eigen::VectorXd {
-      const Eigen::VectorXd y = (ur.transpose() * h).cwiseQuotient(s.head(rank));
-      return n * (svd.matrixV().leftCols(rank) * y);
-    };
-    const Eigen::VectorXd ones = Eigen::VectorXd::Ones(static_cast<Eigen::Index>(corner.size()));
-    if ((ur * (ur.transpose() * ones) - ones).norm() > 1e-8 * ones.norm())
-      throw IncompleteBasis(where + "vertex " + std::to_string(v) + ": constants are not locally representable");
-    // Positions in the corner data of the trace (row 0) and next-row (row 1) coefficients along
-    // the boundary edges at a boundary vertex.
-    std::vector<int> trace_rows, normal_rows;
-    if (fan.boundary) {
-      auto position = [&](int f, int idx) {
-        for (size_t r = 0; r < corner.size(); ++r)
-          if (corner[r].first == f && corner[r].second == idx) return static_cast<int>(r);
-        return -1;
-      };
-      const int f0 = fan.face.front(), c0 = fan.corner.front();
-      const int fl = fan.face.back(), cl = fan.corner.back();
-      const CellShape s0 = mesh.shape(f0), sl = mesh.shape(fl);
-      const int before = cl + mesh.num_corners(fl) - 1;  // the last face's edge ending at v
-      for (int m = 0; m <= 1; ++m) {
-        trace_rows.push_back(position(f0, edge_coefficient(s0, k, c0, m, 0)));
-        normal_rows.push_back(position(f0, edge_coefficient(s0, k, c0, m, 1)));
-        trace_rows.push_back(position(fl, edge_coefficient(sl, k, before, edge_row_last(sl, k, 0) - m, 0)));
-        normal_rows.push_back(position(fl, edge_coefficient(sl, k, before, edge_row_last(sl, k, 1) - m, 1)));
-      }
-    }
-    const Eigen::MatrixXd targets = vertex_targets(ur, ur.transpose() * ones, trace_rows, normal_rows);
-    add(to_function(solve(ones), u, false), {G1Entity::vertex, v, true});
-    for (int j = 1; j < rank; ++j) add(to_function(solve(ur * targets.col(j)), u, true), {G1Entity::vertex, v});
   }
+  throw_first(errors);
+  for (int v = 0; v < mesh.num_vertices(); ++v)
+    for (size_t j = 0; j < vertex_functions[v].size(); ++j)
+      add(std::move(vertex_functions[v][j]), {G1Entity::vertex, v, j == 0});
 
   // Face functions: interior Bernstein coefficients.
   for (int f = 0; f < mesh.num_faces(); ++f)
