@@ -2,11 +2,12 @@
 
 #include <Eigen/Dense>
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <stdexcept>
 #include <string>
 #include <unordered_map>
 
-#include "quadrature/quadrature_rule.hpp"
 #include "spaces/g1/bernstein_face.hpp"
 
 namespace iga {
@@ -15,16 +16,6 @@ namespace {
 
 // Relative singular-value threshold of the local null spaces (the Bernstein rows are O(1)).
 constexpr double kRankTolerance = 1e-10;
-
-/// Local indices in rows 0-1 along local edge e of a face, without the first `skip_start` and the
-/// last `skip_end` coefficients of each row (2 skips a corner set).
-void add_edge_rows(const PatchMesh& mesh, int k, int face, int e, int skip_start, int skip_end,
-                   std::vector<std::pair<int, int>>& out) {
-  const CellShape shape = mesh.shape(face);
-  for (int r = 0; r <= 1; ++r)
-    for (int m = skip_start; m <= edge_row_last(shape, k, r) - skip_end; ++m)
-      out.push_back({face, edge_coefficient(shape, k, e, m, r)});
-}
 
 /// Unknown set: (face, index) pairs, deduplicated, with a lookup.
 struct Unknowns {
@@ -148,13 +139,24 @@ void throw_first(const std::vector<std::string>& errors) {
 
 /// What one interior edge's local problem gives, kept for the vertex problems at its ends.
 /// With E = the edge's C0 + G1 rows restricted to `unknowns` (rows 0–1 along the edge minus both
-/// corner sets) and E = U S Vᵀ: `null` = ker E (the edge functions), `coker` = ker Eᵀ, `pinv` = E⁺.
+/// corner sets), E = U S Vᵀ, and A = the rows restricted to the two corner sets at one end:
+/// `null` = ker E (the edge functions); per end, `compat` = coker(E)ᵀ A (the conditions on that
+/// end's corner data) and `scaled` = S_r⁻¹ U_rᵀ A, so that −V_r (scaled · x) = −E⁺ A x is the
+/// minimum-norm rest of a function with corner data x. E⁺ is never formed: its entries are all of
+/// size 1/σ_min, and multiplying by it would leave G1 residuals of eps·cond(E) even where the
+/// result is O(1); through the factors the error stays relative to the result. The rows are not kept.
 struct EdgeLocal {
+  struct End {
+    std::vector<std::pair<int, int>> corners;  ///< 8 (face, index): both faces' corner sets at this end
+    Eigen::MatrixXd compat, scaled;            ///< dim coker x 8, rank x 8
+  };
   std::vector<std::pair<int, int>> unknowns;
-  Eigen::MatrixXd null, coker, pinv;
+  Eigen::MatrixXd null, range;  ///< ker E and V_r: |unknowns| x nullity, |unknowns| x rank
+  End end[2];                   ///< at X, at Y
 };
 
-void solve_edge_local(const std::vector<std::vector<FaceCoefficient>>& rows, int k, EdgeLocal& l) {
+void solve_edge_local(const PatchMesh& mesh, int e, const std::vector<std::vector<FaceCoefficient>>& rows, int k,
+                      EdgeLocal& l) {
   Unknowns u(k);
   u.add(l.unknowns);
   const Eigen::MatrixXd m = restrict_rows(rows, u);
@@ -164,53 +166,26 @@ void solve_edge_local(const std::vector<std::vector<FaceCoefficient>>& rows, int
   for (Eigen::Index i = 0; i < s.size(); ++i)
     if (s[i] > kRankTolerance * s[0]) ++rank;
   l.null = svd.matrixV().rightCols(m.cols() - rank);
-  l.coker = svd.matrixU().rightCols(m.rows() - rank);
-  l.pinv = svd.matrixV().leftCols(rank) * s.head(rank).cwiseInverse().asDiagonal() *
-           svd.matrixU().leftCols(rank).transpose();
+  l.range = svd.matrixV().leftCols(rank);
+  const Eigen::MatrixXd coker = svd.matrixU().rightCols(m.rows() - rank);
+  const MeshEdge& me = mesh.edge(e);
+  const int f1 = me.first.face, f2 = me.second.face;
+  const int n1 = mesh.num_corners(f1), n2 = mesh.num_corners(f2);
+  for (int end = 0; end < 2; ++end) {
+    // `first` runs X -> Y along its local edge e1 (corner e1 at X), `second` Y -> X (corner e2 at Y).
+    const int c1 = (me.first.local_edge + end) % n1, c2 = (me.second.local_edge + 1 - end) % n2;
+    EdgeLocal::End& d = l.end[end];
+    for (int idx : corner_coefficients(mesh.shape(f1), k, c1)) d.corners.push_back({f1, idx});
+    for (int idx : corner_coefficients(mesh.shape(f2), k, c2)) d.corners.push_back({f2, idx});
+    Unknowns cu(k);
+    cu.add(d.corners);
+    const Eigen::MatrixXd a = restrict_rows(rows, cu);
+    d.compat = coker.transpose() * a;
+    d.scaled = s.head(rank).cwiseInverse().asDiagonal() * (svd.matrixU().leftCols(rank).transpose() * a);
+  }
 }
 
 }  // namespace
-
-std::vector<std::vector<FaceCoefficient>> edge_constraint_rows(const PatchMesh& mesh, const EdgeGluing& g, int k) {
-  const MeshEdge& me = mesh.edge(g.edge);
-  const EdgeFrame fr = edge_frame(mesh, g.edge);
-  const int e1 = me.first.local_edge, e2 = me.second.local_edge;
-  const CellShape s1 = mesh.shape(fr.face1), s2 = mesh.shape(fr.face2);
-  std::vector<std::vector<FaceCoefficient>> rows;
-  // C0: straight edges parametrised linearly from X to Y on both faces, so traces match coefficient
-  // by coefficient (the second face runs Y -> X).
-  for (int m = 0; m <= k; ++m)
-    rows.push_back(
-        {{fr.face1, edge_coefficient(s1, k, e1, m, 0), 1.0}, {fr.face2, edge_coefficient(s2, k, e2, k - m, 0), -1.0}});
-  // G1 by collocation at k+3 Gauss points: the residual has degree <= k+2 in t.
-  const QuadratureRule pts = gauss_legendre(k + 3);
-  std::vector<std::pair<int, int>> near1, near2;
-  add_edge_rows(mesh, k, fr.face1, e1, 0, 0, near1);
-  add_edge_rows(mesh, k, fr.face2, e2, 0, 0, near2);
-  for (const Point2& p : pts.points) {
-    const double t = p.x();
-    const Eigen::MatrixXd j1 = bernstein_jet(s1, k, fr.start1 + t * fr.tangent1);
-    const Eigen::MatrixXd j2 = bernstein_jet(s2, k, fr.start2 + t * fr.tangent2);
-    const double a = eval_poly(g.a, t), b = eval_poly(g.b, t), c = eval_poly(g.c, t);
-    std::vector<FaceCoefficient> row;
-    double big = 0.0;
-    for (const auto& [f1, i] : near1) {
-      const double cross = j1(1, i) * fr.cross1.x() + j1(2, i) * fr.cross1.y();
-      const double along = j1(1, i) * fr.tangent1.x() + j1(2, i) * fr.tangent1.y();
-      const double v = c * cross - a * along;
-      if (v != 0.0) row.push_back({fr.face1, i, v});
-      big = std::max(big, std::abs(v));
-    }
-    for (const auto& [f2, i] : near2) {
-      const double v = -b * (j2(1, i) * fr.cross2.x() + j2(2, i) * fr.cross2.y());
-      if (v != 0.0) row.push_back({fr.face2, i, v});
-      big = std::max(big, std::abs(v));
-    }
-    for (FaceCoefficient& fc : row) fc.value /= big;
-    rows.push_back(std::move(row));
-  }
-  return rows;
-}
 
 int vertex_function_count(const PatchMesh& mesh, const std::vector<EdgeGluing>& gluing, int v) {
   const VertexFan& fan = mesh.fan(v);
@@ -257,7 +232,6 @@ namespace {
 /// (Σ dim coker) x 4F matrix per vertex, the edge parts reused from the edge problems.
 std::vector<std::vector<FaceCoefficient>> build_vertex_functions(const PatchMesh& mesh,
                                                                  const std::vector<EdgeGluing>& gluing, int k, int v,
-                                                                 const std::vector<std::vector<std::vector<FaceCoefficient>>>& rows,
                                                                  const std::vector<EdgeLocal>& local,
                                                                  const std::string& where) {
   const VertexFan& fan = mesh.fan(v);
@@ -269,22 +243,29 @@ std::vector<std::vector<FaceCoefficient>> build_vertex_functions(const PatchMesh
     corners.add(c);
   }
   const int nc = corners.size();
-  // A_τ for the interior edges at v, and the compatibility rows coker_τᵀ A_τ.
-  std::vector<int> interior;
-  std::vector<Eigen::MatrixXd> a;
+  // The interior edges at v, their data at this end and its columns in the corner data.
+  std::vector<const EdgeLocal::End*> ends;
+  std::vector<const EdgeLocal*> edges;
+  std::vector<std::array<int, 8>> columns;
   Eigen::Index compat_rows = 0;
   for (int e : fan.edge)
     if (!mesh.edge(e).boundary()) {
-      interior.push_back(e);
-      a.push_back(restrict_rows(rows[e], corners));
-      compat_rows += local[e].coker.cols();
+      const EdgeLocal::End& d = local[e].end[mesh.edge(e).x == v ? 0 : 1];
+      std::array<int, 8> col;
+      for (int j = 0; j < 8; ++j) {
+        col[j] = corners.find(d.corners[j].first, d.corners[j].second);
+        if (col[j] < 0) throw std::logic_error("G1 basis: edge corner set outside the vertex fan");
+      }
+      ends.push_back(&d);
+      edges.push_back(&local[e]);
+      columns.push_back(col);
+      compat_rows += d.compat.rows();
     }
-  Eigen::MatrixXd compat(compat_rows, nc);
+  Eigen::MatrixXd compat = Eigen::MatrixXd::Zero(compat_rows, nc);
   Eigen::Index r0 = 0;
-  for (size_t i = 0; i < interior.size(); ++i) {
-    const Eigen::MatrixXd& coker = local[interior[i]].coker;
-    compat.middleRows(r0, coker.cols()) = coker.transpose() * a[i];
-    r0 += coker.cols();
+  for (size_t i = 0; i < ends.size(); ++i) {
+    for (int j = 0; j < 8; ++j) compat.block(r0, columns[i][j], ends[i]->compat.rows(), 1) += ends[i]->compat.col(j);
+    r0 += ends[i]->compat.rows();
   }
   const Eigen::MatrixXd ur = null_space(compat, nc);  // orthonormal basis of H
   const int rank = static_cast<int>(ur.cols());
@@ -297,15 +278,17 @@ std::vector<std::vector<FaceCoefficient>> build_vertex_functions(const PatchMesh
     throw IncompleteBasis(where + "vertex " + std::to_string(v) + ": constants are not locally representable");
   // Minimum-norm local function with corner data h ∈ H (projected onto H against round-off).
   std::vector<std::pair<int, int>> list = corners.list;  // C, then R_τ of each interior edge
-  for (int e : interior) list.insert(list.end(), local[e].unknowns.begin(), local[e].unknowns.end());
+  for (const EdgeLocal* l : edges) list.insert(list.end(), l->unknowns.begin(), l->unknowns.end());
   auto function = [&](const Eigen::VectorXd& h, bool normalize) {
     Eigen::VectorXd x(static_cast<Eigen::Index>(list.size()));
     x.head(nc) = ur * (ur.transpose() * h);
     Eigen::Index n = nc;
-    for (size_t i = 0; i < interior.size(); ++i) {
-      const EdgeLocal& l = local[interior[i]];
-      x.segment(n, l.pinv.rows()) = -(l.pinv * (a[i] * x.head(nc)));
-      n += l.pinv.rows();
+    for (size_t i = 0; i < ends.size(); ++i) {
+      Eigen::Matrix<double, 8, 1> xe;
+      for (int j = 0; j < 8; ++j) xe[j] = x[columns[i][j]];
+      const Eigen::VectorXd y = ends[i]->scaled * xe;
+      x.segment(n, edges[i]->range.rows()) = -(edges[i]->range * y);
+      n += edges[i]->range.rows();
     }
     return to_function(x, list, normalize);
   };
@@ -346,9 +329,10 @@ G1Basis build_g1_basis(const PatchMesh& mesh, const std::vector<EdgeGluing>& glu
   };
   const std::string where = mesh.name() + ", degree " + std::to_string(k) + ": ";
 
-  // Per interior edge: its rows (shared by the edge and both vertex problems), its edge functions
-  // and what the vertex problems reuse (EdgeLocal). Independent per edge: parallel, results by index.
-  std::vector<std::vector<std::vector<FaceCoefficient>>> rows(mesh.num_edges());
+  // Per interior edge: its rows (the Bernstein jets at the collocation points computed once), its
+  // edge functions and what the vertex problems reuse (EdgeLocal). Independent per edge: parallel,
+  // results by index.
+  const EdgeCollocation collocation(k);
   std::vector<EdgeLocal> local(mesh.num_edges());
   std::vector<std::string> errors(mesh.num_edges());
 #pragma omp parallel for schedule(dynamic, 16) if (worth_local_threads(mesh.num_edges()))
@@ -358,8 +342,7 @@ G1Basis build_g1_basis(const PatchMesh& mesh, const std::vector<EdgeGluing>& glu
     add_edge_rows(mesh, k, me.first.face, me.first.local_edge, 2, 2, l.unknowns);
     if (me.boundary()) continue;
     add_edge_rows(mesh, k, me.second.face, me.second.local_edge, 2, 2, l.unknowns);
-    rows[e] = edge_constraint_rows(mesh, gluing[e], k);
-    solve_edge_local(rows[e], k, l);
+    solve_edge_local(mesh, e, edge_constraint_rows(mesh, gluing[e], collocation), k, l);
     const int expected = syzygy_dimension(gluing[e], k) - 9 + (gluing[e].crossing_x ? 1 : 0) + (gluing[e].crossing_y ? 1 : 0);
     if (l.null.cols() != expected)
       errors[e] = where + "edge " + std::to_string(e) + " has " + std::to_string(l.null.cols()) +
@@ -383,7 +366,7 @@ G1Basis build_g1_basis(const PatchMesh& mesh, const std::vector<EdgeGluing>& glu
   for (int v = 0; v < mesh.num_vertices(); ++v) {
     if (mesh.fan(v).face.empty()) continue;
     try {
-      vertex_functions[v] = build_vertex_functions(mesh, gluing, k, v, rows, local, where);
+      vertex_functions[v] = build_vertex_functions(mesh, gluing, k, v, local, where);
     } catch (const IncompleteBasis& ex) {
       errors[v] = ex.what();
     }
