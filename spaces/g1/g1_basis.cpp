@@ -6,7 +6,6 @@
 #include <cmath>
 #include <stdexcept>
 #include <string>
-#include <unordered_map>
 
 #include "spaces/g1/bernstein_face.hpp"
 
@@ -17,21 +16,19 @@ namespace {
 // Relative singular-value threshold of the local null spaces (the Bernstein rows are O(1)).
 constexpr double kRankTolerance = 1e-10;
 
-/// Unknown set: (face, index) pairs, deduplicated, with a lookup.
+/// Unknown set: (face, index) pairs, deduplicated, with a lookup. The local sets have at most a
+/// few dozen entries, so a linear scan beats building a hash map for every edge and vertex.
 struct Unknowns {
   std::vector<std::pair<int, int>> list;
-  std::unordered_map<long long, int> column;
-  int stride = 0;
-  explicit Unknowns(int k) : stride((k + 1) * (k + 1)) {}
+  explicit Unknowns(int /*k*/) {}
   void add(const std::vector<std::pair<int, int>>& items) {
-    for (const auto& [f, i] : items) {
-      const long long key = static_cast<long long>(f) * stride + i;
-      if (column.emplace(key, static_cast<int>(list.size())).second) list.push_back({f, i});
-    }
+    for (const auto& [f, i] : items)
+      if (find(f, i) < 0) list.push_back({f, i});
   }
   int find(int f, int i) const {
-    const auto it = column.find(static_cast<long long>(f) * stride + i);
-    return it == column.end() ? -1 : it->second;
+    for (size_t c = 0; c < list.size(); ++c)
+      if (list[c].first == f && list[c].second == i) return static_cast<int>(c);
+    return -1;
   }
   int size() const { return static_cast<int>(list.size()); }
 };
