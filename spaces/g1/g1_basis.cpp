@@ -13,7 +13,8 @@ namespace iga {
 
 namespace {
 
-// Relative singular-value threshold of the local null spaces (the Bernstein rows are O(1)).
+// Relative rank threshold of the local null spaces, on singular values (edges) or QR pivots
+// (vertices); the Bernstein rows are O(1).
 constexpr double kRankTolerance = 1e-10;
 
 /// Unknown set: (face, index) pairs, deduplicated, with a lookup. The local sets have at most a
