@@ -2,45 +2,34 @@
 
 #include <Eigen/Dense>
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <stdexcept>
 #include <string>
-#include <unordered_map>
 
-#include "quadrature/quadrature_rule.hpp"
 #include "spaces/g1/bernstein_face.hpp"
 
 namespace iga {
 
 namespace {
 
-// Relative singular-value threshold of the local null spaces (the Bernstein rows are O(1)).
+// Relative rank threshold of the local null spaces, on singular values (edges) or QR pivots
+// (vertices); the Bernstein rows are O(1).
 constexpr double kRankTolerance = 1e-10;
 
-/// Local indices in rows 0-1 along local edge e of a face, without the first `skip_start` and the
-/// last `skip_end` coefficients of each row (2 skips a corner set).
-void add_edge_rows(const PatchMesh& mesh, int k, int face, int e, int skip_start, int skip_end,
-                   std::vector<std::pair<int, int>>& out) {
-  const CellShape shape = mesh.shape(face);
-  for (int r = 0; r <= 1; ++r)
-    for (int m = skip_start; m <= edge_row_last(shape, k, r) - skip_end; ++m)
-      out.push_back({face, edge_coefficient(shape, k, e, m, r)});
-}
-
-/// Unknown set: (face, index) pairs, deduplicated, with a lookup.
+/// Unknown set: (face, index) pairs, deduplicated, with a lookup. The local sets have at most a
+/// few dozen entries, so a linear scan beats building a hash map for every edge and vertex.
 struct Unknowns {
   std::vector<std::pair<int, int>> list;
-  std::unordered_map<long long, int> column;
-  int stride = 0;
-  explicit Unknowns(int k) : stride((k + 1) * (k + 1)) {}
+  explicit Unknowns(int /*k*/) {}
   void add(const std::vector<std::pair<int, int>>& items) {
-    for (const auto& [f, i] : items) {
-      const long long key = static_cast<long long>(f) * stride + i;
-      if (column.emplace(key, static_cast<int>(list.size())).second) list.push_back({f, i});
-    }
+    for (const auto& [f, i] : items)
+      if (find(f, i) < 0) list.push_back({f, i});
   }
   int find(int f, int i) const {
-    const auto it = column.find(static_cast<long long>(f) * stride + i);
-    return it == column.end() ? -1 : it->second;
+    for (size_t c = 0; c < list.size(); ++c)
+      if (list[c].first == f && list[c].second == i) return static_cast<int>(c);
+    return -1;
   }
   int size() const { return static_cast<int>(list.size()); }
 };
@@ -56,22 +45,24 @@ Eigen::MatrixXd restrict_rows(const std::vector<std::vector<FaceCoefficient>>& r
   return m;
 }
 
-/// Orthonormal basis of the null space of m (n columns), n x nullity.
+/// Orthonormal basis of the null space of m (n columns), n x nullity: the trailing columns of Q in
+/// a column-pivoted QR of mᵀ (its leading `rank` columns span the row space of m). Several times
+/// cheaper than an SVD at the vertex problems' sizes (a few dozen rows and columns); the rows are
+/// O(1)-scaled, so the pivots reveal the rank as the singular values would.
 Eigen::MatrixXd null_space(const Eigen::MatrixXd& m, int n) {
   if (m.rows() == 0) return Eigen::MatrixXd::Identity(n, n);
-  Eigen::JacobiSVD<Eigen::MatrixXd> svd(m, Eigen::ComputeFullV);
-  const Eigen::VectorXd& s = svd.singularValues();
-  int rank = 0;
-  for (int i = 0; i < s.size(); ++i)
-    if (s[i] > kRankTolerance * s[0]) ++rank;
-  return svd.matrixV().rightCols(n - rank);
+  Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(m.transpose());
+  qr.setThreshold(kRankTolerance);
+  const Eigen::MatrixXd q = qr.householderQ() * Eigen::MatrixXd::Identity(n, n);
+  return q.rightCols(n - qr.rank());
 }
 
-std::vector<FaceCoefficient> to_function(const Eigen::VectorXd& x, const Unknowns& u, bool normalize) {
+std::vector<FaceCoefficient> to_function(const Eigen::VectorXd& x, const std::vector<std::pair<int, int>>& u,
+                                         bool normalize) {
   const double scale = normalize ? x.cwiseAbs().maxCoeff() : 1.0;
   std::vector<FaceCoefficient> f;
-  for (int i = 0; i < u.size(); ++i)
-    if (x[i] != 0.0) f.push_back({u.list[i].first, u.list[i].second, x[i] / scale});
+  for (size_t i = 0; i < u.size(); ++i)
+    if (x[static_cast<Eigen::Index>(i)] != 0.0) f.push_back({u[i].first, u[i].second, x[static_cast<Eigen::Index>(i)] / scale});
   return f;
 }
 
@@ -133,48 +124,66 @@ Eigen::MatrixXd vertex_targets(const Eigen::MatrixXd& ur, const Eigen::VectorXd&
   return out;
 }
 
-}  // namespace
+/// Loops over vertices or edges take a thread team only when there are enough of them (the same
+/// threshold as assembly/parallel.hpp, which spaces/ may not include).
+bool worth_local_threads(long items) { return items >= 512; }
 
-std::vector<std::vector<FaceCoefficient>> edge_constraint_rows(const PatchMesh& mesh, const EdgeGluing& g, int k) {
-  const MeshEdge& me = mesh.edge(g.edge);
-  const EdgeFrame fr = edge_frame(mesh, g.edge);
-  const int e1 = me.first.local_edge, e2 = me.second.local_edge;
-  const CellShape s1 = mesh.shape(fr.face1), s2 = mesh.shape(fr.face2);
-  std::vector<std::vector<FaceCoefficient>> rows;
-  // C0: straight edges parametrised linearly from X to Y on both faces, so traces match coefficient
-  // by coefficient (the second face runs Y -> X).
-  for (int m = 0; m <= k; ++m)
-    rows.push_back(
-        {{fr.face1, edge_coefficient(s1, k, e1, m, 0), 1.0}, {fr.face2, edge_coefficient(s2, k, e2, k - m, 0), -1.0}});
-  // G1 by collocation at k+3 Gauss points: the residual has degree <= k+2 in t.
-  const QuadratureRule pts = gauss_legendre(k + 3);
-  std::vector<std::pair<int, int>> near1, near2;
-  add_edge_rows(mesh, k, fr.face1, e1, 0, 0, near1);
-  add_edge_rows(mesh, k, fr.face2, e2, 0, 0, near2);
-  for (const Point2& p : pts.points) {
-    const double t = p.x();
-    const Eigen::MatrixXd j1 = bernstein_jet(s1, k, fr.start1 + t * fr.tangent1);
-    const Eigen::MatrixXd j2 = bernstein_jet(s2, k, fr.start2 + t * fr.tangent2);
-    const double a = eval_poly(g.a, t), b = eval_poly(g.b, t), c = eval_poly(g.c, t);
-    std::vector<FaceCoefficient> row;
-    double big = 0.0;
-    for (const auto& [f1, i] : near1) {
-      const double cross = j1(1, i) * fr.cross1.x() + j1(2, i) * fr.cross1.y();
-      const double along = j1(1, i) * fr.tangent1.x() + j1(2, i) * fr.tangent1.y();
-      const double v = c * cross - a * along;
-      if (v != 0.0) row.push_back({fr.face1, i, v});
-      big = std::max(big, std::abs(v));
-    }
-    for (const auto& [f2, i] : near2) {
-      const double v = -b * (j2(1, i) * fr.cross2.x() + j2(2, i) * fr.cross2.y());
-      if (v != 0.0) row.push_back({fr.face2, i, v});
-      big = std::max(big, std::abs(v));
-    }
-    for (FaceCoefficient& fc : row) fc.value /= big;
-    rows.push_back(std::move(row));
-  }
-  return rows;
+/// Throws IncompleteBasis with the first nonempty message (lowest entity index: deterministic
+/// whatever the number of threads).
+void throw_first(const std::vector<std::string>& errors) {
+  for (const std::string& e : errors)
+    if (!e.empty()) throw IncompleteBasis(e);
 }
+
+/// What one interior edge's local problem gives, kept for the vertex problems at its ends.
+/// With E = the edge's C0 + G1 rows restricted to `unknowns` (rows 0–1 along the edge minus both
+/// corner sets), E = U S Vᵀ, and A = the rows restricted to the two corner sets at one end:
+/// `null` = ker E (the edge functions); per end, `compat` = coker(E)ᵀ A (the conditions on that
+/// end's corner data) and `scaled` = S_r⁻¹ U_rᵀ A, so that −V_r (scaled · x) = −E⁺ A x is the
+/// minimum-norm rest of a function with corner data x. E⁺ is never formed: its entries are all of
+/// size 1/σ_min, and multiplying by it would leave G1 residuals of eps·cond(E) even where the
+/// result is O(1); through the factors the error stays relative to the result. The rows are not kept.
+struct EdgeLocal {
+  struct End {
+    std::vector<std::pair<int, int>> corners;  ///< 8 (face, index): both faces' corner sets at this end
+    Eigen::MatrixXd compat, scaled;            ///< dim coker x 8, rank x 8
+  };
+  std::vector<std::pair<int, int>> unknowns;
+  Eigen::MatrixXd null, range;  ///< ker E and V_r: |unknowns| x nullity, |unknowns| x rank
+  End end[2];                   ///< at X, at Y
+};
+
+void solve_edge_local(const PatchMesh& mesh, int e, const std::vector<std::vector<FaceCoefficient>>& rows, int k,
+                      EdgeLocal& l) {
+  Unknowns u(k);
+  u.add(l.unknowns);
+  const Eigen::MatrixXd m = restrict_rows(rows, u);
+  Eigen::JacobiSVD<Eigen::MatrixXd> svd(m, Eigen::ComputeFullU | Eigen::ComputeFullV);
+  const Eigen::VectorXd& s = svd.singularValues();
+  Eigen::Index rank = 0;
+  for (Eigen::Index i = 0; i < s.size(); ++i)
+    if (s[i] > kRankTolerance * s[0]) ++rank;
+  l.null = svd.matrixV().rightCols(m.cols() - rank);
+  l.range = svd.matrixV().leftCols(rank);
+  const Eigen::MatrixXd coker = svd.matrixU().rightCols(m.rows() - rank);
+  const MeshEdge& me = mesh.edge(e);
+  const int f1 = me.first.face, f2 = me.second.face;
+  const int n1 = mesh.num_corners(f1), n2 = mesh.num_corners(f2);
+  for (int end = 0; end < 2; ++end) {
+    // `first` runs X -> Y along its local edge e1 (corner e1 at X), `second` Y -> X (corner e2 at Y).
+    const int c1 = (me.first.local_edge + end) % n1, c2 = (me.second.local_edge + 1 - end) % n2;
+    EdgeLocal::End& d = l.end[end];
+    for (int idx : corner_coefficients(mesh.shape(f1), k, c1)) d.corners.push_back({f1, idx});
+    for (int idx : corner_coefficients(mesh.shape(f2), k, c2)) d.corners.push_back({f2, idx});
+    Unknowns cu(k);
+    cu.add(d.corners);
+    const Eigen::MatrixXd a = restrict_rows(rows, cu);
+    d.compat = coker.transpose() * a;
+    d.scaled = s.head(rank).cwiseInverse().asDiagonal() * (svd.matrixU().leftCols(rank).transpose() * a);
+  }
+}
+
+}  // namespace
 
 int vertex_function_count(const PatchMesh& mesh, const std::vector<EdgeGluing>& gluing, int v) {
   const VertexFan& fan = mesh.fan(v);
@@ -208,6 +217,103 @@ int theorem_dimension(const PatchMesh& mesh, const std::vector<EdgeGluing>& glui
          9 * mesh.num_edges() + 3 * used_vertices + crossing_vertices;
 }
 
+namespace {
+
+/// The vertex functions of vertex v (notes §4.5), value function first. The local problem has the
+/// unknowns C (corner sets of v, 4 per face) and R_τ (each edge τ at v: rows 0–1 along τ minus the
+/// corner sets, the edge problem's unknowns); the rows of an interior edge τ at v are
+/// A_τ x_C + E_τ x_R_τ = 0 (coefficients with index >= 2 along τ meet no other edge's rows at v).
+/// So the corner data the local null space reaches are H = {x_C : coker_τᵀ A_τ x_C = 0 for every
+/// τ}, and the minimum-norm local function with corner data h ∈ H is x_R_τ = −E_τ⁺ A_τ h (0 on
+/// boundary edges). This is the null space of all rows on C ∪ R, reduced to its part orthogonal
+/// to the edge functions, without the large dense SVD of the whole local system: one SVD of a
+/// (Σ dim coker) x 4F matrix per vertex, the edge parts reused from the edge problems.
+std::vector<std::vector<FaceCoefficient>> build_vertex_functions(const PatchMesh& mesh,
+                                                                 const std::vector<EdgeGluing>& gluing, int k, int v,
+                                                                 const std::vector<EdgeLocal>& local,
+                                                                 const std::string& where) {
+  const VertexFan& fan = mesh.fan(v);
+  const int nf = static_cast<int>(fan.face.size());
+  Unknowns corners(k);
+  for (int i = 0; i < nf; ++i) {
+    std::vector<std::pair<int, int>> c;
+    for (int idx : corner_coefficients(mesh.shape(fan.face[i]), k, fan.corner[i])) c.push_back({fan.face[i], idx});
+    corners.add(c);
+  }
+  const int nc = corners.size();
+  // The interior edges at v, their data at this end and its columns in the corner data.
+  std::vector<const EdgeLocal::End*> ends;
+  std::vector<const EdgeLocal*> edges;
+  std::vector<std::array<int, 8>> columns;
+  Eigen::Index compat_rows = 0;
+  for (int e : fan.edge)
+    if (!mesh.edge(e).boundary()) {
+      const EdgeLocal::End& d = local[e].end[mesh.edge(e).x == v ? 0 : 1];
+      std::array<int, 8> col;
+      for (int j = 0; j < 8; ++j) {
+        col[j] = corners.find(d.corners[j].first, d.corners[j].second);
+        if (col[j] < 0) throw std::logic_error("G1 basis: edge corner set outside the vertex fan");
+      }
+      ends.push_back(&d);
+      edges.push_back(&local[e]);
+      columns.push_back(col);
+      compat_rows += d.compat.rows();
+    }
+  Eigen::MatrixXd compat = Eigen::MatrixXd::Zero(compat_rows, nc);
+  Eigen::Index r0 = 0;
+  for (size_t i = 0; i < ends.size(); ++i) {
+    for (int j = 0; j < 8; ++j) compat.block(r0, columns[i][j], ends[i]->compat.rows(), 1) += ends[i]->compat.col(j);
+    r0 += ends[i]->compat.rows();
+  }
+  const Eigen::MatrixXd ur = null_space(compat, nc);  // orthonormal basis of H
+  const int rank = static_cast<int>(ur.cols());
+  const int expected = vertex_function_count(mesh, gluing, v);
+  if (rank != expected)
+    throw IncompleteBasis(where + "vertex " + std::to_string(v) + " has " + std::to_string(rank) +
+                          " independent corner data; expected " + std::to_string(expected));
+  const Eigen::VectorXd ones = Eigen::VectorXd::Ones(nc);
+  if ((ur * (ur.transpose() * ones) - ones).norm() > 1e-8 * ones.norm())
+    throw IncompleteBasis(where + "vertex " + std::to_string(v) + ": constants are not locally representable");
+  // Minimum-norm local function with corner data h ∈ H (projected onto H against round-off).
+  std::vector<std::pair<int, int>> list = corners.list;  // C, then R_τ of each interior edge
+  for (const EdgeLocal* l : edges) list.insert(list.end(), l->unknowns.begin(), l->unknowns.end());
+  auto function = [&](const Eigen::VectorXd& h, bool normalize) {
+    Eigen::VectorXd x(static_cast<Eigen::Index>(list.size()));
+    x.head(nc) = ur * (ur.transpose() * h);
+    Eigen::Index n = nc;
+    for (size_t i = 0; i < ends.size(); ++i) {
+      Eigen::Matrix<double, 8, 1> xe;
+      for (int j = 0; j < 8; ++j) xe[j] = x[columns[i][j]];
+      const Eigen::VectorXd y = ends[i]->scaled * xe;
+      x.segment(n, edges[i]->range.rows()) = -(edges[i]->range * y);
+      n += edges[i]->range.rows();
+    }
+    return to_function(x, list, normalize);
+  };
+  // Positions in the corner data of the trace (row 0) and next-row (row 1) coefficients along
+  // the boundary edges at a boundary vertex.
+  std::vector<int> trace_rows, normal_rows;
+  if (fan.boundary) {
+    const int f0 = fan.face.front(), c0 = fan.corner.front();
+    const int fl = fan.face.back(), cl = fan.corner.back();
+    const CellShape s0 = mesh.shape(f0), sl = mesh.shape(fl);
+    const int before = cl + mesh.num_corners(fl) - 1;  // the last face's edge ending at v
+    for (int m = 0; m <= 1; ++m) {
+      trace_rows.push_back(corners.find(f0, edge_coefficient(s0, k, c0, m, 0)));
+      normal_rows.push_back(corners.find(f0, edge_coefficient(s0, k, c0, m, 1)));
+      trace_rows.push_back(corners.find(fl, edge_coefficient(sl, k, before, edge_row_last(sl, k, 0) - m, 0)));
+      normal_rows.push_back(corners.find(fl, edge_coefficient(sl, k, before, edge_row_last(sl, k, 1) - m, 1)));
+    }
+  }
+  const Eigen::MatrixXd targets = vertex_targets(ur, ur.transpose() * ones, trace_rows, normal_rows);
+  std::vector<std::vector<FaceCoefficient>> out;
+  out.push_back(function(ones, false));
+  for (int j = 1; j < rank; ++j) out.push_back(function(ur * targets.col(j), true));
+  return out;
+}
+
+}  // namespace
+
 G1Basis build_g1_basis(const PatchMesh& mesh, const std::vector<EdgeGluing>& gluing, int k) {
   if (k < 3) throw IncompleteBasis("G1 basis needs degree >= 3");
   // Below 4 the corner sets of a triangle overlap (λ0 λ1 λ2 belongs to all three).
@@ -221,103 +327,52 @@ G1Basis build_g1_basis(const PatchMesh& mesh, const std::vector<EdgeGluing>& glu
   };
   const std::string where = mesh.name() + ", degree " + std::to_string(k) + ": ";
 
-  // Edge rows once per interior edge (shared by the edge and both vertex problems).
-  std::vector<std::vector<std::vector<FaceCoefficient>>> rows(mesh.num_edges());
-  for (int e = 0; e < mesh.num_edges(); ++e)
-    if (!mesh.edge(e).boundary()) rows[e] = edge_constraint_rows(mesh, gluing[e], k);
-
-  // Edge functions; their counts are needed by the vertex check.
-  std::vector<int> edge_count(mesh.num_edges(), 0);
+  // Per interior edge: its rows (the Bernstein jets at the collocation points computed once), its
+  // edge functions and what the vertex problems reuse (EdgeLocal). Independent per edge: parallel,
+  // results by index.
+  const EdgeCollocation collocation(k);
+  std::vector<EdgeLocal> local(mesh.num_edges());
+  std::vector<std::string> errors(mesh.num_edges());
+#pragma omp parallel for schedule(dynamic, 16) if (worth_local_threads(mesh.num_edges()))
   for (int e = 0; e < mesh.num_edges(); ++e) {
     const MeshEdge& me = mesh.edge(e);
-    Unknowns u(k);
-    std::vector<std::pair<int, int>> items;
-    add_edge_rows(mesh, k, me.first.face, me.first.local_edge, 2, 2, items);
-    if (me.boundary()) {
-      for (const auto& [f, i] : items) add({{f, i, 1.0}}, {G1Entity::edge, e});
-      edge_count[e] = static_cast<int>(items.size());
+    EdgeLocal& l = local[e];
+    add_edge_rows(mesh, k, me.first.face, me.first.local_edge, 2, 2, l.unknowns);
+    if (me.boundary()) continue;
+    add_edge_rows(mesh, k, me.second.face, me.second.local_edge, 2, 2, l.unknowns);
+    solve_edge_local(mesh, e, edge_constraint_rows(mesh, gluing[e], collocation), k, l);
+    const int expected = syzygy_dimension(gluing[e], k) - 9 + (gluing[e].crossing_x ? 1 : 0) + (gluing[e].crossing_y ? 1 : 0);
+    if (l.null.cols() != expected)
+      errors[e] = where + "edge " + std::to_string(e) + " has " + std::to_string(l.null.cols()) +
+                  " local functions, expected " + std::to_string(expected);
+  }
+  throw_first(errors);
+  for (int e = 0; e < mesh.num_edges(); ++e) {
+    const EdgeLocal& l = local[e];
+    if (mesh.edge(e).boundary()) {
+      for (const auto& [f, i] : l.unknowns) add({{f, i, 1.0}}, {G1Entity::edge, e});
       continue;
     }
-    add_edge_rows(mesh, k, me.second.face, me.second.local_edge, 2, 2, items);
-    u.add(items);
-    const Eigen::MatrixXd n = null_space(restrict_rows(rows[e], u), u.size());
-    const int expected = syzygy_dimension(gluing[e], k) - 9 + (gluing[e].crossing_x ? 1 : 0) + (gluing[e].crossing_y ? 1 : 0);
-    if (n.cols() != expected)
-      throw IncompleteBasis(where + "edge " + std::to_string(e) + " has " + std::to_string(n.cols()) +
-                            " local functions, expected " + std::to_string(expected));
-    edge_count[e] = static_cast<int>(n.cols());
-    for (int j = 0; j < n.cols(); ++j) add(to_function(n.col(j), u, true), {G1Entity::edge, e});
+    for (Eigen::Index j = 0; j < l.null.cols(); ++j) add(to_function(l.null.col(j), l.unknowns, true), {G1Entity::edge, e});
   }
 
-  // Vertex functions.
+  // Vertex functions: per vertex a list of functions, built in parallel, appended in vertex order
+  // (the basis does not depend on the number of threads).
+  std::vector<std::vector<std::vector<FaceCoefficient>>> vertex_functions(mesh.num_vertices());
+  errors.assign(mesh.num_vertices(), {});
+#pragma omp parallel for schedule(dynamic, 16) if (worth_local_threads(mesh.num_vertices()))
   for (int v = 0; v < mesh.num_vertices(); ++v) {
-    const VertexFan& fan = mesh.fan(v);
-    const int nf = static_cast<int>(fan.face.size());
-    if (nf == 0) continue;
-    Unknowns u(k);
-    std::vector<std::pair<int, int>> items, corner;
-    for (int i = 0; i < nf; ++i) {
-      const int f = fan.face[i], c = fan.corner[i];
-      const int n = mesh.num_corners(f);
-      add_edge_rows(mesh, k, f, c, 0, 2, items);                // along edge c, without corner c+1
-      add_edge_rows(mesh, k, f, (c + n - 1) % n, 2, 0, items);  // along edge c-1, without corner c-1
-      for (int idx : corner_coefficients(mesh.shape(f), k, c)) corner.push_back({f, idx});
+    if (mesh.fan(v).face.empty()) continue;
+    try {
+      vertex_functions[v] = build_vertex_functions(mesh, gluing, k, v, local, where);
+    } catch (const IncompleteBasis& ex) {
+      errors[v] = ex.what();
     }
-    u.add(items);
-    std::vector<std::vector<FaceCoefficient>> vrows;
-    int edge_functions = 0;
-    for (int e : fan.edge) {
-      edge_functions += edge_count[e];
-      if (!mesh.edge(e).boundary()) vrows.insert(vrows.end(), rows[e].begin(), rows[e].end());
-    }
-    const Eigen::MatrixXd n = null_space(restrict_rows(vrows, u), u.size());
-    // Corner data (Taylor map T_γ) of the null space.
-    Eigen::MatrixXd w(static_cast<Eigen::Index>(corner.size()), n.cols());
-    for (size_t r = 0; r < corner.size(); ++r) w.row(static_cast<Eigen::Index>(r)) = n.row(u.find(corner[r].first, corner[r].second));
-    Eigen::JacobiSVD<Eigen::MatrixXd> svd(w, Eigen::ComputeThinU | Eigen::ComputeThinV);
-    const Eigen::VectorXd& s = svd.singularValues();
-    int rank = 0;
-    for (int i = 0; i < s.size(); ++i)
-      if (s[i] > 1e-8 * s[0]) ++rank;
-    const int expected = vertex_function_count(mesh, gluing, v);
-    if (rank != expected || n.cols() != rank + edge_functions)
-      throw IncompleteBasis(where + "vertex " + std::to_string(v) + " has " + std::to_string(rank) +
-                            " independent corner data and " + std::to_string(n.cols()) +
-                            " local functions; expected " + std::to_string(expected) + " and " +
-                            std::to_string(expected + edge_functions));
-    const Eigen::MatrixXd ur = svd.matrixU().leftCols(rank);
-    // Minimum-norm solution of T_γ x = h: orthogonal to the edge functions inside the null space.
-    auto solve = [&](const Eigen::VectorXd& h) -> Eigen::VectorXd {
-      const Eigen::VectorXd y = (ur.transpose() * h).cwiseQuotient(s.head(rank));
-      return n * (svd.matrixV().leftCols(rank) * y);
-    };
-    const Eigen::VectorXd ones = Eigen::VectorXd::Ones(static_cast<Eigen::Index>(corner.size()));
-    if ((ur * (ur.transpose() * ones) - ones).norm() > 1e-8 * ones.norm())
-      throw IncompleteBasis(where + "vertex " + std::to_string(v) + ": constants are not locally representable");
-    // Positions in the corner data of the trace (row 0) and next-row (row 1) coefficients along
-    // the boundary edges at a boundary vertex.
-    std::vector<int> trace_rows, normal_rows;
-    if (fan.boundary) {
-      auto position = [&](int f, int idx) {
-        for (size_t r = 0; r < corner.size(); ++r)
-          if (corner[r].first == f && corner[r].second == idx) return static_cast<int>(r);
-        return -1;
-      };
-      const int f0 = fan.face.front(), c0 = fan.corner.front();
-      const int fl = fan.face.back(), cl = fan.corner.back();
-      const CellShape s0 = mesh.shape(f0), sl = mesh.shape(fl);
-      const int before = cl + mesh.num_corners(fl) - 1;  // the last face's edge ending at v
-      for (int m = 0; m <= 1; ++m) {
-        trace_rows.push_back(position(f0, edge_coefficient(s0, k, c0, m, 0)));
-        normal_rows.push_back(position(f0, edge_coefficient(s0, k, c0, m, 1)));
-        trace_rows.push_back(position(fl, edge_coefficient(sl, k, before, edge_row_last(sl, k, 0) - m, 0)));
-        normal_rows.push_back(position(fl, edge_coefficient(sl, k, before, edge_row_last(sl, k, 1) - m, 1)));
-      }
-    }
-    const Eigen::MatrixXd targets = vertex_targets(ur, ur.transpose() * ones, trace_rows, normal_rows);
-    add(to_function(solve(ones), u, false), {G1Entity::vertex, v, true});
-    for (int j = 1; j < rank; ++j) add(to_function(solve(ur * targets.col(j)), u, true), {G1Entity::vertex, v});
   }
+  throw_first(errors);
+  for (int v = 0; v < mesh.num_vertices(); ++v)
+    for (size_t j = 0; j < vertex_functions[v].size(); ++j)
+      add(std::move(vertex_functions[v][j]), {G1Entity::vertex, v, j == 0});
 
   // Face functions: interior Bernstein coefficients.
   for (int f = 0; f < mesh.num_faces(); ++f)

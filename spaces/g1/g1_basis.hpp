@@ -14,22 +14,11 @@
 #include <Eigen/SparseCore>
 #include <vector>
 
+#include "spaces/g1/edge_rows.hpp"
 #include "spaces/g1/gluing_data.hpp"
 #include "spaces/g1/patch_mesh.hpp"
 
 namespace iga {
-
-/// One coefficient of a global function: local Bernstein index `index` of face `face`.
-struct FaceCoefficient {
-  int face;
-  int index;
-  double value;
-};
-
-/// Sparse rows of the C0 and G1 conditions of interior edge `edge` (notes §1.4/§1.5): k+1 trace
-/// equalities and k+3 collocations of c ∂_{X→Z1} f1 − a ∂_{X→Y} f1 − b ∂_{X→Z2} f2 (a polynomial of
-/// degree k+2, so exact), each row scaled to max-norm 1.
-std::vector<std::vector<FaceCoefficient>> edge_constraint_rows(const PatchMesh& mesh, const EdgeGluing& gluing, int k);
 
 enum class G1Entity { vertex, edge, face };
 
