@@ -24,7 +24,7 @@
 namespace iga {
 
 /// η_K of the Poisson residual for u_h = Σ c_i N_i, one per element (not squared).
-/// `quadrature_degree` is passed to Space::quadrature (use error_quadrature_degree).
+/// `quadrature_degree` is passed to Space::quadrature (use Space::error_quadrature_degree).
 std::vector<double> poisson_residual_indicators(const Space& space, const Eigen::VectorXd& coefficients,
                                                 const ScalarField& source, int quadrature_degree);
 

@@ -26,7 +26,6 @@ int assembly_quadrature_degree(const Space& space) {
   return 2 * space.degree() + (space.affine_elements() ? 1 : 3);
 }
 
-int error_quadrature_degree(const Space& space) { return 2 * space.degree() + 8; }
 
 void check_boundary_parts(const Space& space, const ProblemSpec& problem) {
   const std::vector<std::string> names = space.boundary_names();
@@ -104,7 +103,7 @@ DiscreteSolution solve_problem(const Space& space, const ProblemSpec& problem, S
   if (problem.exact) {
     say("computing errors");
     t0 = Clock::now();
-    const ErrorNorms e = error_norms(space, out.coefficients, problem.exact_solution(), error_quadrature_degree(space));
+    const ErrorNorms e = error_norms(space, out.coefficients, problem.exact_solution(), space.error_quadrature_degree());
     if (!std::isfinite(e.l2) || !std::isfinite(e.h1.value_or(0)) || !std::isfinite(e.h2.value_or(0)))
       throw InputError(problem.data_where + ": the exact solution or its derivatives are not finite somewhere in the domain");
     r.l2 = e.l2;

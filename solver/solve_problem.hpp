@@ -21,9 +21,9 @@ struct DiscreteSolution {
   int boundary_constrained = 0;  ///< coefficients fixed by essential data
 };
 
-/// Quadrature degrees used for a space of local degree p (documented in README).
+/// Quadrature degree used for assembly with a space of local degree p (documented in README;
+/// error norms use Space::error_quadrature_degree).
 int assembly_quadrature_degree(const Space& space);
-int error_quadrature_degree(const Space& space);
 
 /// Validate the problem's boundary part names against the space; throws InputError.
 void check_boundary_parts(const Space& space, const ProblemSpec& problem);

@@ -161,9 +161,9 @@ StudyResult run_study(const StudySettings& settings, const std::string& director
       const ScalarField f = [source](const Point2& x) { return source(x); };
       const std::vector<double> eta =
           settings.problem.pde == Pde::poisson
-              ? poisson_residual_indicators(*space, sol.coefficients, f, error_quadrature_degree(*space))
+              ? poisson_residual_indicators(*space, sol.coefficients, f, space->error_quadrature_degree())
               : plate_residual_indicators(
-                    *space, sol.coefficients, f, error_quadrature_degree(*space),
+                    *space, sol.coefficients, f, space->error_quadrature_degree(),
                     boundary_edges_of_kind(*space, settings.problem, BoundaryKind::simply_supported),
                     [g = settings.problem.laplacian](const Point2& x, const Point2&) { return g(x); });
       estimator = total_indicator(eta);

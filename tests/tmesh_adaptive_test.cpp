@@ -108,7 +108,7 @@ TEST(ErrorIndicator, ZeroForAnExactDiscreteSolutionAndNotOtherwise) {
     const DiscreteSolution sol = solve_problem(*space, p, SolverKind::cholmod);
     const SymbolicFunction f = p.source;
     return poisson_residual_indicators(*space, sol.coefficients, [f](const Point2& x) { return f(x); },
-                                       error_quadrature_degree(*space));
+                                       space->error_quadrature_degree());
   };
   // A cubic is in the C1 cubic spline space: u_h = u, f + Δu_h = 0.
   const std::vector<double> exact = indicator("x^3 - 3*x*y^2 + x^2*y + 2*y^2");

@@ -34,7 +34,7 @@ const char* kSmooth = "problem: {pde: poisson, exact: \"sin(3*x) * exp(y) + x*y^
 double estimator(const Space& space, const ProblemSpec& p, const Eigen::VectorXd& c) {
   const SymbolicFunction f = p.source;
   return total_indicator(poisson_residual_indicators(space, c, [f](const Point2& x) { return f(x); },
-                                                     error_quadrature_degree(space)));
+                                                     space.error_quadrature_degree()));
 }
 
 }  // namespace

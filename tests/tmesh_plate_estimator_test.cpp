@@ -31,7 +31,7 @@ double plate_estimator(const Space& space, const ProblemSpec& p, const Eigen::Ve
                        const std::vector<BoundaryEdge>& simply_supported) {
   const SymbolicFunction f = p.source, g = p.laplacian;
   return total_indicator(plate_residual_indicators(space, c, [f](const Point2& x) { return f(x); },
-                                                   error_quadrature_degree(space), simply_supported,
+                                                   space.error_quadrature_degree(), simply_supported,
                                                    [g](const Point2& x, const Point2&) { return g(x); }));
 }
 
