@@ -180,16 +180,23 @@ Eigen::MatrixXd ws4_exact_extraction(const ElementDofGeometry& geometry) {
     return rows;
   }();
   const Matrix51L t = ws4_functionals_from_dofs(geometry);
-  std::vector<Nonzero> t_rows[51];
-  for (int j = 0; j < 51; ++j)
+  // The nonzeros of T_K row by row, in one flat array (no allocation per element).
+  std::array<Nonzero, 51 * 51> t_nonzeros;
+  std::array<int, 52> t_start;
+  int count = 0;
+  for (int j = 0; j < 51; ++j) {
+    t_start[j] = count;
     for (int m = 0; m < 51; ++m)
-      if (t(j, m) != 0) t_rows[j].push_back({m, t(j, m)});
+      if (t(j, m) != 0) t_nonzeros[count++] = {m, t(j, m)};
+  }
+  t_start[51] = count;
   Eigen::MatrixXd c(51, 51);
   Real row[51];
   for (int i = 0; i < 51; ++i) {
     std::fill(row, row + 51, Real(0));
     for (const Nonzero& a : inverse_rows[i])
-      for (const Nonzero& b : t_rows[a.index]) row[b.index] += a.value * b.value;
+      for (int e = t_start[a.index]; e < t_start[a.index + 1]; ++e)
+        row[t_nonzeros[e].index] += a.value * t_nonzeros[e].value;
     for (int m = 0; m < 51; ++m) c(i, m) = static_cast<double>(row[m]);
   }
   return c;
