@@ -148,6 +148,7 @@ void write_summary_json(const StudySettings& settings, const StudyResult& result
                       {"rate_h2", optional_json(q.h2)},
                       {"solver", result.solver_methods[i]},
                       {"relative_residual", result.relative_residuals[i]},
+                      {"refinement_steps", result.refinement_steps[i]},
                       {"g1_jump", optional_json(r.g1_jump)},
                       {"rate_dofs_l2", optional_json(d.l2)},
                       {"rate_dofs_h1", optional_json(d.h1)},

@@ -197,6 +197,7 @@ StudyResult run_study(const StudySettings& settings, const std::string& director
     result.rows.push_back(sol.result);
     result.solver_methods.push_back(sol.solve.method);
     result.relative_residuals.push_back(sol.solve.relative_residual);
+    result.refinement_steps.push_back(sol.solve.refinement_steps);
     result.space_parameters = space->parameters();
     result.space_type = space->type();
     result.expected = optimal_rates(settings.problem.pde, space->degree());

@@ -49,6 +49,7 @@ struct StudyResult {
   OptimalRates expected;     ///< for the space degree and PDE
   std::vector<std::string> solver_methods;  ///< per level
   std::vector<double> relative_residuals;   ///< per level
+  std::vector<int> refinement_steps;        ///< per level (SolveReport::refinement_steps)
   /// Per level, (Σ η_K²)^{1/2} of the residual indicator (adaptive runs; nullopt otherwise).
   std::vector<std::optional<double>> estimators;
   bool adaptive = false;

@@ -118,6 +118,8 @@ TEST_P(ShippedConfig, RunsAndWritesReadableOutput) {
   EXPECT_EQ(summary["levels"].size(), 2u);
   EXPECT_TRUE(summary.contains("config"));
   EXPECT_TRUE(summary["space"].contains("type"));
+  for (const auto& level : summary["levels"])  // the solver's iterative-refinement corrections
+    EXPECT_GE(level["refinement_steps"].get<int>(), 0) << name;
 
   EXPECT_TRUE(fs::exists(out / "solution.pvd"));
   EXPECT_TRUE(fs::exists(out / "mesh.pvd"));

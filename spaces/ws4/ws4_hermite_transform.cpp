@@ -1,6 +1,7 @@
 #include "spaces/ws4/ws4_hermite_transform.hpp"
 
 #include <Eigen/LU>
+#include <algorithm>
 #include <initializer_list>
 #include <stdexcept>
 #include <vector>
@@ -163,10 +164,42 @@ Matrix51L ws4_functionals_from_dofs(const ElementDofGeometry& geometry) {
 }
 
 Eigen::MatrixXd ws4_exact_extraction(const ElementDofGeometry& geometry) {
-  // A double product suffices: it differs from the long double one by ~4e-16 relative to each
-  // column, at a tenth of the cost.
-  static const Eigen::MatrixXd inverse = ws4_coefficients_from_functionals().cast<double>();
-  return inverse * ws4_functionals_from_dofs(geometry).cast<double>();
+  // Both factors are sparse (A⁻¹: 744 nonzeros, T_K: ≈ 345), so the product in long double, rounded
+  // once, costs ≈ 5k operations instead of the 51³ of a dense double product, and C_K is as exact
+  // as a double matrix can be (clamped plate, level 4 of ws4-biharmonic.yaml: L2 3.4e-12 → 2.8e-12).
+  struct Nonzero {
+    int index;
+    Real value;
+  };
+  static const std::vector<std::vector<Nonzero>> inverse_rows = [] {
+    const Matrix51L& inverse = ws4_coefficients_from_functionals();
+    std::vector<std::vector<Nonzero>> rows(51);
+    for (int i = 0; i < 51; ++i)
+      for (int j = 0; j < 51; ++j)
+        if (inverse(i, j) != 0) rows[i].push_back({j, inverse(i, j)});
+    return rows;
+  }();
+  const Matrix51L t = ws4_functionals_from_dofs(geometry);
+  // The nonzeros of T_K row by row, in one flat array (no allocation per element).
+  std::array<Nonzero, 51 * 51> t_nonzeros;
+  std::array<int, 52> t_start;
+  int count = 0;
+  for (int j = 0; j < 51; ++j) {
+    t_start[j] = count;
+    for (int m = 0; m < 51; ++m)
+      if (t(j, m) != 0) t_nonzeros[count++] = {m, t(j, m)};
+  }
+  t_start[51] = count;
+  Eigen::MatrixXd c(51, 51);
+  Real row[51];
+  for (int i = 0; i < 51; ++i) {
+    std::fill(row, row + 51, Real(0));
+    for (const Nonzero& a : inverse_rows[i])
+      for (int e = t_start[a.index]; e < t_start[a.index + 1]; ++e)
+        row[t_nonzeros[e].index] += a.value * t_nonzeros[e].value;
+    for (int m = 0; m < 51; ++m) c(i, m) = static_cast<double>(row[m]);
+  }
+  return c;
 }
 
 }  // namespace iga::ws4

@@ -34,6 +34,24 @@ double directional_from_jet(const std::array<double, 10>& d, const std::vector<P
   return sum;
 }
 
+/// Per row, the runs (first column, count) that hold its nonzeros; zero gaps shorter than 16
+/// columns (one fan triangle's points at low degree) stay inside a run, so runs are few and long.
+template <class Matrix>
+std::vector<std::vector<std::pair<int, int>>> nonzero_runs(const Matrix& m) {
+  constexpr int min_gap = 16;
+  std::vector<std::vector<std::pair<int, int>>> runs(m.rows());
+  for (int i = 0; i < m.rows(); ++i) {
+    int last = -min_gap - 1;  // last nonzero column
+    for (int k = 0; k < m.cols(); ++k) {
+      if (m(i, k) == 0.0) continue;
+      if (k - last > min_gap) runs[i].push_back({k, 0});
+      runs[i].back().second = k + 1 - runs[i].back().first;
+      last = k;
+    }
+  }
+  return runs;
+}
+
 }  // namespace
 
 // ---------------------------------------------------------------------------------------------
@@ -105,10 +123,19 @@ class Ws4Space::Ws4Evaluator final : public Space::Evaluator {
     evaluate(element, rule, 0u, out);
   }
 
-  /// local = C_Kᵀ (B g): one table product with the weights, then the extraction.
+  /// local = C_Kᵀ (B g): one table product with the weights, then the extraction. (B g)_i runs
+  /// over the support of B_i only: most simplex splines vanish on most of the split, and skipping
+  /// exact zeros changes no term of the sum (a non-finite g still reaches every B_i nonzero there).
   void integrate_values(int element, const QuadratureRule& rule, const PointValues& /*geometry*/,
                         const Eigen::VectorXd& weights, Eigen::VectorXd& local) override {
-    b_.noalias() = tables(rule).ref.value * weights;
+    const Tables& t = tables(rule);
+    b_.resize(Ws4Basis::size);
+    for (int i = 0; i < Ws4Basis::size; ++i) {
+      double sum = 0.0;
+      for (const auto& [begin, length] : t.support[i])
+        sum += t.value_rows.row(i).segment(begin, length).dot(weights.segment(begin, length));
+      b_(i) = sum;
+    }
     local.noalias() = space_.extraction(element).transpose() * b_;
   }
 
@@ -126,6 +153,10 @@ class Ws4Space::Ws4Evaluator final : public Space::Evaluator {
   struct Tables {
     std::vector<Point2> points;  // copy, to detect a different rule at a reused address
     ReferenceDerivatives ref;
+    // The value table row by row, and per B_i the runs (first point, count) where its row is
+    // nonzero (integrate_values).
+    Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> value_rows;
+    std::vector<std::vector<std::pair<int, int>>> support;
   };
   const Tables& tables(const QuadratureRule& rule) {
     auto it = cache_.find(&rule);
@@ -134,6 +165,8 @@ class Ws4Space::Ws4Evaluator final : public Space::Evaluator {
     Tables& t = cache_[&rule];
     t.points = rule.points;
     Ws4Basis::reference().tabulate(rule.points, t.ref);
+    t.value_rows = t.ref.value;
+    t.support = nonzero_runs(t.value_rows);
     return t;
   }
 
@@ -305,8 +338,7 @@ Eigen::VectorXd Ws4Space::interpolate(const Jet3& f) const {
 }
 
 bool Ws4Space::closed_form_element_matrix(int element, BilinearForm form, Eigen::MatrixXd& local) const {
-  const Eigen::MatrixXd& c = extraction_[element];
-  local = symmetric_congruence_extended(c, ws4_form_matrix(form, jacobian(element)));
+  local = symmetric_congruence_extended(extraction_[element], ws4_form_matrix(form, jacobian(element)));
   return true;
 }
 
