@@ -29,6 +29,16 @@ class ConfigNode {
   std::string where() const;
   /// Throw InputError "where(): message".
   [[noreturn]] void fail(const std::string& message) const;
+  /// Runs `build`; an InputError it throws (a mesh file's message, say) is reported at this node
+  /// instead, as "FILE:LINE:COL: key: message".
+  template <class Build>
+  auto guard(Build&& build) const {
+    try {
+      return build();
+    } catch (const InputError& e) {
+      fail(e.what());
+    }
+  }
 
   bool is_map() const;
   bool is_sequence() const;

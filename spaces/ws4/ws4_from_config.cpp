@@ -4,6 +4,7 @@
 #include <optional>
 #include <sstream>
 
+#include "spaces/mesh_io/mesh_file_from_config.hpp"
 #include "spaces/mesh_io/mesh_polygon.hpp"
 #include "spaces/mesh_io/read_mesh_file.hpp"
 #include "spaces/ws4/mesh_triangulation.hpp"
@@ -82,16 +83,6 @@ std::vector<Eigen::Vector2d> points(const ConfigNode& list) {
   return result;
 }
 
-/// Runs `build`, prefixing its InputError with the config place `node` (file:line:col: key).
-template <class F>
-auto at_config(const ConfigNode& node, F&& build) {
-  try {
-    return build();
-  } catch (const InputError& e) {
-    node.fail(e.what());
-  }
-}
-
 BaseMesh polygon(const ConfigNode& domain, const ConfigNode& space) {
   domain.check_keys({"type", "vertices", "holes", "mesh_size", "jitter", "seed"});
   reject_elements(space, "polygon");
@@ -104,8 +95,8 @@ BaseMesh polygon(const ConfigNode& domain, const ConfigNode& space) {
   const double h = domain["mesh_size"].as_double();
   if (!(h > 0.0)) domain["mesh_size"].fail("mesh_size must be > 0");
   // Messages name the domain's place; the mesh's own source stays "polygon".
-  const PlanarMesh mesh = at_config(domain, [&] { return mesh_polygon(shape, h, false, "polygon"); });
-  return {at_config(domain, [&] { return ws4::triangulation_from_mesh(mesh); }),
+  const PlanarMesh mesh = domain.guard([&] { return mesh_polygon(shape, h, false, "polygon"); });
+  return {domain.guard([&] { return ws4::triangulation_from_mesh(mesh); }),
           "polygon, " + std::to_string(shape.outer.size()) + " vertices, " + std::to_string(shape.holes.size()) +
               (shape.holes.size() == 1 ? " hole" : " holes") + ", mesh size " + format_number(h) + " (Gmsh)"};
 }
@@ -113,21 +104,12 @@ BaseMesh polygon(const ConfigNode& domain, const ConfigNode& space) {
 BaseMesh mesh_file(const ConfigNode& domain, const ConfigNode& space) {
   domain.check_keys({"type", "file", "mesh_size", "jitter", "seed"});
   reject_elements(space, "mesh_file");
+  const MeshFileRequest request = mesh_file_request(domain);
   const ConfigNode file = domain["file"];
-  std::filesystem::path path = file.as_string();
-  if (path.is_relative()) path = std::filesystem::path(file.file()).parent_path() / path;  // next to the config
-  MeshFileOptions options;
-  if (const auto hn = domain.find("mesh_size")) {
-    std::string extension = path.extension().string();
-    for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    if (extension != ".geo") hn->fail("mesh_size applies to .geo files only (a mesh file is used as it is)");
-    options.mesh_size = hn->as_double();
-    if (!(options.mesh_size > 0.0)) hn->fail("mesh_size must be > 0");
-  }
-  const PlanarMesh mesh = at_config(file, [&] { return read_mesh_file(path.string(), options); });
-  std::string description = "mesh file " + path.filename().string();
-  if (options.mesh_size > 0.0) description += " (mesh size " + format_number(options.mesh_size) + ")";
-  return {at_config(file, [&] { return ws4::triangulation_from_mesh(mesh); }), description};
+  const PlanarMesh mesh = file.guard([&] { return read_mesh_file(request.path.string(), request.options); });
+  std::string description = "mesh file " + request.path.filename().string();
+  if (request.options.mesh_size > 0.0) description += " (mesh size " + format_number(request.options.mesh_size) + ")";
+  return {file.guard([&] { return ws4::triangulation_from_mesh(mesh); }), description};
 }
 
 }  // namespace
