@@ -17,6 +17,8 @@
 #include <sstream>
 #include <vector>
 
+#include "scratch_files.hpp"
+
 namespace fs = std::filesystem;
 
 namespace {
@@ -33,24 +35,7 @@ std::string slurp(const fs::path& p) {
   return s.str();
 }
 
-fs::path scratch_dir() {
-  static const fs::path dir = [] {
-    fs::path d = fs::temp_directory_path() / ("iga-e2e-" + std::to_string(::getpid()));
-    fs::create_directories(d);
-    return d;
-  }();
-  return dir;
-}
-
-/// Removes the scratch directory when the test program ends.
-class ScratchCleanup : public ::testing::Environment {
- public:
-  void TearDown() override {
-    std::error_code ec;
-    fs::remove_all(scratch_dir(), ec);
-  }
-};
-const auto* const kCleanup = ::testing::AddGlobalTestEnvironment(new ScratchCleanup);
+fs::path scratch_dir() { return iga::test::scratch_folder(); }  // removed when the program ends
 
 RunResult run_iga(const std::string& args) {
   const fs::path out = scratch_dir() / "stdout.txt", err = scratch_dir() / "stderr.txt";

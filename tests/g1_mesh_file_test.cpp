@@ -18,14 +18,7 @@ namespace {
 
 const std::string kDomains = std::string(IGA_SOURCE_DIR) + "/configs/domains/";
 
-/// A file with `text` in a fresh temporary folder; its path.
-std::string write_temp(const std::string& name, const std::string& text) {
-  const auto dir = std::filesystem::temp_directory_path() / "iga_g1_mesh_file_test";
-  std::filesystem::create_directories(dir);
-  const auto path = dir / name;
-  std::ofstream(path) << text;
-  return path.string();
-}
+std::string write_temp(const std::string& name, const std::string& text) { return test::scratch_file(name, text); }
 
 std::string error_of(const std::function<void()>& f) {
   try {

@@ -8,7 +8,9 @@
 #include "solver/config_node.hpp"
 #include "solver/problem.hpp"
 #include "solver/solve_problem.hpp"
+#include "solver/study.hpp"
 #include "spaces/space_factory.hpp"
+#include "scratch_files.hpp"
 
 namespace iga::test {
 
@@ -43,6 +45,15 @@ inline Rates last_rates(const std::string& yaml, int levels) {
   Rates r{*rate(a.l2, b.l2, a.h, b.h), *rate(a.h1, b.h1, a.h, b.h), 0.0};
   if (a.h2 && b.h2) r.h2 = *rate(a.h2, b.h2, a.h, b.h);
   return r;
+}
+
+/// Parses and runs the study of a whole config text (quietly), writing its output into this test
+/// program's scratch folder under `name` (one folder per process, so parallel test cases never
+/// share an output directory).
+inline StudyResult run_study_from_yaml(const std::string& yaml, const std::string& name) {
+  const std::string dir = (scratch_folder() / name).string();
+  const StudySettings settings = parse_study(ConfigNode::load_string(yaml, name + ".yaml"), name + ".yaml", 0, dir);
+  return run_study(settings, dir, [](const std::string&) {});
 }
 
 }  // namespace iga::test

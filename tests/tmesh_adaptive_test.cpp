@@ -45,12 +45,7 @@ std::string study_yaml(const std::string& refinement) {
          kLShapeSpace + "refinement: " + refinement + "\noutput: {vtk: false, plot: false}\n";
 }
 
-StudyResult run(const std::string& yaml) {
-  const ConfigNode root = ConfigNode::load_string(yaml, "adaptive.yaml");
-  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "iga-tmesh-adaptive-test";
-  const StudySettings s = parse_study(root, "adaptive.yaml", 0, dir.string());
-  return run_study(s, dir.string(), [](const std::string&) {});
-}
+StudyResult run(const std::string& yaml) { return test::run_study_from_yaml(yaml, "adaptive"); }
 
 }  // namespace
 
@@ -163,7 +158,7 @@ TEST(AdaptiveStudy, StopsOnceTheEstimatorIsBelowTheTolerance) {
 TEST(AdaptiveStudy, ConfigErrors) {
   auto parse = [](const std::string& yaml) {
     parse_study(ConfigNode::load_string(yaml, "bad.yaml"), "bad.yaml", 0,
-                (std::filesystem::temp_directory_path() / "iga-tmesh-adaptive-bad").string());
+                (test::scratch_folder() / "bad").string());
   };
   EXPECT_THROW(parse(study_yaml("{type: adaptive, markng: 0.5}")), InputError);
   EXPECT_THROW(parse(study_yaml("{type: adaptive, marking: 1.5}")), InputError);

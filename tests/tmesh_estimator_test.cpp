@@ -128,9 +128,7 @@ TEST(ResidualEstimator, C0AdaptiveLShapeKeepsItsEffectivityAndBeatsUniform) {
         "domain: {type: l_shape, min: [-1, -1], max: [1, 1]}\n"
         "space: {type: tmesh, section: poly, n: 2, regularity: 0, elements: [4, 4]}\n"
         "refinement: " + refinement + "\noutput: {vtk: false, plot: false}\n";
-    const std::filesystem::path dir = std::filesystem::temp_directory_path() / "iga-tmesh-c0-adaptive-test";
-    const StudySettings s = parse_study(ConfigNode::load_string(yaml, "c0.yaml"), "c0.yaml", 0, dir.string());
-    return run_study(s, dir.string(), [](const std::string&) {});
+    return test::run_study_from_yaml(yaml, "c0");
   };
   const StudyResult r = run("{type: adaptive, marking: 0.5, max_dofs: 600, levels: 40}");
   const StudyResult uniform = run("{levels: 3}");

@@ -47,12 +47,7 @@ const char* kSingularPlate =
     "domain: {type: l_shape, min: [-1, -1], max: [1, 1]}\n"
     "space: {type: tmesh, section: poly, n: 3, regularity: 1, elements: [4, 4]}\n";
 
-StudyResult run(const std::string& yaml) {
-  const ConfigNode root = ConfigNode::load_string(yaml, "plate.yaml");
-  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "iga-tmesh-plate-test";
-  const StudySettings s = parse_study(root, "plate.yaml", 0, dir.string());
-  return run_study(s, dir.string(), [](const std::string&) {});
-}
+StudyResult run(const std::string& yaml) { return test::run_study_from_yaml(yaml, "plate"); }
 
 }  // namespace
 
@@ -174,7 +169,7 @@ TEST(AdaptivePlate, ConfigErrors) {
   auto error_of = [](const std::string& yaml) -> std::string {
     try {
       parse_study(ConfigNode::load_string(yaml, "bad.yaml"), "bad.yaml", 0,
-                  (std::filesystem::temp_directory_path() / "iga-tmesh-plate-bad").string());
+                  (test::scratch_folder() / "bad").string());
     } catch (const InputError& e) {
       return e.what();
     }
