@@ -8,7 +8,7 @@
 #include <cmath>
 #include <map>
 
-#include "solver/errors.hpp"
+#include "config/errors.hpp"
 #include "spaces/element_values.hpp"
 
 namespace iga {

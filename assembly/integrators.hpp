@@ -6,7 +6,7 @@
 #include <Eigen/Core>
 #include <string>
 
-#include "assembly/bilinear_form.hpp"
+#include "spaces/bilinear_form.hpp"
 #include "assembly/fields.hpp"
 #include "spaces/element_values.hpp"
 

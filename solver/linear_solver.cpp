@@ -5,7 +5,7 @@
 #include <chrono>
 #include <vector>
 
-#include "solver/errors.hpp"
+#include "config/errors.hpp"
 
 namespace iga {
 

@@ -9,8 +9,8 @@
 
 #include "assembly/fields.hpp"
 #include "assembly/integrators.hpp"
-#include "solver/config_node.hpp"
-#include "solver/expression.hpp"
+#include "config/config_node.hpp"
+#include "config/expression.hpp"
 
 namespace iga {
 

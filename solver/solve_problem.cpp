@@ -7,7 +7,7 @@
 #include "assembly/assembler.hpp"
 #include "assembly/boundary_conditions.hpp"
 #include "solver/boundary_edge_kinds.hpp"
-#include "solver/errors.hpp"
+#include "config/errors.hpp"
 
 namespace iga {
 

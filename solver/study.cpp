@@ -7,10 +7,8 @@
 #include "assembly/error_indicator.hpp"
 #include "solver/boundary_edge_kinds.hpp"
 #include "solver/dorfler_marking.hpp"
-#include "solver/errors.hpp"
+#include "config/errors.hpp"
 #include "solver/solve_problem.hpp"
-#include "solver/vtk_writer.hpp"
-#include "solver/staged_directory.hpp"
 #include "spaces/space_factory.hpp"
 
 namespace iga {
@@ -113,15 +111,13 @@ StudySettings parse_study(const ConfigNode& root, const std::string& config_path
     if (auto plot = output->find("plot")) s.write_plot = plot->as_bool();
   }
   if (!output_override.empty()) s.output_dir = output_override;
-  check_output_location(s.output_dir);
   return s;
 }
 
-StudyResult run_study(const StudySettings& settings, const std::string& directory, const ProgressSink& progress) {
+StudyResult run_study(const StudySettings& settings, const ProgressSink& progress, const LevelSink& on_level) {
   StudyResult result;
   const ConfigNode domain = settings.root["domain"], space_node = settings.root["space"];
   const ExactSolution exact = settings.problem.exact_solution();
-  std::vector<std::string> vtu_files, mesh_files;
   result.adaptive = settings.adaptive;
   SpacePtr next;  // adaptive: the refined space for the next level
   double t_next = 0.0;
@@ -141,19 +137,7 @@ StudyResult run_study(const StudySettings& settings, const std::string& director
     progress(tag + "done: assembled in " + format_seconds(sol.result.t_assemble) + ", solved (" + sol.solve.method + ") in " +
              format_seconds(sol.result.t_solve) + ", errors in " + format_seconds(sol.result.t_errors));
 
-    if (settings.write_vtk) {
-      progress(tag + "writing VTK");
-      VtkFieldOptions opt;
-      opt.samples = settings.vtk_samples;
-      opt.exact = exact.u;
-      opt.laplacian = settings.problem.pde == Pde::biharmonic;
-      const std::string name = "solution_" + std::to_string(level) + ".vtu";
-      write_solution_vtu(*space, sol.coefficients, opt, (std::filesystem::path(directory) / name).string());
-      vtu_files.push_back(name);
-      const std::string mesh = "mesh_" + std::to_string(level) + ".vtu";
-      write_mesh_vtu(*space, settings.vtk_samples, (std::filesystem::path(directory) / mesh).string());
-      mesh_files.push_back(mesh);
-    }
+    if (on_level) on_level(level, *space, sol);
     std::optional<double> estimator;
     next.reset();
     if (settings.adaptive) {
@@ -202,10 +186,6 @@ StudyResult run_study(const StudySettings& settings, const std::string& director
     result.space_type = space->type();
     result.expected = optimal_rates(settings.problem.pde, space->degree());
     if (settings.adaptive && !next) break;
-  }
-  if (settings.write_vtk) {
-    write_pvd(vtu_files, (std::filesystem::path(directory) / "solution.pvd").string());
-    write_pvd(mesh_files, (std::filesystem::path(directory) / "mesh.pvd").string());
   }
   return result;
 }

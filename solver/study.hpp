@@ -1,13 +1,13 @@
 #pragma once
 /// @file
-/// A convergence study: the same problem solved on a space refined level by level, with the
-/// outputs of every level written into one directory.
+/// A convergence study: the same problem solved on a space refined level by level (uniformly or
+/// adaptively). Files are written by the output layer (output/study_outputs.hpp).
 
 #include <functional>
 #include <string>
 #include <vector>
 
-#include "solver/config_node.hpp"
+#include "config/config_node.hpp"
 #include "solver/level_result.hpp"
 #include "solver/linear_solver.hpp"
 #include "solver/problem.hpp"
@@ -57,8 +57,12 @@ struct StudyResult {
   std::string stop_reason;
 };
 
-/// Run all levels, writing solution_<l>.vtu and solution.pvd into `directory` (which exists).
-StudyResult run_study(const StudySettings& settings, const std::string& directory, const ProgressSink& progress);
+/// Called once a level is solved, before the next level is built: how the outputs (VTK files) see
+/// every level without the study loop knowing about files.
+using LevelSink = std::function<void(int level, const Space& space, const DiscreteSolution& solution)>;
+
+/// Run all levels, handing each solved level to `on_level` (if set).
+StudyResult run_study(const StudySettings& settings, const ProgressSink& progress, const LevelSink& on_level = {});
 
 /// Optimal orders of a conforming space of degree p (smooth solution): Poisson p+1, p, p−1;
 /// biharmonic L2 p−1+min(2, p−1), H1 p−1+min(1, p−1), H2 p−1 (p = 2 gives 2, 2, 1).

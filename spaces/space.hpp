@@ -26,7 +26,7 @@
 #include <utility>
 #include <vector>
 
-#include "assembly/bilinear_form.hpp"
+#include "spaces/bilinear_form.hpp"
 #include "quadrature/quadrature_rule.hpp"
 
 namespace iga {

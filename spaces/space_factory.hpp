@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "solver/config_node.hpp"
+#include "config/config_node.hpp"
 #include "spaces/space.hpp"
 
 namespace iga {

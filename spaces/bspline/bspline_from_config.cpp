@@ -1,4 +1,4 @@
-#include "solver/config_node.hpp"
+#include "config/config_node.hpp"
 #include "spaces/bspline/bspline_from_config.hpp"
 
 #include <sstream>

@@ -12,7 +12,7 @@
 
 #include <memory>
 
-#include "solver/config_node.hpp"
+#include "config/config_node.hpp"
 #include "spaces/bspline/patch_geometry.hpp"
 #include "spaces/space.hpp"
 

@@ -1,11 +1,11 @@
-#include "solver/config_node.hpp"
+#include "config/config_node.hpp"
 #include "spaces/bspline/patch_geometry.hpp"
 
 #include <Eigen/LU>  // Matrix2d::determinant
 #include <cmath>
 #include <sstream>
 
-#include "solver/errors.hpp"
+#include "config/errors.hpp"
 #include "spaces/bspline/bspline_basis_1d.hpp"
 
 namespace iga {

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "solver/errors.hpp"
+#include "config/errors.hpp"
 #include "spaces/bspline/bspline_basis_1d.hpp"
 #include "spaces/push_forward.hpp"
 

@@ -2,11 +2,11 @@
 
 #include <filesystem>
 
-#include "solver/errors.hpp"
+#include "config/errors.hpp"
 #include "spaces/g1/g1_space.hpp"
 #include "spaces/g1/multipatch_domains.hpp"
 #include "spaces/g1/patch_mesh_from_file.hpp"
-#include "spaces/mesh_io/mesh_file_from_config.hpp"
+#include "mesh/mesh_file_from_config.hpp"
 
 namespace iga {
 

@@ -6,7 +6,7 @@
 ///   space:  {type: g1, degree: k}
 /// Errors are InputErrors naming the config place (exit code 2).
 
-#include "solver/config_node.hpp"
+#include "config/config_node.hpp"
 #include "spaces/space.hpp"
 
 namespace iga {

@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "solver/errors.hpp"
+#include "config/errors.hpp"
 #include "spaces/g1/bernstein_face.hpp"
 #include "spaces/g1/boundary_parts.hpp"
 #include "spaces/g1/gradient_jump.hpp"

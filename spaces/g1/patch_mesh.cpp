@@ -6,7 +6,7 @@
 #include <map>
 #include <sstream>
 
-#include "solver/errors.hpp"
+#include "config/errors.hpp"
 
 namespace iga {
 

@@ -2,7 +2,7 @@
 
 #include <filesystem>
 
-#include "spaces/mesh_io/validate_planar_mesh.hpp"
+#include "mesh/validate_planar_mesh.hpp"
 
 namespace iga {
 

@@ -6,7 +6,7 @@
 #include <string>
 
 #include "spaces/g1/patch_mesh.hpp"
-#include "spaces/mesh_io/read_mesh_file.hpp"
+#include "mesh/read_mesh_file.hpp"
 
 namespace iga {
 

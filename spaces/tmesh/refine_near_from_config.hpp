@@ -15,7 +15,7 @@
 /// plus what refine_admissibly adds. Errors (a target meeting no cell, a bad expression, the
 /// lattice exhausted) are InputErrors naming the entry.
 
-#include "solver/config_node.hpp"
+#include "config/config_node.hpp"
 #include "spaces/tmesh/tmesh.hpp"
 
 namespace iga {

@@ -14,7 +14,7 @@
 
 #include <array>
 
-#include "solver/config_node.hpp"
+#include "config/config_node.hpp"
 #include "spaces/tmesh/tmesh.hpp"
 
 namespace iga {

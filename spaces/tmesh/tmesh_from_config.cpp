@@ -1,4 +1,4 @@
-#include "solver/config_node.hpp"
+#include "config/config_node.hpp"
 #include "spaces/tmesh/tmesh_from_config.hpp"
 
 #include <cmath>

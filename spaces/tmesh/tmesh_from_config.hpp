@@ -18,7 +18,7 @@
 /// regularity (n-1)/2 (the largest r with n >= 2r+1), frequency 1, elements [2, 2].
 /// Every error is an InputError naming the config place (exit code 2).
 
-#include "solver/config_node.hpp"
+#include "config/config_node.hpp"
 #include "spaces/space.hpp"
 
 namespace iga {

@@ -5,7 +5,7 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "solver/errors.hpp"
+#include "config/errors.hpp"
 #include "spaces/push_forward.hpp"
 #include "spaces/tmesh/tmesh_refinement.hpp"
 

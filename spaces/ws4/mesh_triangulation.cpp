@@ -2,8 +2,8 @@
 
 #include <map>
 
-#include "solver/errors.hpp"
-#include "spaces/mesh_io/validate_planar_mesh.hpp"
+#include "config/errors.hpp"
+#include "mesh/validate_planar_mesh.hpp"
 
 namespace iga::ws4 {
 

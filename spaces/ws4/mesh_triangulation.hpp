@@ -3,7 +3,7 @@
 /// WS4 triangulations from the shared mesh input (spaces/mesh_io/): validated PlanarMeshes with
 /// their named boundary groups, and the built-in L-shape.
 
-#include "spaces/mesh_io/planar_mesh.hpp"
+#include "mesh/planar_mesh.hpp"
 #include "spaces/ws4/triangulation.hpp"
 
 namespace iga::ws4 {

@@ -4,9 +4,9 @@
 #include <optional>
 #include <sstream>
 
-#include "spaces/mesh_io/mesh_file_from_config.hpp"
-#include "spaces/mesh_io/mesh_polygon.hpp"
-#include "spaces/mesh_io/read_mesh_file.hpp"
+#include "mesh/mesh_file_from_config.hpp"
+#include "mesh/mesh_polygon.hpp"
+#include "mesh/read_mesh_file.hpp"
 #include "spaces/ws4/mesh_triangulation.hpp"
 #include "spaces/ws4/ws4_jitter.hpp"
 #include "spaces/ws4/ws4_space.hpp"

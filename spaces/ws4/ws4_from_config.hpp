@@ -22,7 +22,7 @@
 /// jitter x the shortest edge at the vertex (ws4_jitter.hpp; seed + level seeds the generator,
 /// default seed 1). Every error is an InputError naming the config place (exit code 2).
 
-#include "solver/config_node.hpp"
+#include "config/config_node.hpp"
 #include "spaces/space.hpp"
 
 namespace iga {

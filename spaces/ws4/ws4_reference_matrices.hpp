@@ -6,7 +6,7 @@
 
 #include <Eigen/Core>
 
-#include "assembly/bilinear_form.hpp"
+#include "spaces/bilinear_form.hpp"
 
 namespace iga::ws4 {
 

@@ -4,7 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "solver/errors.hpp"
+#include "config/errors.hpp"
 #include "spaces/push_forward.hpp"
 #include "spaces/ws4/ws4_basis.hpp"
 #include "spaces/ws4/ws4_dof_layout.hpp"

@@ -1,0 +1,87 @@
+#include "app/cli.hpp"
+
+#include <CLI/CLI.hpp>
+#include <filesystem>
+#include <iostream>
+
+#include "output/convergence_plot.hpp"
+#include "config/errors.hpp"
+#include "output/report.hpp"
+#include "output/staged_directory.hpp"
+#include "output/study_outputs.hpp"
+#include "solver/study.hpp"
+
+namespace iga {
+
+namespace {
+
+int fail(int code, const std::string& message) {
+  std::cerr << "iga-run: error: " << message << '\n';
+  return code;
+}
+
+int run_config(const std::string& config_path, const std::string& output, int levels, bool quiet) {
+  const ConfigNode root = ConfigNode::load_file(config_path);
+  const StudySettings settings = parse_study(root, config_path, levels, output);
+  const ProgressSink progress = [quiet](const std::string& msg) {
+    if (!quiet) std::cerr << "iga-run: " << msg << std::endl;
+  };
+
+  check_output_location(settings.output_dir);  // before the study, not after it
+  StagedDirectory staged(settings.output_dir);
+  const std::filesystem::path dir(staged.path());
+  const StudyResult result = run_study_with_vtk(settings, staged.path(), progress);
+  progress("writing tables and plot");
+  write_convergence_csv(result.rows, (dir / "convergence.csv").string());
+  write_summary_json(settings, result, (dir / "summary.json").string());
+  if (settings.write_plot) {
+    const std::string title = result.space_type + " " + to_string(settings.problem.pde);
+    plot_convergence(result.rows, result.expected, title, (dir / "convergence.svg").string());
+  }
+  staged.commit();
+
+  std::cout << result.space_type << " / " << to_string(settings.problem.pde) << " — " << config_path << '\n'
+            << format_convergence_table(result.rows, result.adaptive);
+  if (result.adaptive)  // optimal order k in h is k/2 in the number of DOFs N (2D)
+    std::cout << "optimal rates against N: L2 " << result.expected.l2 / 2.0 << ", H1 " << result.expected.h1 / 2.0
+              << ", H2 " << result.expected.h2 / 2.0;
+  else
+    std::cout << "expected rates: L2 " << result.expected.l2 << ", H1 " << result.expected.h1 << ", H2 "
+              << result.expected.h2;
+  std::cout << "   (H1, H2 are seminorms)\nresults: " << settings.output_dir << '\n';
+  return 0;
+}
+
+}  // namespace
+
+int run_cli(int argc, char** argv) {
+  CLI::App app{"iga-run: smooth spline spaces for Poisson and biharmonic problems, with convergence studies"};
+  std::string config, output;
+  int levels = 0;
+  bool quiet = false;
+  app.add_option("config", config, "YAML config file (see README)")->required();
+  app.add_option("-o,--output", output, "output directory (default: output.directory, else results/<config name>)");
+  app.add_option("-l,--levels", levels, "number of refinement levels (overrides refinement.levels)")
+      ->check(CLI::Range(1, 12));
+  app.add_flag("-q,--quiet", quiet, "no progress messages on stderr");
+  app.set_version_flag("--version", std::string("iga-run ") + IGA_RUN_VERSION);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::Success& e) {
+    return app.exit(e);  // --help, --version
+  } catch (const CLI::ParseError& e) {
+    app.exit(e);
+    return 2;
+  }
+  try {
+    return run_config(config, output, levels, quiet);
+  } catch (const InputError& e) {
+    return fail(2, e.what());
+  } catch (const NumericalError& e) {
+    return fail(1, std::string("numerical failure: ") + e.what());
+  } catch (const std::exception& e) {
+    return fail(1, e.what());
+  }
+}
+
+}  // namespace iga

@@ -1,0 +1,277 @@
+#include "config/config_node.hpp"
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <fstream>
+#include <limits>
+#include <set>
+#include <sstream>
+
+namespace iga {
+
+namespace {
+
+/// "FILE:LINE:COL" with 1-based numbers (yaml-cpp counts from 0); just "FILE" without a place.
+std::string location(const std::string& file, const YAML::Mark& mark) {
+  if (mark.is_null() || mark.line < 0) return file;
+  return file + ":" + std::to_string(mark.line + 1) + ":" + std::to_string(mark.column + 1);
+}
+
+/// How a node looks, for "expected X, got Y".
+std::string describe(const YAML::Node& node) {
+  switch (node.Type()) {
+    case YAML::NodeType::Map:
+      return "a map";
+    case YAML::NodeType::Sequence:
+      return "a sequence";
+    case YAML::NodeType::Scalar:
+      return "'" + node.Scalar() + "'";
+    default:
+      return "nothing";
+  }
+}
+
+/// "in 'space'" or "at the top level", for key messages.
+std::string in_map(const std::string& path) {
+  return path.empty() ? std::string("at the top level") : "in '" + path + "'";
+}
+
+std::string quoted_list(const std::vector<std::string>& words) {
+  std::string out;
+  for (size_t i = 0; i < words.size(); ++i) out += (i ? ", '" : "'") + words[i] + "'";
+  return out;
+}
+
+/// The whole text must be the number: from_chars ignores the locale and stops at the first bad
+/// character, so partial matches like "2.5" read as int are caught by the end check.
+template <class T>
+bool parse_number(const std::string& text, T& value) {
+  const char* begin = text.data();
+  const char* end = begin + text.size();
+  if (begin != end && *begin == '+') ++begin;  // YAML allows "+1"; from_chars does not
+  auto [ptr, ec] = std::from_chars(begin, end, value);
+  return ec == std::errc() && ptr == end && begin != end;
+}
+
+std::shared_ptr<const std::string> shared_name(const std::string& name) {
+  return std::make_shared<const std::string>(name);
+}
+
+}  // namespace
+
+ConfigNode::ConfigNode(YAML::Node node, std::string path, std::shared_ptr<const std::string> file)
+    : node_(std::move(node)), path_(std::move(path)), file_(std::move(file)) {}
+
+ConfigNode ConfigNode::load_string(const std::string& text, const std::string& name) {
+  try {
+    return ConfigNode(YAML::Load(text), "", shared_name(name));
+  } catch (const YAML::ParserException& e) {
+    throw InputError(location(name, e.mark) + ": YAML syntax error: " + e.msg);
+  } catch (const YAML::Exception& e) {
+    throw InputError(location(name, e.mark) + ": cannot read YAML: " + e.msg);
+  }
+}
+
+ConfigNode ConfigNode::load_file(const std::string& filename) {
+  std::ifstream in(filename, std::ios::binary);
+  if (!in) throw InputError(filename + ": cannot open file");
+  std::ostringstream text;
+  text << in.rdbuf();
+  if (in.bad()) throw InputError(filename + ": cannot read file");
+  return load_string(text.str(), filename);
+}
+
+std::string ConfigNode::where() const {
+  // An empty value ("key:") reports the position of the next token; its key is the better place.
+  const YAML::Mark mark = node_.IsNull() && !key_mark_.is_null() ? key_mark_ : node_.Mark();
+  std::string out = location(*file_, mark);
+  if (!path_.empty()) out += ": " + path_;
+  return out;
+}
+
+void ConfigNode::fail(const std::string& message) const { throw InputError(where() + ": " + message); }
+
+bool ConfigNode::is_map() const { return node_.IsMap(); }
+bool ConfigNode::is_sequence() const { return node_.IsSequence(); }
+bool ConfigNode::is_scalar() const { return node_.IsScalar(); }
+
+bool ConfigNode::has(const std::string& key) const { return find(key).has_value(); }
+
+std::optional<ConfigNode> ConfigNode::find(const std::string& key) const {
+  if (!node_.IsMap()) return std::nullopt;
+  // Iterate instead of node_[key]: we also need the key's own mark.
+  for (const auto& kv : node_) {
+    if (!kv.first.IsScalar() || kv.first.Scalar() != key) continue;
+    ConfigNode child(kv.second, path_.empty() ? key : path_ + "." + key, file_);
+    child.key_mark_ = kv.first.Mark();
+    return child;
+  }
+  return std::nullopt;
+}
+
+ConfigNode ConfigNode::operator[](const std::string& key) const {
+  if (!node_.IsMap() && !node_.IsNull())
+    fail("expected a map with key '" + key + "', got " + describe(node_));
+  if (auto child = find(key)) return *child;
+  // The parent map's place: an empty section reports its key instead.
+  const YAML::Mark mark = node_.IsNull() && !key_mark_.is_null() ? key_mark_ : node_.Mark();
+  throw InputError(location(*file_, mark) + ": missing key '" + key + "' " + in_map(path_));
+}
+
+std::vector<ConfigNode> ConfigNode::items() const {
+  if (!node_.IsSequence()) fail("expected a sequence, got " + describe(node_));
+  std::vector<ConfigNode> out;
+  out.reserve(node_.size());
+  for (size_t i = 0; i < node_.size(); ++i)
+    out.push_back(ConfigNode(node_[i], path_ + "[" + std::to_string(i) + "]", file_));
+  return out;
+}
+
+std::vector<std::string> ConfigNode::keys() const {
+  std::vector<std::string> out;
+  if (node_.IsNull()) return out;  // "section:" with nothing under it is an empty map
+  if (!node_.IsMap()) fail("expected a map, got " + describe(node_));
+  std::set<std::string> seen;
+  for (const auto& kv : node_) {
+    const std::string here = location(*file_, kv.first.Mark());
+    if (!kv.first.IsScalar()) throw InputError(here + ": keys must be plain words " + in_map(path_));
+    // As in check_keys: yaml-cpp would silently let one copy of a repeated key win.
+    if (!seen.insert(kv.first.Scalar()).second)
+      throw InputError(here + ": duplicate key '" + kv.first.Scalar() + "' " + in_map(path_));
+    out.push_back(kv.first.Scalar());
+  }
+  return out;
+}
+
+void ConfigNode::check_keys(const std::vector<std::string>& allowed) const {
+  if (node_.IsNull()) return;
+  if (!node_.IsMap()) fail("expected a map, got " + describe(node_));
+  std::set<std::string> seen;
+  for (const auto& kv : node_) {
+    const std::string key = kv.first.IsScalar() ? kv.first.Scalar() : std::string();
+    const std::string here = location(*file_, kv.first.Mark());
+    if (std::find(allowed.begin(), allowed.end(), key) == allowed.end()) {
+      const std::string near = nearest_word(key, allowed);
+      throw InputError(
+          here + ": unknown key '" + key + "' " + in_map(path_) +
+          (near.empty() ? " (valid keys: " + quoted_list(allowed) + ")" : " (did you mean '" + near + "'?)"));
+    }
+    // yaml-cpp keeps both copies of a repeated key and lookups see only the first: refuse it.
+    if (!seen.insert(key).second) throw InputError(here + ": duplicate key '" + key + "' " + in_map(path_));
+  }
+}
+
+std::string ConfigNode::as_string() const {
+  if (!node_.IsScalar()) fail("expected a string, got " + describe(node_));
+  return node_.Scalar();
+}
+
+double ConfigNode::as_double() const {
+  if (!node_.IsScalar()) fail("expected a number, got " + describe(node_));
+  double value = 0;
+  if (!parse_number(node_.Scalar(), value)) fail("expected a number, got '" + node_.Scalar() + "'");
+  if (!std::isfinite(value)) fail("expected a finite number, got '" + node_.Scalar() + "'");
+  return value;
+}
+
+int ConfigNode::as_int() const {
+  if (!node_.IsScalar()) fail("expected an integer, got " + describe(node_));
+  long long value = 0;
+  if (!parse_number(node_.Scalar(), value)) fail("expected an integer, got '" + node_.Scalar() + "'");
+  if (value < std::numeric_limits<int>::min() || value > std::numeric_limits<int>::max())
+    fail("integer out of range: '" + node_.Scalar() + "'");
+  return static_cast<int>(value);
+}
+
+bool ConfigNode::as_bool() const {
+  // yaml-cpp's own conversion knows the YAML spellings (true/false, yes/no, on/off).
+  bool value = false;
+  if (!node_.IsScalar() || !YAML::convert<bool>::decode(node_, value))
+    fail("expected true or false, got " + describe(node_));
+  return value;
+}
+
+std::vector<double> ConfigNode::as_doubles() const {
+  if (!node_.IsSequence()) fail("expected a sequence of numbers, got " + describe(node_));
+  std::vector<double> out;
+  for (const ConfigNode& item : items()) out.push_back(item.as_double());
+  return out;
+}
+
+std::vector<int> ConfigNode::as_ints() const {
+  if (!node_.IsSequence()) fail("expected a sequence of integers, got " + describe(node_));
+  std::vector<int> out;
+  for (const ConfigNode& item : items()) out.push_back(item.as_int());
+  return out;
+}
+
+std::string ConfigNode::as_choice(const std::vector<std::string>& choices) const {
+  const std::string value = as_string();
+  if (std::find(choices.begin(), choices.end(), value) != choices.end()) return value;
+  const std::string near = nearest_word(value, choices);
+  fail("expected one of " + quoted_list(choices) + ", got '" + value + "'" +
+       (near.empty() ? std::string() : " (did you mean '" + near + "'?)"));
+}
+
+std::string ConfigNode::get_string(const std::string& key, const std::string& fallback) const {
+  auto child = find(key);
+  return child ? child->as_string() : fallback;
+}
+
+double ConfigNode::get_double(const std::string& key, double fallback) const {
+  auto child = find(key);
+  return child ? child->as_double() : fallback;
+}
+
+int ConfigNode::get_int(const std::string& key, int fallback) const {
+  auto child = find(key);
+  return child ? child->as_int() : fallback;
+}
+
+bool ConfigNode::get_bool(const std::string& key, bool fallback) const {
+  auto child = find(key);
+  return child ? child->as_bool() : fallback;
+}
+
+std::string nearest_word(const std::string& word, const std::vector<std::string>& candidates) {
+  // Levenshtein distance with one rolling row.
+  auto distance = [](const std::string& a, const std::string& b) {
+    std::vector<size_t> row(b.size() + 1);
+    for (size_t j = 0; j <= b.size(); ++j) row[j] = j;
+    for (size_t i = 1; i <= a.size(); ++i) {
+      size_t diagonal = row[0];
+      row[0] = i;
+      for (size_t j = 1; j <= b.size(); ++j) {
+        const size_t above = row[j];
+        row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
+        diagonal = above;
+      }
+    }
+    return row[b.size()];
+  };
+  std::string best;
+  size_t best_distance = std::numeric_limits<size_t>::max();
+  for (const std::string& candidate : candidates) {
+    const size_t d = distance(word, candidate);
+    if (d < best_distance) best_distance = d, best = candidate;
+  }
+  // Close enough to be a typo, and not a total rewrite of a short word.
+  const size_t limit = std::max<size_t>(2, word.size() / 3);
+  if (best.empty() || best_distance > limit || best_distance >= std::max(word.size(), best.size())) return {};
+  return best;
+}
+
+Eigen::Vector2d ConfigNode::as_point() const {
+  const std::vector<double> v = as_doubles();
+  if (v.size() != 2) fail("expected a point [x, y] (got " + std::to_string(v.size()) + " numbers)");
+  return {v[0], v[1]};
+}
+
+std::string format_number(double x) {
+  std::ostringstream s;
+  s << x;
+  return s.str();
+}
+
+}  // namespace iga

@@ -1,0 +1,218 @@
+#include "config/expression.hpp"
+
+#include <ginac/ginac.h>
+#include <muParser.h>
+
+#include <atomic>
+#include <cmath>
+#include <cstdint>
+#include <mutex>
+#include <optional>
+#include <regex>
+
+#include "config/config_node.hpp"
+#include "config/errors.hpp"
+#include "config/expression_evaluator.hpp"
+#include "config/expression_printer.hpp"
+
+namespace iga {
+
+using expression_detail::Evaluator;
+using expression_detail::EvaluatorCache;
+using expression_detail::mu_program;
+using expression_detail::mu_text;
+using expression_detail::number;
+using expression_detail::Program;
+using expression_detail::sym_x;
+using expression_detail::sym_y;
+using expression_detail::Unsupported;
+
+namespace {
+
+// GiNaC counts references without atomics and shares global objects (0, 1, Pi, our x and y) among
+// all expressions, so every touch of a GiNaC object goes through this lock; evaluation never does.
+// Recursive because an Impl can die while its creator holds the lock. Leaked on purpose, like the
+// symbols x and y, so static SymbolicFunctions may be destroyed in any order at exit.
+std::recursive_mutex& ginac_mutex() {
+  static auto* mutex = new std::recursive_mutex;
+  return *mutex;
+}
+
+std::atomic<std::uint64_t> next_id{1};
+
+std::string prefix(const std::string& where) { return where.empty() ? std::string() : where + ": "; }
+
+/// Size of the expression tree, to pick the smaller of two equivalent forms.
+size_t tree_size(const GiNaC::ex& e) {
+  size_t n = 0;
+  for (auto it = e.preorder_begin(); it != e.preorder_end(); ++it) ++n;
+  return n;
+}
+
+/// Expanding collects like terms (products of cosines stay a short sum) but multiplies out powers of
+/// sums; keep whichever form is smaller.
+GiNaC::ex tidy(const GiNaC::ex& e) {
+  GiNaC::ex expanded = e.expand();
+  return tree_size(expanded) <= tree_size(e) ? expanded : e;
+}
+
+/// GiNaC's messages span lines and carry source locations (always "line 0, column 0"): keep the gist.
+std::string parse_reason(const std::string& what) {
+  std::string reason = what.substr(0, what.find('\n'));
+  reason = std::regex_replace(reason, std::regex("^GiNaC: "), "");
+  reason = std::regex_replace(reason, std::regex("^parse error at line [0-9]+, column [0-9]+: "), "");
+  if (reason.find("power should have exactly 2 operands") != std::string::npos)
+    return "GiNaC cannot chain '^'; add parentheses, e.g. a^(b^c)";
+  std::smatch m;
+  if (std::regex_search(reason, m, std::regex("symbol \"([^\"]*)\" not found"))) {
+    reason = "unknown symbol '" + m[1].str() + "' (known: x, y, pi";
+    const std::string near = nearest_word(m[1].str(), {"x", "y", "pi"});
+    reason += near.empty() ? ")" : "; did you mean '" + near + "'?)";
+  }
+  return reason;
+}
+
+}  // namespace
+
+struct SymbolicFunction::Impl {
+  std::optional<GiNaC::ex> expr;  ///< touched only under ginac_mutex()
+  std::string where;              ///< config place, for errors in derived functions
+  std::string source;             ///< the text as written
+  std::string text;               ///< str()
+  Program program;
+  bool zero = false;
+  std::uint64_t id = next_id++;  ///< never reused, unlike addresses: keys the per-thread cache
+
+  ~Impl() {
+    std::lock_guard<std::recursive_mutex> lock(ginac_mutex());
+    expr.reset();
+  }
+};
+
+namespace {
+
+/// This thread's evaluator of `impl`, compiled on first use.
+Evaluator& evaluator(const std::shared_ptr<const SymbolicFunction::Impl>& impl) {
+  EvaluatorCache& cache = EvaluatorCache::this_thread();
+  if (Evaluator* e = cache.find(impl->id)) return *e;
+  return cache.add(impl->id, impl, impl->program);
+}
+
+/// Wrap a GiNaC expression (caller holds ginac_mutex()). Printing and compiling happen here, so an
+/// expression that muParser cannot evaluate is an error at parse time, not a NaN later.
+std::shared_ptr<const SymbolicFunction::Impl> make_impl(const GiNaC::ex& e, const std::string& where,
+                                                        const std::string& source, const std::string& what) {
+  auto impl = std::make_shared<SymbolicFunction::Impl>();
+  impl->expr = e;
+  impl->where = where;
+  impl->source = source;
+  impl->zero = e.is_zero();
+  try {
+    impl->text = mu_text(e);
+    impl->program = mu_program(e);
+    evaluator(impl);
+  } catch (const Unsupported& u) {
+    throw InputError(prefix(where) + "cannot " + what + " '" + source + "': " + u.what());
+  } catch (const mu::Parser::exception_type& err) {
+    throw InputError(prefix(where) + "cannot " + what + " '" + source + "': muParser rejects '" +
+                     err.GetExpr() + "': " + err.GetMsg());
+  }
+  return impl;
+}
+
+}  // namespace
+
+SymbolicFunction SymbolicFunction::parse(const std::string& text, const std::string& where) {
+  std::lock_guard<std::recursive_mutex> lock(ginac_mutex());
+  GiNaC::ex e;
+  try {
+    GiNaC::symtab table;
+    table["x"] = sym_x();
+    table["y"] = sym_y();
+    table["pi"] = GiNaC::Pi;
+    GiNaC::parser reader(table, /*strict=*/true);
+    e = reader(text);
+  } catch (const std::exception& err) {
+    throw InputError(prefix(where) + "cannot parse '" + text + "': " + parse_reason(err.what()));
+  }
+  SymbolicFunction f;
+  f.impl_ = make_impl(e, where, text, "parse");
+  return f;
+}
+
+SymbolicFunction SymbolicFunction::constant(double value) {
+  if (!std::isfinite(value)) throw InputError("constant function: value " + number(value) + " is not finite");
+  std::lock_guard<std::recursive_mutex> lock(ginac_mutex());
+  SymbolicFunction f;
+  f.impl_ = make_impl(GiNaC::numeric(value), "", number(value), "evaluate");
+  return f;
+}
+
+namespace {
+
+/// The Impl of `f`, or of the zero function for a default-constructed one.
+std::shared_ptr<const SymbolicFunction::Impl> impl_or_zero(
+    const std::shared_ptr<const SymbolicFunction::Impl>& impl) {
+  if (impl) return impl;
+  std::lock_guard<std::recursive_mutex> lock(ginac_mutex());
+  static const auto* zero =
+      new std::shared_ptr<const SymbolicFunction::Impl>(make_impl(0, "", "0", "evaluate"));
+  return *zero;
+}
+
+}  // namespace
+
+SymbolicFunction SymbolicFunction::diff_x() const {
+  auto self = impl_or_zero(impl_);
+  std::lock_guard<std::recursive_mutex> lock(ginac_mutex());
+  SymbolicFunction f;
+  f.impl_ = make_impl(tidy(self->expr->diff(sym_x())), self->where, self->source, "differentiate");
+  return f;
+}
+
+SymbolicFunction SymbolicFunction::diff_y() const {
+  auto self = impl_or_zero(impl_);
+  std::lock_guard<std::recursive_mutex> lock(ginac_mutex());
+  SymbolicFunction f;
+  f.impl_ = make_impl(tidy(self->expr->diff(sym_y())), self->where, self->source, "differentiate");
+  return f;
+}
+
+namespace {
+GiNaC::ex laplace(const GiNaC::ex& u) { return tidy(u.diff(sym_x(), 2) + u.diff(sym_y(), 2)); }
+}  // namespace
+
+SymbolicFunction SymbolicFunction::laplacian() const {
+  auto self = impl_or_zero(impl_);
+  std::lock_guard<std::recursive_mutex> lock(ginac_mutex());
+  SymbolicFunction f;
+  f.impl_ = make_impl(laplace(*self->expr), self->where, self->source, "take the Laplacian of");
+  return f;
+}
+
+SymbolicFunction SymbolicFunction::bilaplacian() const {
+  auto self = impl_or_zero(impl_);
+  std::lock_guard<std::recursive_mutex> lock(ginac_mutex());
+  SymbolicFunction f;
+  f.impl_ = make_impl(laplace(laplace(*self->expr)), self->where, self->source, "take the bilaplacian of");
+  return f;
+}
+
+SymbolicFunction SymbolicFunction::operator-() const {
+  auto self = impl_or_zero(impl_);
+  std::lock_guard<std::recursive_mutex> lock(ginac_mutex());
+  SymbolicFunction f;
+  f.impl_ = make_impl(-*self->expr, self->where, self->source, "negate");
+  return f;
+}
+
+bool SymbolicFunction::is_zero() const { return !impl_ || impl_->zero; }
+
+std::string SymbolicFunction::str() const { return impl_ ? impl_->text : "0"; }
+
+double SymbolicFunction::operator()(const Eigen::Vector2d& p) const {
+  if (!impl_) return 0.0;
+  return evaluator(impl_)(p.x(), p.y());
+}
+
+}  // namespace iga

@@ -1,0 +1,42 @@
+#pragma once
+/// @file
+/// Scalar functions of (x, y) given as strings in the config. GiNaC parses them and differentiates
+/// symbolically (exact derivatives, never finite differences); muParser evaluates the printed
+/// expressions fast. Known constants: pi. Known functions: those of GiNaC (sin, cos, exp, sqrt,
+/// log, tan, atan, sinh, cosh, tanh, abs, pow, atan2, ...).
+
+#include <memory>
+#include <string>
+
+#include <Eigen/Core>
+
+namespace iga {
+
+class SymbolicFunction {
+ public:
+  /// Parse `text` in the variables x and y. Throws InputError "<where>: cannot parse '...': reason"
+  /// (also for unknown symbols); `where` names the config place.
+  static SymbolicFunction parse(const std::string& text, const std::string& where);
+  static SymbolicFunction constant(double value);
+
+  SymbolicFunction diff_x() const;
+  SymbolicFunction diff_y() const;
+  SymbolicFunction laplacian() const;    ///< u_xx + u_yy
+  SymbolicFunction bilaplacian() const;  ///< Δ²u
+  SymbolicFunction operator-() const;
+  bool is_zero() const;
+
+  /// Printed form (evaluable by muParser with a Pi constant).
+  std::string str() const;
+
+  /// Evaluate at a point. Thread-safe: each thread uses its own compiled muParser instance.
+  double operator()(const Eigen::Vector2d& p) const;
+  double operator()(double x, double y) const { return (*this)(Eigen::Vector2d(x, y)); }
+
+  struct Impl;
+
+ private:
+  std::shared_ptr<const Impl> impl_;
+};
+
+}  // namespace iga

@@ -1,0 +1,27 @@
+#include "mesh/mesh_file_from_config.hpp"
+
+#include <cctype>
+#include <string>
+
+namespace iga {
+
+MeshFileRequest mesh_file_request(const ConfigNode& domain) {
+  MeshFileRequest request;
+  const ConfigNode file = domain["file"];
+  request.path = file.as_string();
+  if (request.path.is_relative()) request.path = std::filesystem::path(file.file()).parent_path() / request.path;
+  std::string extension = request.path.extension().string();
+  for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  // Named at the config key here; read_mesh_file would refuse them too, but at the file.
+  for (const char* key : {"mesh_size", "recombine"})
+    if (const auto n = domain.find(key); n && extension != ".geo")
+      n->fail(std::string(key) + " applies to .geo files only (a mesh file is used as it is)");
+  if (const auto n = domain.find("mesh_size")) {
+    request.options.mesh_size = n->as_double();
+    if (!(request.options.mesh_size > 0.0)) n->fail("mesh_size must be > 0");
+  }
+  if (const auto n = domain.find("recombine")) request.options.recombine = n->as_bool();
+  return request;
+}
+
+}  // namespace iga

@@ -1,0 +1,23 @@
+#pragma once
+/// @file
+/// The config side of mesh files, shared by every space that reads them:
+/// `domain: {type: mesh_file, file: PATH, mesh_size: h, recombine: true}`. The caller checks which
+/// keys its space allows (e.g. no `recombine` for triangle-only spaces).
+
+#include <filesystem>
+
+#include "config/config_node.hpp"
+#include "mesh/read_mesh_file.hpp"
+
+namespace iga {
+
+struct MeshFileRequest {
+  std::filesystem::path path;  ///< a relative `file` is taken relative to the config file's folder
+  MeshFileOptions options;
+};
+
+/// Reads `file`, `mesh_size` and `recombine` from `domain`; `mesh_size` and `recombine` on a file
+/// that is not `.geo` (case-insensitive) are rejected at their key, as is mesh_size <= 0.
+MeshFileRequest mesh_file_request(const ConfigNode& domain);
+
+}  // namespace iga

@@ -1,0 +1,34 @@
+#pragma once
+/// @file
+/// Checks a PlanarMesh before a space is built on it. Every failure is an InputError that names
+/// the mesh source and the offending cell (with its corner coordinates), edge or vertex.
+
+#include <string>
+
+#include "mesh/planar_mesh.hpp"
+
+namespace iga {
+
+/// Which cells a space accepts; `space` names it in messages ("the ws4 space needs triangles").
+struct AllowedCells {
+  bool triangles = true;
+  bool quads = true;
+  std::string space;
+};
+
+/// Relative tolerance of the geometric checks: a cell is degenerate when its area is at most
+/// tolerance x (its longest edge)², a quad corner folded when the corner's cross product is at most
+/// tolerance x (its longest edge)², and two vertices coincide when closer than tolerance x (mesh
+/// diameter).
+inline constexpr double mesh_tolerance = 1e-10;
+
+/// Rejects, in this order: a cell that is not a triangle or quadrilateral, or one not allowed;
+/// a vertex id out of range or repeated in a cell; a degenerate cell (area <= tol h²); a clockwise
+/// cell; a folded or non-convex quad (bilinear map Jacobian <= 0 at a corner); two coincident
+/// vertices; an edge of more than two cells (non-manifold); two cells traversing an edge in the
+/// same direction (they overlap: the mesh folds over itself); a vertex where the boundary touches
+/// itself (more than two boundary edges); an unreferenced vertex; a boundary group edge that is not
+/// a boundary edge of the mesh.
+void validate_planar_mesh(const PlanarMesh& mesh, const AllowedCells& allowed = {});
+
+}  // namespace iga

@@ -1,0 +1,183 @@
+#include "output/report.hpp"
+
+#include <algorithm>
+#include <cstdio>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+namespace iga {
+
+namespace {
+
+std::string number(std::optional<double> v, const char* fmt = "%.6e") {
+  if (!v) return "";
+  char buf[64];
+  std::snprintf(buf, sizeof buf, fmt, *v);
+  return buf;
+}
+
+struct Rates {
+  std::optional<double> l2, h1, h2;
+};
+
+Rates rates_at(const std::vector<LevelResult>& rows, std::size_t i) {
+  if (i == 0) return {};
+  const LevelResult &a = rows[i - 1], &b = rows[i];
+  return {rate(a.l2, b.l2, a.h, b.h), rate(a.h1, b.h1, a.h, b.h), rate(a.h2, b.h2, a.h, b.h)};
+}
+
+/// Rates against the number of DOFs N: e ~ N^(-rate), i.e. log(e_prev/e) / log(N/N_prev).
+Rates dof_rates_at(const std::vector<LevelResult>& rows, std::size_t i) {
+  if (i == 0) return {};
+  const LevelResult &a = rows[i - 1], &b = rows[i];
+  const double na = a.dofs, nb = b.dofs;
+  return {rate(a.l2, b.l2, nb, na), rate(a.h1, b.h1, nb, na), rate(a.h2, b.h2, nb, na)};
+}
+
+std::ofstream open_for_writing(const std::string& filename) {
+  std::ofstream out(filename);
+  if (!out) throw std::runtime_error("cannot write " + filename);
+  return out;
+}
+
+/// YAML scalars as JSON numbers or booleans when they read as such, strings otherwise.
+nlohmann::json to_json(const YAML::Node& node) {
+  switch (node.Type()) {
+    case YAML::NodeType::Map: {
+      nlohmann::json j = nlohmann::json::object();
+      for (const auto& kv : node) j[kv.first.as<std::string>()] = to_json(kv.second);
+      return j;
+    }
+    case YAML::NodeType::Sequence: {
+      nlohmann::json j = nlohmann::json::array();
+      for (const auto& item : node) j.push_back(to_json(item));
+      return j;
+    }
+    case YAML::NodeType::Scalar: {
+      if (node.Tag() == "!") return node.as<std::string>();  // quoted in the file: a string
+      long long i;
+      double d;
+      bool b;
+      if (YAML::convert<long long>::decode(node, i)) return i;
+      if (YAML::convert<double>::decode(node, d)) return d;
+      if (YAML::convert<bool>::decode(node, b)) return b;
+      return node.as<std::string>();
+    }
+    default: return nullptr;
+  }
+}
+
+nlohmann::json optional_json(std::optional<double> v) { return v ? nlohmann::json(*v) : nlohmann::json(nullptr); }
+
+}  // namespace
+
+void write_convergence_csv(const std::vector<LevelResult>& rows, const std::string& filename) {
+  std::ofstream out = open_for_writing(filename);
+  out << "level,h,dofs,l2,h1,h2,rate_l2,rate_h1,rate_h2,t_assemble,t_solve,free_dofs,t_space,t_errors,g1_jump,rate_dofs_l2,rate_dofs_h1,rate_dofs_h2\n";
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    const LevelResult& r = rows[i];
+    const Rates q = rates_at(rows, i);
+    out << r.level << ',' << number(r.h, "%.10e") << ',' << r.dofs << ',' << number(r.l2, "%.10e") << ','
+        << number(r.h1, "%.10e") << ',' << number(r.h2, "%.10e") << ',' << number(q.l2, "%.4f") << ','
+        << number(q.h1, "%.4f") << ',' << number(q.h2, "%.4f") << ',' << number(r.t_assemble, "%.6f") << ','
+        << number(r.t_solve, "%.6f") << ',' << r.free_dofs << ',' << number(r.t_space, "%.6f") << ','
+        << number(r.t_errors, "%.6f") << ',' << number(r.g1_jump, "%.3e");
+    const Rates d = dof_rates_at(rows, i);
+    out << ',' << number(d.l2, "%.4f") << ',' << number(d.h1, "%.4f") << ',' << number(d.h2, "%.4f") << '\n';
+  }
+}
+
+std::string format_convergence_table(const std::vector<LevelResult>& rows, bool rates_against_dofs) {
+  // The gradient-jump column appears only for spaces that compute it.
+  const bool jumps = std::any_of(rows.begin(), rows.end(), [](const LevelResult& r) { return r.g1_jump.has_value(); });
+  std::ostringstream s;
+  char line[256];
+  // Against DOFs, "rate" is log(e_prev/e)/log(N/N_prev): h^k corresponds to N^(k/2) in 2D.
+  const char* rate_label = rates_against_dofs ? "rate/N" : "rate";
+  std::snprintf(line, sizeof line, "%5s %10s %8s %11s %6s %11s %6s %11s %6s %9s %9s", "level", "h", "dofs", "L2",
+                rate_label, "H1-semi", rate_label, "H2-semi", rate_label, "assemble", "solve");
+  s << line << (jumps ? "   g1_jump\n" : "\n");
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    const LevelResult& r = rows[i];
+    const Rates q = rates_against_dofs ? dof_rates_at(rows, i) : rates_at(rows, i);
+    auto e = [](std::optional<double> v) { return v ? number(v, "%.3e") : std::string("-"); };
+    auto k = [](std::optional<double> v) { return v ? number(v, "%.2f") : std::string(""); };
+    std::snprintf(line, sizeof line, "%5d %10.4e %8d %11s %6s %11s %6s %11s %6s %8.3fs %8.3fs", r.level, r.h, r.dofs,
+                  e(r.l2).c_str(), k(q.l2).c_str(), e(r.h1).c_str(), k(q.h1).c_str(), e(r.h2).c_str(),
+                  k(q.h2).c_str(), r.t_assemble, r.t_solve);
+    s << line;
+    if (jumps) s << "  " << e(r.g1_jump);
+    s << '\n';
+  }
+  return s.str();
+}
+
+void write_summary_json(const StudySettings& settings, const StudyResult& result, const std::string& filename) {
+  using nlohmann::json;
+  json j;
+  j["iga_run_version"] = IGA_RUN_VERSION;
+  j["config"] = to_json(settings.root.yaml());
+  j["config_file"] = settings.root.file();
+  json space = {{"type", result.space_type}};
+  for (const auto& [k, v] : result.space_parameters) space["parameters"][k] = v;
+  j["space"] = space;
+  j["problem"] = {{"pde", to_string(settings.problem.pde)},
+                  {"form", to_string(settings.problem.form)},
+                  {"exact", settings.problem.exact ? json(settings.problem.exact->str()) : json(nullptr)},
+                  {"source", settings.problem.source.str()}};
+  for (const BoundaryPart& p : settings.problem.boundary) j["problem"]["boundary"][p.name] = to_string(p.kind);
+  j["norms"] = "l2: L2 norm; h1: H1 seminorm |e|_1 = ||grad e||; h2: H2 seminorm |e|_2 = ||D^2 e|| (Frobenius)";
+  json levels = json::array();
+  std::vector<double> h, inverse_dofs;
+  std::vector<std::optional<double>> l2, h1, h2;
+  for (std::size_t i = 0; i < result.rows.size(); ++i) {
+    const LevelResult& r = result.rows[i];
+    const Rates q = rates_at(result.rows, i);
+    const Rates d = dof_rates_at(result.rows, i);
+    levels.push_back({{"level", r.level},
+                      {"h", r.h},
+                      {"dofs", r.dofs},
+                      {"free_dofs", r.free_dofs},
+                      {"elements", r.elements},
+                      {"l2", optional_json(r.l2)},
+                      {"h1", optional_json(r.h1)},
+                      {"h2", optional_json(r.h2)},
+                      {"rate_l2", optional_json(q.l2)},
+                      {"rate_h1", optional_json(q.h1)},
+                      {"rate_h2", optional_json(q.h2)},
+                      {"solver", result.solver_methods[i]},
+                      {"relative_residual", result.relative_residuals[i]},
+                      {"refinement_steps", result.refinement_steps[i]},
+                      {"g1_jump", optional_json(r.g1_jump)},
+                      {"rate_dofs_l2", optional_json(d.l2)},
+                      {"rate_dofs_h1", optional_json(d.h1)},
+                      {"rate_dofs_h2", optional_json(d.h2)},
+                      {"estimator", i < result.estimators.size() ? optional_json(result.estimators[i]) : json(nullptr)},
+                      {"timings", {{"space", r.t_space}, {"assemble", r.t_assemble}, {"solve", r.t_solve},
+                                   {"errors", r.t_errors}}}});
+    h.push_back(r.h);
+    inverse_dofs.push_back(1.0 / r.dofs);
+    l2.push_back(r.l2);
+    h1.push_back(r.h1);
+    h2.push_back(r.h2);
+  }
+  j["levels"] = levels;
+  j["least_squares_rates"] = {{"l2", optional_json(least_squares_rate(h, l2))},
+                              {"h1", optional_json(least_squares_rate(h, h1))},
+                              {"h2", optional_json(least_squares_rate(h, h2))}};
+  // e ~ N^(-rate): the slope against 1/N.
+  j["least_squares_rates_dofs"] = {{"l2", optional_json(least_squares_rate(inverse_dofs, l2))},
+                                   {"h1", optional_json(least_squares_rate(inverse_dofs, h1))},
+                                   {"h2", optional_json(least_squares_rate(inverse_dofs, h2))}};
+  j["refinement"] = result.adaptive ? "adaptive" : "uniform";
+  if (!result.stop_reason.empty()) j["adaptive_stop_reason"] = result.stop_reason;
+  j["expected_rates"] = {{"l2", result.expected.l2}, {"h1", result.expected.h1}, {"h2", result.expected.h2}};
+  double total = 0;
+  for (const LevelResult& r : result.rows) total += r.t_space + r.t_assemble + r.t_solve + r.t_errors;
+  j["total_seconds"] = total;
+  std::ofstream out = open_for_writing(filename);
+  out << j.dump(2) << '\n';
+}
+
+}  // namespace iga

@@ -1,0 +1,84 @@
+#include "output/staged_directory.hpp"
+
+#include <unistd.h>
+
+#include "config/errors.hpp"
+
+#include <filesystem>
+#include <random>
+#include <stdexcept>
+#include <system_error>
+
+namespace iga {
+
+namespace fs = std::filesystem;
+
+namespace {
+std::string unique_suffix() {
+  std::random_device rd;
+  return std::to_string(::getpid()) + "-" + std::to_string(rd() % 1000000);
+}
+/// ".NAME<tag><unique>": a hidden sibling of `target`. Built by appending (GCC 12 warns, wrongly,
+/// about `"." + std::string` with -Wrestrict).
+std::string hidden_sibling(const fs::path& target, const char* tag) {
+  std::string name(".");
+  name += target.filename().string();
+  name += tag;
+  name += unique_suffix();
+  return name;
+}
+
+}  // namespace
+
+void check_output_location(const std::string& final_path) {
+  const fs::path target = fs::absolute(final_path);
+  std::error_code ec;
+  if (fs::exists(target, ec) && !fs::is_directory(target, ec))
+    throw InputError("output directory '" + final_path + "' exists and is not a directory");
+  fs::path ancestor = target.parent_path();
+  while (!ancestor.empty() && !fs::exists(ancestor, ec) && ancestor != ancestor.parent_path())
+    ancestor = ancestor.parent_path();
+  if (!fs::is_directory(ancestor, ec))
+    throw InputError("output directory '" + final_path + "': '" + ancestor.string() + "' is not a directory");
+  if (::access(ancestor.c_str(), W_OK) != 0)
+    throw InputError("output directory '" + final_path + "': '" + ancestor.string() + "' is not writable");
+}
+
+StagedDirectory::StagedDirectory(std::string final_path) : final_(std::move(final_path)) {
+  // Staging lives in the system temp directory so that a failed run creates nothing beside the
+  // final path (not even its parent folders).
+  staging_ = (fs::temp_directory_path() / ("iga-run-" + unique_suffix())).string();
+  fs::create_directories(staging_);
+}
+
+StagedDirectory::~StagedDirectory() {
+  std::error_code ec;
+  if (!committed_) fs::remove_all(staging_, ec);
+}
+
+void StagedDirectory::commit() {
+  const fs::path target = fs::absolute(final_);
+  if (target.has_parent_path()) fs::create_directories(target.parent_path());
+  // Copy next to the target first (the temp dir may be on another file system), then swap by
+  // renames, which are atomic within one file system.
+  const fs::path incoming = target.parent_path() / hidden_sibling(target, ".incoming-");
+  const fs::path old = target.parent_path() / hidden_sibling(target, ".old-");
+  std::error_code ec;
+  bool replaced = false;
+  try {
+    fs::copy(staging_, incoming, fs::copy_options::recursive);
+    replaced = fs::exists(target);
+    if (replaced) fs::rename(target, old);
+    fs::rename(incoming, target);
+  } catch (...) {
+    // Roll back: no half-copied result, and an earlier result back in its place.
+    fs::remove_all(incoming, ec);
+    if (replaced && !fs::exists(target, ec)) fs::rename(old, target, ec);
+    throw;
+  }
+  if (replaced) fs::remove_all(old, ec);
+  fs::remove_all(staging_, ec);
+  committed_ = true;
+}
+
+}  // namespace iga

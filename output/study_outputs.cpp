@@ -1,0 +1,35 @@
+#include "output/study_outputs.hpp"
+
+#include <filesystem>
+#include <vector>
+
+#include "output/vtk_writer.hpp"
+
+namespace iga {
+
+StudyResult run_study_with_vtk(const StudySettings& settings, const std::string& directory,
+                               const ProgressSink& progress) {
+  if (!settings.write_vtk) return run_study(settings, progress);
+  const std::filesystem::path dir(directory);
+  const ExactSolution exact = settings.problem.exact_solution();
+  std::vector<std::string> vtu_files, mesh_files;
+  const LevelSink write_level = [&](int level, const Space& space, const DiscreteSolution& sol) {
+    progress("[level " + std::to_string(level) + "] writing VTK");
+    VtkFieldOptions opt;
+    opt.samples = settings.vtk_samples;
+    opt.exact = exact.u;
+    opt.laplacian = settings.problem.pde == Pde::biharmonic;
+    const std::string name = "solution_" + std::to_string(level) + ".vtu";
+    write_solution_vtu(space, sol.coefficients, opt, (dir / name).string());
+    vtu_files.push_back(name);
+    const std::string mesh = "mesh_" + std::to_string(level) + ".vtu";
+    write_mesh_vtu(space, settings.vtk_samples, (dir / mesh).string());
+    mesh_files.push_back(mesh);
+  };
+  StudyResult result = run_study(settings, progress, write_level);
+  write_pvd(vtu_files, (dir / "solution.pvd").string());
+  write_pvd(mesh_files, (dir / "mesh.pvd").string());
+  return result;
+}
+
+}  // namespace iga

@@ -1,4 +1,0 @@
-// iga-run: the command-line program. Everything lives in the library; see solver/cli.cpp.
-#include "solver/cli.hpp"
-
-int main(int argc, char** argv) { return iga::run_cli(argc, argv); }

@@ -1,0 +1,226 @@
+// The iga-run program as a user runs it: every shipped config, its outputs read back with VTK's
+// reader, and bad input ending in exit code 2 with a message and no output directory.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <vtkCellType.h>
+#include <vtkDataArray.h>
+#include <vtkPointData.h>
+#include <vtkSmartPointer.h>
+#include <vtkUnstructuredGrid.h>
+#include <vtkXMLUnstructuredGridReader.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <vector>
+
+#include "tests/support/scratch_files.hpp"
+
+namespace fs = std::filesystem;
+
+namespace {
+
+struct RunResult {
+  int exit_code;
+  std::string out, err;
+};
+
+std::string slurp(const fs::path& p) {
+  std::ifstream in(p);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+fs::path scratch_dir() { return iga::test::scratch_folder(); }  // removed when the program ends
+
+RunResult run_iga(const std::string& args) {
+  const fs::path out = scratch_dir() / "stdout.txt", err = scratch_dir() / "stderr.txt";
+  const std::string cmd = std::string(IGA_RUN_BINARY) + " " + args + " >" + out.string() + " 2>" + err.string();
+  const int status = std::system(cmd.c_str());
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(out), slurp(err)};
+}
+
+fs::path write_config(const std::string& name, const std::string& text) {
+  const fs::path p = scratch_dir() / name;
+  std::ofstream(p) << text;
+  return p;
+}
+
+const char* kGood = R"yaml(problem:
+  pde: poisson
+  exact: "x*y + sin(x)"
+  boundary: {all: dirichlet}
+domain: {type: rectangle, min: [0, 0], max: [1, 1]}
+space: {type: bspline, degree: 2, elements: [2, 2]}
+refinement: {levels: 2}
+)yaml";
+
+/// `text` with the first `from` replaced by `to`.
+std::string replaced(std::string text, const std::string& from, const std::string& to) {
+  const auto pos = text.find(from);
+  EXPECT_NE(pos, std::string::npos) << from;
+  return pos == std::string::npos ? text : text.replace(pos, from.size(), to);
+}
+
+/// The good config with one part replaced, for bad-input cases.
+std::string with_replaced(const std::string& from, const std::string& to) { return replaced(kGood, from, to); }
+
+}  // namespace
+
+/// Every configs/*.yaml, listed when the test program starts, so that each shipped config is its
+/// own test case (ctest runs them in parallel; a failure names the config).
+std::vector<std::string> shipped_configs() {
+  std::vector<std::string> names;
+  for (const auto& entry : fs::directory_iterator(fs::path(IGA_SOURCE_DIR) / "configs"))
+    if (entry.path().extension() == ".yaml") names.push_back(entry.path().stem().string());
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
+class ShippedConfig : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(ShippedConfig, RunsAndWritesReadableOutput) {
+  const std::string name = GetParam();
+  const fs::path config = fs::path(IGA_SOURCE_DIR) / "configs" / (name + ".yaml");
+  const fs::path out = scratch_dir() / ("out-" + name);
+  // A shipped config is a documented one: README's table lists it.
+  EXPECT_NE(slurp(fs::path(IGA_SOURCE_DIR) / "README.md").find(name + ".yaml"), std::string::npos)
+      << name << ".yaml is not in README.md";
+  const RunResult r = run_iga(config.string() + " --levels 2 --quiet --output " + out.string());
+  ASSERT_EQ(r.exit_code, 0) << name << ": " << r.err;
+  EXPECT_TRUE(r.err.empty()) << "--quiet still printed: " << r.err;
+  EXPECT_NE(r.out.find("level"), std::string::npos);
+
+  const std::string csv = slurp(out / "convergence.csv");
+  EXPECT_EQ(csv.rfind("level,h,dofs,l2,h1,h2,rate_l2,rate_h1,rate_h2,t_assemble,t_solve", 0), 0u) << name;
+  EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 3) << name;  // header + 2 levels
+
+  const nlohmann::json summary = nlohmann::json::parse(slurp(out / "summary.json"));
+  EXPECT_EQ(summary["levels"].size(), 2u);
+  EXPECT_TRUE(summary.contains("config"));
+  EXPECT_TRUE(summary["space"].contains("type"));
+  for (const auto& level : summary["levels"])  // the solver's iterative-refinement corrections
+    EXPECT_GE(level["refinement_steps"].get<int>(), 0) << name;
+
+  EXPECT_TRUE(fs::exists(out / "solution.pvd"));
+  EXPECT_TRUE(fs::exists(out / "mesh.pvd"));
+  EXPECT_GT(fs::file_size(out / "convergence.svg"), 1000u);
+  const bool biharmonic = summary["problem"]["pde"] == "biharmonic";
+  for (int level = 0; level < 2; ++level) {
+    auto reader = vtkSmartPointer<vtkXMLUnstructuredGridReader>::New();
+    reader->SetFileName((out / ("solution_" + std::to_string(level) + ".vtu")).c_str());
+    reader->Update();
+    vtkUnstructuredGrid* grid = reader->GetOutput();
+    ASSERT_GT(grid->GetNumberOfPoints(), 0) << name;
+    ASSERT_GT(grid->GetNumberOfCells(), 0) << name;
+    vtkPointData* pd = grid->GetPointData();
+    for (const char* field : {"u", "grad_u", "u_exact", "error"}) EXPECT_NE(pd->GetArray(field), nullptr) << field;
+    EXPECT_EQ(pd->GetArray("grad_u")->GetNumberOfComponents(), 3);
+    // The mesh outline: one closed poly-line per element of the solution file.
+    auto mesh_reader = vtkSmartPointer<vtkXMLUnstructuredGridReader>::New();
+    mesh_reader->SetFileName((out / ("mesh_" + std::to_string(level) + ".vtu")).c_str());
+    mesh_reader->Update();
+    vtkUnstructuredGrid* mesh = mesh_reader->GetOutput();
+    ASSERT_GT(mesh->GetNumberOfCells(), 0) << name;
+    EXPECT_EQ(mesh->GetCellType(0), VTK_POLY_LINE);
+    EXPECT_EQ(mesh->GetNumberOfCells(), summary["levels"][level]["elements"].get<int>()) << name;
+    if (biharmonic) EXPECT_NE(pd->GetArray("laplace_u"), nullptr);
+    // The error field is small against the solution (the exact solutions are resolved).
+    double range_u[2], range_e[2];
+    pd->GetArray("u_exact")->GetRange(range_u);
+    pd->GetArray("error")->GetRange(range_e);
+    const double scale = std::max(std::abs(range_u[0]), std::abs(range_u[1]));
+    EXPECT_LT(std::max(std::abs(range_e[0]), std::abs(range_e[1])), 0.2 * scale) << name;
+  }
+}
+
+// Test names may hold only letters, digits and underscores.
+INSTANTIATE_TEST_SUITE_P(EndToEnd, ShippedConfig, ::testing::ValuesIn(shipped_configs()),
+                         [](const ::testing::TestParamInfo<std::string>& info) {
+                           std::string name = info.param;
+                           std::replace(name.begin(), name.end(), '-', '_');
+                           return name;
+                         });
+
+TEST(EndToEnd, GoodConfigWritesToConfiguredDirectory) {
+  const fs::path out = scratch_dir() / "good-out";
+  const fs::path cfg = write_config("good.yaml", std::string(kGood) + "output: {directory: " + out.string() + "}\n");
+  const RunResult r = run_iga(cfg.string() + " --quiet");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_TRUE(fs::exists(out / "convergence.csv"));
+  // A second run replaces the results in place.
+  ASSERT_EQ(run_iga(cfg.string() + " --quiet --levels 1").exit_code, 0);
+  const std::string csv = slurp(out / "convergence.csv");
+  EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 2);
+}
+
+struct BadCase {
+  const char* name;
+  std::string config;      // empty: use a missing file
+  const char* message;     // must appear on stderr
+};
+
+class BadInput : public ::testing::TestWithParam<BadCase> {};
+
+TEST_P(BadInput, ExitsWithCode2AndLeavesNoOutput) {
+  const BadCase& c = GetParam();
+  const fs::path out = scratch_dir() / (std::string("bad-") + c.name);
+  const fs::path cfg = c.config.empty() ? scratch_dir() / "does-not-exist.yaml"
+                                        : write_config(std::string(c.name) + ".yaml", c.config);
+  const RunResult r = run_iga(cfg.string() + " --quiet --output " + out.string());
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_NE(r.err.find(c.message), std::string::npos) << "stderr: " << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << "one line: " << r.err;
+  EXPECT_FALSE(fs::exists(out));
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Cases, BadInput,
+    ::testing::Values(
+        BadCase{"typo_key", with_replaced("degree: 2", "degre: 2"), "did you mean 'degree'"},
+        BadCase{"typo_top_level", with_replaced("refinement:", "refinment:"), "did you mean 'refinement'"},
+        BadCase{"bad_expression", with_replaced("x*y + sin(x)", "x*y + sin(x"), "cannot parse"},
+        BadCase{"unknown_symbol", with_replaced("x*y + sin(x)", "x*z"), "cannot parse"},
+        BadCase{"not_finite_data", with_replaced("x*y + sin(x)", "sqrt(x - 2)"), "not finite"},
+        BadCase{"folded_patch",
+                with_replaced("{type: rectangle, min: [0, 0], max: [1, 1]}",
+                              "{type: patch, degree: [1, 1], knots_u: [0, 0, 1, 1], knots_v: [0, 0, 1, 1], "
+                              "control_points: [[0, 0], [1, 0], [1, 1], [0, 1]]}"),
+                "folds over itself"},
+        BadCase{"regularity_too_high", with_replaced("degree: 2", "degree: 2, regularity: 2"), "regularity"},
+        BadCase{"unknown_space", with_replaced("type: bspline", "type: bsplin"), "bspline"},
+        BadCase{"biharmonic_needs_c1",
+                replaced(replaced(with_replaced("pde: poisson", "pde: biharmonic"), "{all: dirichlet}", "{all: clamped}"),
+                         "degree: 2", "degree: 2, regularity: 0"),
+                "needs a C1"},
+        BadCase{"duplicate_boundary_part", with_replaced("{all: dirichlet}", "{left: dirichlet, left: neumann}"),
+                "duplicate key 'left'"},
+        BadCase{"degree_zero", with_replaced("degree: 2", "degree: 0"), "degree"},
+        BadCase{"unknown_boundary_part", with_replaced("{all: dirichlet}", "{lft: dirichlet}"), "did you mean 'left'"},
+        BadCase{"wrong_condition", with_replaced("{all: dirichlet}", "{all: clamped}"), "dirichlet"},
+        BadCase{"yaml_syntax", with_replaced("pde: poisson", "pde: [poisson"), "yaml_syntax.yaml:"},
+        BadCase{"missing_file", "", "does-not-exist.yaml"}),
+    [](const auto& info) { return std::string(info.param.name); });
+
+TEST(EndToEnd, UnusableOutputLocationFailsBeforeTheStudy) {
+  const fs::path file = scratch_dir() / "a-file";
+  std::ofstream(file) << "x";
+  const fs::path cfg = write_config("good2.yaml", kGood);
+  const RunResult r = run_iga(cfg.string() + " --quiet --output " + (file / "sub").string());
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_NE(r.err.find("is not a directory"), std::string::npos) << r.err;
+  EXPECT_TRUE(r.out.empty()) << "no study output expected: " << r.out;
+}
+
+TEST(EndToEnd, VersionHelpAndUsage) {
+  RunResult r = run_iga("--version");
+  EXPECT_EQ(r.exit_code, 0);
+  EXPECT_NE(r.out.find("iga-run"), std::string::npos);
+  EXPECT_EQ(run_iga("--help").exit_code, 0);
+  EXPECT_EQ(run_iga("").exit_code, 2);
+  EXPECT_EQ(run_iga("a.yaml --levels abc").exit_code, 2);
+}

@@ -1,0 +1,141 @@
+// The generic assembler: colouring, pattern, symmetric matrices with the right kernels, and
+// results independent of the number of threads.
+#include <gtest/gtest.h>
+#include <omp.h>
+
+#include <Eigen/SparseCholesky>
+
+#include <set>
+
+#include "assembly/assembler.hpp"
+#include "assembly/parallel.hpp"
+#include "tests/support/test_support.hpp"
+
+using namespace iga;
+
+namespace {
+const char* kCubic = R"yaml(
+domain: {type: rectangle, min: [-1, 0.5], max: [2, 1.5]}
+space: {type: bspline, degree: 3, regularity: 2, elements: [5, 3]}
+)yaml";
+const char* kAnnulus = R"yaml(
+domain: {type: quarter_annulus, inner: 1, outer: 2}
+space: {type: bspline, degree: 2, regularity: 1, elements: [4, 3]}
+)yaml";
+}  // namespace
+
+TEST(Assembly, ColouringSeparatesElementsThatShareFunctions) {
+  const SpacePtr space = test::space_from_yaml(kCubic);
+  const ElementDofTable table = collect_element_dofs(*space);
+  const auto colours = colour_elements(table, space->dimension());
+  // Cubic C2 elements (i, j), (k, l) share a function iff |i-k| <= 3 and |j-l| <= 3: on 5x3
+  // elements, any 4 consecutive columns of all 3 rows conflict pairwise, so 12 colours are needed.
+  EXPECT_GE(colours.size(), 12u);
+  EXPECT_LE(colours.size(), 16u);
+  std::vector<int> seen(space->num_elements(), 0);
+  for (const auto& group : colours) {
+    std::set<int> used;
+    for (int e : group) {
+      ++seen[e];
+      for (const int* d = table.begin(e); d != table.begin(e + 1); ++d) EXPECT_TRUE(used.insert(*d).second);
+    }
+  }
+  for (int count : seen) EXPECT_EQ(count, 1);
+}
+
+TEST(Assembly, PatternHoldsEveryElementCoupling) {
+  const SpacePtr space = test::space_from_yaml(kCubic);
+  const ElementDofTable table = collect_element_dofs(*space);
+  const SparseMatrix pattern = sparsity_pattern(table, space->dimension());
+  // 1D: each cubic C2 B-spline overlaps with at most 7; the 8x6 functions of a 5x3 mesh give a
+  // known count of couplings: sum over pairs of directions of overlaps.
+  auto overlaps_1d = [](int n, int p) {
+    int total = 0;
+    for (int i = 0; i < n; ++i)
+      for (int j = 0; j < n; ++j) total += std::abs(i - j) <= p;
+    return total;
+  };
+  EXPECT_EQ(pattern.nonZeros(), overlaps_1d(8, 3) * overlaps_1d(6, 3));
+}
+
+TEST(Assembly, StiffnessIsSymmetricAndAnnihilatesConstants) {
+  const SpacePtr space = test::space_from_yaml(kAnnulus);
+  const Assembler assembler(*space);
+  const SparseMatrix K = assembler.matrix(BilinearForm::laplace, 8);
+  const SparseMatrix Kt = K.transpose();
+  EXPECT_LT((K - Kt).norm(), 1e-13 * K.norm());
+  const Eigen::VectorXd ones = Eigen::VectorXd::Ones(space->dimension());
+  EXPECT_LT((K * ones).norm(), 1e-12 * K.norm());
+  // Mass matrix: 1^T M 1 is the area of the quarter annulus (exact NURBS geometry).
+  const SparseMatrix M = assembler.matrix(BilinearForm::mass, 10);
+  EXPECT_NEAR(ones.dot(M * ones), 3.0 * M_PI / 4.0, 1e-12);
+}
+
+TEST(Assembly, BiharmonicFormsVanishOnLinearFunctions) {
+  const SpacePtr space = test::space_from_yaml(kCubic);
+  const Assembler assembler(*space);
+  // B-splines reproduce x and y; interpolate u = 2 + 3x - y through the Greville-free route:
+  // the coefficient vector of a linear function is found by an L2 projection.
+  const SparseMatrix M = assembler.matrix(BilinearForm::mass, 8);
+  const Eigen::VectorXd b = assembler.load([](const Point2& p) { return 2 + 3 * p.x() - p.y(); }, 8);
+  Eigen::SimplicialLDLT<SparseMatrix> ldlt(M);
+  const Eigen::VectorXd u = ldlt.solve(b);
+  for (BilinearForm form : {BilinearForm::bilaplace, BilinearForm::hessian}) {
+    const SparseMatrix B = assembler.matrix(form, 6);
+    EXPECT_LT((B * u).norm(), 1e-9 * B.norm() * u.norm()) << to_string(form);
+  }
+}
+
+TEST(Assembly, ResultDoesNotDependOnThreadCount) {
+  const SpacePtr space = test::space_from_yaml(kAnnulus, 3);
+  ASSERT_TRUE(worth_threads(space->num_elements()));  // else both runs would be serial
+  const Assembler assembler(*space);
+  omp_set_num_threads(1);
+  const SparseMatrix A1 = assembler.matrix(BilinearForm::hessian, 6);
+  omp_set_num_threads(2);
+  const SparseMatrix A2 = assembler.matrix(BilinearForm::hessian, 6);
+  // Each entry receives at most one contribution per colour, in colour order: bitwise equal.
+  ASSERT_EQ(A1.nonZeros(), A2.nonZeros());
+  for (int k = 0; k < A1.nonZeros(); ++k) ASSERT_EQ(A1.valuePtr()[k], A2.valuePtr()[k]);
+}
+
+namespace {
+/// Delegates to a B-spline space but supplies element matrices "in closed form": twice the
+/// quadrature ones, so the test can see which path the assembler took.
+class ClosedFormSpace final : public Space {
+ public:
+  explicit ClosedFormSpace(SpacePtr inner) : inner_(std::move(inner)) {}
+  std::unique_ptr<Evaluator> make_evaluator() const override { return inner_->make_evaluator(); }
+  std::string type() const override { return "closed-form test"; }
+  std::vector<std::pair<std::string, std::string>> parameters() const override { return {}; }
+  int dimension() const override { return inner_->dimension(); }
+  void element_dofs(int e, std::vector<int>& out) const override { inner_->element_dofs(e, out); }
+  int num_elements() const override { return inner_->num_elements(); }
+  CellShape cell_shape(int e) const override { return inner_->cell_shape(e); }
+  double mesh_size() const override { return inner_->mesh_size(); }
+  int degree() const override { return inner_->degree(); }
+  bool affine_elements() const override { return inner_->affine_elements(); }
+  RulePtr quadrature(int e, int d) const override { return inner_->quadrature(e, d); }
+  RulePtr edge_quadrature(int e, int edge, int d) const override { return inner_->edge_quadrature(e, edge, d); }
+  std::vector<std::string> boundary_names() const override { return inner_->boundary_names(); }
+  std::vector<BoundaryEdge> boundary_edges(const std::string& n) const override { return inner_->boundary_edges(n); }
+  bool closed_form_element_matrix(int e, BilinearForm form, Eigen::MatrixXd& local) const override {
+    ElementValues ev(*inner_, flags_for(form));
+    ev.reinit(e, *inner_->quadrature(e, 8));
+    element_matrix(form, ev, local);
+    local *= 2.0;
+    return true;
+  }
+
+ private:
+  SpacePtr inner_;
+};
+}  // namespace
+
+TEST(Assembly, UsesClosedFormElementMatricesWhenTheSpaceHasThem) {
+  const SpacePtr inner = test::space_from_yaml(kCubic);
+  const ClosedFormSpace closed(inner);
+  const SparseMatrix A = Assembler(*inner).matrix(BilinearForm::laplace, 8);
+  const SparseMatrix B = Assembler(closed).matrix(BilinearForm::laplace, 8);
+  EXPECT_LT((B - 2.0 * A).norm(), 1e-13 * A.norm());
+}

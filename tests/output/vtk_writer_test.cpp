@@ -1,0 +1,341 @@
+/// @file
+/// write_solution_vtu and write_pvd, read back with VTK's own readers: sizes, cell types, field
+/// names, and a linear function reproduced to round-off at every sample point.
+
+#include "output/vtk_writer.hpp"
+
+#include <gtest/gtest.h>
+#include <unistd.h>
+#include <vtkCellData.h>
+#include <vtkCellType.h>
+#include <vtkDataArray.h>
+#include <vtkNew.h>
+#include <vtkPointData.h>
+#include <vtkUnstructuredGrid.h>
+#include <vtkXMLDataElement.h>
+#include <vtkXMLDataParser.h>
+#include <vtkXMLUnstructuredGridReader.h>
+
+#include <Eigen/LU>
+#include <filesystem>
+#include <map>
+#include <stdexcept>
+
+namespace iga {
+namespace {
+
+namespace fs = std::filesystem;
+
+/// An element of the test space: affine map x = origin + J (xi, eta) and the global indices of its
+/// local Lagrange functions (Q1: corners (0,0), (1,0), (0,1), (1,1); P1: vertices (0,0), (1,0), (0,1)).
+struct AffineElement {
+  CellShape shape;
+  Point2 origin;
+  Eigen::Matrix2d J;
+  std::vector<int> dofs;
+};
+
+/// Test-only space of continuous Q1 / P1 Lagrange functions on affine elements. Evaluates in
+/// physical coordinates with the affine chain rule and fills only the arrays it is asked for, so
+/// a writer that forgets update_hessians would read empty arrays.
+class AffineLagrangeSpace : public Space {
+ public:
+  AffineLagrangeSpace(std::vector<AffineElement> elements, std::vector<Point2> nodes)
+      : elements_(std::move(elements)), nodes_(std::move(nodes)) {}
+
+  /// 2 x 2 grid of parameter-space unit squares [i,i+1] x [j,j+1], mapped by x = A s + b;
+  /// node (a, b) of the 3 x 3 grid is global function 3 b + a.
+  static AffineLagrangeSpace q1_grid(const Eigen::Matrix2d& A, const Point2& b) {
+    std::vector<AffineElement> elements;
+    for (int j = 0; j < 2; ++j)
+      for (int i = 0; i < 2; ++i)
+        elements.push_back({CellShape::quadrilateral, A * Point2(i, j) + b, A,
+                            {3 * j + i, 3 * j + i + 1, 3 * (j + 1) + i, 3 * (j + 1) + i + 1}});
+    std::vector<Point2> nodes;
+    for (int j = 0; j < 3; ++j)
+      for (int i = 0; i < 3; ++i) nodes.push_back(A * Point2(i, j) + b);
+    return AffineLagrangeSpace(std::move(elements), std::move(nodes));
+  }
+
+  /// The square [0,1]^2 cut along (1,0)-(0,1) into two P1 triangles.
+  static AffineLagrangeSpace p1_square() {
+    const std::vector<Point2> v = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+    auto triangle = [&](int a, int b, int c) {
+      Eigen::Matrix2d J;
+      J << v[b] - v[a], v[c] - v[a];
+      return AffineElement{CellShape::triangle, v[a], J, {a, b, c}};
+    };
+    return AffineLagrangeSpace({triangle(0, 1, 3), triangle(2, 3, 1)}, v);
+  }
+
+  /// Coefficients interpolating f at the nodes (exact for f linear).
+  Eigen::VectorXd interpolate(const std::function<double(const Point2&)>& f) const {
+    Eigen::VectorXd c(dimension());
+    for (int i = 0; i < dimension(); ++i) c(i) = f(nodes_[i]);
+    return c;
+  }
+
+  class AffineEvaluator : public Evaluator {
+   public:
+    explicit AffineEvaluator(const AffineLagrangeSpace& space) : space_(space) {}
+    void evaluate(int element, const QuadratureRule& points, unsigned flags, PointValues& out) override {
+      const AffineElement& el = space_.elements_.at(element);
+      const int n = static_cast<int>(el.dofs.size()), q = points.size();
+      const Eigen::Matrix2d Jinv_t = el.J.inverse().transpose();
+      out.dofs = el.dofs;
+      out.x.resize(2, q);
+      out.jacobian.assign(q, el.J);
+      if (flags & update_values) out.value.resize(n, q);
+      if (flags & update_gradients) out.dx.resize(n, q), out.dy.resize(n, q);
+      if (flags & update_hessians) out.dxx.resize(n, q), out.dxy.resize(n, q), out.dyy.resize(n, q);
+      for (int k = 0; k < q; ++k) {
+        const Point2& r = points.points[k];
+        out.x.col(k) = el.origin + el.J * r;
+        for (int i = 0; i < n; ++i) {
+          double value, mixed = 0;  // mixed: d2/dxi deta, the only nonzero second derivative
+          Point2 grad;
+          if (el.shape == CellShape::quadrilateral) {
+            const int a = i % 2, b = i / 2;
+            const double fa = a ? r.x() : 1 - r.x(), fb = b ? r.y() : 1 - r.y();
+            const double da = a ? 1 : -1, db = b ? 1 : -1;
+            value = fa * fb;
+            grad = {da * fb, fa * db};
+            mixed = da * db;
+          } else {
+            const double lambda[3] = {1 - r.x() - r.y(), r.x(), r.y()};
+            const Point2 dlambda[3] = {{-1, -1}, {1, 0}, {0, 1}};
+            value = lambda[i];
+            grad = dlambda[i];
+          }
+          if (flags & update_values) out.value(i, k) = value;
+          if (flags & update_gradients) {
+            const Point2 g = Jinv_t * grad;
+            out.dx(i, k) = g.x();
+            out.dy(i, k) = g.y();
+          }
+          if (flags & update_hessians) {
+            Eigen::Matrix2d H;
+            H << 0, mixed, mixed, 0;
+            const Eigen::Matrix2d Hx = Jinv_t * H * Jinv_t.transpose();
+            out.dxx(i, k) = Hx(0, 0);
+            out.dxy(i, k) = Hx(0, 1);
+            out.dyy(i, k) = Hx(1, 1);
+          }
+        }
+      }
+    }
+
+   private:
+    const AffineLagrangeSpace& space_;
+  };
+
+  std::unique_ptr<Evaluator> make_evaluator() const override { return std::make_unique<AffineEvaluator>(*this); }
+  std::string type() const override { return "affine-lagrange-test"; }
+  std::vector<std::pair<std::string, std::string>> parameters() const override { return {}; }
+  int dimension() const override { return static_cast<int>(nodes_.size()); }
+  int num_elements() const override { return static_cast<int>(elements_.size()); }
+  CellShape cell_shape(int element) const override { return elements_.at(element).shape; }
+  double mesh_size() const override { return 0; }  // not used by the writer
+  int degree() const override { return 1; }
+  bool affine_elements() const override { return true; }
+  // The writer never integrates: these two throw so a test would notice if it started to.
+  RulePtr quadrature(int, int) const override { throw std::logic_error("quadrature not used by the writer"); }
+  RulePtr edge_quadrature(int, int, int) const override { throw std::logic_error("edge_quadrature not used"); }
+  std::vector<std::string> boundary_names() const override { return {}; }
+  std::vector<BoundaryEdge> boundary_edges(const std::string&) const override { return {}; }
+
+ private:
+  std::vector<AffineElement> elements_;
+  std::vector<Point2> nodes_;
+};
+
+double linear(const Point2& p) { return 1 + 2 * p.x() + 3 * p.y(); }
+
+/// A fresh directory per test, removed afterwards.
+class VtkWriterTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+    dir_ = fs::temp_directory_path() / ("iga_vtk_" + std::string(info->name()) + "_" + std::to_string(::getpid()));
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  std::string path(const std::string& name) const { return (dir_ / name).string(); }
+
+  static vtkSmartPointer<vtkUnstructuredGrid> read_vtu(const std::string& file) {
+    vtkNew<vtkXMLUnstructuredGridReader> reader;
+    reader->SetFileName(file.c_str());
+    reader->Update();
+    return reader->GetOutput();
+  }
+
+  fs::path dir_;
+};
+
+TEST_F(VtkWriterTest, Q1GridReproducesLinearFunctionWithAllFields) {
+  Eigen::Matrix2d A;
+  A << 1.0, 0.25, 0.0, 1.5;  // sheared, stretched: physical and reference gradients differ
+  const auto space = AffineLagrangeSpace::q1_grid(A, Point2(0.1, -0.2));
+  VtkFieldOptions options;
+  options.samples = 4;
+  options.exact = linear;
+  options.laplacian = true;
+  const std::string file = path("q1.vtu");
+  write_solution_vtu(space, space.interpolate(linear), options, file);
+
+  const auto grid = read_vtu(file);
+  // 4 elements, each (4+1)^2 sample points and 4^2 quadrilaterals; edge points are duplicated.
+  ASSERT_EQ(grid->GetNumberOfPoints(), 100);
+  ASSERT_EQ(grid->GetNumberOfCells(), 64);
+  for (vtkIdType c = 0; c < grid->GetNumberOfCells(); ++c) EXPECT_EQ(grid->GetCellType(c), VTK_QUAD);
+
+  vtkPointData* pd = grid->GetPointData();
+  vtkDataArray* u = pd->GetArray("u");
+  vtkDataArray* grad = pd->GetArray("grad_u");
+  vtkDataArray* exact = pd->GetArray("u_exact");
+  vtkDataArray* error = pd->GetArray("error");
+  vtkDataArray* laplace = pd->GetArray("laplace_u");
+  ASSERT_NE(u, nullptr);
+  ASSERT_NE(grad, nullptr);
+  ASSERT_NE(exact, nullptr);
+  ASSERT_NE(error, nullptr);
+  ASSERT_NE(laplace, nullptr);
+  EXPECT_EQ(u->GetNumberOfComponents(), 1);
+  EXPECT_EQ(grad->GetNumberOfComponents(), 3);
+
+  double lo[2] = {1e300, 1e300}, hi[2] = {-1e300, -1e300};
+  for (vtkIdType p = 0; p < grid->GetNumberOfPoints(); ++p) {
+    double x[3];
+    grid->GetPoint(p, x);
+    EXPECT_EQ(x[2], 0.0);
+    const double expected = linear(Point2(x[0], x[1]));
+    EXPECT_NEAR(u->GetComponent(p, 0), expected, 1e-12) << "point " << p;
+    EXPECT_NEAR(grad->GetComponent(p, 0), 2.0, 1e-12) << "point " << p;
+    EXPECT_NEAR(grad->GetComponent(p, 1), 3.0, 1e-12) << "point " << p;
+    EXPECT_EQ(grad->GetComponent(p, 2), 0.0);
+    EXPECT_NEAR(exact->GetComponent(p, 0), expected, 1e-14);
+    EXPECT_NEAR(error->GetComponent(p, 0), 0.0, 1e-12);
+    // Each bilinear function has a nonzero physical Laplacian under this shear; their sum must not.
+    EXPECT_NEAR(laplace->GetComponent(p, 0), 0.0, 1e-12);
+    for (int d = 0; d < 2; ++d) lo[d] = std::min(lo[d], x[d]), hi[d] = std::max(hi[d], x[d]);
+  }
+  // The image of [0,2]^2 under x = A s + b.
+  EXPECT_NEAR(lo[0], 0.1, 1e-14);
+  EXPECT_NEAR(hi[0], 2.6, 1e-14);
+  EXPECT_NEAR(lo[1], -0.2, 1e-14);
+  EXPECT_NEAR(hi[1], 2.8, 1e-14);
+
+  vtkDataArray* element = grid->GetCellData()->GetArray("element");
+  ASSERT_NE(element, nullptr);
+  std::map<int, int> cells_per_element;
+  for (vtkIdType c = 0; c < grid->GetNumberOfCells(); ++c) ++cells_per_element[int(element->GetComponent(c, 0))];
+  EXPECT_EQ(cells_per_element, (std::map<int, int>{{0, 16}, {1, 16}, {2, 16}, {3, 16}}));
+}
+
+TEST_F(VtkWriterTest, NonlinearCoefficientsMatchHandComputedBilinearValues) {
+  // One nonzero coefficient: the hat of the centre node (1,1). On the unit grid its value at a
+  // sample point is (1-|x-1|)(1-|y-1|), its gradient the product rule of that.
+  const auto space = AffineLagrangeSpace::q1_grid(Eigen::Matrix2d::Identity(), Point2(0, 0));
+  Eigen::VectorXd c = Eigen::VectorXd::Zero(9);
+  c(4) = 1.0;
+  VtkFieldOptions options;
+  options.samples = 3;
+  const std::string file = path("hat.vtu");
+  write_solution_vtu(space, c, options, file);
+  const auto grid = read_vtu(file);
+  ASSERT_EQ(grid->GetNumberOfPoints(), 4 * 16);
+  ASSERT_EQ(grid->GetNumberOfCells(), 4 * 9);
+  vtkDataArray* u = grid->GetPointData()->GetArray("u");
+  vtkDataArray* grad = grid->GetPointData()->GetArray("grad_u");
+  // Optional fields are absent when not asked for.
+  EXPECT_EQ(grid->GetPointData()->GetArray("u_exact"), nullptr);
+  EXPECT_EQ(grid->GetPointData()->GetArray("error"), nullptr);
+  EXPECT_EQ(grid->GetPointData()->GetArray("laplace_u"), nullptr);
+  int at_peak = 0;
+  for (vtkIdType p = 0; p < grid->GetNumberOfPoints(); ++p) {
+    double x[3];
+    grid->GetPoint(p, x);
+    const double fx = 1 - std::abs(x[0] - 1), fy = 1 - std::abs(x[1] - 1);
+    EXPECT_NEAR(u->GetComponent(p, 0), fx * fy, 1e-13);
+    // Away from the kinks x = 1, y = 1 the one-sided derivative is unambiguous.
+    if (std::abs(x[0] - 1) > 1e-9 && std::abs(x[1] - 1) > 1e-9) {
+      EXPECT_NEAR(grad->GetComponent(p, 0), (x[0] < 1 ? 1 : -1) * fy, 1e-13);
+      EXPECT_NEAR(grad->GetComponent(p, 1), (x[1] < 1 ? 1 : -1) * fx, 1e-13);
+    }
+    if (std::abs(u->GetComponent(p, 0) - 1) < 1e-13) ++at_peak;
+  }
+  EXPECT_EQ(at_peak, 4);  // the centre node, once per element
+}
+
+TEST_F(VtkWriterTest, TrianglesGiveVtkTriangles) {
+  const auto space = AffineLagrangeSpace::p1_square();
+  VtkFieldOptions options;
+  options.samples = 4;
+  options.exact = linear;
+  const std::string file = path("p1.vtu");
+  write_solution_vtu(space, space.interpolate(linear), options, file);
+  const auto grid = read_vtu(file);
+  // Each triangle: (4+1)(4+2)/2 = 15 points and 4^2 = 16 sub-triangles.
+  ASSERT_EQ(grid->GetNumberOfPoints(), 30);
+  ASSERT_EQ(grid->GetNumberOfCells(), 32);
+  for (vtkIdType c = 0; c < grid->GetNumberOfCells(); ++c) EXPECT_EQ(grid->GetCellType(c), VTK_TRIANGLE);
+  vtkDataArray* u = grid->GetPointData()->GetArray("u");
+  vtkDataArray* grad = grid->GetPointData()->GetArray("grad_u");
+  vtkDataArray* error = grid->GetPointData()->GetArray("error");
+  ASSERT_NE(error, nullptr);
+  for (vtkIdType p = 0; p < grid->GetNumberOfPoints(); ++p) {
+    double x[3];
+    grid->GetPoint(p, x);
+    EXPECT_NEAR(u->GetComponent(p, 0), linear(Point2(x[0], x[1])), 1e-12);
+    EXPECT_NEAR(grad->GetComponent(p, 0), 2.0, 1e-12);
+    EXPECT_NEAR(grad->GetComponent(p, 1), 3.0, 1e-12);
+    EXPECT_NEAR(error->GetComponent(p, 0), 0.0, 1e-12);
+  }
+}
+
+TEST_F(VtkWriterTest, RejectsWrongCoefficientCountAndUnwritablePath) {
+  const auto space = AffineLagrangeSpace::p1_square();
+  EXPECT_THROW(write_solution_vtu(space, Eigen::VectorXd::Zero(3), {}, path("bad.vtu")), std::invalid_argument);
+  EXPECT_FALSE(fs::exists(path("bad.vtu")));
+  testing::internal::CaptureStderr();
+  EXPECT_THROW(write_solution_vtu(space, Eigen::VectorXd::Zero(4), {}, path("missing/dir/p1.vtu")),
+               std::runtime_error);
+  EXPECT_EQ(testing::internal::GetCapturedStderr(), "");  // the exception is the only report
+}
+
+TEST_F(VtkWriterTest, PvdListsDatasetsInOrder) {
+  const std::vector<std::string> datasets = {"level0.vtu", "level1.vtu", "sub dir/level2 & <x>.vtu"};
+  const std::string file = path("study.pvd");
+  write_pvd(datasets, file);
+
+  vtkNew<vtkXMLDataParser> parser;
+  parser->SetFileName(file.c_str());
+  ASSERT_EQ(parser->Parse(), 1);
+  vtkXMLDataElement* root = parser->GetRootElement();
+  ASSERT_NE(root, nullptr);
+  EXPECT_STREQ(root->GetName(), "VTKFile");
+  EXPECT_STREQ(root->GetAttribute("type"), "Collection");
+  EXPECT_STREQ(root->GetAttribute("version"), "0.1");
+  ASSERT_EQ(root->GetNumberOfNestedElements(), 1);
+  vtkXMLDataElement* collection = root->GetNestedElement(0);
+  EXPECT_STREQ(collection->GetName(), "Collection");
+  ASSERT_EQ(collection->GetNumberOfNestedElements(), 3);
+  for (int i = 0; i < 3; ++i) {
+    vtkXMLDataElement* ds = collection->GetNestedElement(i);
+    EXPECT_STREQ(ds->GetName(), "DataSet");
+    int timestep = -1, part = -1;
+    ASSERT_TRUE(ds->GetScalarAttribute("timestep", timestep));
+    ASSERT_TRUE(ds->GetScalarAttribute("part", part));
+    EXPECT_EQ(timestep, i);
+    EXPECT_EQ(part, 0);
+    // Special characters survive the round trip (the writer escapes, the parser unescapes).
+    EXPECT_EQ(std::string(ds->GetAttribute("file")), datasets[i]);
+  }
+
+  EXPECT_THROW(write_pvd(datasets, path("missing/dir/study.pvd")), std::runtime_error);
+}
+
+}  // namespace
+}  // namespace iga

@@ -1,0 +1,62 @@
+#pragma once
+// Helpers shared by tests: build spaces and problems from YAML text, as a user's config would.
+
+#include <cstdio>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "config/config_node.hpp"
+#include "output/study_outputs.hpp"
+#include "solver/problem.hpp"
+#include "solver/solve_problem.hpp"
+#include "solver/study.hpp"
+#include "spaces/space_factory.hpp"
+#include "tests/support/scratch_files.hpp"
+
+namespace iga::test {
+
+/// A space from `domain:` and `space:` YAML snippets, refined `level` times.
+inline SpacePtr space_from_yaml(const std::string& yaml, int level = 0) {
+  const ConfigNode root = ConfigNode::load_string(yaml, "test.yaml");
+  return make_space(root["domain"], root["space"], level);
+}
+
+inline ProblemSpec problem_from_yaml(const std::string& yaml) {
+  return parse_problem(ConfigNode::load_string(yaml, "test.yaml")["problem"]);
+}
+
+/// Rates between the last two levels of a study; h2 is 0 when the H2 error is not measured.
+struct Rates {
+  double l2 = 0, h1 = 0, h2 = 0;
+};
+
+/// Solve the config's problem on levels 0..levels-1 (printing each row, so a failing rate can be
+/// read off the test log) and return the rates between the last two levels.
+inline Rates last_rates(const std::string& yaml, int levels) {
+  const ProblemSpec problem = problem_from_yaml(yaml);
+  std::vector<LevelResult> rows;
+  for (int level = 0; level < levels; ++level) {
+    const SpacePtr space = space_from_yaml(yaml, level);
+    rows.push_back(solve_problem(*space, problem, SolverKind::cholmod).result);
+    const LevelResult& b = rows.back();
+    std::printf("level %d elements %d dofs %d h %.4f  L2 %.3e H1 %.3e H2 %.3e\n", level, space->num_elements(),
+                space->dimension(), b.h, *b.l2, *b.h1, b.h2.value_or(0.0));
+  }
+  const LevelResult &a = rows[levels - 2], &b = rows[levels - 1];
+  Rates r{*rate(a.l2, b.l2, a.h, b.h), *rate(a.h1, b.h1, a.h, b.h), 0.0};
+  if (a.h2 && b.h2) r.h2 = *rate(a.h2, b.h2, a.h, b.h);
+  return r;
+}
+
+/// Parses and runs the study of a whole config text (quietly), writing its output into this test
+/// program's scratch folder under `name` (one folder per process, so parallel test cases never
+/// share an output directory).
+inline StudyResult run_study_from_yaml(const std::string& yaml, const std::string& name) {
+  const std::string dir = (scratch_folder() / name).string();
+  const StudySettings settings = parse_study(ConfigNode::load_string(yaml, name + ".yaml"), name + ".yaml", 0, dir);
+  std::filesystem::create_directories(dir);
+  return run_study_with_vtk(settings, dir, [](const std::string&) {});
+}
+
+}  // namespace iga::test
