@@ -5,21 +5,23 @@
 #   config      YAML access, errors with locations, symbolic expressions
 #   quadrature  rules on reference cells and sub-cells
 #   mesh        mesh files, Gmsh, validation of planar meshes
+#   geometry    smooth geometry built from meshes (G1 surfaces from triangle meshes in 3D)
 #   spaces      the Space interface and shared evaluation helpers; one folder per space
 #   assembly    sparsity, integrators, assembler, boundary conditions, norms, estimators
 #   solver      problem description, linear solvers, problem solve, study loop, adaptivity
 #   output      VTK, plot, tables and summary, staged output directory
 #   app         the command line
 cmake_policy(SET CMP0057 NEW)  # if(... IN_LIST ...) also in script mode
-set(IGA_LAYERS config quadrature mesh spaces assembly solver output app)
+set(IGA_LAYERS config quadrature mesh geometry spaces assembly solver output app)
 set(IGA_LAYER_USES_config "")
 set(IGA_LAYER_USES_quadrature "")
 set(IGA_LAYER_USES_mesh config)
-set(IGA_LAYER_USES_spaces config quadrature mesh)
+set(IGA_LAYER_USES_geometry config quadrature mesh)
+set(IGA_LAYER_USES_spaces config quadrature mesh geometry)
 set(IGA_LAYER_USES_assembly config quadrature spaces)
 set(IGA_LAYER_USES_solver config quadrature spaces assembly)
 set(IGA_LAYER_USES_output config quadrature spaces assembly solver)
-set(IGA_LAYER_USES_app config quadrature mesh spaces assembly solver output)
+set(IGA_LAYER_USES_app config quadrature mesh geometry spaces assembly solver output)
 # Layers that must not name a space: they may include the interface (spaces/*.hpp) but no file of
 # a space's own folder (spaces/NAME/...).
 set(IGA_SPACE_BLIND_LAYERS assembly solver output app)
