@@ -12,26 +12,16 @@
 #include <string>
 #include <vector>
 
+#include "tests/support/documentation_pages.hpp"
+
 namespace fs = std::filesystem;
 
 namespace {
 
 const fs::path kRoot(IGA_SOURCE_DIR);
 
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-std::vector<fs::path> markdown_pages() {
-  std::vector<fs::path> pages{kRoot / "README.md"};
-  for (const auto& entry : fs::recursive_directory_iterator(kRoot / "docs"))
-    if (entry.path().extension() == ".md") pages.push_back(entry.path());
-  std::sort(pages.begin(), pages.end());
-  return pages;
-}
+using iga::test::documentation_pages;
+std::string slurp(const fs::path& p) { return iga::test::read_text(p); }
 
 /// The page's lines outside fenced code blocks (links and paths in code are not checked).
 std::vector<std::string> prose_lines(const fs::path& page) {
@@ -77,62 +67,68 @@ std::string where(const fs::path& page, size_t line) {
   return fs::relative(page, kRoot).string() + ":" + std::to_string(line + 1);
 }
 
+/// Calls `check(page, line, match)` for every match of `pattern` in the prose of every page.
+template <class Check>
+void for_each_prose_match(const std::regex& pattern, Check check) {
+  for (const fs::path& page : documentation_pages()) {
+    const std::vector<std::string> lines = prose_lines(page);
+    for (size_t i = 0; i < lines.size(); ++i)
+      for (auto it = std::sregex_iterator(lines[i].begin(), lines[i].end(), pattern); it != std::sregex_iterator(); ++it)
+        check(page, i, *it);
+  }
+}
+
+/// A placeholder rather than a path: `spaces/NAME/`, `results/<config name>`, `tests/**/*_test.cpp`.
+bool placeholder(const std::string& path) {
+  return std::any_of(path.begin(), path.end(), [](char c) {
+    return std::isupper(static_cast<unsigned char>(c)) || c == '<' || c == '*' || c == '{';
+  });
+}
+
 }  // namespace
 
 TEST(Docs, RelativeLinksResolve) {
   static const std::regex link(R"(\]\(([^)\s]+)\))");
   int checked = 0;
-  for (const fs::path& page : markdown_pages()) {
-    const std::vector<std::string> lines = prose_lines(page);
-    for (size_t i = 0; i < lines.size(); ++i) {
-      for (auto it = std::sregex_iterator(lines[i].begin(), lines[i].end(), link); it != std::sregex_iterator(); ++it) {
-        const std::string target = (*it)[1];
-        if (target.find("://") != std::string::npos || target.rfind("mailto:", 0) == 0) continue;
-        ++checked;
-        const auto hash = target.find('#');
-        const std::string file = target.substr(0, hash);
-        const fs::path resolved = file.empty() ? page : (page.parent_path() / file).lexically_normal();
-        if (!fs::exists(resolved)) {
-          ADD_FAILURE() << where(page, i) << ": link to a missing file: " << target;
-          continue;
-        }
-        if (hash != std::string::npos && resolved.extension() == ".md")
-          EXPECT_TRUE(anchors(resolved).count(target.substr(hash + 1)))
-              << where(page, i) << ": no heading for the anchor of " << target;
-      }
+  for_each_prose_match(link, [&](const fs::path& page, size_t line, const std::smatch& m) {
+    const std::string target = m[1];
+    if (target.find("://") != std::string::npos || target.rfind("mailto:", 0) == 0) return;
+    ++checked;
+    const auto hash = target.find('#');
+    const std::string file = target.substr(0, hash);
+    const fs::path resolved = file.empty() ? page : (page.parent_path() / file).lexically_normal();
+    if (!fs::exists(resolved)) {
+      ADD_FAILURE() << where(page, line) << ": link to a missing file: " << target;
+      return;
     }
-  }
+    if (hash != std::string::npos && resolved.extension() == ".md")
+      EXPECT_TRUE(anchors(resolved).count(target.substr(hash + 1)))
+          << where(page, line) << ": no heading for the anchor of " << target;
+  });
   EXPECT_GT(checked, 20);
 }
 
 TEST(Docs, NamedSourcePathsExist) {
-  // `folder/file` in prose, for the folders of the tree; placeholders (NAME, <...>, *) are skipped.
+  // `folder/file` in prose, for the folders of the tree.
   static const std::regex code("`([^`\\s]+)`");
-  static const std::set<std::string> folders{"config",   "quadrature", "mesh",    "spaces",     "assembly",
-                                             "solver",   "output",     "app",     "tests",      "configs",
-                                             "scripts",  "benchmarks", "examples", "cmake",     "docs"};
+  static const std::set<std::string> folders{"config", "quadrature", "mesh",       "spaces",   "assembly",
+                                             "solver", "output",     "app",        "tests",    "configs",
+                                             "scripts", "benchmarks", "examples", "cmake",    "docs"};
   int checked = 0;
-  for (const fs::path& page : markdown_pages()) {
-    const std::vector<std::string> lines = prose_lines(page);
-    for (size_t i = 0; i < lines.size(); ++i) {
-      for (auto it = std::sregex_iterator(lines[i].begin(), lines[i].end(), code); it != std::sregex_iterator(); ++it) {
-        const std::string path = (*it)[1];
-        const auto slash = path.find('/');
-        if (slash == std::string::npos || !folders.count(path.substr(0, slash))) continue;
-        if (std::any_of(path.begin(), path.end(), [](char c) { return std::isupper(static_cast<unsigned char>(c)) || c == '<' || c == '*' || c == '{'; }))
-          continue;
-        ++checked;
-        EXPECT_TRUE(fs::exists(kRoot / path)) << where(page, i) << ": names `" << path << "`, which does not exist";
-      }
-    }
-  }
+  for_each_prose_match(code, [&](const fs::path& page, size_t line, const std::smatch& m) {
+    const std::string path = m[1];
+    const auto slash = path.find('/');
+    if (slash == std::string::npos || !folders.count(path.substr(0, slash)) || placeholder(path)) return;
+    ++checked;
+    EXPECT_TRUE(fs::exists(kRoot / path)) << where(page, line) << ": names `" << path << "`, which does not exist";
+  });
   EXPECT_GT(checked, 30);
 }
 
 TEST(Docs, NoIssueNumbers) {
   // A reader cannot see the issue tracker: pages explain things themselves.
   static const std::regex issue(R"(\bissues? #?[0-9])", std::regex::icase);
-  for (const fs::path& page : markdown_pages()) {
+  for (const fs::path& page : documentation_pages()) {
     std::istringstream in(slurp(page));
     size_t i = 0;
     for (std::string line; std::getline(in, line); ++i)

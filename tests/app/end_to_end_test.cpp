@@ -17,6 +17,7 @@
 #include <sstream>
 #include <vector>
 
+#include "tests/support/documentation_pages.hpp"
 #include "tests/support/scratch_files.hpp"
 
 namespace fs = std::filesystem;
@@ -71,11 +72,9 @@ std::string with_replaced(const std::string& from, const std::string& to) { retu
 
 /// Whether README.md or a Markdown page under docs/ mentions `word`.
 bool documented(const std::string& word) {
-  const fs::path root(IGA_SOURCE_DIR);
-  if (slurp(root / "README.md").find(word) != std::string::npos) return true;
-  for (const auto& entry : fs::recursive_directory_iterator(root / "docs"))
-    if (entry.path().extension() == ".md" && slurp(entry.path()).find(word) != std::string::npos) return true;
-  return false;
+  const std::vector<fs::path> pages = iga::test::documentation_pages();
+  return std::any_of(pages.begin(), pages.end(),
+                     [&](const fs::path& page) { return slurp(page).find(word) != std::string::npos; });
 }
 
 }  // namespace

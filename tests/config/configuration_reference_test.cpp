@@ -19,6 +19,7 @@
 #include "config/config_node.hpp"
 #include "solver/study.hpp"
 #include "spaces/space_factory.hpp"
+#include "tests/support/documentation_pages.hpp"
 
 namespace fs = std::filesystem;
 
@@ -27,12 +28,8 @@ namespace {
 const fs::path kRoot(IGA_SOURCE_DIR);
 const fs::path kReference = kRoot / "docs" / "configuration.md";
 
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using iga::test::documentation_pages;
+std::string slurp(const fs::path& p) { return iga::test::read_text(p); }
 
 std::vector<std::string> lines_of(const std::string& text) {
   std::vector<std::string> lines;
@@ -130,14 +127,6 @@ std::vector<KeyRow> key_rows(const fs::path& page, std::vector<std::string>& mal
   return rows;
 }
 
-std::vector<fs::path> markdown_pages() {
-  std::vector<fs::path> pages{kRoot / "README.md"};
-  for (const auto& entry : fs::recursive_directory_iterator(kRoot / "docs"))
-    if (entry.path().extension() == ".md") pages.push_back(entry.path());
-  std::sort(pages.begin(), pages.end());
-  return pages;
-}
-
 /// Parses `example` as a whole config, as iga-run would from configs/ (relative mesh files are found
 /// in configs/domains/). Returns the InputError's message, empty when accepted.
 std::string parse_error(const Example& example) {
@@ -175,7 +164,7 @@ std::set<std::string> declared_keys(const iga::DeclaredConfig& declared) {
 TEST(ConfigurationReference, CompleteExamplesAreAccepted) {
   // The reference's examples, and any other complete config shown in README.md or docs/.
   int count = 0;
-  for (const fs::path& page : markdown_pages())
+  for (const fs::path& page : documentation_pages())
     for (const Example& example : complete_examples(page)) {
       ++count;
       const std::string error = parse_error(example);
@@ -236,7 +225,7 @@ TEST(ConfigurationReference, DocumentsExactlyTheAcceptedKeys) {
                                 "removed, or in a section no example reaches): " << joined(extra);
 
   // Key tables on other pages (the spaces' pages) may show fewer keys, but only accepted ones.
-  for (const fs::path& page : markdown_pages()) {
+  for (const fs::path& page : documentation_pages()) {
     if (page == kReference) continue;
     for (const KeyRow& row : key_rows(page, malformed))
       EXPECT_TRUE(accepted.count(row.key)) << fs::relative(page, kRoot).string() << ":" << row.line << ": key `"
