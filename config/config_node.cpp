@@ -5,6 +5,7 @@
 #include <cmath>
 #include <fstream>
 #include <limits>
+#include <mutex>
 #include <set>
 #include <sstream>
 
@@ -56,6 +57,38 @@ bool parse_number(const std::string& text, T& value) {
 
 std::shared_ptr<const std::string> shared_name(const std::string& name) {
   return std::make_shared<const std::string>(name);
+}
+
+/// The declarations of check_keys and as_choice, for declared_config(). Recorded per call (a few
+/// dozen calls per space built), never in a numerical loop.
+struct DeclarationRegistry {
+  std::mutex mutex;
+  DeclaredConfig declared;
+};
+
+DeclarationRegistry& declaration_registry() {
+  static DeclarationRegistry registry;
+  return registry;
+}
+
+/// "space.refine_near[2].curve" -> "space.refine_near[].curve": one entry per place in the schema.
+std::string schema_path(const std::string& path) {
+  std::string out;
+  bool in_index = false;
+  for (const char c : path) {
+    if (in_index && c != ']') continue;
+    in_index = c == '[';
+    out += c;
+  }
+  return out;
+}
+
+void declare(std::map<std::string, std::set<std::string>> DeclaredConfig::*table, const std::string& path,
+             const std::vector<std::string>& words) {
+  const std::string schema = schema_path(path);
+  DeclarationRegistry& registry = declaration_registry();
+  const std::lock_guard<std::mutex> lock(registry.mutex);
+  (registry.declared.*table)[schema].insert(words.begin(), words.end());
 }
 
 }  // namespace
@@ -145,6 +178,7 @@ std::vector<std::string> ConfigNode::keys() const {
 }
 
 void ConfigNode::check_keys(const std::vector<std::string>& allowed) const {
+  declare(&DeclaredConfig::keys, path_, allowed);
   if (node_.IsNull()) return;
   if (!node_.IsMap()) fail("expected a map, got " + describe(node_));
   std::set<std::string> seen;
@@ -207,6 +241,7 @@ std::vector<int> ConfigNode::as_ints() const {
 }
 
 std::string ConfigNode::as_choice(const std::vector<std::string>& choices) const {
+  declare(&DeclaredConfig::choices, path_, choices);
   const std::string value = as_string();
   if (std::find(choices.begin(), choices.end(), value) != choices.end()) return value;
   const std::string near = nearest_word(value, choices);
@@ -266,6 +301,12 @@ Eigen::Vector2d ConfigNode::as_point() const {
   const std::vector<double> v = as_doubles();
   if (v.size() != 2) fail("expected a point [x, y] (got " + std::to_string(v.size()) + " numbers)");
   return {v[0], v[1]};
+}
+
+DeclaredConfig declared_config() {
+  DeclarationRegistry& registry = declaration_registry();
+  const std::lock_guard<std::mutex> lock(registry.mutex);
+  return registry.declared;
 }
 
 std::string format_number(double x) {

@@ -7,8 +7,10 @@
 
 #include <Eigen/Core>
 
+#include <map>
 #include <memory>
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -84,6 +86,16 @@ class ConfigNode {
   std::shared_ptr<const std::string> file_;
   YAML::Mark key_mark_ = YAML::Mark::null_mark();  ///< of the key; an empty value has no place of its own
 };
+
+/// What the parser has declared so far in this process (the configuration-reference test compares
+/// it with docs/configuration.md). Paths are dotted with list indices written "[]", e.g.
+/// "space.refine_near[].curve"; the root map's path is empty.
+struct DeclaredConfig {
+  std::map<std::string, std::set<std::string>> keys;     ///< map path -> keys check_keys allowed there
+  std::map<std::string, std::set<std::string>> choices;  ///< value path -> values as_choice offered there
+};
+/// A copy of everything check_keys and as_choice have declared in this process (thread-safe).
+DeclaredConfig declared_config();
 
 /// A number as messages show it: shortest natural form ("0.5", "3", "1e-06").
 std::string format_number(double x);

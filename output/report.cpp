@@ -70,6 +70,13 @@ nlohmann::json to_json(const YAML::Node& node) {
 
 nlohmann::json optional_json(std::optional<double> v) { return v ? nlohmann::json(*v) : nlohmann::json(nullptr); }
 
+/// problem.form as a config spells it (parse_problem accepts `laplacian` and `hessian`, biharmonic
+/// only), so summary.json echoes a value a config can take; empty for Poisson, which has no form key.
+std::string form_as_configured(const ProblemSpec& problem) {
+  if (problem.pde == Pde::poisson) return {};
+  return problem.form == BilinearForm::hessian ? "hessian" : "laplacian";
+}
+
 }  // namespace
 
 void write_convergence_csv(const std::vector<LevelResult>& rows, const std::string& filename) {
@@ -123,9 +130,9 @@ void write_summary_json(const StudySettings& settings, const StudyResult& result
   for (const auto& [k, v] : result.space_parameters) space["parameters"][k] = v;
   j["space"] = space;
   j["problem"] = {{"pde", to_string(settings.problem.pde)},
-                  {"form", to_string(settings.problem.form)},
                   {"exact", settings.problem.exact ? json(settings.problem.exact->str()) : json(nullptr)},
                   {"source", settings.problem.source.str()}};
+  if (const std::string form = form_as_configured(settings.problem); !form.empty()) j["problem"]["form"] = form;
   for (const BoundaryPart& p : settings.problem.boundary) j["problem"]["boundary"][p.name] = to_string(p.kind);
   j["norms"] = "l2: L2 norm; h1: H1 seminorm |e|_1 = ||grad e||; h2: H2 seminorm |e|_2 = ||D^2 e|| (Frobenius)";
   json levels = json::array();

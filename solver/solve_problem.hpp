@@ -21,7 +21,7 @@ struct DiscreteSolution {
   int boundary_constrained = 0;  ///< coefficients fixed by essential data
 };
 
-/// Quadrature degree used for assembly with a space of local degree p (documented in README;
+/// Quadrature degree used for assembly with a space of local degree p (documented in docs/problems.md;
 /// error norms use Space::error_quadrature_degree).
 int assembly_quadrature_degree(const Space& space);
 

@@ -1,6 +1,6 @@
 #pragma once
 /// @file
-/// A PatchMesh from a mesh file (Gmsh .msh / .geo, OBJ, OFF; spaces/mesh_io/): the file's
+/// A PatchMesh from a mesh file (Gmsh .msh / .geo, OBJ, OFF; mesh/): the file's
 /// triangles and quadrilaterals become the G1 space's affine and bilinear patches.
 
 #include <string>

@@ -1,6 +1,6 @@
 #pragma once
 /// @file
-/// WS4 triangulations from the shared mesh input (spaces/mesh_io/): validated PlanarMeshes with
+/// WS4 triangulations from the shared mesh input (mesh/): validated PlanarMeshes with
 /// their named boundary groups, and the built-in L-shape.
 
 #include "mesh/planar_mesh.hpp"

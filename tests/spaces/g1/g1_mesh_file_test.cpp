@@ -1,4 +1,4 @@
-// G1 spaces on meshes read from files (spaces/mesh_io/): the shipped OBJ mesh (quads and
+// G1 spaces on meshes read from files (mesh/): the shipped OBJ mesh (quads and
 // triangles around a valence-5 vertex) and Gmsh .geo meshes (recombined quads, plain triangles),
 // dimensions against Theorem 6.3 and the brute-force null space, a patch test through a config,
 // and bad meshes rejected with messages naming the file, the cell and the config place.
