@@ -20,7 +20,7 @@ set(IGA_LAYER_USES_geometry config quadrature mesh)
 set(IGA_LAYER_USES_spaces config quadrature mesh geometry)
 set(IGA_LAYER_USES_assembly config quadrature spaces)
 set(IGA_LAYER_USES_solver config quadrature spaces assembly)
-set(IGA_LAYER_USES_output config quadrature spaces assembly solver)
+set(IGA_LAYER_USES_output config quadrature geometry spaces assembly solver)
 set(IGA_LAYER_USES_app config quadrature mesh geometry spaces assembly solver output)
 # Layers that must not name a space: they may include the interface (spaces/*.hpp) but no file of
 # a space's own folder (spaces/NAME/...).
