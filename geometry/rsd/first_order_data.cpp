@@ -26,6 +26,7 @@ int side(const Eigen::Vector3d& n, const Eigen::Vector3d& a, const Eigen::Vector
 FirstOrderData projected_chord_data(const TriangleSurfaceMesh& mesh, const std::vector<SurfaceEdge>& edges) {
   FirstOrderData data;
   data.f = mesh.points;
+  data.n = mesh.normals;
   for (const auto& e : edges)
     for (const auto& [a, b] : {std::pair{e.i, e.j}, std::pair{e.j, e.i}}) {
       const Eigen::Vector3d chord = mesh.points[b] - mesh.points[a];
@@ -42,7 +43,7 @@ void check_data_conditions(const TriangleSurfaceMesh& mesh, const std::vector<Su
       const Eigen::Vector3d& g = data.g_of(a, b);
       if (!(g.norm() > 0))
         fail(mesh, "the tangent g at " + mesh.vertex_name(a) + " towards vertex " + std::to_string(b) + " is zero");
-      if (std::abs(g.dot(mesh.normals[a])) > data_tolerance * g.norm())
+      if (std::abs(g.dot(data.n[a])) > data_tolerance * g.norm())
         fail(mesh, "condition (28) violated at " + mesh.vertex_name(a) + ": the tangent towards vertex " +
                        std::to_string(b) + " (" + edge_text(e.i, e.j) +
                        ") leaves the vertex tangent plane; no G1 surface interpolates such data");
@@ -51,7 +52,7 @@ void check_data_conditions(const TriangleSurfaceMesh& mesh, const std::vector<Su
     const auto& t = mesh.triangles[n];
     for (int c = 0; c < 3; ++c) {
       const int i = t[c], j = t[(c + 1) % 3], k = t[(c + 2) % 3];
-      if (side(mesh.normals[i], data.g_of(i, j), data.g_of(i, k)) == 0)
+      if (side(data.n[i], data.g_of(i, j), data.g_of(i, k)) == 0)
         fail(mesh, "condition (11) violated at " + mesh.vertex_name(i) + " in " + mesh.triangle_name(n) +
                        ": the tangents towards vertices " + std::to_string(j) + " and " + std::to_string(k) +
                        " are parallel (singular vertex)");
@@ -60,7 +61,7 @@ void check_data_conditions(const TriangleSurfaceMesh& mesh, const std::vector<Su
   for (const auto& e : edges) {
     if (!e.interior()) continue;
     for (const auto& [a, b] : {std::pair{e.i, e.j}, std::pair{e.j, e.i}}) {
-      const Eigen::Vector3d& n = mesh.normals[a];
+      const Eigen::Vector3d& n = data.n[a];
       const int s1 = side(n, data.g_of(a, b), data.g_of(a, e.k));
       const int s2 = side(n, data.g_of(a, b), data.g_of(a, e.kbar));
       if (s1 == 0 || s2 == 0 || s1 == s2)

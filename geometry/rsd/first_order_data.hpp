@@ -12,9 +12,11 @@
 
 namespace iga::rsd {
 
-/// f per vertex, g per directed mesh edge.
+/// f per vertex, g per directed edge, and the unit normal n_i of the plane the g_ij of vertex i
+/// must lie in (condition (28)).
 struct FirstOrderData {
   std::vector<Eigen::Vector3d> f;
+  std::vector<Eigen::Vector3d> n;
   std::unordered_map<long long, Eigen::Vector3d> g;  ///< key directed_key(i, j)
 
   static long long directed_key(int i, int j) { return (static_cast<long long>(i) << 32) | static_cast<unsigned>(j); }
@@ -22,7 +24,8 @@ struct FirstOrderData {
   Eigen::Vector3d& g_of(int i, int j) { return g[directed_key(i, j)]; }
 };
 
-/// f_i = p_i and g_ij = projection of the chord p_j − p_i onto the tangent plane n_i^⊥ (Remark 2).
+/// f_i = p_i, n_i = the mesh normal, and g_ij = the projection of the chord p_j − p_i onto the
+/// tangent plane n_i^⊥ (the paper's Remark 2).
 FirstOrderData projected_chord_data(const TriangleSurfaceMesh& mesh, const std::vector<SurfaceEdge>& edges);
 
 /// Tolerance of the data checks: relative sine of angles and relative out-of-plane components.

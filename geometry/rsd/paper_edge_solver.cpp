@@ -105,6 +105,7 @@ std::vector<VecPoly<double>> paper_corrections(RsdTuple tuple, const TriangleSur
   };
   data = FirstOrderData{};
   for (const auto& x : p) data.f.push_back(to_double(x));
+  for (const auto& x : n) data.n.push_back(to_double(x).normalized());
   for (const auto& e : edges) {
     data.g_of(e.i, e.j) = to_double(g(e.i, e.j));
     data.g_of(e.j, e.i) = to_double(g(e.j, e.i));

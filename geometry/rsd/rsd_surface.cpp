@@ -115,7 +115,8 @@ RsdSurface build_rsd_surface(const TriangleSurfaceMesh& mesh, const FirstOrderDa
     throw InputError(mesh.source + ": method 'paper' derives its exact data from the mesh; use the mesh overload");
   validate_surface_mesh(mesh);
   std::vector<SurfaceEdge> edges = surface_edges(mesh);
-  if (data.f.size() != mesh.points.size()) throw InputError(mesh.source + ": one data point f per vertex is required");
+  if (data.f.size() != mesh.points.size() || data.n.size() != mesh.points.size())
+    throw InputError(mesh.source + ": one data point f and one unit normal n per vertex are required");
   for (const auto& e : edges)
     if (!data.g.count(FirstOrderData::directed_key(e.i, e.j)) || !data.g.count(FirstOrderData::directed_key(e.j, e.i)))
       throw InputError(mesh.source + ": no tangent data g for edge (" + std::to_string(e.i) + ", " +
