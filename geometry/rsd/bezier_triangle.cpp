@@ -16,6 +16,20 @@ double multinomial(int a1, int a2, int a3) {
   return value;
 }
 
+/// D!/(α1! α2! α3!) for every multi-index of degree D in bezier_index order, computed once per
+/// degree (the table is built before any thread can use it: degrees up to 30 at first call).
+const std::vector<double>& multinomials(int degree) {
+  static const std::vector<std::vector<double>> table = [] {
+    std::vector<std::vector<double>> t(31);
+    for (int D = 0; D <= 30; ++D)
+      for (int a1 = D; a1 >= 0; --a1)
+        for (int a2 = D - a1; a2 >= 0; --a2) t[D].push_back(multinomial(a1, a2, D - a1 - a2));
+    return t;
+  }();
+  if (degree < 0 || degree > 30) throw std::logic_error("BezierTriangle: degree above 30");
+  return table[degree];
+}
+
 /// Powers t^0..t^D.
 std::vector<double> powers(double t, int degree) {
   std::vector<double> p(degree + 1, 1.0);
@@ -25,13 +39,12 @@ std::vector<double> powers(double t, int degree) {
 
 Eigen::Vector3d evaluate(const std::vector<Eigen::Vector3d>& control, int degree, const Eigen::Vector3d& t) {
   const auto p1 = powers(t[0], degree), p2 = powers(t[1], degree), p3 = powers(t[2], degree);
+  const std::vector<double>& weight = multinomials(degree);
   Eigen::Vector3d sum = Eigen::Vector3d::Zero();
   int index = 0;
   for (int a1 = degree; a1 >= 0; --a1)
-    for (int a2 = degree - a1; a2 >= 0; --a2) {
-      const int a3 = degree - a1 - a2;
-      sum += multinomial(a1, a2, a3) * p1[a1] * p2[a2] * p3[a3] * control[index++];
-    }
+    for (int a2 = degree - a1; a2 >= 0; --a2, ++index)
+      sum += (weight[index] * p1[a1] * p2[a2] * p3[degree - a1 - a2]) * control[index];
   return sum;
 }
 
