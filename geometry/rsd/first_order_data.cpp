@@ -15,6 +15,11 @@ std::string edge_text(int i, int j) { return "edge (" + std::to_string(i) + ", "
   throw InputError(mesh.source + ": " + message);
 }
 
+/// Signed angle from a to b about the axis n.
+double signed_angle(const Eigen::Vector3d& n, const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
+  return std::atan2(n.dot(a.cross(b)), a.dot(b));
+}
+
 /// Orientation of g_ij → g_ik about n_i: +1, −1, or 0 when (nearly) parallel.
 int side(const Eigen::Vector3d& n, const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
   const double s = n.dot(a.cross(b)) / (a.norm() * b.norm());
@@ -57,6 +62,20 @@ void check_data_conditions(const TriangleSurfaceMesh& mesh, const std::vector<Su
                        ": the tangents towards vertices " + std::to_string(j) + " and " + std::to_string(k) +
                        " are parallel (singular vertex)");
     }
+  }
+  // Fan winding: the corner angles of the tangent triangles around a vertex, measured in the
+  // triangles' orientation, add up to ±2π at an interior vertex (less at a boundary vertex).
+  std::vector<double> turning(mesh.points.size(), 0.0);
+  for (const auto& t : mesh.triangles)
+    for (int c = 0; c < 3; ++c) {
+      const int i = t[c];
+      turning[i] += signed_angle(data.n[i], data.g_of(i, t[(c + 1) % 3]), data.g_of(i, t[(c + 2) % 3]));
+    }
+  for (int v = 0; v < mesh.num_points(); ++v) {
+    const double windings = std::abs(turning[v]) / (2 * M_PI);
+    if (windings > 1.5)
+      fail(mesh, "the tangents at " + mesh.vertex_name(v) + " wind " + std::to_string(std::lround(windings)) +
+                     " times around the normal (a branch point; the surface would not be embedded)");
   }
   for (const auto& e : edges) {
     if (!e.interior()) continue;

@@ -35,7 +35,9 @@ inline constexpr double data_tolerance = 1e-9;
 ///  (28) some g_ij leaves the tangent plane n_i^⊥ (no G1 surface of this form exists),
 ///  (11) two tangents g_ij, g_ik of a triangle corner are parallel (singular vertex),
 ///  (12) at an end of a double edge the tangents towards k and k̄ are not strictly on opposite
-///       sides of g_ij (the tangent triangles overlap: a fold is unavoidable).
+///       sides of g_ij (the tangent triangles overlap: a fold is unavoidable),
+///  and when the tangents around a vertex wind more than once (the signed corner angles of its
+///  fan sum to 4π or more: a branch point, which (12) alone does not exclude).
 void check_data_conditions(const TriangleSurfaceMesh& mesh, const std::vector<SurfaceEdge>& edges,
                            const FirstOrderData& data);
 

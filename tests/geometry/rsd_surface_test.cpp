@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <functional>
+#include <map>
 #include <numeric>
 
 #include "config/errors.hpp"
@@ -203,6 +204,29 @@ TEST(RsdSurface, OverlappingTangentTrianglesAreCondition12AndParallelTangentsCon
   parallel.g_of(0, 4) = 2.0 * parallel.g_of(0, 2);
   message = error_of([&] { build_rsd_surface(mesh, parallel, pi0); });
   EXPECT_NE(message.find("condition (11) violated at vertex 0"), std::string::npos) << message;
+}
+
+TEST(RsdSurface, TangentsWindingTwiceAroundAVertexAreRejected) {
+  // A valence-6 vertex of the level-1 icosphere whose six tangents turn by 120° each: consecutive
+  // tangent triangles never overlap (so (11) and (12) hold) but the fan winds twice.
+  const auto mesh = icosphere(1);
+  const auto edges = surface_edges(mesh);
+  FirstOrderData data = projected_chord_data(mesh, edges);
+  const int vertex = 12;  // the first midpoint vertex: valence 6
+  std::map<int, int> next;  // fan successor around the vertex, in the triangles' orientation
+  for (const auto& t : mesh.triangles)
+    for (int c = 0; c < 3; ++c)
+      if (t[c] == vertex) next[t[(c + 1) % 3]] = t[(c + 2) % 3];
+  ASSERT_EQ(next.size(), 6u);
+  const Eigen::Vector3d n = data.n[vertex];
+  const Eigen::Vector3d e1 = data.g_of(vertex, next.begin()->first).normalized(), e2 = n.cross(e1);
+  int neighbour = next.begin()->first;
+  for (int r = 0; r < 6; ++r, neighbour = next[neighbour]) {
+    const double angle = r * 2 * M_PI / 3;
+    data.g_of(vertex, neighbour) = 0.3 * (std::cos(angle) * e1 + std::sin(angle) * e2);
+  }
+  const std::string message = error_of([&] { build_rsd_surface(mesh, data, pi0); });
+  EXPECT_NE(message.find("the tangents at vertex 12 wind 2 times"), std::string::npos) << message;
 }
 
 TEST(RsdSurface, RotationAndTranslationMoveTheSurfaceAlong) {
