@@ -32,7 +32,11 @@ VecPoly<GiNaC::numeric> solve_edge_paper(RsdTuple tuple, const EdgeEndData<GiNaC
 /// The paper's z on every double edge of `mesh` (zero on boundary edges). The mesh points and
 /// normals are rounded to multiples of 2^−30 and the projected chords computed exactly from them,
 /// so that coplanarity (28) and the divisibility of Δ are exact; `data` receives those data in
-/// double precision (the patches are built from them).
+/// double precision (the patches are built from them). The rounding keeps exact structure only
+/// where the coordinates are dyadic: the octahedron and tetrahedron reproduce the note's degrees
+/// 12 / 15 and folds, while the perturbed octahedron (coordinates like 11/10, normalised fan
+/// normals) loses its exact valence-4 common factor ρ and blows up (|z| ≈ 1e12) instead of the
+/// note's degree-12 surface with α = +111 computed from exact rational fan normals.
 std::vector<VecPoly<double>> paper_corrections(RsdTuple tuple, const TriangleSurfaceMesh& mesh,
                                                const std::vector<SurfaceEdge>& edges, FirstOrderData& data);
 

@@ -9,6 +9,7 @@
 #include <functional>
 #include <map>
 #include <numeric>
+#include <sstream>
 
 #include "config/errors.hpp"
 #include "geometry/builtin_surface_meshes.hpp"
@@ -227,6 +228,25 @@ TEST(RsdSurface, TangentsWindingTwiceAroundAVertexAreRejected) {
   }
   const std::string message = error_of([&] { build_rsd_surface(mesh, data, pi0); });
   EXPECT_NE(message.find("the tangents at vertex 12 wind 2 times"), std::string::npos) << message;
+}
+
+TEST(RsdSurface, FromAnObjFileWithAndWithoutNormals) {
+  // The regular tetrahedron as a file: with its exact normals as `vn`, and without (angle-weighted
+  // normals, equal here by symmetry). Both give the fold-free surface of the built-in (α ≡ −1).
+  const std::string points = "v 1 1 1\nv 1 -1 -1\nv -1 1 -1\nv -1 -1 1\n";
+  const std::string with_normals = points + "vn 1 1 1\nvn 1 -1 -1\nvn -1 1 -1\nvn -1 -1 1\n" +
+                                   "f 1//1 2//2 3//3\nf 1//1 4//4 2//2\nf 1//1 3//3 4//4\nf 2//2 4//4 3//3\n";
+  const std::string without = points + "f 1 2 3\nf 1 4 2\nf 1 3 4\nf 2 4 3\n";
+  const RsdSurface builtin = build_rsd_surface(regular_tetrahedron(), pi0);
+  for (const std::string& text : {with_normals, without}) {
+    std::istringstream in(text);
+    const RsdSurface s = build_rsd_surface(surface_mesh_from_file(read_obj_surface(in, "tet.obj")), pi0);
+    EXPECT_NEAR(s.report.max_fold_alpha, -1.0, 1e-12);
+    EXPECT_LT(s.report.max_g1_residual, 1e-12);
+    for (std::size_t n = 0; n < s.patches.size(); ++n)
+      for (std::size_t c = 0; c < s.patches[n].control.size(); ++c)
+        EXPECT_NEAR((s.patches[n].control[c] - builtin.patches[n].control[c]).norm(), 0, 1e-13);
+  }
 }
 
 TEST(RsdSurface, RotationAndTranslationMoveTheSurfaceAlong) {
