@@ -1,0 +1,100 @@
+#include "geometry/surface_from_config.hpp"
+
+#include <filesystem>
+#include <sstream>
+
+#include "geometry/builtin_surface_meshes.hpp"
+
+namespace iga {
+
+namespace {
+
+const std::vector<std::string> builtin_names = {"icosphere", "octahedron", "tetrahedron", "perturbed_octahedron",
+                                                "height_field"};
+
+std::string scientific(double x) {
+  std::ostringstream s;
+  s.precision(6);
+  s << x;
+  return s.str();
+}
+
+}  // namespace
+
+TriangleSurfaceMesh surface_mesh_from_config(const ConfigNode& domain) {
+  domain.check_keys({"type", "mesh", "level", "file", "normals", "tuple", "method"});
+  const bool builtin = domain.has("mesh"), file = domain.has("file");
+  if (builtin == file) domain.fail("give either 'mesh' (a built-in surface) or 'file' (.obj or .off), not both");
+  if (const auto level = domain.find("level"); level && (!builtin || domain["mesh"].as_string() != "icosphere"))
+    level->fail("'level' applies to mesh: icosphere only");
+  TriangleSurfaceMesh mesh;
+  std::string normals_default;
+  std::vector<std::string> normal_choices;
+  if (builtin) {
+    const std::string name = domain["mesh"].as_choice(builtin_names);
+    if (name == "icosphere") {
+      const ConfigNode level = domain["level"];
+      const int l = level.as_int();
+      if (l < 0 || l > 8) level.fail("level must be in 0..8");
+      mesh = icosphere(l);
+    } else if (name == "octahedron") {
+      mesh = regular_octahedron();
+    } else if (name == "tetrahedron") {
+      mesh = regular_tetrahedron();
+    } else if (name == "perturbed_octahedron") {
+      mesh = perturbed_octahedron();
+    } else {
+      mesh = height_field();
+    }
+    normals_default = "exact";
+    normal_choices = {"exact", "estimated", "fan"};
+  } else {
+    const ConfigNode node = domain["file"];
+    std::filesystem::path path = node.as_string();
+    if (path.is_relative()) path = std::filesystem::path(node.file()).parent_path() / path;
+    const SurfaceMeshFile read = node.guard([&] { return read_surface_mesh(path.string()); });
+    mesh = node.guard([&] { return surface_mesh_from_file(read); });
+    normals_default = read.normals.empty() ? "estimated" : "file";
+    normal_choices = read.normals.empty() ? std::vector<std::string>{"estimated", "fan"}
+                                          : std::vector<std::string>{"file", "estimated", "fan"};
+  }
+  const auto normals_node = domain.find("normals");
+  const std::string normals = normals_node ? normals_node->as_choice(normal_choices) : normals_default;
+  const ConfigNode& at = normals_node ? *normals_node : domain;
+  if (normals == "estimated") mesh.normals = at.guard([&] { return angle_weighted_normals(mesh); });
+  if (normals == "fan") mesh.normals = at.guard([&] { return fan_normals(mesh); });
+  return mesh;
+}
+
+rsd::RsdOptions rsd_options_from_config(const ConfigNode& domain) {
+  rsd::RsdOptions options;
+  if (const auto n = domain.find("tuple"))
+    options.tuple = n->as_choice({"pi0", "pi1"}) == "pi0" ? rsd::RsdTuple::pi0 : rsd::RsdTuple::pi1;
+  if (const auto n = domain.find("method")) {
+    const std::string m = n->as_choice({"hermite", "paper", "none"});
+    options.method = m == "hermite" ? rsd::RsdMethod::hermite : (m == "paper" ? rsd::RsdMethod::paper : rsd::RsdMethod::none);
+  }
+  return options;
+}
+
+rsd::RsdSurface surface_from_config(const ConfigNode& domain) {
+  const TriangleSurfaceMesh mesh = surface_mesh_from_config(domain);
+  const rsd::RsdOptions options = rsd_options_from_config(domain);
+  return domain.guard([&] { return rsd::build_rsd_surface(mesh, options); });
+}
+
+std::vector<std::pair<std::string, std::string>> surface_report_entries(const rsd::RsdSurface& surface) {
+  const rsd::RsdReport& r = surface.report;
+  return {{"tuple", rsd::tuple_name(surface.options.tuple)},
+          {"method", rsd::method_name(surface.options.method)},
+          {"patch_degree", std::to_string(r.patch_degree)},
+          {"interior_edges", std::to_string(r.interior_edges)},
+          {"boundary_edges", std::to_string(r.boundary_edges)},
+          {"max_g1_residual", scientific(r.max_g1_residual)},
+          {"max_fold_alpha", scientific(r.max_fold_alpha)},
+          {"min_regularity", scientific(r.min_regularity)},
+          {"interpolation_residual", scientific(r.interpolation_residual)},
+          {"max_z", scientific(r.max_z)}};
+}
+
+}  // namespace iga

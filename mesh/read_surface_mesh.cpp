@@ -1,0 +1,179 @@
+#include "mesh/read_surface_mesh.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <charconv>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <sstream>
+
+#include "config/errors.hpp"
+
+namespace iga {
+
+namespace {
+
+std::vector<std::string> tokens_of(const std::string& line) {
+  std::istringstream s(line.substr(0, line.find('#')));
+  std::vector<std::string> tokens;
+  for (std::string t; s >> t;) tokens.push_back(t);
+  return tokens;
+}
+
+struct LineReader {
+  std::istream& in;
+  std::string source;
+  int line = 0;
+
+  [[noreturn]] void fail(const std::string& message) const {
+    throw InputError(source + ":" + std::to_string(line) + ": " + message);
+  }
+  bool next(std::vector<std::string>& tokens) {
+    for (std::string text; std::getline(in, text);) {
+      ++line;
+      tokens = tokens_of(text);
+      if (!tokens.empty()) return true;
+    }
+    return false;
+  }
+  double number(const std::string& token) const {
+    double x = 0.0;
+    const auto [end, error] = std::from_chars(token.data(), token.data() + token.size(), x);
+    if (error != std::errc() || end != token.data() + token.size() || !std::isfinite(x))
+      fail("expected a number, got '" + token + "'");
+    return x;
+  }
+  long integer(const std::string& token) const {
+    long i = 0;
+    const auto [end, error] = std::from_chars(token.data(), token.data() + token.size(), i);
+    if (error != std::errc() || end != token.data() + token.size()) fail("expected an integer, got '" + token + "'");
+    return i;
+  }
+  /// 1-based (or negative, relative) OBJ index into a list of `count` items.
+  int obj_index(const std::string& token, long count, const char* what) const {
+    const long i = integer(token);
+    const long id = i > 0 ? i - 1 : count + i;
+    if (i == 0 || id < 0 || id >= count)
+      fail(std::string(what) + " " + std::to_string(i) + " does not exist (" + std::to_string(count) +
+           " so far; OBJ indices are 1-based)");
+    return static_cast<int>(id);
+  }
+};
+
+std::string face_size_error(std::size_t n) {
+  return "a face with " + std::to_string(n) + " vertices; surface meshes must consist of triangles";
+}
+
+}  // namespace
+
+SurfaceMeshFile read_obj_surface(std::istream& in, const std::string& source) {
+  LineReader reader{in, source};
+  const std::set<std::string> ignored = {"vt", "vp", "o", "g", "s", "l", "usemtl", "mtllib"};
+  SurfaceMeshFile mesh;
+  mesh.source = source;
+  std::vector<Eigen::Vector3d> file_normals;
+  std::vector<int> corner_normal;  // per vertex: index into file_normals, -1 none yet
+  std::vector<int> corner_normal_line;
+  bool every_corner_has_normal = true;
+  for (std::vector<std::string> t; reader.next(t);) {
+    if (t[0] == "v") {
+      if (t.size() < 4 || t.size() > 5) reader.fail("a vertex needs 'v x y z [w]'");
+      mesh.points.emplace_back(reader.number(t[1]), reader.number(t[2]), reader.number(t[3]));
+      mesh.point_lines.push_back(reader.line);
+      corner_normal.push_back(-1);
+      corner_normal_line.push_back(0);
+    } else if (t[0] == "vn") {
+      if (t.size() != 4) reader.fail("a normal needs 'vn x y z'");
+      const Eigen::Vector3d n(reader.number(t[1]), reader.number(t[2]), reader.number(t[3]));
+      if (n.norm() == 0.0) reader.fail("a zero normal");
+      file_normals.push_back(n.normalized());
+    } else if (t[0] == "f") {
+      if (t.size() != 4) reader.fail(face_size_error(t.size() - 1));
+      std::array<int, 3> tri{};
+      for (int k = 0; k < 3; ++k) {
+        const std::string& c = t[k + 1];
+        const auto slash = c.find('/');
+        const int v = reader.obj_index(c.substr(0, slash), static_cast<long>(mesh.points.size()), "face vertex");
+        tri[k] = v;
+        const auto second = slash == std::string::npos ? std::string::npos : c.find('/', slash + 1);
+        if (second == std::string::npos || second + 1 >= c.size()) {
+          every_corner_has_normal = false;
+          continue;
+        }
+        const int n = reader.obj_index(c.substr(second + 1), static_cast<long>(file_normals.size()), "normal");
+        if (corner_normal[v] < 0) {
+          corner_normal[v] = n;
+          corner_normal_line[v] = reader.line;
+        } else if (corner_normal[v] != n &&
+                   file_normals[corner_normal[v]].dot(file_normals[n]) < 1.0 - 1e-12) {
+          reader.fail("vertex " + std::to_string(v + 1) + " has a different normal here than on line " +
+                      std::to_string(corner_normal_line[v]) +
+                      " (a G1 surface has one tangent plane per vertex; drop the 'vn' data to estimate normals)");
+        }
+      }
+      mesh.triangles.push_back(tri);
+      mesh.triangle_lines.push_back(reader.line);
+    } else if (!ignored.count(t[0])) {
+      reader.fail("unknown OBJ statement '" + t[0] + "' (expected v, vn, f, or one of vt vp o g s l usemtl mtllib)");
+    }
+  }
+  if (every_corner_has_normal && !mesh.triangles.empty()) {
+    for (std::size_t v = 0; v < mesh.points.size(); ++v)
+      mesh.normals.push_back(corner_normal[v] >= 0 ? file_normals[corner_normal[v]] : Eigen::Vector3d::Zero());
+    // A vertex that no face uses keeps a zero normal; the geometry layer rejects unused vertices.
+  }
+  return mesh;
+}
+
+SurfaceMeshFile read_off_surface(std::istream& in, const std::string& source) {
+  LineReader reader{in, source};
+  std::vector<std::string> t;
+  if (!reader.next(t) || t[0] != "OFF") reader.fail("expected the header 'OFF'");
+  std::vector<std::string> counts(t.begin() + 1, t.end());
+  if (counts.empty() && !reader.next(counts)) reader.fail("expected 'vertices faces edges' counts");
+  if (counts.size() < 2 || counts.size() > 3) reader.fail("expected 'vertices faces edges' counts");
+  const long nv = reader.integer(counts[0]), nf = reader.integer(counts[1]);
+  if (nv < 0 || nf < 0) reader.fail("negative counts");
+  SurfaceMeshFile mesh;
+  mesh.source = source;
+  for (long v = 0; v < nv; ++v) {
+    if (!reader.next(t))
+      reader.fail("the file ends after " + std::to_string(v) + " of " + std::to_string(nv) + " vertices");
+    if (t.size() != 3) reader.fail("a vertex needs 'x y z'");
+    mesh.points.emplace_back(reader.number(t[0]), reader.number(t[1]), reader.number(t[2]));
+    mesh.point_lines.push_back(reader.line);
+  }
+  for (long f = 0; f < nf; ++f) {
+    if (!reader.next(t))
+      reader.fail("the file ends after " + std::to_string(f) + " of " + std::to_string(nf) + " faces");
+    const long n = reader.integer(t[0]);
+    if (n != 3) reader.fail(face_size_error(static_cast<std::size_t>(std::max(n, 0L))));
+    if (t.size() < 4) reader.fail("a face lists fewer vertices than its count 3");
+    std::array<int, 3> tri{};
+    for (int k = 0; k < 3; ++k) {  // tokens after the indices are colour values
+      const long id = reader.integer(t[k + 1]);
+      if (id < 0 || id >= nv)
+        reader.fail("face vertex " + std::to_string(id) + " does not exist (" + std::to_string(nv) +
+                    " vertices; OFF indices are 0-based)");
+      tri[k] = static_cast<int>(id);
+    }
+    mesh.triangles.push_back(tri);
+    mesh.triangle_lines.push_back(reader.line);
+  }
+  if (reader.next(t)) reader.fail("unexpected data after the " + std::to_string(nf) + " faces");
+  return mesh;
+}
+
+SurfaceMeshFile read_surface_mesh(const std::string& path) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+  if (ext != ".obj" && ext != ".off")
+    throw InputError(path + ": unsupported surface mesh format '" + ext + "' (expected .obj or .off)");
+  std::ifstream in(path);
+  if (!in) throw InputError(path + ": cannot open the surface mesh file");
+  return ext == ".obj" ? read_obj_surface(in, path) : read_off_surface(in, path);
+}
+
+}  // namespace iga
