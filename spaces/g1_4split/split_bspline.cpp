@@ -37,6 +37,12 @@ SplitBSpline::SplitBSpline(int k, int r) : k_(k), r_(r) {
   }
 }
 
+Eigen::VectorXd SplitBSpline::greville() const {
+  Eigen::VectorXd g(size());
+  for (int i = 0; i < size(); ++i) g(i) = knots_.segment(i + 1, k_).mean();
+  return g;
+}
+
 Eigen::MatrixXd SplitBSpline::derivatives(double t, int order, int piece) const {
   const int p = k_;
   if (piece < 0) piece = t < 0.5 ? 0 : 1;

@@ -32,6 +32,9 @@ class SplitBSpline {
   /// to [0,1/2] (piece 0) or [1/2,1] (piece 1) in the Bernstein basis of degree k of that half.
   const Eigen::MatrixXd& bernstein_extraction(int piece) const { return bernstein_[piece]; }
 
+  /// Greville abscissae (m + 1): interpolation there is exact on the spline space (Schoenberg–Whitney).
+  Eigen::VectorXd greville() const;
+
  private:
   int k_, r_;
   Eigen::VectorXd knots_;
