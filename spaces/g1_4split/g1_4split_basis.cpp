@@ -180,6 +180,7 @@ G14Basis build_g14_basis(const QuadTopology& t, const std::vector<EdgeGluing>& g
     Eigen::MatrixXd E(static_cast<Eigen::Index>(eqs.size()), static_cast<Eigen::Index>(vc.size()));
     for (std::size_t rr = 0; rr < eqs.size(); ++rr) E.row(rr) = eqs[rr];
     const Eigen::MatrixXd H = nullspace(E);
+    std::vector<std::map<int, double>> lifted;
     for (int h = 0; h < H.cols(); ++h) {
       std::map<int, double> fn;
       for (std::size_t i = 0; i < vc.size(); ++i) fn[vc[i]] += H(i, h);
@@ -198,6 +199,23 @@ G14Basis build_g14_basis(const QuadTopology& t, const std::vector<EdgeGluing>& g
                                  std::to_string(residual) + ")");
         for (std::size_t c = 0; c < s.strip.size(); ++c) fn[s.columns[s.strip[c]]] += x(c);
       }
+      lifted.push_back(std::move(fn));
+    }
+    // Orthonormalize the lifted functions (same span): near a vertex whose gluing value is small
+    // but not zero, twist data force second tangential derivatives ~ 1/A along the edge, and the
+    // raw lifts would be badly scaled and nearly dependent.
+    std::map<int, int> rows;
+    for (const auto& fn : lifted)
+      for (const auto& [i, x] : fn) rows.emplace(i, 0);
+    int r = 0;
+    for (auto& [i, pos] : rows) pos = r++;
+    Eigen::MatrixXd L = Eigen::MatrixXd::Zero(r, static_cast<Eigen::Index>(lifted.size()));
+    for (std::size_t c = 0; c < lifted.size(); ++c)
+      for (const auto& [i, x] : lifted[c]) L(rows.at(i), c) = x;
+    const Eigen::MatrixXd Q = Eigen::JacobiSVD<Eigen::MatrixXd>(L, Eigen::ComputeThinU).matrixU();
+    for (int c = 0; c < Q.cols(); ++c) {
+      std::map<int, double> fn;
+      for (const auto& [i, pos] : rows) fn[i] = Q(pos, c);
       add(fn);
     }
   }
