@@ -35,7 +35,7 @@ std::vector<int> interior_indices(const SplitBSpline& b) {
   return out;
 }
 
-std::vector<std::array<std::vector<int>, 2>> edge_rows(const QuadTopology& t, const SplitBSpline& b, int e) {
+std::vector<std::array<std::vector<int>, 2>> split_edge_rows(const QuadTopology& t, const SplitBSpline& b, int e) {
   const QuadEdge& edge = t.edge(e);
   const int fs = b.face_size();
   std::vector<std::array<std::vector<int>, 2>> out;
@@ -56,7 +56,7 @@ namespace {
 
 /// Row of the G1 residual functional q_0(t) + q_1(t) - a(t) p'(t) (derivative `order` in t) at t
 /// on half `half`, over the 4(m+1) edge columns in edge_equations order.
-Eigen::RowVectorXd g1_functional(const SplitBSpline& b, const EdgeGluing& a, double t, int half, int order) {
+Eigen::RowVectorXd g1_functional(const SplitBSpline& b, const SplitGluing& a, double t, int half, int order) {
   const int n = b.size();
   const double kappa = b.derivatives(0.0, 1, 0)(1, 1);  // N_1'(0): inward derivative = kappa (row1 - row0)
   const Eigen::MatrixXd N = b.derivatives(t, order + 2, half);
@@ -75,9 +75,9 @@ Eigen::RowVectorXd g1_functional(const SplitBSpline& b, const EdgeGluing& a, dou
 
 }  // namespace
 
-Eigen::MatrixXd edge_equations(const QuadTopology& t, const SplitBSpline& b, const EdgeGluing& a, int e,
+Eigen::MatrixXd edge_equations(const QuadTopology& t, const SplitBSpline& b, const SplitGluing& a, int e,
                                std::vector<int>& columns) {
-  const auto rows = edge_rows(t, b, e);
+  const auto rows = split_edge_rows(t, b, e);
   const int n = b.size(), k = b.degree(), pts = k + 4;
   columns.clear();
   for (int s = 0; s < 2; ++s)
@@ -97,9 +97,9 @@ Eigen::MatrixXd edge_equations(const QuadTopology& t, const SplitBSpline& b, con
   return M;
 }
 
-Eigen::MatrixXd vertex_equations(const QuadTopology& t, const SplitBSpline& b, const EdgeGluing& a, int e, int end,
+Eigen::MatrixXd vertex_equations(const QuadTopology& t, const SplitBSpline& b, const SplitGluing& a, int e, int end,
                                  std::vector<int>& columns) {
-  const auto rows = edge_rows(t, b, e);
+  const auto rows = split_edge_rows(t, b, e);
   const int n = b.size(), m = b.last();
   const double te = end == 0 ? 0.0 : 1.0;
   const int p0 = end == 0 ? 0 : m - 1;  // positions of the corner block along the edge

@@ -26,20 +26,20 @@ std::vector<int> interior_indices(const SplitBSpline& b);
 
 /// The rows 0 and 1 of every side of edge e in the edge's t direction (g0 -> g1), as global broken
 /// indices: rows[s][0] and rows[s][1] for side s, m + 1 entries each.
-std::vector<std::array<std::vector<int>, 2>> edge_rows(const QuadTopology& t, const SplitBSpline& b, int e);
+std::vector<std::array<std::vector<int>, 2>> split_edge_rows(const QuadTopology& t, const SplitBSpline& b, int e);
 
 /// All C0 and G1 equations of interior edge e, exactly (the G1 residual is a polynomial of degree
 /// <= k + 2 per half, collocated at k + 4 points per half): a dense matrix over `columns`, the
 /// global indices of rows 0 and 1 of both sides (4(m+1) entries, side 0 row 0, side 0 row 1,
 /// side 1 row 0, side 1 row 1, each in t order).
-Eigen::MatrixXd edge_equations(const QuadTopology& t, const SplitBSpline& b, const EdgeGluing& a, int e,
+Eigen::MatrixXd edge_equations(const QuadTopology& t, const SplitBSpline& b, const SplitGluing& a, int e,
                                std::vector<int>& columns);
 
 /// The equations edge e imposes on the corner data at its end `end` (0: g0, 1: g1), i.e. on the
 /// corner blocks of its two faces there: value and tangential derivative agree, the G1 relation at
 /// the vertex, and, when a vanishes there (a crossing end), its derivative along the edge (twists).
 /// Dense over `columns` (the 8 global indices of the two corner blocks).
-Eigen::MatrixXd vertex_equations(const QuadTopology& t, const SplitBSpline& b, const EdgeGluing& a, int e, int end,
+Eigen::MatrixXd vertex_equations(const QuadTopology& t, const SplitBSpline& b, const SplitGluing& a, int e, int end,
                                  std::vector<int>& columns);
 
 }  // namespace iga

@@ -34,7 +34,7 @@ struct EdgeSystem {
   Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd> solver;
 };
 
-EdgeSystem edge_system(const QuadTopology& t, const SplitBSpline& b, const EdgeGluing& a, int e) {
+EdgeSystem edge_system(const QuadTopology& t, const SplitBSpline& b, const SplitGluing& a, int e) {
   EdgeSystem s;
   s.M = edge_equations(t, b, a, e, s.columns);
   const int n = b.size(), m = b.last();
@@ -63,21 +63,21 @@ int nullspace_dimension(const Eigen::MatrixXd& M) {
   return static_cast<int>(M.cols()) - rank;
 }
 
-std::vector<EdgeGluing> symmetric_gluing(const QuadTopology& t, Blending blending) {
-  std::vector<EdgeGluing> g(t.num_edges());
+std::vector<SplitGluing> symmetric_gluing(const QuadTopology& t, Blending blending) {
+  std::vector<SplitGluing> g(t.num_edges());
   for (int e = 0; e < t.num_edges(); ++e) {
     const QuadEdge& edge = t.edge(e);
     if (edge.boundary()) continue;
     const double A0 = vertex_gluing_value(t.vertex_faces(edge.g0), t.vertex_on_boundary(edge.g0));
     const double A1 = vertex_gluing_value(t.vertex_faces(edge.g1), t.vertex_on_boundary(edge.g1));
-    g[e] = EdgeGluing::symmetric(A0, A1, blending);
+    g[e] = SplitGluing::symmetric(A0, A1, blending);
   }
   return g;
 }
 
-std::vector<EdgeGluing> inherited_gluing(const QuadTopology& coarse, const std::vector<EdgeGluing>& gluing,
+std::vector<SplitGluing> inherited_gluing(const QuadTopology& coarse, const std::vector<SplitGluing>& gluing,
                                          const QuadTopology& fine) {
-  std::vector<EdgeGluing> out(fine.num_edges());
+  std::vector<SplitGluing> out(fine.num_edges());
   for (int e = 0; e < fine.num_edges(); ++e) {
     const QuadEdge& edge = fine.edge(e);
     if (edge.boundary()) continue;
@@ -100,7 +100,7 @@ std::vector<EdgeGluing> inherited_gluing(const QuadTopology& coarse, const std::
   return out;
 }
 
-Eigen::SparseMatrix<double> global_constraints(const QuadTopology& t, const std::vector<EdgeGluing>& gluing,
+Eigen::SparseMatrix<double> global_constraints(const QuadTopology& t, const std::vector<SplitGluing>& gluing,
                                                const SplitBSpline& b) {
   std::vector<Eigen::Triplet<double>> trip;
   int rows = 0;
@@ -118,7 +118,7 @@ Eigen::SparseMatrix<double> global_constraints(const QuadTopology& t, const std:
   return C;
 }
 
-int dimension_formula(const QuadTopology& t, const std::vector<EdgeGluing>& gluing, int k, int r) {
+int g14_dimension_formula(const QuadTopology& t, const std::vector<SplitGluing>& gluing, int k, int r) {
   const SplitBSpline b(k, r);
   int sum = 0;
   for (int e = 0; e < t.num_edges(); ++e) {
@@ -140,7 +140,7 @@ int dimension_formula(const QuadTopology& t, const std::vector<EdgeGluing>& glui
   return sum + 3 * t.num_vertices() + 4 * t.num_faces() + crossing + inner * inner * t.num_faces();
 }
 
-G14Basis build_g14_basis(const QuadTopology& t, const std::vector<EdgeGluing>& gluing, int k, int r) {
+G14Basis build_g14_basis(const QuadTopology& t, const std::vector<SplitGluing>& gluing, int k, int r) {
   G14Basis basis;
   basis.bspline = SplitBSpline(k, r);
   const SplitBSpline& b = basis.bspline;

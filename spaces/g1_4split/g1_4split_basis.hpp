@@ -37,25 +37,25 @@ struct G14Basis {
 
 /// Gluing data per edge (unused entries for boundary edges): the symmetric data of the mesh,
 /// a(t) = A_{g0} d0(t) - A_{g1} d0(1 - t) with vertex_gluing_value.
-std::vector<EdgeGluing> symmetric_gluing(const QuadTopology& t, Blending blending);
+std::vector<SplitGluing> symmetric_gluing(const QuadTopology& t, Blending blending);
 
 /// The gluing of a refined mesh inherited from the coarse one (nested spaces): halves of a coarse
 /// edge restrict its a(t), edges inside a coarse face get a ≡ 0. `fine` = coarse.refined().
-std::vector<EdgeGluing> inherited_gluing(const QuadTopology& coarse, const std::vector<EdgeGluing>& gluing,
+std::vector<SplitGluing> inherited_gluing(const QuadTopology& coarse, const std::vector<SplitGluing>& gluing,
                                          const QuadTopology& fine);
 
 /// Build the local basis for degree k, regularity r. Throws NotSeparable when some vertex datum
 /// cannot be lifted along an edge (k below the edge's separability degree).
-G14Basis build_g14_basis(const QuadTopology& t, const std::vector<EdgeGluing>& gluing, int k, int r);
+G14Basis build_g14_basis(const QuadTopology& t, const std::vector<SplitGluing>& gluing, int k, int r);
 
 /// All C0 + G1 equations of all interior edges (rows) on the broken coefficients (columns).
-Eigen::SparseMatrix<double> global_constraints(const QuadTopology& t, const std::vector<EdgeGluing>& gluing,
+Eigen::SparseMatrix<double> global_constraints(const QuadTopology& t, const std::vector<SplitGluing>& gluing,
                                                const SplitBSpline& b);
 
 /// The dimension formula of the paper, extended to boundaries: Σ_int (d_τ - 9) + (4k-2r-6) E_bd +
 /// 3V + 4F + V₊ + (2k-r-3)² F, with d_τ = dim of the edge syzygies computed as the nullspace of the
 /// edge's own equations minus 1, and V₊ the interior vertices whose edges all have a = 0 there.
-int dimension_formula(const QuadTopology& t, const std::vector<EdgeGluing>& gluing, int k, int r);
+int g14_dimension_formula(const QuadTopology& t, const std::vector<SplitGluing>& gluing, int k, int r);
 
 /// Number of columns of a numerical nullspace of a dense matrix (singular values below
 /// 1e-10 of the largest count as zero).

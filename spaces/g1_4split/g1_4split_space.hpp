@@ -59,7 +59,7 @@ class G14Space final : public Space {
   const QuadTopology& topology() const { return *topology_; }
   const G14Basis& basis() const { return basis_; }
   const FaceGeometry& geometry() const { return geometry_; }
-  const std::vector<EdgeGluing>& gluing() const { return gluing_; }
+  const std::vector<SplitGluing>& gluing() const { return gluing_; }
 
  private:
   class G14Evaluator;
@@ -67,7 +67,7 @@ class G14Space final : public Space {
   G14Options options_;
   std::shared_ptr<const PatchMesh> mesh_;  // level mesh: boundary parts and names
   std::shared_ptr<const QuadTopology> topology_;
-  std::vector<EdgeGluing> gluing_;
+  std::vector<SplitGluing> gluing_;
   G14Basis basis_;
   FaceGeometry geometry_;
   double mesh_size_ = 0.0;

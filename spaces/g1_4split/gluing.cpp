@@ -14,7 +14,7 @@ Blending blending_from_name(const std::string& name) {
 
 std::string blending_name(Blending b) { return b == Blending::q0 ? "q0" : b == Blending::q1 ? "q1" : "c1"; }
 
-double EdgeGluing::eval(double t, int order, int half) const {
+double SplitGluing::eval(double t, int order, int half) const {
   if (half < 0) half = t < 0.5 ? 0 : 1;
   const auto& c = piece[half];
   double sum = 0.0;
@@ -39,7 +39,7 @@ std::array<double, 4> flip(const std::array<double, 4>& c) {
 
 }  // namespace
 
-EdgeGluing EdgeGluing::symmetric(double A0, double A1, Blending b) {
+SplitGluing SplitGluing::symmetric(double A0, double A1, Blending b) {
   // d0 on the two halves in powers of t.
   std::array<std::array<double, 4>, 2> d0{};
   switch (b) {
@@ -47,7 +47,7 @@ EdgeGluing EdgeGluing::symmetric(double A0, double A1, Blending b) {
     case Blending::q1: d0 = {{{1, 0, -2, 0}, {2, -4, 2, 0}}}; break;
     case Blending::c1: d0 = {{{1, 0, -12, 16}, {0, 0, 0, 0}}}; break;
   }
-  EdgeGluing g;
+  SplitGluing g;
   for (int h = 0; h < 2; ++h) {
     // d1(t) = d0(1 - t): on half h it is the flipped polynomial of half 1 - h.
     const std::array<double, 4> d1 = flip(d0[1 - h]);
@@ -56,8 +56,8 @@ EdgeGluing EdgeGluing::symmetric(double A0, double A1, Blending b) {
   return g;
 }
 
-EdgeGluing EdgeGluing::reversed() const {
-  EdgeGluing g;
+SplitGluing SplitGluing::reversed() const {
+  SplitGluing g;
   for (int h = 0; h < 2; ++h) {
     const std::array<double, 4> f = flip(piece[1 - h]);
     for (int j = 0; j < 4; ++j) g.piece[h][j] = -f[j];
@@ -65,7 +65,7 @@ EdgeGluing EdgeGluing::reversed() const {
   return g;
 }
 
-EdgeGluing EdgeGluing::restricted(double t0, double t1) const {
+SplitGluing SplitGluing::restricted(double t0, double t1) const {
   const double mid = 0.5 * (t0 + t1);
   const int half = mid < 0.5 ? 0 : 1;
   const auto& c = piece[half];
@@ -82,7 +82,7 @@ EdgeGluing EdgeGluing::restricted(double t0, double t1) const {
     out = next;
   }
   const double sign = d > 0 ? 1.0 : -1.0;
-  EdgeGluing g;
+  SplitGluing g;
   for (int j = 0; j < 4; ++j) g.piece[0][j] = g.piece[1][j] = sign * out[j];
   return g;
 }

@@ -21,18 +21,18 @@ Blending blending_from_name(const std::string& name);
 std::string blending_name(Blending b);
 
 /// A spline on [0, 1/2, 1] with one polynomial of degree <= 3 per half, in powers of t.
-struct EdgeGluing {
+struct SplitGluing {
   std::array<std::array<double, 4>, 2> piece{};  ///< piece[h][j]: coefficient of t^j on half h
 
   /// d^order a / dt^order at t (order <= 3) of half `half` (-1: the half containing t, right at 1/2).
   double eval(double t, int order = 0, int half = -1) const;
   /// a(t) = A0 d0(t) - A1 d0(1 - t) for the blending `b`.
-  static EdgeGluing symmetric(double A0, double A1, Blending b);
+  static SplitGluing symmetric(double A0, double A1, Blending b);
   /// The data seen from the other end: t -> 1 - t and the sign flips (a(t) -> -a(1 - t)).
-  EdgeGluing reversed() const;
+  SplitGluing reversed() const;
   /// sign(t1 - t0) a(t0 + (t1 - t0) s): the gluing inherited by the sub-edge [t0, t1] (inside one
   /// half) of a split edge, for nested refinement; the result has the same polynomial on both halves.
-  EdgeGluing restricted(double t0, double t1) const;
+  SplitGluing restricted(double t0, double t1) const;
 };
 
 /// Gluing value of a vertex: 2 cos(2π/F) for an interior vertex with F faces, 2 cos(π/F) for a

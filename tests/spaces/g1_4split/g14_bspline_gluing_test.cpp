@@ -66,20 +66,20 @@ TEST(G14Gluing, ValuesOfTheNotes) {
   EXPECT_EQ(vertex_gluing_value(2, true), 0.0);
   EXPECT_NEAR(vertex_gluing_value(3, true), 1.0, 1e-15);
   // The paper's example: a(t) = -d0(t) = 4t² - 1 on [0,1/2], 0 on [1/2,1].
-  const EdgeGluing a = EdgeGluing::symmetric(-1.0, 0.0, Blending::q0);
+  const SplitGluing a = SplitGluing::symmetric(-1.0, 0.0, Blending::q0);
   for (double t : {0.0, 0.2, 0.49}) EXPECT_NEAR(a.eval(t), 4 * t * t - 1, 1e-15);
   for (double t : {0.5, 0.8, 1.0}) EXPECT_EQ(a.eval(t), 0.0);
   for (Blending bl : {Blending::q0, Blending::q1, Blending::c1}) {
-    const EdgeGluing g = EdgeGluing::symmetric(0.618, -1.0, bl);
+    const SplitGluing g = SplitGluing::symmetric(0.618, -1.0, bl);
     EXPECT_NEAR(g.eval(0.0), 0.618, 1e-15);
     EXPECT_NEAR(g.eval(1.0), 1.0, 1e-15);  // a(1) = -A1
     EXPECT_NEAR(g.eval(0.0, 1, 0), 0.0, 1e-14);
     EXPECT_NEAR(g.eval(1.0, 1, 1), 0.0, 1e-14);
-    const EdgeGluing r = g.reversed();
+    const SplitGluing r = g.reversed();
     for (double t : {0.1, 0.4, 0.6, 0.9}) EXPECT_NEAR(r.eval(t), -g.eval(1 - t), 1e-14);
     if (bl != Blending::q0) EXPECT_NEAR(g.eval(0.5, 1, 0), g.eval(0.5, 1, 1), 1e-13);  // C1 at 1/2
     // Restriction to the halves (nested refinement).
-    const EdgeGluing left = g.restricted(0.0, 0.5), back = g.restricted(0.5, 0.0);
+    const SplitGluing left = g.restricted(0.0, 0.5), back = g.restricted(0.5, 0.0);
     for (double s : {0.0, 0.3, 1.0}) {
       EXPECT_NEAR(left.eval(s), g.eval(0.5 * s, 0, 0), 1e-14);
       EXPECT_NEAR(back.eval(s), -g.eval(0.5 - 0.5 * s, 0, 0), 1e-14);
