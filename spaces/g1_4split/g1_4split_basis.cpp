@@ -63,13 +63,20 @@ int nullspace_dimension(const Eigen::MatrixXd& M) {
   return static_cast<int>(M.cols()) - rank;
 }
 
-std::vector<SplitGluing> symmetric_gluing(const QuadTopology& t, Blending blending) {
+std::vector<SplitGluing> symmetric_gluing(const QuadTopology& t, Blending blending,
+                                          const std::vector<double>& boundary_angles) {
+  auto value = [&](int v) {
+    const int F = t.vertex_faces(v);
+    if (!t.vertex_on_boundary(v) || boundary_angles.empty()) return vertex_gluing_value(F, t.vertex_on_boundary(v));
+    const double A = 2 * std::cos(boundary_angles[v] / F);
+    return std::abs(A) < 1e-9 ? 0.0 : A;  // a straight boundary point with 2 faces is crossing
+  };
   std::vector<SplitGluing> g(t.num_edges());
   for (int e = 0; e < t.num_edges(); ++e) {
     const QuadEdge& edge = t.edge(e);
     if (edge.boundary()) continue;
-    const double A0 = vertex_gluing_value(t.vertex_faces(edge.g0), t.vertex_on_boundary(edge.g0));
-    const double A1 = vertex_gluing_value(t.vertex_faces(edge.g1), t.vertex_on_boundary(edge.g1));
+    const double A0 = value(edge.g0);
+    const double A1 = value(edge.g1);
     g[e] = SplitGluing::symmetric(A0, A1, blending);
   }
   return g;

@@ -36,8 +36,11 @@ struct G14Basis {
 };
 
 /// Gluing data per edge (unused entries for boundary edges): the symmetric data of the mesh,
-/// a(t) = A_{g0} d0(t) - A_{g1} d0(1 - t) with vertex_gluing_value.
-std::vector<SplitGluing> symmetric_gluing(const QuadTopology& t, Blending blending);
+/// a(t) = A_{g0} d0(t) - A_{g1} d0(1 - t) with vertex_gluing_value. `boundary_angles` (empty, or
+/// one per vertex) gives the interior angle α of the domain at boundary vertices, A = 2cos(α/F);
+/// empty means a straight boundary (α = π) everywhere.
+std::vector<SplitGluing> symmetric_gluing(const QuadTopology& t, Blending blending,
+                                          const std::vector<double>& boundary_angles = {});
 
 /// The gluing of a refined mesh inherited from the coarse one (nested spaces): halves of a coarse
 /// edge restrict its a(t), edges inside a coarse face get a ≡ 0. `fine` = coarse.refined().

@@ -57,6 +57,20 @@ QuadTopology quad_topology(const PatchMesh& mesh) {
   return QuadTopology(mesh.num_vertices(), std::move(faces), mesh.name());
 }
 
+std::vector<double> vertex_angles(const PatchMesh& mesh) {
+  std::vector<double> angle(mesh.num_vertices(), 0.0);
+  for (int f = 0; f < mesh.num_faces(); ++f) {
+    const auto& q = mesh.face(f);
+    const int n = static_cast<int>(q.size());
+    for (int c = 0; c < n; ++c) {
+      const Point2 a = mesh.vertex(q[(c + 1) % n]) - mesh.vertex(q[c]);
+      const Point2 b = mesh.vertex(q[(c + n - 1) % n]) - mesh.vertex(q[c]);
+      angle[q[c]] += std::atan2(a.x() * b.y() - a.y() * b.x(), a.dot(b));
+    }
+  }
+  return angle;
+}
+
 QuadTopology fan_topology(int n, bool plus) {
   std::vector<std::array<int, 4>> faces;
   auto s = [&](int i) { return 1 + (i + n) % n; };

@@ -22,6 +22,10 @@ PatchMesh g14_domain(const std::string& name);
 /// Topology of a mesh of quads. Throws InputError naming the first triangle (the g1 space takes them).
 QuadTopology quad_topology(const PatchMesh& mesh);
 
+/// Interior angle of the domain at every vertex (2π at interior vertices): the sum of the face
+/// angles at its corners.
+std::vector<double> vertex_angles(const PatchMesh& mesh);
+
 /// Topology of "fan n" (centre 0, spoke ends 1..n, corners n+1..2n; face i = [0, s_{i-1}, c_i, s_i]);
 /// `plus` adds the quad [s_0, c_0, 2n+1, c_1], which makes s_0 an interior valence-3 vertex next to
 /// the centre (fan3+, fan5+ of the notes).

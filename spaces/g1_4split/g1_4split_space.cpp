@@ -73,7 +73,7 @@ class G14Space::G14Evaluator final : public Space::Evaluator {
 G14Space::G14Space(const PatchMesh& coarse, const G14Options& options) : options_(options) {
   PatchMesh mesh = coarse;
   QuadTopology topology = quad_topology(mesh);
-  gluing_ = symmetric_gluing(topology, options.blending);
+  gluing_ = symmetric_gluing(topology, options.blending, vertex_angles(mesh));
   basis_ = build_g14_basis(topology, gluing_, options.degree, options.regularity);
   geometry_ = project_geometry(basis_, bilinear_geometry(mesh, basis_.bspline));
   for (int l = 0; l < options.level; ++l) {
@@ -84,7 +84,7 @@ G14Space::G14Space(const PatchMesh& coarse, const G14Options& options) : options
       geometry_ = subdivide_geometry(basis_.bspline, geometry_);
       basis_ = build_g14_basis(fine, gluing_, options.degree, options.regularity);
     } else {
-      gluing_ = symmetric_gluing(fine, options.blending);
+      gluing_ = symmetric_gluing(fine, options.blending, vertex_angles(finer));
       basis_ = build_g14_basis(fine, gluing_, options.degree, options.regularity);
       geometry_ = project_geometry(basis_, bilinear_geometry(finer, basis_.bspline));
     }
