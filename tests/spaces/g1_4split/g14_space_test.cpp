@@ -137,3 +137,13 @@ TEST(G14Space, ClampedPlateOptimalRatesOnTheRegularGrid) {
   EXPECT_GT(r.h1, 3.8);
   EXPECT_GT(r.h2, 2.9);
 }
+
+TEST(G14Space, NestedQuinticPlateOnTheValence5Pentagon) {
+  // Notes §11/§12.14: L2 about h^5, H2 about h^3.6 (optimal 6 / 4): along the coarse edges whose
+  // q1 gluing is quadratic the traces lose one degree, in a layer of width h.
+  const test::Rates r = test::last_rates(
+      yaml("{pde: biharmonic, exact: \"sin(2*x+0.3)*cos(3*y)\", boundary: {all: clamped}}", "fan5", "degree: 5"), 3);
+  EXPECT_GT(r.l2, 5.0);
+  EXPECT_GT(r.h1, 4.2);
+  EXPECT_GT(r.h2, 3.4);
+}
