@@ -1,0 +1,80 @@
+#include "spaces/g1_4split/g1_4split_from_config.hpp"
+
+#include <algorithm>
+
+#include "config/errors.hpp"
+#include "mesh/mesh_file_from_config.hpp"
+#include "spaces/g1/multipatch_domains.hpp"
+#include "spaces/g1/patch_mesh_from_file.hpp"
+#include "spaces/g1_4split/g1_4split_meshes.hpp"
+#include "spaces/g1_4split/g1_4split_space.hpp"
+
+namespace iga {
+
+namespace {
+
+PatchMesh domain_mesh(const ConfigNode& domain) {
+  const std::string type = domain["type"].as_choice({"multipatch", "mesh_file"});
+  if (type == "multipatch") {
+    domain.check_keys({"type", "name"});
+    std::vector<std::string> names = g14_domain_names();
+    for (const std::string& n : multipatch_domain_names()) names.push_back(n);
+    const std::string name = domain["name"].as_choice(names);
+    const auto own = g14_domain_names();
+    return std::find(own.begin(), own.end(), name) != own.end() ? g14_domain(name) : multipatch_domain(name);
+  }
+  domain.check_keys({"type", "file", "mesh_size", "recombine"});
+  const MeshFileRequest request = mesh_file_request(domain);
+  return domain["file"].guard([&] { return patch_mesh_from_file(request.path.string(), request.options); });
+}
+
+}  // namespace
+
+SpacePtr make_g1_4split_space(const ConfigNode& domain, const ConfigNode& space, int level) {
+  space.check_keys({"type", "degree", "regularity", "blending", "refinement"});
+  G14Options o;
+  const ConfigNode dn = space["degree"];
+  o.degree = dn.as_int();
+  if (o.degree < 3 || o.degree > 10) dn.fail("g1_4split degree must be in 3..10 (got " + std::to_string(o.degree) + ")");
+  if (space.has("regularity")) {
+    o.regularity = space["regularity"].as_int();
+    if (o.regularity < 1 || 2 * o.degree - o.regularity < 4)
+      space["regularity"].fail("g1_4split regularity must be >= 1 (C1 across the split lines) and <= 2k - 4 (got " +
+                               std::to_string(o.regularity) + ")");
+  }
+  if (space.has("blending")) {
+    const std::string b = space["blending"].as_choice({"q1", "c1", "q0"});
+    if (b == "q0")
+      space["blending"].fail(
+          "blending q0 (the paper's C0 blending) is refused for analysis: with it every function of the space has a "
+          "zero tangential derivative at the midpoint of each edge between vertices of different gluing values, so "
+          "every geometry is singular there; use q1 or c1");
+    o.blending = blending_from_name(b);
+  }
+  if (space.has("refinement")) o.nested = space["refinement"].as_choice({"nested", "rebuild"}) == "nested";
+  if (level < 0 || level > 6) space.fail("refinement level must be in 0..6 (got " + std::to_string(level) + ")");
+  o.level = level;
+  const PatchMesh mesh = domain_mesh(domain);
+  domain.guard([&] { return quad_topology(mesh); });
+  try {
+    return domain.guard([&] { return std::make_shared<const G14Space>(mesh, o); });
+  } catch (const NotSeparable& e) {
+    int works = -1;
+    for (int k = o.degree + 1; k <= 10 && works < 0; ++k) {
+      G14Options t = o;
+      t.degree = k;
+      try {
+        G14Space trial(mesh, t);
+        works = k;
+      } catch (const NotSeparable&) {
+      } catch (const InputError&) {
+        works = k;
+      }
+    }
+    dn.fail("g1_4split degree " + std::to_string(o.degree) + " is below the separability degree of '" + mesh.name() +
+            "' at level " + std::to_string(level) + " (" + e.what() + "); the smallest degree that works is " +
+            (works > 0 ? std::to_string(works) : std::string("above 10")));
+  }
+}
+
+}  // namespace iga

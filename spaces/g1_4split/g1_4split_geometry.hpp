@@ -1,0 +1,40 @@
+#pragma once
+/// @file
+/// The isoparametric geometry of the 4-split G1 space: both coordinates of the map lie in the space
+/// (notes §10.3), so φ ∘ G⁻¹ is C1 for every φ of the space. Built by a least-squares projection of
+/// the mesh's bilinear parametrization, subdivided exactly for nested refinement, and certified
+/// regular (det J > 0 on every closed face) from Bernstein coefficients of det J per polynomial piece.
+
+#include <Eigen/Core>
+#include <string>
+#include <vector>
+
+#include "spaces/g1/patch_mesh.hpp"
+#include "spaces/g1_4split/g1_4split_basis.hpp"
+
+namespace iga {
+
+/// Per face, the B-spline coefficients of x and y ((m+1)² each).
+struct FaceGeometry {
+  std::vector<Eigen::VectorXd> x, y;
+};
+
+/// The bilinear map of every face of `mesh` in the faces' B-spline bases (exact).
+FaceGeometry bilinear_geometry(const PatchMesh& mesh, const SplitBSpline& b);
+
+/// The L2 (parameter-domain) projection of a broken geometry onto the space spanned by the basis.
+FaceGeometry project_geometry(const G14Basis& basis, const FaceGeometry& broken);
+
+/// The geometry of the refined mesh (children 4f + c as in QuadTopology::refined), the same map.
+FaceGeometry subdivide_geometry(const SplitBSpline& b, const FaceGeometry& coarse);
+
+/// A lower bound of det J / (diameter² of the face's control net) on face f, certified from the
+/// Bernstein coefficients of det J on each sub-square (recursively subdivided where needed);
+/// <= 0 when positivity cannot be certified (in particular when det J <= 0 somewhere).
+double certified_jacobian_bound(const SplitBSpline& b, const Eigen::VectorXd& x, const Eigen::VectorXd& y);
+
+/// Throws InputError naming the first face of `mesh_name` whose det J is not certified positive
+/// (bound above 1e-8: a zero of det J leaves coefficients at round-off).
+void check_geometry(const SplitBSpline& b, const FaceGeometry& g, const std::string& mesh_name);
+
+}  // namespace iga

@@ -1,0 +1,211 @@
+#include "spaces/g1_4split/g1_4split_space.hpp"
+
+#include <Eigen/LU>
+#include <algorithm>
+#include <cmath>
+
+#include "spaces/g1/boundary_parts.hpp"
+#include "spaces/g1_4split/face_function.hpp"
+#include "spaces/g1_4split/g1_4split_meshes.hpp"
+#include "spaces/push_forward.hpp"
+
+namespace iga {
+
+class G14Space::G14Evaluator final : public Space::Evaluator {
+ public:
+  explicit G14Evaluator(const G14Space& s) : space_(s) {}
+
+  void evaluate(int element, const QuadratureRule& rule, unsigned flags, PointValues& out) override {
+    const Tables& t = tables(rule);
+    const Eigen::SparseMatrix<double>& c = space_.basis_.extraction[element];
+    const bool grads = (flags & (update_gradients | update_hessians)) != 0;
+    const bool hess = (flags & update_hessians) != 0;
+    if (flags & update_values) ref_.value = c.transpose() * t.t[0];
+    if (grads) {
+      ref_.dxi = c.transpose() * t.t[1];
+      ref_.deta = c.transpose() * t.t[2];
+    }
+    if (hess) {
+      ref_.dxixi = c.transpose() * t.t[3];
+      ref_.dxieta = c.transpose() * t.t[4];
+      ref_.detaeta = c.transpose() * t.t[5];
+    }
+    out.dofs = space_.basis_.face_dofs[element];
+    const Eigen::VectorXd& gx = space_.geometry_.x[element];
+    const Eigen::VectorXd& gy = space_.geometry_.y[element];
+    Eigen::Matrix<double, 6, Eigen::Dynamic> X(6, rule.size()), Y(6, rule.size());
+    for (int d = 0; d < 6; ++d) {
+      X.row(d) = gx.transpose() * t.t[d];
+      Y.row(d) = gy.transpose() * t.t[d];
+    }
+    jets_.resize(rule.size());
+    for (int p = 0; p < rule.size(); ++p) {
+      GeometryJet& j = jets_[p];
+      j.x = Point2(X(0, p), Y(0, p));
+      j.jacobian << X(1, p), X(2, p), Y(1, p), Y(2, p);
+      j.hessian_x << X(3, p), X(4, p), X(4, p), X(5, p);
+      j.hessian_y << Y(3, p), Y(4, p), Y(4, p), Y(5, p);
+    }
+    push_forward(jets_, ref_, flags, out);
+  }
+
+ private:
+  struct Tables {
+    std::vector<Point2> points;
+    Eigen::MatrixXd t[6];
+  };
+  const Tables& tables(const QuadratureRule& rule) {
+    auto it = cache_.find(&rule);
+    if (it != cache_.end() && it->second.points == rule.points) return it->second;
+    if (it == cache_.end() && cache_.size() >= 64) cache_.clear();
+    Tables& t = cache_[&rule];
+    t.points = rule.points;
+    tensor_tables(space_.basis_.bspline, rule.points, t.t);
+    return t;
+  }
+
+  const G14Space& space_;
+  std::map<const QuadratureRule*, Tables> cache_;
+  ReferenceDerivatives ref_;
+  std::vector<GeometryJet> jets_;
+};
+
+G14Space::G14Space(const PatchMesh& coarse, const G14Options& options) : options_(options) {
+  PatchMesh mesh = coarse;
+  QuadTopology topology = quad_topology(mesh);
+  gluing_ = symmetric_gluing(topology, options.blending, vertex_angles(mesh));
+  basis_ = build_g14_basis(topology, gluing_, options.degree, options.regularity);
+  geometry_ = project_geometry(basis_, bilinear_geometry(mesh, basis_.bspline));
+  for (int l = 0; l < options.level; ++l) {
+    PatchMesh finer = mesh.refined();
+    QuadTopology fine = quad_topology(finer);
+    if (options.nested) {
+      gluing_ = inherited_gluing(topology, gluing_, fine);
+      geometry_ = subdivide_geometry(basis_.bspline, geometry_);
+      basis_ = build_g14_basis(fine, gluing_, options.degree, options.regularity);
+    } else {
+      gluing_ = symmetric_gluing(fine, options.blending, vertex_angles(finer));
+      basis_ = build_g14_basis(fine, gluing_, options.degree, options.regularity);
+      geometry_ = project_geometry(basis_, bilinear_geometry(finer, basis_.bspline));
+    }
+    mesh = std::move(finer);
+    topology = std::move(fine);
+  }
+  check_geometry(basis_.bspline, geometry_, mesh.name());
+  mesh_ = std::make_shared<const PatchMesh>(std::move(mesh));
+  topology_ = std::make_shared<const QuadTopology>(std::move(topology));
+  // Diameter: largest distance between samples of the face boundary.
+  for (int f = 0; f < topology_->num_faces(); ++f) {
+    std::vector<Point2> pts;
+    for (int j = 0; j < 4; ++j)
+      for (int s = 0; s < 4; ++s) {
+        const Point2 uv = reference_edge_point(CellShape::quadrilateral, j, s / 4.0);
+        pts.emplace_back(face_jet(basis_.bspline, geometry_.x[f], uv)(0), face_jet(basis_.bspline, geometry_.y[f], uv)(0));
+      }
+    for (const Point2& a : pts)
+      for (const Point2& b : pts) mesh_size_ = std::max(mesh_size_, (a - b).norm());
+  }
+}
+
+std::unique_ptr<Space::Evaluator> G14Space::make_evaluator() const { return std::make_unique<G14Evaluator>(*this); }
+
+std::vector<std::pair<std::string, std::string>> G14Space::parameters() const {
+  return {{"degree", std::to_string(options_.degree)},
+          {"regularity", std::to_string(options_.regularity)},
+          {"blending", blending_name(options_.blending)},
+          {"refinement", options_.nested ? "nested" : "rebuild"},
+          {"faces", std::to_string(topology_->num_faces())},
+          {"domain", mesh_->name()}};
+}
+
+RulePtr G14Space::quadrature(int, int degree) const {
+  degree = std::max(degree, 0);
+  std::lock_guard<std::mutex> lock(mutex_);
+  RulePtr& r = cells_[degree];
+  if (!r) {
+    const QuadratureRule ref = tensor_gauss(degree);
+    std::vector<QuadratureRule> parts;
+    for (int hv = 0; hv < 2; ++hv)
+      for (int hu = 0; hu < 2; ++hu) parts.push_back(map_to_box(ref, Point2(0.5 * hu, 0.5 * hv), Point2(0.5 * hu + 0.5, 0.5 * hv + 0.5)));
+    r = std::make_shared<const QuadratureRule>(concatenate(parts));
+  }
+  return r;
+}
+
+RulePtr G14Space::edge_quadrature(int, int edge, int degree) const {
+  degree = std::max(degree, 0);
+  std::lock_guard<std::mutex> lock(mutex_);
+  RulePtr& r = edges_[{edge, degree}];
+  if (!r) {
+    const QuadratureRule g = gauss_legendre_for_degree(degree);
+    QuadratureRule line;
+    line.degree = g.degree;
+    for (int h = 0; h < 2; ++h)
+      for (int q = 0; q < g.size(); ++q) {
+        line.points.emplace_back(0.5 * (h + g.points[q].x()), 0.0);
+        line.weights.push_back(0.5 * g.weights[q]);
+      }
+    r = std::make_shared<const QuadratureRule>(edge_rule(CellShape::quadrilateral, edge, line));
+  }
+  return r;
+}
+
+std::vector<std::string> G14Space::boundary_names() const { return boundary_part_names(*mesh_); }
+
+std::vector<BoundaryEdge> G14Space::boundary_edges(const std::string& name) const {
+  return boundary_part_edges(*mesh_, name);
+}
+
+std::vector<InteriorEdge> G14Space::interior_edges() const {
+  std::vector<InteriorEdge> out;
+  for (int e = 0; e < topology_->num_edges(); ++e) {
+    const QuadEdge& edge = topology_->edge(e);
+    if (edge.boundary()) continue;
+    InteriorEdge ie;
+    const QuadSide a = edge.sides[0], b = edge.sides[1];
+    const bool same = topology_->face(a.face)[a.local_edge] == topology_->face(b.face)[b.local_edge];
+    ie.element_a = a.face;
+    ie.edge_a = a.local_edge;
+    ie.a0 = 0.0;
+    ie.a1 = 1.0;
+    ie.element_b = b.face;
+    ie.edge_b = b.local_edge;
+    ie.b0 = same ? 0.0 : 1.0;
+    ie.b1 = same ? 1.0 : 0.0;
+    out.push_back(ie);
+  }
+  return out;
+}
+
+std::optional<double> G14Space::max_gradient_jump(const Eigen::VectorXd& coefficients) const {
+  const SplitBSpline& b = basis_.bspline;
+  std::vector<Eigen::VectorXd> faces(topology_->num_faces());
+  for (int f = 0; f < topology_->num_faces(); ++f) {
+    const std::vector<int>& dofs = basis_.face_dofs[f];
+    Eigen::VectorXd local(static_cast<Eigen::Index>(dofs.size()));
+    for (std::size_t i = 0; i < dofs.size(); ++i) local[static_cast<Eigen::Index>(i)] = coefficients[dofs[i]];
+    faces[f] = basis_.extraction[f] * local;
+  }
+  const int samples = 4 * options_.degree + 8;
+  double worst = 0.0;
+  for (const InteriorEdge& ie : interior_edges()) {
+    for (int s = 0; s < samples; ++s) {
+      const double t = double(s) / (samples - 1);
+      Eigen::Vector2d grad[2];
+      for (int side = 0; side < 2; ++side) {
+        const int f = side == 0 ? ie.element_a : ie.element_b;
+        const int j = side == 0 ? ie.edge_a : ie.edge_b;
+        const double tt = side == 0 ? ie.a0 + t * (ie.a1 - ie.a0) : ie.b0 + t * (ie.b1 - ie.b0);
+        const Point2 uv = reference_edge_point(CellShape::quadrilateral, j, tt);
+        const auto u = face_jet(b, faces[f], uv), x = face_jet(b, geometry_.x[f], uv), y = face_jet(b, geometry_.y[f], uv);
+        Eigen::Matrix2d J;
+        J << x(1), x(2), y(1), y(2);
+        grad[side] = J.transpose().inverse() * Eigen::Vector2d(u(1), u(2));
+      }
+      worst = std::max(worst, (grad[0] - grad[1]).norm());
+    }
+  }
+  return worst;
+}
+
+}  // namespace iga

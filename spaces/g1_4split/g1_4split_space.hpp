@@ -1,0 +1,80 @@
+#pragma once
+/// @file
+/// G14Space: the C1 space of G1 splines from 4-split macro-patches (Blidia–Mourrain–Villamizar) on
+/// a planar quad mesh, isoparametric: each face carries a tensor B-spline of bidegree (k, k) with the
+/// interior knot 1/2 (class C^r there), glued with the symmetric data, and the physical map lies in
+/// the same space. Elements are the mesh faces; their polynomial pieces are the 4 sub-squares.
+
+#include <map>
+#include <memory>
+#include <mutex>
+
+#include "spaces/g1/patch_mesh.hpp"
+#include "spaces/g1_4split/g1_4split_basis.hpp"
+#include "spaces/g1_4split/g1_4split_geometry.hpp"
+#include "spaces/space.hpp"
+
+namespace iga {
+
+/// What to build: degree, regularity, blending, levels of uniform refinement and whether the
+/// refined spaces inherit the coarse gluing and geometry (nested) or rebuild both per level.
+struct G14Options {
+  int degree = 5;
+  int regularity = 1;
+  Blending blending = Blending::q1;
+  int level = 0;
+  bool nested = true;
+};
+
+class G14Space final : public Space {
+ public:
+  /// Build on `coarse` refined `options.level` times. Throws NotSeparable when the degree is below
+  /// the separability degree of some edge, InputError when the geometry is not regular.
+  G14Space(const PatchMesh& coarse, const G14Options& options);
+
+  std::unique_ptr<Evaluator> make_evaluator() const override;
+  std::string type() const override { return "g1_4split"; }
+  std::vector<std::pair<std::string, std::string>> parameters() const override;
+
+  int dimension() const override { return basis_.dimension(); }
+  void element_dofs(int element, std::vector<int>& out) const override { out = basis_.face_dofs[element]; }
+  int num_elements() const override { return topology_->num_faces(); }
+  CellShape cell_shape(int) const override { return CellShape::quadrilateral; }
+  double mesh_size() const override { return mesh_size_; }
+  int degree() const override { return options_.degree; }
+  int continuity() const override { return 1; }
+  bool affine_elements() const override { return false; }
+
+  RulePtr quadrature(int element, int degree) const override;
+  RulePtr edge_quadrature(int element, int edge, int degree) const override;
+
+  std::vector<std::string> boundary_names() const override;
+  std::vector<BoundaryEdge> boundary_edges(const std::string& name) const override;
+
+  /// Largest physical gradient jump of Σ c_i N_i across interior edges, sampled at 4k + 8 points
+  /// per edge (the jump is piecewise rational of moderate degree on each half).
+  std::optional<double> max_gradient_jump(const Eigen::VectorXd& coefficients) const override;
+  std::vector<InteriorEdge> interior_edges() const override;
+
+  const QuadTopology& topology() const { return *topology_; }
+  const G14Basis& basis() const { return basis_; }
+  const FaceGeometry& geometry() const { return geometry_; }
+  const std::vector<SplitGluing>& gluing() const { return gluing_; }
+
+ private:
+  class G14Evaluator;
+
+  G14Options options_;
+  std::shared_ptr<const PatchMesh> mesh_;  // level mesh: boundary parts and names
+  std::shared_ptr<const QuadTopology> topology_;
+  std::vector<SplitGluing> gluing_;
+  G14Basis basis_;
+  FaceGeometry geometry_;
+  double mesh_size_ = 0.0;
+
+  mutable std::mutex mutex_;
+  mutable std::map<int, RulePtr> cells_;
+  mutable std::map<std::pair<int, int>, RulePtr> edges_;
+};
+
+}  // namespace iga
