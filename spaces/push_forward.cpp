@@ -50,4 +50,19 @@ void push_forward(const std::vector<GeometryJet>& geometry, const ReferenceDeriv
   }
 }
 
+void extract_reference_derivatives(const Eigen::SparseMatrix<double>& extraction, const Eigen::MatrixXd (&tables)[6],
+                                   unsigned flags, ReferenceDerivatives& ref) {
+  const auto ct = extraction.transpose();
+  if (flags & update_values) ref.value = ct * tables[0];
+  if (flags & (update_gradients | update_hessians)) {
+    ref.dxi = ct * tables[1];
+    ref.deta = ct * tables[2];
+  }
+  if (flags & update_hessians) {
+    ref.dxixi = ct * tables[3];
+    ref.dxieta = ct * tables[4];
+    ref.detaeta = ct * tables[5];
+  }
+}
+
 }  // namespace iga

@@ -4,6 +4,7 @@
 /// geometry map (needed for non-affine elements: mapped patches, bilinear quads, curved cells).
 
 #include <Eigen/Core>
+#include <Eigen/SparseCore>
 #include <vector>
 
 #include "spaces/space.hpp"
@@ -22,6 +23,12 @@ struct GeometryJet {
 struct ReferenceDerivatives {
   Eigen::MatrixXd value, dxi, deta, dxixi, dxieta, detaeta;
 };
+
+/// The reference data of an element's active functions from the tables of its local basis at the
+/// q points (value, d/dxi, d/deta, d²/dxi², d²/dxi deta, d²/deta²; local x q each) and its sparse
+/// extraction (local x active): only what `flags` asks for (hessians imply gradients).
+void extract_reference_derivatives(const Eigen::SparseMatrix<double>& extraction, const Eigen::MatrixXd (&tables)[6],
+                                   unsigned flags, ReferenceDerivatives& ref);
 
 /// Fill out.x, out.jacobian and the physical arrays requested by `flags` from reference data and
 /// the geometry jets at the q points. out.dofs is left untouched.

@@ -44,19 +44,7 @@ const G1Space::G1Evaluator::Tables& G1Space::G1Evaluator::tables(const Quadratur
 
 void G1Space::G1Evaluator::evaluate(int element, const QuadratureRule& rule, unsigned flags, PointValues& out) {
   const Tables& t = tables(rule, space_.mesh_->shape(element));
-  const Eigen::SparseMatrix<double>& c = space_.basis_.extraction[element];
-  const bool grads = (flags & (update_gradients | update_hessians)) != 0;
-  const bool hess = (flags & update_hessians) != 0;
-  if (flags & update_values) ref_.value = c.transpose() * t.t[0];
-  if (grads) {
-    ref_.dxi = c.transpose() * t.t[1];
-    ref_.deta = c.transpose() * t.t[2];
-  }
-  if (hess) {
-    ref_.dxixi = c.transpose() * t.t[3];
-    ref_.dxieta = c.transpose() * t.t[4];
-    ref_.detaeta = c.transpose() * t.t[5];
-  }
+  extract_reference_derivatives(space_.basis_.extraction[element], t.t, flags, ref_);
   out.dofs = space_.basis_.face_dofs[element];
   jets_.resize(rule.size());
   for (int p = 0; p < rule.size(); ++p) jets_[p] = space_.mesh_->map(element, rule.points[p]);

@@ -17,19 +17,7 @@ class G14Space::G14Evaluator final : public Space::Evaluator {
 
   void evaluate(int element, const QuadratureRule& rule, unsigned flags, PointValues& out) override {
     const Tables& t = tables(rule);
-    const Eigen::SparseMatrix<double>& c = space_.basis_.extraction[element];
-    const bool grads = (flags & (update_gradients | update_hessians)) != 0;
-    const bool hess = (flags & update_hessians) != 0;
-    if (flags & update_values) ref_.value = c.transpose() * t.t[0];
-    if (grads) {
-      ref_.dxi = c.transpose() * t.t[1];
-      ref_.deta = c.transpose() * t.t[2];
-    }
-    if (hess) {
-      ref_.dxixi = c.transpose() * t.t[3];
-      ref_.dxieta = c.transpose() * t.t[4];
-      ref_.detaeta = c.transpose() * t.t[5];
-    }
+    extract_reference_derivatives(space_.basis_.extraction[element], t.t, flags, ref_);
     out.dofs = space_.basis_.face_dofs[element];
     const Eigen::VectorXd& gx = space_.geometry_.x[element];
     const Eigen::VectorXd& gy = space_.geometry_.y[element];
