@@ -6,6 +6,7 @@
 
 #include "assembly/error_indicator.hpp"
 #include "solver/boundary_edge_kinds.hpp"
+#include "solver/data_finiteness.hpp"
 #include "solver/dorfler_marking.hpp"
 #include "config/errors.hpp"
 #include "solver/solve_problem.hpp"
@@ -129,6 +130,8 @@ StudyResult run_study(const StudySettings& settings, const ProgressSink& progres
     const double t_space = seconds_since(t0) + t_next;
     progress(tag + "space: " + std::to_string(space->dimension()) + " dofs, " +
              std::to_string(space->num_elements()) + " elements (" + format_seconds(t_space) + ")");
+    // Quadrature points miss poles on mesh lines; new vertices and edges come with every level.
+    check_data_finite(*space, settings.problem);
 
     DiscreteSolution sol = solve_problem(*space, settings.problem, settings.solver,
                                          [&](const std::string& msg) { progress(tag + msg); });
