@@ -9,10 +9,12 @@
 
 namespace iga {
 
-/// Throw InputError naming the config key when a datum is not finite at a vertex or an edge
-/// midpoint of some element: the exact solution with its first and second derivatives (used by the
-/// boundary data and the error norms) and the source term; without an exact solution, the boundary
-/// data (u, ∂u/∂n, Δu) at the ends and three Gauss points of every boundary edge.
+/// Throw InputError naming the config key when a datum is not finite where quadrature does not
+/// look: the exact solution at every element vertex, and at every edge midpoint also its first and
+/// second derivatives (used by the boundary data and the error norms) and the source term; without
+/// an exact solution, the source at edge midpoints and the boundary data (u at the ends, u, ∂u/∂n
+/// and Δu at three Gauss points) of every boundary edge. Derivatives are not checked at vertices:
+/// a re-entrant corner's r^(2/3) has an integrable singularity there.
 void check_data_finite(const Space& space, const ProblemSpec& problem);
 
 }  // namespace iga
