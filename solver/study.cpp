@@ -91,6 +91,10 @@ StudySettings parse_study(const ConfigNode& root, const std::string& config_path
   if (levels_override > 0) s.levels = levels_override;
 
   // Every level's size before the study starts: level 0 as built, the others estimated from it.
+  if (coarse->degree() > s.limits.max_degree)  // spaces whose degree is not the key `degree`
+    root["space"].fail("the " + coarse->type() + " space has degree " + std::to_string(coarse->degree()) +
+                       ", more than limits.max_degree = " + std::to_string(s.limits.max_degree) +
+                       how_to_raise("max_degree"));
   const SpaceSize level0 = measure(*coarse);
   check_size(level0, s.limits, root["space"], "level 0");
   if (!s.adaptive) {

@@ -32,6 +32,10 @@ TEST(ResourceChecks, DegreeAndElementsAreRefusedBeforeTheSpaceIsBuilt) {
                 .find("run.yaml:3:45: space.elements: about 1.6e+09 elements exceed limits.max_elements"),
             std::string::npos);
   EXPECT_EQ(study_error("space: {type: bspline, degree: 14, elements: [2, 2]}\nlimits: {max_degree: 14}\n"), "");
+  // A space whose degree has another key (a T-mesh's section dimension n) is checked once built.
+  EXPECT_EQ(study_error("space: {type: tmesh, section: poly, n: 13, regularity: 1, elements: [2, 2]}\n"),
+            "run.yaml:3:8: space: the tmesh space has degree 13, more than limits.max_degree = 12 (raise "
+            "limits.max_degree in the config if this is intended, e.g. limits: {max_degree: ...})");
 }
 
 TEST(ResourceChecks, LevelsAreEstimatedFromLevelZero) {
