@@ -3,6 +3,7 @@
 #include <CLI/CLI.hpp>
 #include <filesystem>
 #include <iostream>
+#include <new>
 
 #include "output/convergence_plot.hpp"
 #include "config/errors.hpp"
@@ -79,6 +80,11 @@ int run_cli(int argc, char** argv) {
     return fail(2, e.what());
   } catch (const NumericalError& e) {
     return fail(1, std::string("numerical failure: ") + e.what());
+  } catch (const std::bad_alloc&) {
+    // The limits: section stops estimated sizes before allocation; what still runs out of memory
+    // is a problem too large for this machine, i.e. an input problem.
+    return fail(2, config + ": out of memory: the problem is too large for this machine (lower refinement.levels, "
+                            "the mesh size or the limits: section)");
   } catch (const std::exception& e) {
     return fail(1, e.what());
   }

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <limits>
 #include <mutex>
@@ -107,12 +108,26 @@ ConfigNode ConfigNode::load_string(const std::string& text, const std::string& n
 }
 
 ConfigNode ConfigNode::load_file(const std::string& filename) {
+  // Refuse devices, FIFOs and directories (/dev/zero would be read until memory runs out) and
+  // oversized files before reading anything.
+  std::error_code ec;
+  const auto status = std::filesystem::status(filename, ec);
+  if (ec || !std::filesystem::exists(status)) throw InputError(filename + ": cannot open file");
+  if (!std::filesystem::is_regular_file(status)) throw InputError(filename + ": not a regular file");
+  const auto size = std::filesystem::file_size(filename, ec);
+  if (!ec && size > kMaxConfigBytes)
+    throw InputError(filename + ": file is " + std::to_string(size) + " bytes; a config may have at most " +
+                     std::to_string(kMaxConfigBytes));
   std::ifstream in(filename, std::ios::binary);
   if (!in) throw InputError(filename + ": cannot open file");
-  std::ostringstream text;
-  text << in.rdbuf();
+  // Read at most one byte more than allowed, in case the file grows after the size check.
+  std::string text(kMaxConfigBytes + 1, '\0');
+  in.read(text.data(), static_cast<std::streamsize>(text.size()));
   if (in.bad()) throw InputError(filename + ": cannot read file");
-  return load_string(text.str(), filename);
+  text.resize(static_cast<size_t>(in.gcount()));
+  if (text.size() > kMaxConfigBytes)
+    throw InputError(filename + ": file exceeds " + std::to_string(kMaxConfigBytes) + " bytes");
+  return load_string(text, filename);
 }
 
 std::string ConfigNode::where() const {

@@ -20,7 +20,11 @@ namespace iga {
 
 class ConfigNode {
  public:
-  /// Parse a YAML file. Throws InputError "FILE:LINE:COL: ..." on a syntax error or missing file.
+  /// Largest config file load_file reads (a config is a few hundred bytes; this is generous).
+  static constexpr size_t kMaxConfigBytes = 1 << 20;
+  /// Parse a YAML file. Throws InputError "FILE:LINE:COL: ..." on a syntax error, a missing file,
+  /// something that is not a regular file (a device, a FIFO, a directory) or a file over
+  /// kMaxConfigBytes.
   static ConfigNode load_file(const std::string& filename);
   /// Parse YAML text (for tests and embedding); `name` stands for the file name in messages.
   static ConfigNode load_string(const std::string& text, const std::string& name = "<string>");

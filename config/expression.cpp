@@ -4,6 +4,7 @@
 #include <muParser.h>
 
 #include <atomic>
+#include <cctype>
 #include <cmath>
 #include <cstdint>
 #include <mutex>
@@ -65,11 +66,60 @@ std::string parse_reason(const std::string& what) {
     return "GiNaC cannot chain '^'; add parentheses, e.g. a^(b^c)";
   std::smatch m;
   if (std::regex_search(reason, m, std::regex("symbol \"([^\"]*)\" not found"))) {
-    reason = "unknown symbol '" + m[1].str() + "' (known: x, y, pi";
-    const std::string near = nearest_word(m[1].str(), {"x", "y", "pi"});
-    reason += near.empty() ? ")" : "; did you mean '" + near + "'?)";
+    // Copy the name out first: the match points into `reason`, which is about to be replaced.
+    const std::string name = m[1].str();
+    const std::string near = nearest_word(name, {"x", "y", "pi"});
+    return "unknown symbol '" + name + "' (known: x, y, pi" + (near.empty() ? ")" : "; did you mean '" + near + "'?)");
   }
   return reason;
+}
+
+/// Skip blanks and '#' comments (to the end of the line) the way GiNaC's lexer does.
+size_t skip_blank(const std::string& text, size_t i) {
+  while (i < text.size()) {
+    if (std::isspace(static_cast<unsigned char>(text[i]))) {
+      ++i;
+    } else if (text[i] == '#') {
+      while (i < text.size() && text[i] != '\n') ++i;
+    } else {
+      break;
+    }
+  }
+  return i;
+}
+
+/// The first function called with no arguments ("cos()"), or "". GiNaC's prototype table treats an
+/// argument count of 0 as "any count", so "cos()" finds cos/1, and GiNaC then evaluates cos on an
+/// empty argument list and reads past it: such calls must never reach the parser.
+std::string empty_call(const std::string& text) {
+  for (size_t i = 0; i < text.size();) {
+    const auto c = static_cast<unsigned char>(text[i]);
+    if (std::isdigit(c) || c == '.') {  // a number: digits and points, then an optional exponent
+      auto digits = [&] {
+        while (i < text.size() && (std::isdigit(static_cast<unsigned char>(text[i])) || text[i] == '.')) ++i;
+      };
+      digits();
+      if (i < text.size() && (text[i] == 'e' || text[i] == 'E')) {
+        ++i;
+        if (i < text.size() && (text[i] == '+' || text[i] == '-')) ++i;
+        digits();
+      }
+      continue;
+    }
+    if (!std::isalpha(c)) {
+      ++i;
+      continue;
+    }
+    const size_t start = i;
+    while (i < text.size() && std::isalnum(static_cast<unsigned char>(text[i]))) ++i;
+    const std::string name = text.substr(start, i - start);
+    size_t j = skip_blank(text, i);
+    if (j < text.size() && text[j] == '(') {
+      j = skip_blank(text, j + 1);
+      if (j < text.size() && text[j] == ')') return name;
+    }
+  }
+  return {};
 }
 
 }  // namespace
@@ -123,6 +173,8 @@ std::shared_ptr<const SymbolicFunction::Impl> make_impl(const GiNaC::ex& e, cons
 }  // namespace
 
 SymbolicFunction SymbolicFunction::parse(const std::string& text, const std::string& where) {
+  if (const std::string name = empty_call(text); !name.empty())
+    throw InputError(prefix(where) + "cannot parse '" + text + "': function '" + name + "' called with no arguments");
   std::lock_guard<std::recursive_mutex> lock(ginac_mutex());
   GiNaC::ex e;
   try {

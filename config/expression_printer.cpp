@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <charconv>
 #include <map>
+#include <memory>
 #include <sstream>
 #include <vector>
 
@@ -39,6 +40,17 @@ class MuPrinter {
   /// program = false: one flat string (for mu_text); true: also hoist repeated function calls and
   /// powers into temporaries and keep every statement short (for mu_program).
   explicit MuPrinter(bool program) : program_(program) {}
+
+  /// The flat text of `e` (memoised): the key that orders the operands of sums and products.
+  /// GiNaC orders them by hashes seeded with addresses of type information, which differ from run
+  /// to run under address randomisation; printing in GiNaC's order made muParser round the same
+  /// expression differently in different runs.
+  const std::string& key(const GiNaC::ex& e) {
+    auto it = keys_.find(e);
+    if (it != keys_.end()) return it->second;
+    std::string text = program_ ? flat_printer().key(e) : print_node(e).text;
+    return keys_.emplace(e, std::move(text)).first->second;
+  }
 
   std::string flat(const GiNaC::ex& e) { return print(e).text; }
 
@@ -169,6 +181,8 @@ class MuPrinter {
   Printed print_sum(const GiNaC::ex& e) {
     std::vector<GiNaC::ex> plus, minus;
     for (size_t i = 0; i < e.nops(); ++i) (is_negative_term(e.op(i)) ? minus : plus).push_back(e.op(i));
+    plus = sorted(std::move(plus));
+    minus = sorted(std::move(minus));
     std::string acc;
     for (const GiNaC::ex& t : plus) {
       if (!acc.empty()) acc += " + ";
@@ -210,6 +224,7 @@ class MuPrinter {
       factors.push_back(e);
     // Constant factors (Pi^4) first, next to the coefficient: muParser folds "1024*Pi^4" into one
     // number but not "1024*cos(...)*Pi^4".
+    factors = sorted(std::move(factors));
     std::stable_partition(factors.begin(), factors.end(), is_constant);
     numeric coeff = 1;
     std::vector<Printed> num, den;
@@ -273,7 +288,23 @@ class MuPrinter {
     return {text + ")", kAtom};
   }
 
+  /// Operands of a sum or product in key() order (ties print the same, so they evaluate the same).
+  std::vector<GiNaC::ex> sorted(std::vector<GiNaC::ex> operands) {
+    if (operands.size() < 2) return operands;  // also: a lone factor may be `e` itself (x^-1)
+    for (const GiNaC::ex& o : operands) key(o);  // fill the cache before sorting by it
+    std::stable_sort(operands.begin(), operands.end(),
+                     [&](const GiNaC::ex& a, const GiNaC::ex& b) { return keys_.at(a) < keys_.at(b); });
+    return operands;
+  }
+
+  MuPrinter& flat_printer() {
+    if (!flat_) flat_ = std::make_unique<MuPrinter>(false);
+    return *flat_;
+  }
+
   bool program_;
+  std::unique_ptr<MuPrinter> flat_;  ///< computes key() for a program printer (no temporaries)
+  std::map<GiNaC::ex, std::string, GiNaC::ex_is_less> keys_;
   int temporaries_ = 0;
   std::vector<std::string> statements_;
   std::map<GiNaC::ex, int, GiNaC::ex_is_less> uses_;

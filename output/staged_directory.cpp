@@ -42,13 +42,25 @@ void check_output_location(const std::string& final_path) {
     throw InputError("output directory '" + final_path + "': '" + ancestor.string() + "' is not a directory");
   if (::access(ancestor.c_str(), W_OK) != 0)
     throw InputError("output directory '" + final_path + "': '" + ancestor.string() + "' is not writable");
+  // Permission bits do not tell everything (root passes access(), /proc refuses new entries, a
+  // read-only mount, a full disk): create and remove a probe directory where commit() will write.
+  const fs::path probe = ancestor / hidden_sibling(target, ".probe-");
+  if (!fs::create_directory(probe, ec) || ec)
+    throw InputError("output directory '" + final_path + "': cannot create a directory in '" + ancestor.string() +
+                     "'" + (ec ? ": " + ec.message() : std::string()));
+  fs::remove(probe, ec);
 }
 
 StagedDirectory::StagedDirectory(std::string final_path) : final_(std::move(final_path)) {
   // Staging lives in the system temp directory so that a failed run creates nothing beside the
   // final path (not even its parent folders).
-  staging_ = (fs::temp_directory_path() / ("iga-run-" + unique_suffix())).string();
-  fs::create_directories(staging_);
+  std::error_code ec;
+  const fs::path temp = fs::temp_directory_path(ec);
+  if (ec) throw InputError("cannot stage the outputs: no usable temporary directory (TMPDIR): " + ec.message());
+  staging_ = (temp / ("iga-run-" + unique_suffix())).string();
+  if (!fs::create_directories(staging_, ec) || ec)
+    throw InputError("cannot stage the outputs in '" + temp.string() + "' (TMPDIR)" +
+                     (ec ? ": " + ec.message() : std::string()));
 }
 
 StagedDirectory::~StagedDirectory() {

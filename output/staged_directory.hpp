@@ -9,11 +9,13 @@
 namespace iga {
 
 /// Throw InputError unless `final_path` can become a results directory: the nearest existing
-/// ancestor must be a writable directory (checked before a study starts, not after it).
+/// ancestor must be a directory in which a (probe) directory can be created (checked before a
+/// study starts, not after it).
 void check_output_location(const std::string& final_path);
 
 class StagedDirectory {
  public:
+  /// Creates the private staging directory; InputError if the temporary directory is unusable.
   explicit StagedDirectory(std::string final_path);
   ~StagedDirectory();
   StagedDirectory(const StagedDirectory&) = delete;

@@ -6,7 +6,9 @@
 
 #include "assembly/error_indicator.hpp"
 #include "solver/boundary_edge_kinds.hpp"
+#include "solver/data_finiteness.hpp"
 #include "solver/dorfler_marking.hpp"
+#include "solver/resource_checks.hpp"
 #include "config/errors.hpp"
 #include "solver/solve_problem.hpp"
 #include "spaces/space_factory.hpp"
@@ -31,10 +33,12 @@ OptimalRates optimal_rates(Pde pde, int degree) {
 
 StudySettings parse_study(const ConfigNode& root, const std::string& config_path, int levels_override,
                           const std::string& output_override) {
-  root.check_keys({"problem", "domain", "space", "refinement", "solver", "output"});
+  root.check_keys({"problem", "domain", "space", "refinement", "solver", "output", "limits"});
   StudySettings s(root, parse_problem(root["problem"]));
+  s.limits = parse_limits(root.find("limits"));
   // Domain, space and boundary part names are validated on the coarsest space (cheap), so that
-  // every input error surfaces before the study starts.
+  // every input error surfaces before the study starts; what it asks for is checked first.
+  check_space_request(root["space"], s.limits);
   const SpacePtr coarse = make_space(root["domain"], root["space"], 0);
   check_boundary_parts(*coarse, s.problem);
   if (s.problem.pde == Pde::biharmonic && coarse->continuity() < 1)
@@ -86,6 +90,21 @@ StudySettings parse_study(const ConfigNode& root, const std::string& config_path
   }
   if (levels_override > 0) s.levels = levels_override;
 
+  // Every level's size before the study starts: level 0 as built, the others estimated from it.
+  if (coarse->degree() > s.limits.max_degree)  // spaces whose degree is not the key `degree`
+    root["space"].fail("the " + coarse->type() + " space has degree " + std::to_string(coarse->degree()) +
+                       ", more than limits.max_degree = " + std::to_string(s.limits.max_degree) +
+                       how_to_raise("max_degree"));
+  const SpaceSize level0 = measure(*coarse);
+  check_size(level0, s.limits, root["space"], "level 0");
+  if (!s.adaptive) {
+    const auto levels_node = root.find("refinement") ? root["refinement"].find("levels") : std::nullopt;
+    const ConfigNode& blame = levels_node && levels_override <= 0 ? *levels_node : root["space"];
+    for (int level = 1; level < s.levels; ++level)
+      check_size(uniform_estimate(level0, level), s.limits, blame,
+                 "level " + std::to_string(level) + " (estimated from level 0)");
+  }
+
   if (auto solver = root.find("solver")) {
     solver->check_keys({"type"});
     if (auto type = solver->find("type"))
@@ -127,8 +146,11 @@ StudyResult run_study(const StudySettings& settings, const ProgressSink& progres
     auto t0 = Clock::now();
     const SpacePtr space = next ? next : make_space(domain, space_node, settings.adaptive ? 0 : level);
     const double t_space = seconds_since(t0) + t_next;
+    check_size(measure(*space), settings.limits, space_node, "level " + std::to_string(level));  // before assembly
     progress(tag + "space: " + std::to_string(space->dimension()) + " dofs, " +
              std::to_string(space->num_elements()) + " elements (" + format_seconds(t_space) + ")");
+    // Quadrature points miss poles on mesh lines; new vertices and edges come with every level.
+    check_data_finite(*space, settings.problem);
 
     DiscreteSolution sol = solve_problem(*space, settings.problem, settings.solver,
                                          [&](const std::string& msg) { progress(tag + msg); });

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "config/config_node.hpp"
+#include "config/resource_limits.hpp"
 #include "solver/level_result.hpp"
 #include "solver/linear_solver.hpp"
 #include "solver/problem.hpp"
@@ -33,6 +34,7 @@ struct StudySettings {
   bool write_vtk = true;
   int vtk_samples = 8;     ///< samples per element edge
   bool write_plot = true;
+  ResourceLimits limits;   ///< the limits: section (defaults when absent)
 };
 
 /// Parse and validate the whole config (all sections) before anything is computed, so a typo

@@ -158,6 +158,8 @@ void solve_edge_local(const PatchMesh& mesh, int e, const std::vector<std::vecto
   Unknowns u(k);
   u.add(l.unknowns);
   const Eigen::MatrixXd m = restrict_rows(rows, u);
+  if (m.rows() == 0 || m.cols() == 0)  // the rank test below reads the largest singular value
+    throw IncompleteBasis("edge " + std::to_string(e) + " has no edge coefficients at degree " + std::to_string(k));
   Eigen::JacobiSVD<Eigen::MatrixXd> svd(m, Eigen::ComputeFullU | Eigen::ComputeFullV);
   const Eigen::VectorXd& s = svd.singularValues();
   Eigen::Index rank = 0;
@@ -318,6 +320,11 @@ G1Basis build_g1_basis(const PatchMesh& mesh, const std::vector<EdgeGluing>& glu
   if (k < 3) throw IncompleteBasis("G1 basis needs degree >= 3");
   // Below 4 the corner sets of a triangle overlap (λ0 λ1 λ2 belongs to all three).
   if (k < 4 && mesh.has_triangles()) throw IncompleteBasis("G1 basis on triangles needs degree >= 4");
+  // Below 4 the 2x2 corner sets of a quadrilateral fill its first two rows along every edge: no
+  // coefficient is left for the edge functions, so the local construction cannot be complete.
+  if (k < 4 && mesh.num_faces() > 0)
+    throw IncompleteBasis("G1 basis on quadrilaterals needs degree >= 4 (at degree " + std::to_string(k) +
+                          " the corner coefficients leave no edge coefficients)");
   G1Basis basis;
   basis.degree = k;
   std::vector<std::vector<FaceCoefficient>> functions;
@@ -340,7 +347,12 @@ G1Basis build_g1_basis(const PatchMesh& mesh, const std::vector<EdgeGluing>& glu
     add_edge_rows(mesh, k, me.first.face, me.first.local_edge, 2, 2, l.unknowns);
     if (me.boundary()) continue;
     add_edge_rows(mesh, k, me.second.face, me.second.local_edge, 2, 2, l.unknowns);
-    solve_edge_local(mesh, e, edge_constraint_rows(mesh, gluing[e], collocation), k, l);
+    try {  // nothing may leave an OpenMP region by an exception
+      solve_edge_local(mesh, e, edge_constraint_rows(mesh, gluing[e], collocation), k, l);
+    } catch (const IncompleteBasis& ex) {
+      errors[e] = where + ex.what();
+      continue;
+    }
     const int expected = syzygy_dimension(gluing[e], k) - 9 + (gluing[e].crossing_x ? 1 : 0) + (gluing[e].crossing_y ? 1 : 0);
     if (l.null.cols() != expected)
       errors[e] = where + "edge " + std::to_string(e) + " has " + std::to_string(l.null.cols()) +

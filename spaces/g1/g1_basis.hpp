@@ -43,7 +43,8 @@ struct IncompleteBasis : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-/// Build the basis of degree k >= 3. Throws IncompleteBasis when a local count disagrees.
+/// Build the basis of degree k (complete from 4 on, depending on the mesh). Throws IncompleteBasis
+/// when k is too low for the local construction or a local count disagrees.
 G1Basis build_g1_basis(const PatchMesh& mesh, const std::vector<EdgeGluing>& gluing, int k);
 
 /// dim H(γ) of Prop. 5.1: 3 + F − Σ c_τ(γ) + c₊(γ) (number of vertex functions at v).

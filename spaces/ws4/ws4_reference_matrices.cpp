@@ -103,7 +103,8 @@ Ws4ReferenceMatrices build() {
   for (int a = 0; a < 3; ++a)
     for (int b = a; b < 3; ++b) {
       m.hess[a][b] = rounded(p++);
-      m.hess[b][a] = m.hess[a][b].transpose();
+      // The diagonal blocks are already symmetric; assigning a matrix's own transpose to it aliases.
+      if (b != a) m.hess[b][a] = m.hess[a][b].transpose();
     }
   return m;
 }

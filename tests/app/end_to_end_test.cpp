@@ -215,7 +215,15 @@ INSTANTIATE_TEST_SUITE_P(
         BadCase{"unknown_boundary_part", with_replaced("{all: dirichlet}", "{lft: dirichlet}"), "did you mean 'left'"},
         BadCase{"wrong_condition", with_replaced("{all: dirichlet}", "{all: clamped}"), "dirichlet"},
         BadCase{"yaml_syntax", with_replaced("pde: poisson", "pde: [poisson"), "yaml_syntax.yaml:"},
-        BadCase{"missing_file", "", "does-not-exist.yaml"}),
+        BadCase{"missing_file", "", "does-not-exist.yaml"},
+        BadCase{"function_without_arguments", with_replaced("x*y + sin(x)", "cos()"), "called with no arguments"},
+        BadCase{"pole_on_a_mesh_line", with_replaced("x*y + sin(x)", "1/(x-0.5)"),
+                "problem.exact: the exact solution is not finite at (0.5, 0)"},
+        BadCase{"degree_over_the_limit", with_replaced("degree: 2", "degree: 100"), "limits.max_degree"},
+        BadCase{"a_billion_elements", with_replaced("elements: [2, 2]", "elements: [40000, 40000]"),
+                "space.elements: about 1.6e+09 elements exceed limits.max_elements"},
+        BadCase{"levels_over_the_memory_limit", with_replaced("levels: 2", "levels: 9") + "limits: {max_memory_gb: 0.5}\n",
+                "limits.max_memory_gb"}),
     [](const auto& info) { return std::string(info.param.name); });
 
 TEST(EndToEnd, UnusableOutputLocationFailsBeforeTheStudy) {
@@ -226,6 +234,46 @@ TEST(EndToEnd, UnusableOutputLocationFailsBeforeTheStudy) {
   EXPECT_EQ(r.exit_code, 2) << r.err;
   EXPECT_NE(r.err.find("is not a directory"), std::string::npos) << r.err;
   EXPECT_TRUE(r.out.empty()) << "no study output expected: " << r.out;
+}
+
+TEST(EndToEnd, OutputLocationThatCannotBeCreatedFailsBeforeTheStudy) {
+  // /proc passes a permission test (as root) but refuses new entries: the probe finds out.
+  const fs::path cfg = write_config("good3.yaml", kGood);
+  const RunResult r = run_iga(cfg.string() + " --quiet --output /proc/iga-run-test-output");
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_NE(r.err.find("output directory '/proc/iga-run-test-output'"), std::string::npos) << r.err;
+  EXPECT_TRUE(r.out.empty()) << "no study output expected: " << r.out;
+}
+
+TEST(EndToEnd, ConfigThatIsNotARegularFileIsRefusedAtOnce) {
+  const fs::path out = scratch_dir() / "dev-zero-out";
+  const RunResult r = run_iga("/dev/zero --quiet --output " + out.string());
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_NE(r.err.find("/dev/zero: not a regular file"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(out));
+}
+
+TEST(EndToEnd, RepeatedRunsAreBitwiseIdentical) {
+  // Separate processes, so address randomisation differs between them (it once changed the order
+  // in which the source term was evaluated, and the last bits of every error). Same binary, same
+  // machine, same thread count: the numbers and the written solution must agree bit for bit.
+  const fs::path config = fs::path(IGA_SOURCE_DIR) / "configs" / "g1-biharmonic-gmsh-lshape.yaml";
+  auto levels_of = [](const fs::path& dir) {
+    nlohmann::json levels = nlohmann::json::parse(slurp(dir / "summary.json"))["levels"];
+    for (auto& level : levels) level.erase("timings");
+    return levels;
+  };
+  const fs::path first = scratch_dir() / "repeat-0";
+  ASSERT_EQ(run_iga(config.string() + " --levels 2 --quiet --output " + first.string()).exit_code, 0);
+  const nlohmann::json reference = levels_of(first);
+  ASSERT_EQ(reference.size(), 2u);
+  for (int run = 1; run < 4; ++run) {
+    const fs::path dir = scratch_dir() / ("repeat-" + std::to_string(run));
+    ASSERT_EQ(run_iga(config.string() + " --levels 2 --quiet --output " + dir.string()).exit_code, 0);
+    EXPECT_EQ(levels_of(dir), reference) << "run " << run;  // doubles compared exactly
+    for (const char* file : {"solution_0.vtu", "solution_1.vtu"})
+      EXPECT_EQ(slurp(dir / file), slurp(first / file)) << file << ", run " << run;
+  }
 }
 
 TEST(EndToEnd, VersionHelpAndUsage) {

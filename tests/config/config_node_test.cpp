@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -201,6 +203,22 @@ TEST(ConfigNode, Files) {
   EXPECT_EQ(error_of([&] { root["space"].check_keys({"degree"}); }),
             path.string() + ":3:3: unknown key 'degre' in 'space' (did you mean 'degree'?)");
   std::filesystem::remove(path);
+}
+
+TEST(ConfigNode, FilesThatAreNotConfigsAreRefusedBeforeReading) {
+  // /dev/zero would otherwise be read until memory runs out.
+  EXPECT_EQ(error_of([] { ConfigNode::load_file("/dev/zero"); }), "/dev/zero: not a regular file");
+  const auto dir = std::filesystem::temp_directory_path();
+  EXPECT_EQ(error_of([&] { ConfigNode::load_file(dir.string()); }), dir.string() + ": not a regular file");
+  const auto path = dir / ("iga_config_node_test_big_" + std::to_string(::getpid()) + ".yaml");
+  {
+    std::ofstream out(path);
+    out << "a: \"" << std::string(ConfigNode::kMaxConfigBytes, 'x') << "\"\n";
+  }
+  const std::string message = error_of([&] { ConfigNode::load_file(path.string()); });
+  std::filesystem::remove(path);
+  EXPECT_EQ(message.rfind(path.string() + ": file is ", 0), 0u) << message;
+  EXPECT_NE(message.find("at most 1048576"), std::string::npos) << message;
 }
 
 TEST(ConfigNode, EmptyDocumentAndSection) {

@@ -8,6 +8,8 @@
 #include <functional>
 
 #include "config/errors.hpp"
+#include "config/config_node.hpp"
+#include "spaces/g1/g1_from_config.hpp"
 #include "spaces/g1/g1_space.hpp"
 #include "spaces/g1/multipatch_domains.hpp"
 #include "tests/spaces/g1/g1_test_support.hpp"
@@ -137,6 +139,29 @@ TEST(G1Space, RefusesDegreesBelowSeparabilityNamingTheSmallestThatWorks) {
   }
   // The straight 2x2 grid is fine at k = 4 (all edges crossing).
   EXPECT_EQ(G1Space(std::make_shared<const PatchMesh>(t3()), 4).dimension(), 64);
+}
+
+TEST(G1Space, DegreeThreeOnQuadrilateralsIsAnInputErrorNamingTheKey) {
+  // At k = 3 the 2x2 corner coefficient sets fill both rows along every quadrilateral edge, so no
+  // edge coefficient is left (this used to run an SVD of an empty matrix and crash).
+  for (auto mesh : {t3(), t5(), t6()}) {
+    try {
+      G1Space(std::make_shared<const PatchMesh>(mesh), 3);
+      FAIL() << mesh.name() << " accepted at k = 3";
+    } catch (const InputError& e) {
+      const std::string m = e.what();
+      EXPECT_NE(m.find("quadrilaterals needs degree >= 4"), std::string::npos) << m;
+      EXPECT_NE(m.find("use degree >= "), std::string::npos) << m;
+    }
+  }
+  const ConfigNode root = ConfigNode::load_string(
+      "domain: {type: multipatch, name: 3p_square}\nspace: {type: g1, degree: 3}\n", "run.yaml");
+  try {
+    make_g1_space(root["domain"], root["space"], 0);
+    FAIL() << "accepted";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()).rfind("run.yaml:2:27: space.degree: G1 space of degree 3", 0), 0u) << e.what();
+  }
 }
 
 TEST(G1Space, EveryBasisFunctionIsC1AcrossInterfaces) {

@@ -55,7 +55,9 @@ struct Functional {
   std::vector<Point2> dirs;
 };
 Functional rho(int j) {
-  auto D = [](const char* a, const char* b) { return pt(b) - pt(a); };
+  // Return a Point2, not the Eigen expression: that would refer to the two temporaries pt(b) and
+  // pt(a), which die when the lambda returns (garbage derivatives in unoptimised builds).
+  auto D = [](const char* a, const char* b) -> Point2 { return pt(b) - pt(a); };
   static const char* vert[6][3] = {{"p1", "p1", "p2"}, {"p1", "p1", "p3"}, {"p2", "p2", "p3"},
                                    {"p2", "p2", "p1"}, {"p3", "p3", "p1"}, {"p3", "p3", "p2"}};
   if (j <= 3) return {pt(j == 1 ? "p1" : j == 2 ? "p2" : "p3"), {}};

@@ -1,0 +1,143 @@
+#include "solver/data_finiteness.hpp"
+
+#include <climits>
+#include <cmath>
+
+#include "config/config_node.hpp"
+#include "config/errors.hpp"
+
+namespace iga {
+
+namespace {
+
+struct Datum {
+  std::string where;  ///< config place
+  std::string what;   ///< e.g. "the x-derivative of the exact solution"
+  SymbolicFunction f;
+};
+
+/// Reference points at parameters `ts` of every edge of the cell (t = 0: the corners, t = 0.5: the
+/// edge midpoints). Built once and kept alive: evaluators may cache tables by the address of a rule.
+QuadratureRule points_on_edges(CellShape shape, const std::vector<double>& ts) {
+  QuadratureRule rule;
+  for (double t : ts)
+    for (int e = 0; e < num_edges(shape); ++e) rule.points.push_back(reference_edge_point(shape, e, t));
+  rule.weights.assign(rule.points.size(), 0.0);
+  return rule;
+}
+
+/// Points of one boundary edge at parameters `ts`.
+QuadratureRule points_on_edge(CellShape shape, int edge, const std::vector<double>& ts) {
+  QuadratureRule rule;
+  for (double t : ts) rule.points.push_back(reference_edge_point(shape, edge, t));
+  rule.weights.assign(rule.points.size(), 0.0);
+  return rule;
+}
+
+struct Finding {
+  int element = INT_MAX;
+  int datum = -1;
+  Point2 x = Point2::Zero();
+};
+
+/// First (lowest element) place where one of `data` is not finite, over `items` pairs
+/// item(i) = (element, reference points on it), at the physical images of those points.
+template <class RuleOf>
+Finding first_non_finite(const Space& space, const std::vector<Datum>& data, int items, const RuleOf& item) {
+  Finding best;
+#pragma omp parallel if (items >= 512)
+  {
+    Finding mine;
+    auto evaluator = space.make_evaluator();
+    PointValues geometry;
+#pragma omp for schedule(dynamic, 64)
+    for (int i = 0; i < items; ++i) {
+      const auto [element, rule] = item(i);
+      if (element >= mine.element) continue;
+      evaluator->evaluate_geometry(element, *rule, geometry);
+      for (int q = 0; q < geometry.x.cols() && element < mine.element; ++q)
+        for (size_t d = 0; d < data.size(); ++d)
+          if (!std::isfinite(data[d].f(Point2(geometry.x.col(q))))) {
+            mine = {element, static_cast<int>(d), geometry.x.col(q)};
+            break;
+          }
+    }
+#pragma omp critical(iga_data_finiteness)
+    if (mine.element < best.element) best = mine;
+  }
+  return best;
+}
+
+[[noreturn]] void report(const std::vector<Datum>& data, const Finding& f, const char* place) {
+  const Datum& d = data[f.datum];
+  throw InputError(d.where + ": " + d.what + " is not finite at (" + format_number(f.x.x()) + ", " +
+                   format_number(f.x.y()) + "), " + place + " of element " + std::to_string(f.element) +
+                   " (a pole or a singularity on a mesh line, or a log or root of a negative number?)");
+}
+
+/// First place where one of `data` is not finite at the points `ts` of every element edge.
+Finding check_elements(const Space& space, const std::vector<Datum>& data, const std::vector<double>& ts) {
+  const QuadratureRule quad = points_on_edges(CellShape::quadrilateral, ts);
+  const QuadratureRule tri = points_on_edges(CellShape::triangle, ts);
+  return first_non_finite(space, data, space.num_elements(), [&](int e) {
+    return std::pair<int, const QuadratureRule*>(e, space.cell_shape(e) == CellShape::triangle ? &tri : &quad);
+  });
+}
+
+/// First place where one of `data` is not finite at the points `ts` of every boundary edge.
+Finding check_boundary(const Space& space, const std::vector<Datum>& data, const std::vector<double>& ts) {
+  const std::vector<BoundaryEdge> edges = space.boundary_edges("all");
+  std::vector<QuadratureRule> rules;  // per (shape, edge), kept alive for the evaluators
+  for (CellShape shape : {CellShape::quadrilateral, CellShape::triangle})
+    for (int e = 0; e < 4; ++e) rules.push_back(points_on_edge(shape, e % num_edges(shape), ts));
+  return first_non_finite(space, data, static_cast<int>(edges.size()), [&](int i) {
+    const BoundaryEdge& b = edges[i];
+    const int shape = space.cell_shape(b.element) == CellShape::triangle ? 1 : 0;
+    return std::pair<int, const QuadratureRule*>(b.element, &rules[shape * 4 + b.local_edge]);
+  });
+}
+
+}  // namespace
+
+void check_data_finite(const Space& space, const ProblemSpec& problem) {
+  // Values at vertices; derivatives and the source inside edges only: an integrable point
+  // singularity at a vertex (a re-entrant corner's r^(2/3)) is fine, a singular line is not.
+  if (problem.exact) {
+    const SymbolicFunction& u = *problem.exact;
+    const SymbolicFunction ux = u.diff_x(), uy = u.diff_y();
+    const std::string& w = problem.data_where;
+    const std::vector<Datum> value = {{w, "the exact solution", u}};
+    const Finding at_vertex = check_elements(space, value, {0.0});
+    if (at_vertex.datum >= 0) report(value, at_vertex, "a vertex");
+    const std::vector<Datum> all = {{w, "the exact solution", u},
+                                    {w, "the x-derivative of the exact solution", ux},
+                                    {w, "the y-derivative of the exact solution", uy},
+                                    {w, "the second derivative u_xx of the exact solution", ux.diff_x()},
+                                    {w, "the second derivative u_xy of the exact solution", ux.diff_y()},
+                                    {w, "the second derivative u_yy of the exact solution", uy.diff_y()},
+                                    {problem.source_where, "the source term derived from it", problem.source}};
+    const Finding on_edge = check_elements(space, all, {0.5});
+    if (on_edge.datum >= 0) report(all, on_edge, "an edge midpoint");
+    return;  // the boundary data are derived from the exact solution: checked above
+  }
+  const std::vector<Datum> source = {{problem.source_where, "the source term", problem.source}};
+  const Finding on_edge = check_elements(space, source, {0.5});
+  if (on_edge.datum >= 0) report(source, on_edge, "an edge midpoint");
+
+  const std::vector<Datum> value = {{problem.data_where, "the boundary value u", problem.value}};
+  const Finding at_end = check_boundary(space, value, {0.0, 1.0});
+  if (at_end.datum >= 0) report(value, at_end, "a boundary vertex");
+  std::vector<Datum> data = {value.front(), {problem.data_where, "the boundary data laplace_u", problem.laplacian}};
+  if (problem.gradient_x && problem.gradient_y) {
+    data.push_back({problem.data_where, "the x-derivative of u", *problem.gradient_x});
+    data.push_back({problem.data_where, "the y-derivative of u", *problem.gradient_y});
+  } else {
+    data.push_back({problem.data_where, "the boundary data dudn", problem.normal_derivative});
+  }
+  std::vector<double> gauss;
+  for (const Point2& t : gauss_legendre(3).points) gauss.push_back(t.x());
+  const Finding inside = check_boundary(space, data, gauss);
+  if (inside.datum >= 0) report(data, inside, "a boundary point");
+}
+
+}  // namespace iga

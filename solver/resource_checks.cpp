@@ -1,0 +1,64 @@
+#include "solver/resource_checks.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace iga {
+
+SpaceSize measure(const Space& space) {
+  SpaceSize s;
+  s.elements = space.num_elements();
+  s.dofs = space.dimension();
+  std::vector<int> dofs;
+  for (int e = 0; e < space.num_elements(); ++e) {
+    space.element_dofs(e, dofs);
+    s.element_entries += static_cast<double>(dofs.size()) * static_cast<double>(dofs.size());
+  }
+  return s;
+}
+
+SpaceSize uniform_estimate(const SpaceSize& level0, int level) {
+  const double growth = std::pow(4.0, level);
+  return {level0.elements * growth, level0.dofs * growth, level0.element_entries * growth};
+}
+
+double estimated_memory_bytes(const SpaceSize& size) {
+  return 8.5 * size.element_entries * std::log2(std::max(2.0, size.dofs));
+}
+
+void check_space_request(const ConfigNode& space, const ResourceLimits& limits) {
+  if (auto degree = space.find("degree")) {
+    const std::vector<double> degrees = degree->is_sequence() ? degree->as_doubles() : std::vector<double>{degree->as_double()};
+    for (double p : degrees)
+      if (p > limits.max_degree)
+        degree->fail("degree " + format_number(p) + " exceeds limits.max_degree = " + std::to_string(limits.max_degree) +
+                     how_to_raise("max_degree"));
+  }
+  if (auto elements = space.find("elements")) {
+    std::vector<double> n = elements->is_sequence() ? elements->as_doubles() : std::vector<double>{elements->as_double()};
+    if (n.size() == 1) n.push_back(n[0]);
+    double total = 1.0;
+    for (double v : n) total *= std::max(1.0, v);
+    if (total > limits.max_elements)
+      elements->fail("about " + format_number(total) + " elements exceed limits.max_elements = " +
+                     format_number(limits.max_elements) + how_to_raise("max_elements"));
+  }
+}
+
+void check_size(const SpaceSize& size, const ResourceLimits& limits, const ConfigNode& node, const std::string& what) {
+  if (size.elements > limits.max_elements)
+    node.fail(what + " has " + format_number(size.elements) + " elements, more than limits.max_elements = " +
+              format_number(limits.max_elements) + how_to_raise("max_elements"));
+  if (size.dofs > limits.max_dofs)
+    node.fail(what + " has " + format_number(size.dofs) + " degrees of freedom, more than limits.max_dofs = " +
+              format_number(limits.max_dofs) + how_to_raise("max_dofs"));
+  const double gb = estimated_memory_bytes(size) / 1e9;
+  if (gb > limits.max_memory_gb) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.3g", gb);
+    node.fail(what + " needs about " + buf + " GB (matrix and factor), more than limits.max_memory_gb = " +
+              format_number(limits.max_memory_gb) + how_to_raise("max_memory_gb"));
+  }
+}
+
+}  // namespace iga

@@ -1,0 +1,70 @@
+/// The limits applied to a study: requests refused before the coarsest space is built, levels
+/// estimated from level 0 before the study, with messages naming the key to raise.
+#include "solver/resource_checks.hpp"
+
+#include <gtest/gtest.h>
+
+#include "solver/study.hpp"
+#include "spaces/space_factory.hpp"
+
+namespace iga {
+namespace {
+
+const char* kBase = R"yaml(problem: {pde: poisson, exact: "x*y", boundary: {all: dirichlet}}
+domain: {type: rectangle, min: [0, 0], max: [1, 1]}
+)yaml";
+
+std::string study_error(const std::string& rest, int levels_override = 0) {
+  try {
+    parse_study(ConfigNode::load_string(std::string(kBase) + rest, "run.yaml"), "run.yaml", levels_override, "");
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(ResourceChecks, DegreeAndElementsAreRefusedBeforeTheSpaceIsBuilt) {
+  EXPECT_EQ(study_error("space: {type: bspline, degree: 100, elements: [2, 2]}\n"),
+            "run.yaml:3:32: space.degree: degree 100 exceeds limits.max_degree = 12 (raise limits.max_degree in the "
+            "config if this is intended, e.g. limits: {max_degree: ...})");
+  // A billion elements: refused at once, not by bad_alloc after seconds.
+  EXPECT_NE(study_error("space: {type: bspline, degree: 2, elements: [40000, 40000]}\n")
+                .find("run.yaml:3:45: space.elements: about 1.6e+09 elements exceed limits.max_elements"),
+            std::string::npos);
+  EXPECT_EQ(study_error("space: {type: bspline, degree: 14, elements: [2, 2]}\nlimits: {max_degree: 14}\n"), "");
+  // A space whose degree has another key (a T-mesh's section dimension n) is checked once built.
+  EXPECT_EQ(study_error("space: {type: tmesh, section: poly, n: 13, regularity: 1, elements: [2, 2]}\n"),
+            "run.yaml:3:8: space: the tmesh space has degree 13, more than limits.max_degree = 12 (raise "
+            "limits.max_degree in the config if this is intended, e.g. limits: {max_degree: ...})");
+}
+
+TEST(ResourceChecks, LevelsAreEstimatedFromLevelZero) {
+  // 2 x 2 elements: level l has 4^(l+1) elements; level 10 has 4.2e6 > 4e6.
+  const std::string base = "space: {type: bspline, degree: 2, elements: [2, 2]}\n";
+  EXPECT_EQ(study_error(base + "refinement: {levels: 10}\n"), "");
+  const std::string m = study_error(base + "refinement: {levels: 11}\n");
+  EXPECT_EQ(m.rfind("run.yaml:4:22: refinement.levels: level 10 (estimated from level 0) has ", 0), 0u) << m;
+  EXPECT_NE(m.find("limits.max_elements"), std::string::npos) << m;
+  EXPECT_EQ(study_error(base + "refinement: {levels: 11}\nlimits: {max_elements: 1e7, max_dofs: 2e7, max_memory_gb: 1e3}\n"), "");
+  // Degrees of freedom and memory have their own keys.
+  EXPECT_NE(study_error(base + "refinement: {levels: 4}\nlimits: {max_dofs: 1000}\n").find("more than limits.max_dofs = 1000"),
+            std::string::npos);
+  EXPECT_NE(study_error(base + "refinement: {levels: 4}\nlimits: {max_memory_gb: 1e-6}\n").find("limits.max_memory_gb"),
+            std::string::npos);
+  // The command line's --levels is blamed on the space (no config key holds it).
+  EXPECT_EQ(study_error(base, 11).rfind("run.yaml:3:8: space: level 10", 0), 0u) << study_error(base, 11);
+}
+
+TEST(ResourceChecks, MeasureCountsElementEntries) {
+  const ConfigNode root = ConfigNode::load_string(std::string(kBase) + "space: {type: bspline, degree: 2, elements: [3, 2]}\n");
+  const SpaceSize s = measure(*make_space(root["domain"], root["space"], 0));
+  EXPECT_EQ(s.elements, 6.0);
+  EXPECT_EQ(s.dofs, 5.0 * 4.0);            // (3 + 2) x (2 + 2) quadratic C1 B-splines
+  EXPECT_EQ(s.element_entries, 6.0 * 81);  // 9 active functions per element
+  const SpaceSize l2 = uniform_estimate(s, 2);
+  EXPECT_EQ(l2.elements, 96.0);
+  EXPECT_GE(l2.dofs, 14.0 * 10.0);  // the estimate bounds the true level-2 dimension from above
+}
+
+}  // namespace
+}  // namespace iga
