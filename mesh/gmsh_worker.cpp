@@ -69,19 +69,22 @@ Channel make_channel(bool socket) {
   return Channel{Fd(fds[0]), Fd(fds[1])};
 }
 
-/// The last lines Gmsh printed on its error stream that name an error (for crash messages).
+/// The lines Gmsh printed on its error stream that name an error (for crash messages); else the
+/// C++ runtime's last words.
 std::string gmsh_errors(const std::string& err) {
-  std::string found;
+  std::string errors, runtime;
   std::size_t start = 0;
   while (start < err.size()) {
     std::size_t end = err.find('\n', start);
     if (end == std::string::npos) end = err.size();
-    const std::string line = err.substr(start, end - start);
-    if (line.find("Error") != std::string::npos || line.find("terminate") != std::string::npos ||
-        line.find("what()") != std::string::npos)
-      found = found.empty() ? line : found + "; " + line;
+    std::string line = err.substr(start, end - start);
+    for (std::size_t at; (at = line.find("  ")) != std::string::npos;) line.erase(at, 1);
+    std::string& kind = line.find("Error") != std::string::npos ? errors : runtime;
+    if (&kind == &errors || line.find("terminate") != std::string::npos || line.find("what()") != std::string::npos)
+      kind = kind.empty() ? line : kind + "; " + line;
     start = end + 1;
   }
+  std::string found = errors.empty() ? runtime : errors;
   if (found.size() > 400) found = "..." + found.substr(found.size() - 400);
   return found;
 }
