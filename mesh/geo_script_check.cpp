@@ -292,16 +292,23 @@ class ScriptChecker {
         i += 2;
         continue;
       }
+      // A statement ends at ';' or, like `Delete { Point{1}; }`, at a closing brace followed by a word.
       std::size_t end = i;
+      bool after_brace = false;
       for (int depth = 0; end < t.size(); ++end) {
         if (t[end].kind != Token::punct) continue;
         const std::string& s = t[end].s;
         depth += (s == "(" || s == "[" || s == "{") - (s == ")" || s == "]" || s == "}");
         if (s == ";" && depth <= 0) break;
+        if (s == "}" && depth == 0 && (end + 1 == t.size() || t[end + 1].kind == Token::word)) {
+          after_brace = true;
+          break;
+        }
       }
       if (end >= t.size()) script.fail(head.line, "the statement '" + head.s + " ...' does not end with ';'");
+      if (after_brace) ++end;  // the brace belongs to the statement
       statement(script, i, end, stack);
-      i = end + 1;
+      i = after_brace ? end : end + 1;
     }
   }
 
@@ -381,7 +388,7 @@ class ScriptChecker {
       refuse(script, head, "'" + t[i + 1].s + "' is outside the folder of the config and the mesh file");
     if (!fs::is_regular_file(real, ec)) refuse(script, head, "'" + t[i + 1].s + "' is not a readable file");
     for (const auto& open : stack)
-      if (open == real) refuse(script, head, "'" + t[i + 1].s + "' includes itself");
+      if (open == real) refuse(script, head, "'" + t[i + 1].s + "' includes itself (a cycle of Includes)");
     if (stack.size() > 16) refuse(script, head, "Includes nest more than 16 deep");
     stack.push_back(real);
     check(real, stack);
