@@ -86,6 +86,9 @@ class MshChecker {
   [[noreturn]] void fail(const std::string& message) const {
     throw InputError(path_ + ":" + std::to_string(line_) + ": " + message);
   }
+  [[noreturn]] void fail_at(int line, const std::string& message) const {
+    throw InputError(path_ + ":" + std::to_string(line) + ": " + message);
+  }
   [[noreturn]] void fail_at_end(const std::string& message) const { throw InputError(path_ + ": " + message); }
 
   /// The next non-empty line split at white space; false at the end of the file.
@@ -143,7 +146,8 @@ class MshChecker {
     if (!std::isfinite(x)) fail("coordinate '" + token + "' is not finite");
     return x;
   }
-  double limit() const { return 2.0 * limits_.max_elements; }
+  /// Header counts (nodes, all elements including lines and points) are refused beyond this.
+  double limit() const { return 4.0 * limits_.max_elements; }
 
   void add_node(long long t) {
     if (!nodes_.insert(t).second) fail("node " + std::to_string(t) + " is defined twice");
@@ -170,6 +174,7 @@ class MshChecker {
     const long long blocks = count(t[0], "block count", limit());
     const long long n = count(t[1], "node count", limit());
     const long long lo = integer(t[2], "minNodeTag"), hi = integer(t[3], "maxNodeTag");
+    const int header = line_;
     long long total = 0, seen_lo = 0, seen_hi = 0;
     for (long long b = 0; b < blocks; ++b) {
       need(t, "a node block header");
@@ -197,9 +202,10 @@ class MshChecker {
         for (const auto& c : t) coordinate(c);
       }
     }
-    if (total != n) fail("the blocks have " + std::to_string(total) + " nodes, the header says " + std::to_string(n));
+    if (total != n)
+      fail_at(header, "the blocks have " + std::to_string(total) + " nodes, the header says " + std::to_string(n));
     if (n > 0 && (seen_lo != lo || seen_hi != hi))
-      fail("node tags run from " + std::to_string(seen_lo) + " to " + std::to_string(seen_hi) +
+      fail_at(header, "node tags run from " + std::to_string(seen_lo) + " to " + std::to_string(seen_hi) +
            ", the header says " + std::to_string(lo) + " to " + std::to_string(hi));
     expect_end("Nodes");
   }
@@ -251,6 +257,7 @@ class MshChecker {
     if (t.size() != 4) fail("expected 'numEntityBlocks numElements minElementTag maxElementTag'");
     const long long blocks = count(t[0], "block count", limit());
     const long long n = count(t[1], "element count", limit());
+    const int header = line_;
     long long total = 0;
     for (long long b = 0; b < blocks; ++b) {
       need(t, "an element block header");
@@ -269,7 +276,7 @@ class MshChecker {
       }
     }
     if (total != n)
-      fail("the blocks have " + std::to_string(total) + " elements, the header says " + std::to_string(n));
+      fail_at(header, "the blocks have " + std::to_string(total) + " elements, the header says " + std::to_string(n));
     expect_end("Elements");
   }
 

@@ -16,9 +16,9 @@ namespace iga {
 /// [1, 2^31), repeated, or outside the declared [min, max] (4.1); non-finite coordinates; an element
 /// type Gmsh does not define or a line with the wrong number of node tags for its type; elements
 /// that use nodes the file does not define; 4.1 blocks on entities the $Entities section does not
-/// define; partitioned meshes. Resource limits: more than 2 x limits.max_elements nodes or elements
-/// in a section header is refused before anything is read, more than limits.max_elements 2D
-/// elements after the count.
+/// define; partitioned meshes. Resource limits: more than 4 x limits.max_elements nodes or elements
+/// (all dimensions) in a section header is refused before anything is read, more than
+/// limits.max_elements 2D elements after the count.
 void check_msh_structure(const std::string& path, const MeshLimits& limits = {});
 
 }  // namespace iga
