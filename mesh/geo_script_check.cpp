@@ -260,6 +260,7 @@ class ScriptChecker {
 
   void check(const fs::path& file, std::vector<fs::path>& stack) {
     const Script script = tokenize(file);
+    checked_.push_back(file);
     const auto& t = script.tokens;
     for (const Token& token : t)
       if (token.kind == Token::word)
@@ -450,18 +451,25 @@ class ScriptChecker {
 
   std::vector<fs::path> roots_;
   MeshLimits limits_;
+
+ public:
+  std::vector<fs::path> checked_;
+
+ private:
   std::map<std::string, double> values_;
 };
 
 }  // namespace
 
-void check_geo_script(const fs::path& file, const std::vector<fs::path>& include_roots, const MeshLimits& limits) {
+std::vector<fs::path> check_geo_script(const fs::path& file, const std::vector<fs::path>& include_roots,
+                                       const MeshLimits& limits) {
   ScriptChecker checker(include_roots, limits);
   std::vector<fs::path> stack = {fs::weakly_canonical(file)};
   checker.check(file, stack);
   // Gmsh also runs "<file>.opt" when it opens <file>: it is a script in the same language.
   const fs::path options = file.string() + ".opt";
   if (std::error_code ec; fs::exists(options, ec)) checker.check(options, stack);
+  return checker.checked_;
 }
 
 }  // namespace iga

@@ -12,6 +12,10 @@
 #include <chrono>
 #include <cstring>
 #include <filesystem>
+#include <fstream>
+#include <list>
+#include <mutex>
+#include <sstream>
 #include <stdexcept>
 
 #include "config/config_node.hpp"
@@ -187,6 +191,28 @@ PlanarMesh run_gmsh_job(const GmshJob& job) {
   } catch (const std::runtime_error& e) {
     throw InputError(source + ": gmsh worker sent a broken mesh (" + e.what() + ")");
   }
+}
+
+PlanarMesh run_gmsh_job_cached(const GmshJob& job, const std::vector<fs::path>& input_files) {
+  std::string key = encode_job(job);
+  for (const auto& file : input_files) {
+    std::ifstream in(file, std::ios::binary);
+    std::stringstream bytes;
+    bytes << in.rdbuf();
+    key += '\0' + file.string() + '\0' + std::to_string(bytes.str().size()) + '\0' + bytes.str();
+  }
+  static std::mutex lock;
+  static std::list<std::pair<std::string, PlanarMesh>> recent;  // newest first, at most 4
+  {
+    const std::lock_guard<std::mutex> guard(lock);
+    for (const auto& [k, mesh] : recent)
+      if (k == key) return mesh;
+  }
+  PlanarMesh mesh = run_gmsh_job(job);
+  const std::lock_guard<std::mutex> guard(lock);
+  recent.emplace_front(std::move(key), mesh);
+  if (recent.size() > 4) recent.pop_back();
+  return mesh;
 }
 
 }  // namespace iga

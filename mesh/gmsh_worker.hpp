@@ -7,6 +7,9 @@
 /// already have run OpenMP regions), limits its own memory and CPU time, and confines itself
 /// before Gmsh reads anything (worker_sandbox.hpp); the caller kills it at the wall-clock limit.
 
+#include <filesystem>
+#include <vector>
+
 #include "mesh/gmsh_job.hpp"
 #include "mesh/planar_mesh.hpp"
 
@@ -18,5 +21,10 @@ namespace iga {
 /// installation problem, not an input one). The worker is looked for next to the running
 /// executable, then at the path of the build that compiled this library.
 PlanarMesh run_gmsh_job(const GmshJob& job);
+
+/// run_gmsh_job, remembering the last few meshes by the job and the contents of `input_files`
+/// (everything Gmsh reads for it): a study that builds its space once per level meshes the same
+/// file once. Failures are not remembered.
+PlanarMesh run_gmsh_job_cached(const GmshJob& job, const std::vector<std::filesystem::path>& input_files);
 
 }  // namespace iga

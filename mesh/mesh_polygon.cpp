@@ -109,7 +109,7 @@ PlanarMesh mesh_polygon(const PolygonDomain& domain, double mesh_size, bool reco
   job.recombine = recombine;
   job.polygon = domain;
   job.limits = limits;
-  return run_gmsh_job(job);
+  return run_gmsh_job_cached(job, {});
 }
 
 }  // namespace iga

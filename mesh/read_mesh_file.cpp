@@ -22,12 +22,16 @@ PlanarMesh read_with_gmsh(const std::string& path, const MeshFileOptions& option
   namespace fs = std::filesystem;
   std::vector<fs::path> roots = {fs::absolute(path).parent_path()};
   if (!options.config_folder.empty()) roots.push_back(fs::absolute(options.config_folder));
+  std::vector<fs::path> inputs = {path};
   if (mesh_geometry) {
-    check_geo_script(path, roots, limits);
+    inputs = check_geo_script(path, roots, limits);
   } else {
     check_msh_structure(path, limits);
     // Gmsh runs "<file>.opt" when it opens <file>, whatever the file is.
-    if (std::error_code ec; fs::exists(path + ".opt", ec)) check_geo_script(path + ".opt", roots, limits);
+    if (std::error_code ec; fs::exists(path + ".opt", ec)) {
+      const auto options_file = check_geo_script(path + ".opt", roots, limits);
+      inputs.insert(inputs.end(), options_file.begin(), options_file.end());
+    }
   }
   GmshJob job;
   job.kind = mesh_geometry ? GmshJob::mesh_geo : GmshJob::read_msh;
@@ -37,7 +41,7 @@ PlanarMesh read_with_gmsh(const std::string& path, const MeshFileOptions& option
   job.recombine = options.recombine;
   for (const auto& root : roots) job.readable_folders.push_back(root.string());
   job.limits = limits;
-  return run_gmsh_job(job);
+  return run_gmsh_job_cached(job, inputs);
 }
 
 }  // namespace
