@@ -99,7 +99,9 @@ void limit_worker_resources(const MeshLimits& limits) {
   if (::getppid() == 1) ::_exit(1);  // the parent is already gone
   const auto cpu = static_cast<rlim_t>(limits.seconds) + 1;
   set_limit(RLIMIT_CPU, cpu, cpu + 1);
+#if !defined(__SANITIZE_ADDRESS__)  // AddressSanitizer reserves terabytes of address space for its shadow
   set_limit(RLIMIT_AS, limits.memory_bytes, limits.memory_bytes);
+#endif
   set_limit(RLIMIT_CORE, 0, 0);
   set_limit(RLIMIT_FSIZE, 0, 0);
   ::signal(SIGXFSZ, SIG_IGN);  // a write past the limit fails with EFBIG instead of killing

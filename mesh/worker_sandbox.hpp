@@ -10,7 +10,7 @@
 
 namespace iga {
 
-/// Address space (limits.memory_bytes), CPU time (limits.seconds; SIGXCPU, then SIGKILL one second
+/// Address space (limits.memory_bytes; not in AddressSanitizer builds), CPU time (limits.seconds; SIGXCPU, then SIGKILL one second
 /// later), no core dumps, no file growth (RLIMIT_FSIZE 0: nothing can be written to a file), and
 /// the worker dies with its parent.
 void limit_worker_resources(const MeshLimits& limits);

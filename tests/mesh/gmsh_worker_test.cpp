@@ -196,6 +196,25 @@ TEST(GmshWorker, MeshSizeIsCheckedBeforeMeshing) {
             "polygon: outer vertex 2 (nan, 0) is not finite");
 }
 
+TEST(GmshWorker, GeometryFeaturesWorkInsideTheConfinement) {
+  // OpenCASCADE shapes, a Boolean difference and an Include from the same folder.
+  test::scratch_file("width.geo", "w = 2;\n");
+  const std::string path = test::scratch_file("occ.geo",
+                                              "SetFactory(\"OpenCASCADE\");\n"
+                                              "Include \"width.geo\";\n"
+                                              "Rectangle(1) = {0, 0, 0, w, 1};\n"
+                                              "Disk(2) = {0.5, 0.5, 0, 0.2};\n"
+                                              "BooleanDifference{ Surface{1}; Delete; }{ Surface{2}; Delete; }\n");
+  const PlanarMesh m = read_mesh_file(path, {0.1, false});
+  double area = 0.0;
+  for (int c = 0; c < static_cast<int>(m.cells.size()); ++c) area += 0.5 * twice_signed_area(m, c);
+  // 2 x 1 minus a disc of radius r = 0.2 whose boundary becomes chords of length <= h = 0.1: the
+  // inscribed polygon leaves at most (2/3) (2 pi r) h²/(8 r) = pi h²/6 of the disc in the mesh.
+  const double exact = 2.0 - M_PI * 0.04;
+  EXPECT_GE(area, exact - 1e-12);
+  EXPECT_LE(area, exact + M_PI * 0.01 / 6.0);
+}
+
 TEST(GmshWorker, TheCallerSurvivesAndGmshStillWorks) {
   // After every failure above in this process, a normal file still meshes.
   const std::string l_shape = source_dir + "/configs/domains/l_shape.geo";
