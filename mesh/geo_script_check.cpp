@@ -42,6 +42,11 @@ const std::map<std::string, std::string> refused_words = {
     {"FileExists", "looks at the file system"},
     {"GetEnv", "reads the environment"},
     {"GetValue", "asks for input"},
+    {"GetStringValue", "asks for input"},
+    {"GetForced", "reads ONELAB parameters"},
+    {"GetForcedStr", "reads ONELAB parameters"},
+    {"Draw", "acts on the graphical interface"},
+    {"SetChanged", "acts on the ONELAB server"},
     {"GetString", "reads ONELAB parameters"},
     {"GetNumber", "reads ONELAB parameters"},
     {"SetString", "sets ONELAB parameters"},
@@ -70,12 +75,12 @@ const std::set<std::string> allowed_heads = {
     "Affine", "Duplicata", "Delete", "Recursive", "Coherence", "Fillet", "Chamfer", "ThruSections",
     "BooleanUnion", "BooleanIntersection", "BooleanDifference", "BooleanFragments", "SetFactory", "Hide", "Show",
     "Color", "Printf", "Error", "Warning", "Mesh", "Geometry", "Include", "Call", "DefineConstant",
-    "SyncModel"};
+    "SyncModel", "Boundary", "CombinedBoundary", "ThickSolid", "Struct"};
 
 // Field types that only compute sizes (Structured reads a file, ExternalProcess runs a program,
 // PostView needs a view, which only a file could bring).
 const std::set<std::string> allowed_fields = {
-    "Attractor", "AttractorAnisoCurve", "Ball", "BoundaryLayer", "Box", "Curvature", "Cylinder",
+    "Attractor", "AttractorAnisoCurve", "Ball", "BoundaryLayer", "Box", "Constant", "Curvature", "Cylinder", "Extend",
     "Distance", "Frustum", "Gradient", "IntersectAniso", "Laplacian", "LonLat", "MathEval",
     "MathEvalAniso", "Max", "MaxEigenHessian", "Mean", "Min", "MinAniso", "Octree", "Param",
     "Restrict", "Threshold"};
@@ -84,6 +89,11 @@ const std::set<std::string> allowed_fields = {
 // names a file) may be set.
 const std::set<std::string> option_categories = {"General", "Geometry", "Mesh", "Solver", "PostProcessing",
                                                  "View", "Print"};
+
+// Words that continue a statement after a closing brace (`Point{5} In Surface{1};`,
+// `Extrude { Surface{1}; } Using Wire {2}`).
+const std::set<std::string> continuations = {"In",   "Using", "Knots",         "Order",         "Alternate",
+                                             "Left", "Right", "AlternateLeft", "AlternateRight"};
 
 struct Token {
   enum Kind { word, number, text, punct } kind;
@@ -293,7 +303,8 @@ class ScriptChecker {
         i += 2;
         continue;
       }
-      // A statement ends at ';' or, like `Delete { Point{1}; }`, at a closing brace followed by a word.
+      // A statement ends at ';' or, like `Delete { Point{1}; }`, at a closing brace followed by a
+      // word that starts the next statement.
       std::size_t end = i;
       bool after_brace = false;
       for (int depth = 0; end < t.size(); ++end) {
@@ -301,7 +312,8 @@ class ScriptChecker {
         const std::string& s = t[end].s;
         depth += (s == "(" || s == "[" || s == "{") - (s == ")" || s == "]" || s == "}");
         if (s == ";" && depth <= 0) break;
-        if (s == "}" && depth == 0 && (end + 1 == t.size() || t[end + 1].kind == Token::word)) {
+        if (s == "}" && depth == 0 &&
+            (end + 1 == t.size() || (t[end + 1].kind == Token::word && !continuations.count(t[end + 1].s)))) {
           after_brace = true;
           break;
         }

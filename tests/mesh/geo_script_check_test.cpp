@@ -118,6 +118,7 @@ TEST(GeoScriptCheck, GeometryScriptsPass) {
       "Physical Curve(\"bottom\") = {1}; Physical Surface(\"all\") = {1};\n"
       "Geometry.Tolerance = 1e-9; Mesh.ElementOrder = 1; Mesh.MeshSizeFactor = 1;\n"
       "list[] = {1:10}; list[] += 11; k++; k -= 2;\n"
+      "Point(103) = {0.5, 0.5, 0, h}; Point{103} In Surface{1};\n"
       "Delete { Point{100}; }\n");
   EXPECT_NO_THROW(check_geo_script(path, {test::scratch_folder()}));
 }
