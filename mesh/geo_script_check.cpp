@@ -2,8 +2,8 @@
 
 #include <algorithm>
 #include <cctype>
-#include <cstdlib>
 #include <cmath>
+#include <cstdlib>
 #include <fstream>
 #include <map>
 #include <optional>
@@ -67,6 +67,7 @@ const std::map<std::string, std::string> refused_words = {
 
 // First words of the statements a 2D (or extruded) geometry needs. Assignments to variables are
 // allowed besides; everything else is refused.
+// clang-format off
 const std::set<std::string> allowed_heads = {
     "Point", "Line", "Curve", "Circle", "Ellipse", "Spline", "BSpline", "Bezier", "Nurbs", "Wire", "Surface",
     "Plane", "Ruled", "Volume", "Sphere", "Box", "Cylinder", "Torus", "Cone", "Wedge", "Rectangle", "Disk",
@@ -76,24 +77,29 @@ const std::set<std::string> allowed_heads = {
     "BooleanUnion", "BooleanIntersection", "BooleanDifference", "BooleanFragments", "SetFactory", "Hide", "Show",
     "Color", "Printf", "Error", "Warning", "Mesh", "Geometry", "Include", "Call", "DefineConstant",
     "SyncModel", "Boundary", "CombinedBoundary", "ThickSolid", "Struct"};
+// clang-format on
 
 // Field types that only compute sizes (Structured reads a file, ExternalProcess runs a program,
 // PostView needs a view, which only a file could bring).
+// clang-format off
 const std::set<std::string> allowed_fields = {
     "Attractor", "AttractorAnisoCurve", "Ball", "BoundaryLayer", "Box", "Constant", "Curvature", "Cylinder", "Extend",
     "Distance", "Frustum", "Gradient", "IntersectAniso", "Laplacian", "LonLat", "MathEval",
     "MathEvalAniso", "Max", "MaxEigenHessian", "Mean", "Min", "MinAniso", "Octree", "Param",
     "Restrict", "Threshold"};
+// clang-format on
 
 // The option categories of Gmsh; only Mesh and Geometry options (numbers and colours, nothing that
 // names a file) may be set.
-const std::set<std::string> option_categories = {"General", "Geometry", "Mesh", "Solver", "PostProcessing",
-                                                 "View", "Print"};
+const std::set<std::string> option_categories = {"General",        "Geometry", "Mesh", "Solver",
+                                                 "PostProcessing", "View",     "Print"};
 
 // Words that continue a statement after a closing brace (`Point{5} In Surface{1};`,
 // `Extrude { Surface{1}; } Using Wire {2}`).
+// clang-format off
 const std::set<std::string> continuations = {"In",   "Using", "Knots",         "Order",         "Alternate",
                                              "Left", "Right", "AlternateLeft", "AlternateRight"};
+// clang-format on
 
 struct Token {
   enum Kind { word, number, text, punct } kind;
@@ -362,9 +368,8 @@ class ScriptChecker {
     }
     // Otherwise it must be an assignment to a variable: name[...] = ..., name += ..., name++ ...
     for (std::size_t k = i + 1; k < end; ++k)
-      if (t[k].kind == Token::punct &&
-          (t[k].s == "=" || t[k].s == "+=" || t[k].s == "-=" || t[k].s == "*=" || t[k].s == "/=" ||
-           t[k].s == "++" || t[k].s == "--")) {
+      if (t[k].kind == Token::punct && (t[k].s == "=" || t[k].s == "+=" || t[k].s == "-=" || t[k].s == "*=" ||
+                                        t[k].s == "/=" || t[k].s == "++" || t[k].s == "--")) {
         track_assignment(script, i, end);
         return;
       }
@@ -397,8 +402,7 @@ class ScriptChecker {
       const auto rel = real.lexically_relative(root);
       inside = inside || (!ec && !rel.empty() && *rel.begin() != "..");
     }
-    if (!inside)
-      refuse(script, head, "'" + t[i + 1].s + "' is outside the folder of the config and the mesh file");
+    if (!inside) refuse(script, head, "'" + t[i + 1].s + "' is outside the folder of the config and the mesh file");
     if (!fs::is_regular_file(real, ec)) refuse(script, head, "'" + t[i + 1].s + "' is not a readable file");
     for (const auto& open : stack)
       if (open == real) refuse(script, head, "'" + t[i + 1].s + "' includes itself (a cycle of Includes)");
@@ -455,9 +459,8 @@ class ScriptChecker {
       const double count = std::floor((v[1] - v[0]) / step) + 1.0;
       if (count > limits_.max_loop_iterations)
         script.fail(t[k].line, "the range " + format_number(v[0]) + ":" + format_number(v[1]) +
-                                   (v.size() == 3 ? ":" + format_number(step) : "") + " has " +
-                                   format_number(count) + " values, more than the limit of " +
-                                   format_number(limits_.max_loop_iterations));
+                                   (v.size() == 3 ? ":" + format_number(step) : "") + " has " + format_number(count) +
+                                   " values, more than the limit of " + format_number(limits_.max_loop_iterations));
     }
   }
 

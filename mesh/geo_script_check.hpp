@@ -26,7 +26,8 @@ namespace iga {
 /// Unreadable files and unterminated strings or comments are refused as well. The option file
 /// "<file>.opt", which Gmsh runs when it opens <file>, is checked the same way when it exists.
 /// Returns every file checked (the script, its Includes, the option file): what Gmsh will read.
-std::vector<std::filesystem::path> check_geo_script(const std::filesystem::path& file, const std::vector<std::filesystem::path>& include_roots,
-                      const MeshLimits& limits = {});
+std::vector<std::filesystem::path> check_geo_script(const std::filesystem::path& file,
+                                                    const std::vector<std::filesystem::path>& include_roots,
+                                                    const MeshLimits& limits = {});
 
 }  // namespace iga

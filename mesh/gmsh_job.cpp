@@ -40,7 +40,8 @@ class Reader {
   }
   std::uint64_t count(std::size_t item_bytes) {
     const auto n = get<std::uint64_t>();
-    if (item_bytes > 0 && n > (in_.size() - at_) / item_bytes) throw std::runtime_error("truncated Gmsh worker message");
+    if (item_bytes > 0 && n > (in_.size() - at_) / item_bytes)
+      throw std::runtime_error("truncated Gmsh worker message");
     return n;
   }
   std::string get_string() {

@@ -16,12 +16,12 @@ namespace iga {
 struct GmshJob {
   enum Kind : char { read_msh = 'm', mesh_geo = 'g', mesh_polygon = 'p' };
   Kind kind = read_msh;
-  std::string path;                            ///< the .msh or .geo file (read_msh, mesh_geo)
-  std::string source;                          ///< names the input in messages
-  double mesh_size = 0.0;                      ///< mesh_geo (0: the file's own sizes), mesh_polygon
-  bool recombine = false;                      ///< quadrilaterals (Mesh.RecombineAll)
-  PolygonDomain polygon;                       ///< mesh_polygon
-  std::vector<std::string> readable_folders;   ///< what the worker may read (besides its libraries)
+  std::string path;                           ///< the .msh or .geo file (read_msh, mesh_geo)
+  std::string source;                         ///< names the input in messages
+  double mesh_size = 0.0;                     ///< mesh_geo (0: the file's own sizes), mesh_polygon
+  bool recombine = false;                     ///< quadrilaterals (Mesh.RecombineAll)
+  PolygonDomain polygon;                      ///< mesh_polygon
+  std::vector<std::string> readable_folders;  ///< what the worker may read (besides its libraries)
   MeshLimits limits;
 };
 

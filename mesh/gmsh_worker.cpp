@@ -38,8 +38,7 @@ fs::path worker_path() {
 #ifdef IGA_GMSH_WORKER_PATH
   if (fs::is_regular_file(IGA_GMSH_WORKER_PATH, ec)) return IGA_GMSH_WORKER_PATH;
 #endif
-  throw std::runtime_error(std::string("cannot find the Gmsh worker '") + worker_name +
-                           "' next to the executable" +
+  throw std::runtime_error(std::string("cannot find the Gmsh worker '") + worker_name + "' next to the executable" +
 #ifdef IGA_GMSH_WORKER_PATH
                            " or at " IGA_GMSH_WORKER_PATH
 #endif
@@ -69,7 +68,8 @@ struct Channel {
 Channel make_channel(bool socket) {
   int fds[2];
   const int rc = socket ? ::socketpair(AF_UNIX, SOCK_STREAM | SOCK_CLOEXEC, 0, fds) : ::pipe2(fds, O_CLOEXEC);
-  if (rc != 0) throw std::runtime_error(std::string("cannot create a pipe for the Gmsh worker: ") + std::strerror(errno));
+  if (rc != 0)
+    throw std::runtime_error(std::string("cannot create a pipe for the Gmsh worker: ") + std::strerror(errno));
   return Channel{Fd(fds[0]), Fd(fds[1])};
 }
 
@@ -139,7 +139,8 @@ PlanarMesh run_gmsh_job(const GmshJob& job) {
   bool timed_out = false;
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(job.limits.seconds);
   for (bool out_open = true, err_open = true; out_open || err_open;) {
-    const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now());
+    const auto left =
+        std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now());
     if (left.count() <= 0) {
       timed_out = true;
       ::kill(-pid, SIGKILL);

@@ -48,7 +48,8 @@ class MshChecker {
       fail("MSH version " + version_ + " is not supported (2.2 or 4.1; Mesh.MshFileVersion)");
     expect_end("MeshFormat");
     while (next(t)) {
-      if (t[0].empty() || t[0][0] != '$' || t.size() != 1) fail("expected a section header '$Name', got '" + t[0] + "'");
+      if (t[0].empty() || t[0][0] != '$' || t.size() != 1)
+        fail("expected a section header '$Name', got '" + t[0] + "'");
       const std::string name = t[0].substr(1);
       if (name.rfind("End", 0) == 0) fail("'" + t[0] + "' closes no open section");
       if (!seen_.insert(name).second) fail("a second $" + name + " section");
@@ -141,8 +142,7 @@ class MshChecker {
   double coordinate(const std::string& token) const {
     double x = 0.0;
     const auto [end, error] = std::from_chars(token.data(), token.data() + token.size(), x);
-    if (error != std::errc() || end != token.data() + token.size())
-      fail("expected a coordinate, got '" + token + "'");
+    if (error != std::errc() || end != token.data() + token.size()) fail("expected a coordinate, got '" + token + "'");
     if (!std::isfinite(x)) fail("coordinate '" + token + "' is not finite");
     return x;
   }
@@ -206,7 +206,7 @@ class MshChecker {
       fail_at(header, "the blocks have " + std::to_string(total) + " nodes, the header says " + std::to_string(n));
     if (n > 0 && (seen_lo != lo || seen_hi != hi))
       fail_at(header, "node tags run from " + std::to_string(seen_lo) + " to " + std::to_string(seen_hi) +
-           ", the header says " + std::to_string(lo) + " to " + std::to_string(hi));
+                          ", the header says " + std::to_string(lo) + " to " + std::to_string(hi));
     expect_end("Nodes");
   }
 
@@ -219,7 +219,8 @@ class MshChecker {
            ", the block's entity " + std::to_string(expect_dim));
     if (t.size() != first + kind->second.nodes)
       fail("element type " + std::to_string(type) + " needs " + std::to_string(kind->second.nodes) +
-           " node tags, the line has " + std::to_string(static_cast<long long>(t.size()) - static_cast<long long>(first)));
+           " node tags, the line has " +
+           std::to_string(static_cast<long long>(t.size()) - static_cast<long long>(first)));
     const bool nodes_known = seen_.count("Nodes") > 0;
     for (std::size_t k = first; k < t.size(); ++k) {
       const long long node = tag(t[k], "node tag");
@@ -325,7 +326,8 @@ class MshChecker {
           }
           at += 1 + static_cast<std::size_t>(bounding);
         }
-        if (t.size() != at) fail("an entity line has " + std::to_string(t.size()) + " values, expected " + std::to_string(at));
+        if (t.size() != at)
+          fail("an entity line has " + std::to_string(t.size()) + " values, expected " + std::to_string(at));
         if (!entities_.insert({d, entity}).second) fail("entity " + std::to_string(entity) + " is defined twice");
       }
     expect_end("Entities");

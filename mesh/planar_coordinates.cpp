@@ -11,7 +11,8 @@ std::vector<Eigen::Vector2d> planar_coordinates(const std::vector<Eigen::Vector3
   for (std::size_t k = 0; k < points.size(); ++k)
     if (!points[k].allFinite())
       throw InputError(source + ": vertex " + std::to_string(k) +
-                       (k < origins.size() ? " (" + origins[k] + ")" : std::string()) + " has a coordinate that is not finite");
+                       (k < origins.size() ? " (" + origins[k] + ")" : std::string()) +
+                       " has a coordinate that is not finite");
   if (points.empty()) return result;
   Eigen::Vector2d lo = points[0].head<2>(), hi = lo;
   for (const auto& p : points) {

@@ -39,7 +39,6 @@ struct MeshFileOptions {
   std::string config_folder;
 };
 
-PlanarMesh read_mesh_file(const std::string& path, const MeshFileOptions& options = {},
-                          const MeshLimits& limits = {});
+PlanarMesh read_mesh_file(const std::string& path, const MeshFileOptions& options = {}, const MeshLimits& limits = {});
 
 }  // namespace iga

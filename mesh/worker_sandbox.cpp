@@ -53,6 +53,7 @@ void install_syscall_filter() {
   auto deny = [&](int call, unsigned count = 0, scmp_arg_cmp arg = {}) {
     failures += ::seccomp_rule_add(filter, SCMP_ACT_ERRNO(EPERM), call, count, arg) != 0;
   };
+  // clang-format off
   for (int call :
        {SCMP_SYS(execve), SCMP_SYS(execveat), SCMP_SYS(fork), SCMP_SYS(vfork), SCMP_SYS(ptrace),
         SCMP_SYS(process_vm_readv), SCMP_SYS(process_vm_writev), SCMP_SYS(socket), SCMP_SYS(socketpair),
@@ -70,6 +71,7 @@ void install_syscall_filter() {
         SCMP_SYS(setuid), SCMP_SYS(setgid), SCMP_SYS(setreuid), SCMP_SYS(setregid), SCMP_SYS(setresuid),
         SCMP_SYS(setresgid), SCMP_SYS(memfd_create)})
     deny(call);
+  // clang-format on
   // New processes: clone without CLONE_THREAD (fork, posix_spawn, system); clone3's flags live in
   // memory the filter cannot read, so it reports "not implemented" and glibc falls back to clone.
   deny(SCMP_SYS(clone), 1, SCMP_A0(SCMP_CMP_MASKED_EQ, CLONE_THREAD, 0));

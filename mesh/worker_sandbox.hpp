@@ -10,9 +10,9 @@
 
 namespace iga {
 
-/// Address space (limits.memory_bytes; not in AddressSanitizer builds), CPU time (limits.seconds; SIGXCPU, then SIGKILL one second
-/// later), no core dumps, no file growth (RLIMIT_FSIZE 0: nothing can be written to a file), and
-/// the worker dies with its parent.
+/// Address space (limits.memory_bytes; not in AddressSanitizer builds), CPU time (limits.seconds; SIGXCPU, then SIGKILL
+/// one second later), no core dumps, no file growth (RLIMIT_FSIZE 0: nothing can be written to a file), and the worker
+/// dies with its parent.
 void limit_worker_resources(const MeshLimits& limits);
 
 /// System-call filter (seccomp, via libseccomp; applies to root too): no exec, no new processes

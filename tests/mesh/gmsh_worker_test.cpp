@@ -3,17 +3,17 @@
 // loop or allocate without end, or end the calling process; every failure is an InputError
 // naming the file.
 
+#include "mesh/gmsh_worker.hpp"
+
 #include <gtest/gtest.h>
+#include <linux/landlock.h>
 #include <sys/syscall.h>
 #include <unistd.h>
-
-#include <linux/landlock.h>
 
 #include <chrono>
 #include <filesystem>
 
 #include "config/errors.hpp"
-#include "mesh/gmsh_worker.hpp"
 #include "mesh/mesh_polygon.hpp"
 #include "mesh/read_mesh_file.hpp"
 #include "tests/support/scratch_files.hpp"
@@ -106,7 +106,10 @@ TEST(GmshWorker, ExitEndsOnlyTheWorker) {
   EXPECT_EQ(message.rfind(job.path + ": gmsh ended without a mesh", 0), 0u) << message;
   // Abort ends the script, not Gmsh: the statements before it are meshed (here none).
   const GmshJob aborting = unchecked_geo("abort.geo", "Abort;\n" + triangle_geo);
-  EXPECT_EQ(input_error([&] { run_gmsh_job(aborting); }), aborting.path + ": the mesh has no triangles or quadrilaterals (no meshed surface: a .geo needs a Plane Surface, a .msh its 2D elements)");
+  EXPECT_EQ(input_error([&] { run_gmsh_job(aborting); }),
+            aborting.path +
+                ": the mesh has no triangles or quadrilaterals (no meshed surface: a .geo needs a Plane Surface, a "
+                ".msh its 2D elements)");
 }
 
 TEST(GmshWorker, EndlessLoopsEndAtTheTimeLimit) {
@@ -155,7 +158,8 @@ TEST(GmshWorker, GmshMeshingErrorsAreInputErrors) {
     // Gmsh aborts on the first two (its error is thrown inside an OpenMP region) and meshes the
     // third for ever: the worker ends, the caller reports it.
     EXPECT_EQ(message.rfind(job.path + ": gmsh ", 0), 0u) << message;
-    if (name == "open_loop.geo") EXPECT_NE(message.find("not to be forming a closed loop"), std::string::npos) << message;
+    if (name == "open_loop.geo")
+      EXPECT_NE(message.find("not to be forming a closed loop"), std::string::npos) << message;
     if (name == "huge.geo") EXPECT_NE(message.find("time limit"), std::string::npos) << message;
   }
   // The same scripts through read_mesh_file (static check, then the worker): an InputError or a mesh.
@@ -183,7 +187,9 @@ TEST(GmshWorker, MeshSizeIsCheckedBeforeMeshing) {
   // A raised limit lets a finer mesh through: h = 0.02 on the L-shape (estimate 4 / 1.73e-4 = 23 094).
   MeshLimits small;
   small.max_elements = 1e4;
-  EXPECT_NE(input_error([&] { read_mesh_file(l_shape, {0.02, false}, small); }).find("more than the limit of 10000"),
+  EXPECT_NE(input_error([&] {
+              read_mesh_file(l_shape, {0.02, false}, small);
+            }).find("more than the limit of 10000"),
             std::string::npos);
   // Polygons: the exact area (3 x 1 = 3) gives 3 / (sqrt(3)/4 * 1e-18) = 6.9282e18.
   using V = Eigen::Vector2d;

@@ -2,13 +2,14 @@
 // them: each malformed variant of two valid files is refused naming the file and the line; the
 // valid files pass and read to the same square. Also non-finite coordinates in OBJ and OFF files.
 
+#include "mesh/msh_structure_check.hpp"
+
 #include <gtest/gtest.h>
 
 #include <fstream>
 #include <sstream>
 
 #include "config/errors.hpp"
-#include "mesh/msh_structure_check.hpp"
 #include "mesh/read_mesh_file.hpp"
 #include "tests/support/scratch_files.hpp"
 
@@ -78,7 +79,8 @@ void expect_refusals(const std::string& base, const std::string& prefix, const s
     const std::string name = prefix + std::to_string(k) + ".msh";
     const std::string path = (test::scratch_folder() / name).string();
     const std::string message = refusal(name, text);
-    const std::string where = cases[k].at.empty() ? path + ": " : path + ":" + std::to_string(line_of(text, cases[k].at)) + ": ";
+    const std::string where =
+        cases[k].at.empty() ? path + ": " : path + ":" + std::to_string(line_of(text, cases[k].at)) + ": ";
     EXPECT_EQ(message.rfind(where, 0), 0u) << cases[k].to << " -> " << message;
     EXPECT_NE(message.find(cases[k].expected), std::string::npos) << cases[k].to << " -> " << message;
     // read_mesh_file refuses the same way, before Gmsh reads anything.
@@ -100,7 +102,8 @@ TEST(MshStructureCheck, MalformedVersion2FilesAreRefusedNamingTheLine) {
           {"2.2 0 8", "2.2 1 8", "2.2 1 8", "binary .msh files are not supported"},
           {"2.2 0 8", "3.0 0 8", "3.0 0 8", "MSH version 3.0 is not supported"},
           {"2.2 0 8", "4.0 0 8", "4.0 0 8", "MSH version 4.0 is not supported"},
-          {"$Nodes\n5\n", "$Nodes\n4\n", "5 0.5 0.5 0", "expected '$EndNodes' (the counts above do not match the data)"},
+          {"$Nodes\n5\n", "$Nodes\n4\n", "5 0.5 0.5 0",
+           "expected '$EndNodes' (the counts above do not match the data)"},
           {"$Nodes\n5\n", "$Nodes\n6\n", "$EndNodes", "expected node 6 of 6, got '$EndNodes'"},
           {"$Elements\n8\n", "$Elements\n9\n", "$EndElements", "expected element 9 of 9"},
           {"5 2 2 8 1 1 2 5", "5 2 2 8 1 1 2 9", "5 2 2 8 1 1 2 9",
