@@ -105,13 +105,15 @@ void limit_worker_resources(const MeshLimits& limits) {
   set_limit(RLIMIT_AS, limits.memory_bytes, limits.memory_bytes);
 #endif
   set_limit(RLIMIT_CORE, 0, 0);
-  set_limit(RLIMIT_FSIZE, 0, 0);
-  ::signal(SIGXFSZ, SIG_IGN);  // a write past the limit fails with EFBIG instead of killing
 }
 
 void confine_worker(const std::vector<std::string>& readable_folders) {
   if (::prctl(PR_SET_NO_NEW_PRIVS, 1, 0, 0, 0) != 0)
     throw std::runtime_error(std::string("gmsh worker: no_new_privs failed: ") + std::strerror(errno));
+  // No file can grow from here on (after Gmsh's start-up, whose FLTK rewrites its preference
+  // files: with the limit in place they would be truncated to nothing).
+  set_limit(RLIMIT_FSIZE, 0, 0);
+  ::signal(SIGXFSZ, SIG_IGN);  // a write past the limit fails with EFBIG instead of killing
   restrict_file_system(readable_folders);
   install_syscall_filter();
 }
