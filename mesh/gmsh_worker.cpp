@@ -113,8 +113,16 @@ PlanarMesh run_gmsh_job(const GmshJob& job) {
   posix_spawn_file_actions_adddup2(&actions, errors.child.fd, 2);
   posix_spawnattr_t attributes;
   posix_spawnattr_init(&attributes);
-  posix_spawnattr_setflags(&attributes, POSIX_SPAWN_SETPGROUP);  // its own group: killed as a whole
+  // Its own process group (killed as a whole), no blocked signals and default actions for the
+  // signals that end it at its limits or crashes, whatever the caller set for itself.
+  posix_spawnattr_setflags(&attributes, POSIX_SPAWN_SETPGROUP | POSIX_SPAWN_SETSIGMASK | POSIX_SPAWN_SETSIGDEF);
   posix_spawnattr_setpgroup(&attributes, 0);
+  sigset_t none, defaults;
+  sigemptyset(&none);
+  sigemptyset(&defaults);
+  for (int sig : {SIGXCPU, SIGPIPE, SIGSEGV, SIGABRT, SIGBUS, SIGFPE}) sigaddset(&defaults, sig);
+  posix_spawnattr_setsigmask(&attributes, &none);
+  posix_spawnattr_setsigdefault(&attributes, &defaults);
   const std::string program = worker.string();
   char* argv[] = {const_cast<char*>(program.c_str()), nullptr};
   pid_t pid = 0;
