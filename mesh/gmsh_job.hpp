@@ -25,7 +25,8 @@ struct GmshJob {
   MeshLimits limits;
 };
 
-/// Runs `job` with the Gmsh SDK in this process (the worker's side; see gmsh_worker.hpp). For
+/// Runs `job` with the Gmsh SDK in this process (the worker's side; see gmsh_worker.hpp; only the
+/// worker links the Gmsh library, the encodings below live in gmsh_job_codec.cpp). For
 /// mesh_geo with a mesh size, the element estimate over the bounding box of the surfaces is
 /// checked before meshing.
 PlanarMesh run_gmsh_job_here(const GmshJob& job);
