@@ -9,7 +9,9 @@ MeshFileRequest mesh_file_request(const ConfigNode& domain) {
   MeshFileRequest request;
   const ConfigNode file = domain["file"];
   request.path = file.as_string();
-  if (request.path.is_relative()) request.path = std::filesystem::path(file.file()).parent_path() / request.path;
+  const std::filesystem::path config_folder = std::filesystem::path(file.file()).parent_path();
+  if (request.path.is_relative()) request.path = config_folder / request.path;
+  request.options.config_folder = config_folder.empty() ? "." : config_folder.string();
   std::string extension = request.path.extension().string();
   for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
   // Named at the config key here; read_mesh_file would refuse them too, but at the file.

@@ -16,7 +16,8 @@ struct MeshFileRequest {
   MeshFileOptions options;
 };
 
-/// Reads `file`, `mesh_size` and `recombine` from `domain`; `mesh_size` and `recombine` on a file
+/// Reads `file`, `mesh_size` and `recombine` from `domain` (options.config_folder: the config
+/// file's folder, where a .geo's Includes may also read); `mesh_size` and `recombine` on a file
 /// that is not `.geo` (case-insensitive) are rejected at their key, as is mesh_size <= 0.
 MeshFileRequest mesh_file_request(const ConfigNode& domain);
 

@@ -1,11 +1,10 @@
 #include "mesh/mesh_polygon.hpp"
 
-#include <gmsh.h>
+#include <cmath>
 
 #include "config/config_node.hpp"
 #include "config/errors.hpp"
-#include "mesh/gmsh_model_mesh.hpp"
-#include "mesh/gmsh_session.hpp"
+#include "mesh/gmsh_worker.hpp"
 
 namespace iga {
 
@@ -53,6 +52,10 @@ void check_polygon_domain(const PolygonDomain& domain, const std::string& source
   for (const Loop& hole : domain.holes) loops.push_back(&hole);
   for (std::size_t l = 0; l < loops.size(); ++l) {
     const Loop& loop = *loops[l];
+    for (std::size_t k = 0; k < loop.size(); ++k)
+      if (!std::isfinite(loop[k].x()) || !std::isfinite(loop[k].y()))
+        throw InputError(source + ": " + loop_name(l) + " vertex " + std::to_string(k + 1) + " " +
+                         describe_point(loop[k]) + " is not finite");
     if (loop.size() < 3)
       throw InputError(source + ": the " + loop_name(l) + " polygon needs at least 3 vertices (got " +
                        std::to_string(loop.size()) + ")");
@@ -86,37 +89,27 @@ void check_polygon_domain(const PolygonDomain& domain, const std::string& source
   }
 }
 
-PlanarMesh mesh_polygon(const PolygonDomain& domain, double mesh_size, bool recombine, const std::string& source) {
+PlanarMesh mesh_polygon(const PolygonDomain& domain, double mesh_size, bool recombine, const std::string& source,
+                        const MeshLimits& limits) {
   check_polygon_domain(domain, source);
   if (!(mesh_size > 0.0)) throw InputError(source + ": mesh size must be > 0 (got " + format_number(mesh_size) + ")");
-  PlanarMesh mesh;
-  with_gmsh(source, [&] {
-    std::vector<const Loop*> loops = {&domain.outer};
-    for (const Loop& hole : domain.holes) loops.push_back(&hole);
-    std::vector<int> curve_loops;
-    std::vector<std::vector<int>> loop_lines;
-    for (const Loop* loop : loops) {
-      std::vector<int> points, lines;
-      for (const auto& x : *loop) points.push_back(gmsh::model::geo::addPoint(x.x(), x.y(), 0.0, mesh_size));
-      for (std::size_t k = 0; k < loop->size(); ++k)
-        lines.push_back(gmsh::model::geo::addLine(points[k], points[(k + 1) % loop->size()]));
-      curve_loops.push_back(gmsh::model::geo::addCurveLoop(lines));
-      loop_lines.push_back(std::move(lines));
-    }
-    gmsh::model::geo::addPlaneSurface(curve_loops);
-    gmsh::model::geo::synchronize();
-    // Physical groups on the synchronized model (a later geo synchronize would drop them).
-    for (std::size_t k = 0; k < loop_lines[0].size(); ++k)
-      gmsh::model::setPhysicalName(1, gmsh::model::addPhysicalGroup(1, {loop_lines[0][k]}),
-                                   "side" + std::to_string(k + 1));
-    for (std::size_t l = 1; l < loop_lines.size(); ++l)
-      gmsh::model::setPhysicalName(1, gmsh::model::addPhysicalGroup(1, loop_lines[l]), "hole" + std::to_string(l));
-    gmsh::option::setNumber("Mesh.MeshSizeMax", mesh_size);
-    if (recombine) gmsh::option::setNumber("Mesh.RecombineAll", 1);
-    gmsh::model::mesh::generate(2);
-    mesh = planar_mesh_from_gmsh_model(source);
-  });
-  return mesh;
+  // Shoelace areas: the element estimate is checked before Gmsh allocates anything.
+  auto area = [](const Loop& loop) {
+    double a = 0.0;
+    for (std::size_t i = 0, j = loop.size() - 1; i < loop.size(); j = i++) a += cross(loop[j], loop[i]);
+    return std::abs(a) / 2.0;
+  };
+  double total = area(domain.outer);
+  for (const Loop& hole : domain.holes) total -= area(hole);
+  check_element_estimate(total, mesh_size, limits, source);
+  GmshJob job;
+  job.kind = GmshJob::mesh_polygon;
+  job.source = source;
+  job.mesh_size = mesh_size;
+  job.recombine = recombine;
+  job.polygon = domain;
+  job.limits = limits;
+  return run_gmsh_job_cached(job, {});
 }
 
 }  // namespace iga

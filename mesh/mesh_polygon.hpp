@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "mesh/mesh_limits.hpp"
 #include "mesh/planar_mesh.hpp"
 
 namespace iga {
@@ -16,7 +17,7 @@ struct PolygonDomain {
   std::vector<std::vector<Eigen::Vector2d>> holes;  ///< each strictly inside `outer`
 };
 
-/// Checks that every loop has >= 3 distinct vertices, that no two sides intersect (except
+/// Checks that every vertex is finite, every loop has >= 3 distinct vertices, that no two sides intersect (except
 /// neighbours at their common vertex, in any loop), and that the holes lie inside the outer loop
 /// and outside each other. Throws InputError "<source>: ..." naming the loop and sides
 /// ("outer side 2 ((1, 0)-(1, 1)) crosses hole 1 side 3 (...)").
@@ -26,7 +27,9 @@ void check_polygon_domain(const PolygonDomain& domain, const std::string& source
 /// Mesh.MeshSizeMax; quadrilaterals when `recombine`). Boundary groups: "side1" .. "sideN" for the
 /// outer sides (side k joins outer vertices k and k+1, counted from 1, the last one closes the loop)
 /// and "hole1", "hole2", ... for the whole boundary of each hole. `source` names the domain in
-/// messages.
-PlanarMesh mesh_polygon(const PolygonDomain& domain, double mesh_size, bool recombine, const std::string& source);
+/// messages. The element estimate (area / (sqrt(3)/4 h²)) must be within limits.max_elements; Gmsh
+/// runs in the Gmsh worker (gmsh_worker.hpp) under `limits`.
+PlanarMesh mesh_polygon(const PolygonDomain& domain, double mesh_size, bool recombine, const std::string& source,
+                        const MeshLimits& limits = {});
 
 }  // namespace iga

@@ -8,6 +8,11 @@ namespace iga {
 std::vector<Eigen::Vector2d> planar_coordinates(const std::vector<Eigen::Vector3d>& points,
                                                 const std::vector<std::string>& origins, const std::string& source) {
   std::vector<Eigen::Vector2d> result;
+  for (std::size_t k = 0; k < points.size(); ++k)
+    if (!points[k].allFinite())
+      throw InputError(source + ": vertex " + std::to_string(k) +
+                       (k < origins.size() ? " (" + origins[k] + ")" : std::string()) +
+                       " has a coordinate that is not finite");
   if (points.empty()) return result;
   Eigen::Vector2d lo = points[0].head<2>(), hi = lo;
   for (const auto& p : points) {

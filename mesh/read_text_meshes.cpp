@@ -1,6 +1,7 @@
 #include "mesh/read_text_meshes.hpp"
 
 #include <charconv>
+#include <cmath>
 #include <set>
 #include <sstream>
 #include <vector>
@@ -41,6 +42,7 @@ struct LineReader {
     double x = 0.0;
     const auto [end, error] = std::from_chars(token.data(), token.data() + token.size(), x);
     if (error != std::errc() || end != token.data() + token.size()) fail("expected a number, got '" + token + "'");
+    if (!std::isfinite(x)) fail("the coordinate '" + token + "' is not finite");
     return x;
   }
   long integer(const std::string& token) const {

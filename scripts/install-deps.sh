@@ -10,6 +10,7 @@ packages=(
   libginac-dev libmuparser-dev libplplot-dev plplot-driver-cairo
   libcli11-dev nlohmann-json3-dev libgtest-dev libbenchmark-dev
   libgmsh-dev            # Gmsh SDK: reading .msh, meshing .geo domains and polygons (mesh/)
+  libseccomp-dev         # system-call filter of the Gmsh worker process (mesh/worker_sandbox.cpp)
   libopenblas0-pthread   # optimized BLAS/LAPACK for CHOLMOD's supernodal factorization (reference BLAS is ~5x slower)
 )
 
