@@ -10,57 +10,11 @@
 #include <sstream>
 
 #include "config/errors.hpp"
+#include "mesh/text_line_reader.hpp"
 
 namespace iga {
 
 namespace {
-
-std::vector<std::string> tokens_of(const std::string& line) {
-  std::istringstream s(line.substr(0, line.find('#')));
-  std::vector<std::string> tokens;
-  for (std::string t; s >> t;) tokens.push_back(t);
-  return tokens;
-}
-
-struct LineReader {
-  std::istream& in;
-  std::string source;
-  int line = 0;
-
-  [[noreturn]] void fail(const std::string& message) const {
-    throw InputError(source + ":" + std::to_string(line) + ": " + message);
-  }
-  bool next(std::vector<std::string>& tokens) {
-    for (std::string text; std::getline(in, text);) {
-      ++line;
-      tokens = tokens_of(text);
-      if (!tokens.empty()) return true;
-    }
-    return false;
-  }
-  double number(const std::string& token) const {
-    double x = 0.0;
-    const auto [end, error] = std::from_chars(token.data(), token.data() + token.size(), x);
-    if (error != std::errc() || end != token.data() + token.size() || !std::isfinite(x))
-      fail("expected a number, got '" + token + "'");
-    return x;
-  }
-  long integer(const std::string& token) const {
-    long i = 0;
-    const auto [end, error] = std::from_chars(token.data(), token.data() + token.size(), i);
-    if (error != std::errc() || end != token.data() + token.size()) fail("expected an integer, got '" + token + "'");
-    return i;
-  }
-  /// 1-based (or negative, relative) OBJ index into a list of `count` items.
-  int obj_index(const std::string& token, long count, const char* what) const {
-    const long i = integer(token);
-    const long id = i > 0 ? i - 1 : count + i;
-    if (i == 0 || id < 0 || id >= count)
-      fail(std::string(what) + " " + std::to_string(i) + " does not exist (" + std::to_string(count) +
-           " so far; OBJ indices are 1-based)");
-    return static_cast<int>(id);
-  }
-};
 
 std::string face_size_error(std::size_t n) {
   return "a face with " + std::to_string(n) + " vertices; surface meshes must consist of triangles";
@@ -69,7 +23,7 @@ std::string face_size_error(std::size_t n) {
 }  // namespace
 
 SurfaceMeshFile read_obj_surface(std::istream& in, const std::string& source) {
-  LineReader reader{in, source};
+  TextLineReader reader{in, source};
   const std::set<std::string> ignored = {"vt", "vp", "o", "g", "s", "l", "usemtl", "mtllib"};
   SurfaceMeshFile mesh;
   mesh.source = source;
@@ -128,7 +82,7 @@ SurfaceMeshFile read_obj_surface(std::istream& in, const std::string& source) {
 }
 
 SurfaceMeshFile read_off_surface(std::istream& in, const std::string& source) {
-  LineReader reader{in, source};
+  TextLineReader reader{in, source};
   std::vector<std::string> t;
   if (!reader.next(t) || t[0] != "OFF") reader.fail("expected the header 'OFF'");
   std::vector<std::string> counts(t.begin() + 1, t.end());

@@ -7,51 +7,12 @@
 #include <vector>
 
 #include "config/errors.hpp"
+#include "mesh/text_line_reader.hpp"
 #include "mesh/planar_coordinates.hpp"
 
 namespace iga {
 
 namespace {
-
-/// Splits a line into whitespace-separated tokens, dropping a '#' comment.
-std::vector<std::string> tokens_of(const std::string& line) {
-  std::istringstream s(line.substr(0, line.find('#')));
-  std::vector<std::string> tokens;
-  for (std::string t; s >> t;) tokens.push_back(t);
-  return tokens;
-}
-
-struct LineReader {
-  std::istream& in;
-  std::string source;
-  int line = 0;
-
-  [[noreturn]] void fail(const std::string& message) const {
-    throw InputError(source + ":" + std::to_string(line) + ": " + message);
-  }
-  /// Next line with tokens; false at the end of the input.
-  bool next(std::vector<std::string>& tokens) {
-    for (std::string text; std::getline(in, text);) {
-      ++line;
-      tokens = tokens_of(text);
-      if (!tokens.empty()) return true;
-    }
-    return false;
-  }
-  double number(const std::string& token) const {
-    double x = 0.0;
-    const auto [end, error] = std::from_chars(token.data(), token.data() + token.size(), x);
-    if (error != std::errc() || end != token.data() + token.size()) fail("expected a number, got '" + token + "'");
-    if (!std::isfinite(x)) fail("the coordinate '" + token + "' is not finite");
-    return x;
-  }
-  long integer(const std::string& token) const {
-    long i = 0;
-    const auto [end, error] = std::from_chars(token.data(), token.data() + token.size(), i);
-    if (error != std::errc() || end != token.data() + token.size()) fail("expected an integer, got '" + token + "'");
-    return i;
-  }
-};
 
 std::string cell_kind_error(std::size_t n) {
   return "a face with " + std::to_string(n) + " vertices; only triangles (3) and quadrilaterals (4) are supported";
@@ -60,7 +21,7 @@ std::string cell_kind_error(std::size_t n) {
 }  // namespace
 
 PlanarMesh read_obj_mesh(std::istream& in, const std::string& source) {
-  LineReader reader{in, source};
+  TextLineReader reader{in, source};
   const std::set<std::string> ignored = {"vt", "vn", "vp", "o", "g", "s", "l", "usemtl", "mtllib"};
   std::vector<Eigen::Vector3d> points;
   std::vector<std::string> point_origins;
@@ -97,7 +58,7 @@ PlanarMesh read_obj_mesh(std::istream& in, const std::string& source) {
 }
 
 PlanarMesh read_off_mesh(std::istream& in, const std::string& source) {
-  LineReader reader{in, source};
+  TextLineReader reader{in, source};
   std::vector<std::string> t;
   if (!reader.next(t) || t[0] != "OFF") reader.fail("expected the header 'OFF'");
   // The counts may follow the header on the same line.
