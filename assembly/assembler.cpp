@@ -48,14 +48,12 @@ SparseMatrix Assembler::matrix(BilinearForm form, int quad_degree) const {
 SplitMatrix Assembler::matrix_extended(BilinearForm form, int quad_degree) const {
   std::vector<long double> values(pattern_.nonZeros(), 0.0L);
   struct Scratch {
-    Eigen::MatrixXd closed;
     MatrixXld local;
     std::vector<int> dofs;
   };
   for_each_element<Scratch>(flags_for(form), [&](int e, ElementValues& ev, Scratch& s) {
-    if (space_.closed_form_element_matrix(e, form, s.closed)) {
+    if (space_.closed_form_element_matrix_extended(e, form, s.local)) {
       s.dofs.assign(table_.begin(e), table_.begin(e + 1));
-      s.local = s.closed.cast<long double>();
       scatter_add(s.dofs, s.local, pattern_, values);
       return;
     }
