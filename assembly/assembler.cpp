@@ -45,6 +45,25 @@ SparseMatrix Assembler::matrix(BilinearForm form, int quad_degree) const {
   return A;
 }
 
+SplitMatrix Assembler::matrix_extended(BilinearForm form, int quad_degree) const {
+  std::vector<long double> values(pattern_.nonZeros(), 0.0L);
+  struct Scratch {
+    MatrixXld local;
+    std::vector<int> dofs;
+  };
+  for_each_element<Scratch>(flags_for(form), [&](int e, ElementValues& ev, Scratch& s) {
+    if (space_.closed_form_element_matrix_extended(e, form, s.local)) {
+      s.dofs.assign(table_.begin(e), table_.begin(e + 1));
+      scatter_add(s.dofs, s.local, pattern_, values);
+      return;
+    }
+    ev.reinit(e, *space_.quadrature(e, quad_degree));
+    element_matrix_extended(form, ev, s.local);
+    scatter_add(ev.dofs(), s.local, pattern_, values);
+  });
+  return split_matrix(pattern_, values);
+}
+
 Eigen::VectorXd Assembler::load(const ScalarField& f, int quad_degree) const {
   // Geometry first, then the transposed evaluation Σ_q f(x_q) JxW_q N_i(x_q) (Space::Evaluator::
   // integrate_values), so a space never has to tabulate all its functions for a load vector.

@@ -11,6 +11,7 @@
 #include "assembly/fields.hpp"
 #include "assembly/integrators.hpp"
 #include "assembly/sparsity.hpp"
+#include "assembly/split_matrix.hpp"
 
 namespace iga {
 
@@ -21,6 +22,10 @@ class Assembler {
 
   /// Global matrix of `form`, integrated with rules of polynomial degree `quad_degree`.
   SparseMatrix matrix(BilinearForm form, int quad_degree) const;
+  /// The same matrix with element matrices and sums in long double, kept as high + low parts:
+  /// what the residual of iterative refinement needs (see split_matrix.hpp). About as fast as
+  /// `matrix` when the basis evaluation dominates; the long double products cost more at high degree.
+  SplitMatrix matrix_extended(BilinearForm form, int quad_degree) const;
   /// Load vector ∫ f N_i.
   Eigen::VectorXd load(const ScalarField& f, int quad_degree) const;
 

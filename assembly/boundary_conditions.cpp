@@ -82,6 +82,21 @@ SparseMatrix free_basis(const Constraints& c, int dim) {
   return T;
 }
 
+/// Iterative refinement of the projection with residuals from the unsummed integrals in long
+/// double: a few corrections remove the round-off of M's sums and of its factorization.
+void refine_projection(const Eigen::SimplicialLDLT<SparseMatrix>& ldlt, const std::vector<Eigen::Triplet<double>>& m,
+                       const std::vector<std::pair<int, double>>& rhs, Eigen::VectorXd& u) {
+  std::vector<long double> r(u.size());
+  Eigen::VectorXd rounded(u.size());
+  for (int step = 0; step < 3; ++step) {
+    std::fill(r.begin(), r.end(), 0.0L);
+    for (const auto& [i, v] : rhs) r[i] += v;
+    for (const auto& t : m) r[t.row()] -= static_cast<long double>(t.value()) * u(t.col());
+    for (int i = 0; i < u.size(); ++i) rounded(i) = static_cast<double>(r[i]);
+    u += ldlt.solve(rounded);
+  }
+}
+
 }  // namespace
 
 Constraints impose_essential(const Space& space, const EssentialBoundary& boundary, const BoundaryField& g,
@@ -160,7 +175,8 @@ Constraints impose_essential(const Space& space, const EssentialBoundary& bounda
   Eigen::SimplicialLDLT<SparseMatrix> ldlt(M);
   const double dmax = ldlt.info() == Eigen::Success ? ldlt.vectorD().cwiseAbs().maxCoeff() : 0.0;
   if (ldlt.info() == Eigen::Success && ldlt.vectorD().minCoeff() > 1e-13 * dmax) {
-    const Eigen::VectorXd u = ldlt.solve(r);
+    Eigen::VectorXd u = ldlt.solve(r);
+    refine_projection(ldlt, triplets, rhs_entries, u);
     for (int k = 0; k < m; ++k) c.values(order[k]) = u(k);
     c.constrained = order;
     std::sort(c.constrained.begin(), c.constrained.end());
@@ -172,19 +188,40 @@ Constraints impose_essential(const Space& space, const EssentialBoundary& bounda
   return c;
 }
 
+Eigen::VectorXd reduced_residual(const SplitMatrix& A, const Eigen::VectorXd& b, const Constraints& c,
+                                 const Eigen::VectorXd& u_free) {
+  const int nf = static_cast<int>(c.free.size());
+  std::vector<long double> x(c.values.data(), c.values.data() + c.values.size());
+  for (int k = 0; k < nf; ++k) x[c.free[k]] = u_free(k);
+  for (const auto& t : c.basis_change) x[t.row()] += static_cast<long double>(t.value()) * u_free(t.col());
+  const std::vector<long double> r = residual_extended(A, x, b);
+  std::vector<long double> out(nf);
+  for (int k = 0; k < nf; ++k) out[k] = r[c.free[k]];
+  for (const auto& t : c.basis_change) out[t.col()] += static_cast<long double>(t.value()) * r[t.row()];
+  Eigen::VectorXd rounded(nf);
+  for (int k = 0; k < nf; ++k) rounded(k) = static_cast<double>(out[k]);
+  return rounded;
+}
+
 void reduce_system(const SparseMatrix& A, const Eigen::VectorXd& b, const Constraints& c, SparseMatrix& A_free,
                    Eigen::VectorXd& b_free) {
+  reduce_system(SplitMatrix{A, Eigen::VectorXd()}, b, c, A_free, b_free);
+}
+
+void reduce_system(const SplitMatrix& K, const Eigen::VectorXd& b, const Constraints& c, SparseMatrix& A_free,
+                   Eigen::VectorXd& b_free) {
+  const SparseMatrix& A = K.high;
   const int dim = static_cast<int>(A.rows());
+  const int nf = static_cast<int>(c.free.size());
+  b_free = reduced_residual(K, b, c, Eigen::VectorXd::Zero(nf));
   if (!c.basis_change.empty()) {  // rare: dependent boundary traces (see impose_essential)
     const SparseMatrix T = free_basis(c, dim);
     const SparseMatrix AT = A * T;
     A_free = SparseMatrix(T.transpose() * AT);
-    b_free = T.transpose() * (b - A * c.values);
     return;
   }
   std::vector<int> free_of(dim, -1);
-  for (int k = 0; k < static_cast<int>(c.free.size()); ++k) free_of[c.free[k]] = k;
-  const int nf = static_cast<int>(c.free.size());
+  for (int k = 0; k < nf; ++k) free_of[c.free[k]] = k;
 
   // Column by column: keep entries whose row and column are both free (inner order stays sorted).
   A_free.resize(nf, nf);
@@ -206,9 +243,6 @@ void reduce_system(const SparseMatrix& A, const Eigen::VectorXd& b, const Constr
         ++pos;
       }
   }
-  const Eigen::VectorXd lifted = A * c.values;
-  b_free.resize(nf);
-  for (int k = 0; k < nf; ++k) b_free(k) = b(c.free[k]) - lifted(c.free[k]);
 }
 
 Eigen::VectorXd expand_solution(const Eigen::VectorXd& u_free, const Constraints& c) {

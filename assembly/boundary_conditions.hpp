@@ -10,7 +10,11 @@
 ///  2. Their coefficients minimise  Σ_value-edges ∫ (u_h − g)² ds + Σ_normal-edges h_E² ∫ (∂u_h/∂n − g_n)² ds
 ///     over the constrained functions (all others held at zero): a boundary L2 projection. The h_E²
 ///     weight makes both terms scale alike, so both data are matched to optimal order.
-///  3. The constrained coefficients are fixed and eliminated: A_ff u_f = b_f − A_fc u_c.
+///  3. The constrained coefficients are fixed and eliminated: A_ff u_f = b_f − A_fc u_c. The
+///     right-hand side and every refinement residual are evaluated on the whole system,
+///     b − A (u_c + u_f), in long double with A kept in extended precision (SplitMatrix): A_fc u_c
+///     cancels to O(h²) from O(h⁻²) terms for the biharmonic problem, and a residual that forgot
+///     A's own rounding would leave an error floor growing like h⁻⁴.
 /// The projection matrix is SPD when the boundary traces of those functions are linearly
 /// independent. When they are not (e.g. vertex functions of G1 spaces where boundary parts with
 /// different conditions meet), a column-pivoted QR picks an independent subset to constrain, and each
@@ -22,6 +26,7 @@
 
 #include "assembly/fields.hpp"
 #include "assembly/sparsity.hpp"
+#include "assembly/split_matrix.hpp"
 
 namespace iga {
 
@@ -48,9 +53,18 @@ struct Constraints {
 Constraints impose_essential(const Space& space, const EssentialBoundary& boundary, const BoundaryField& g,
                              const BoundaryField& g_n, int quad_degree);
 
-/// The system on the free coefficients: A_ff and b_f − A_fc u_c.
+/// The system on the free coefficients: A_ff (from A.high) and b_f − A_fc u_c (reduced_residual at 0).
+void reduce_system(const SplitMatrix& A, const Eigen::VectorXd& b, const Constraints& c, SparseMatrix& A_free,
+                   Eigen::VectorXd& b_free);
+/// The same for a matrix known only in double.
 void reduce_system(const SparseMatrix& A, const Eigen::VectorXd& b, const Constraints& c, SparseMatrix& A_free,
                    Eigen::VectorXd& b_free);
+
+/// The residual of the reduced system for the free coefficients u_free, computed on the whole
+/// system: the free rows (Tᵀ with a basis change) of b − A (values + T u_free), accumulated in
+/// long double with A = high + low, rounded once.
+Eigen::VectorXd reduced_residual(const SplitMatrix& A, const Eigen::VectorXd& b, const Constraints& c,
+                                 const Eigen::VectorXd& u_free);
 
 /// The full coefficient vector from the free solution and the fixed values.
 Eigen::VectorXd expand_solution(const Eigen::VectorXd& u_free, const Constraints& c);

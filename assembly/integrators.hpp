@@ -8,6 +8,7 @@
 
 #include "spaces/bilinear_form.hpp"
 #include "assembly/fields.hpp"
+#include "assembly/split_matrix.hpp"
 #include "spaces/element_values.hpp"
 
 namespace iga {
@@ -19,6 +20,10 @@ std::string to_string(BilinearForm form);
 
 /// Local matrix of `form` on the element last evaluated by `ev` (n x n, n = ev.num_functions()).
 void element_matrix(BilinearForm form, const ElementValues& ev, Eigen::MatrixXd& local);
+
+/// The same local matrix with the quadrature sums in long double (the basis values stay double):
+/// the exact Gram matrix of the evaluated functions, to long double precision.
+void element_matrix_extended(BilinearForm form, const ElementValues& ev, MatrixXld& local);
 
 /// Local load ∫ f v (n entries).
 void element_load(const ScalarField& f, const ElementValues& ev, Eigen::VectorXd& local);

@@ -29,11 +29,10 @@ Eigen::VectorXd residual_extended(const SparseMatrix& A, const Eigen::VectorXd& 
 /// Iterative refinement with the factor in `solver`: apply corrections while each is smaller than the
 /// last, stop once one shrinks by less than 4x (round-off reached) or drops below ε ||x||.
 template <class Solver>
-void refine(const Solver& solver, const SparseMatrix& A, const Eigen::VectorXd& b, Eigen::VectorXd& x,
-            SolveReport& report) {
+void refine(const Solver& solver, const ResidualFunction& residual, Eigen::VectorXd& x, SolveReport& report) {
   double previous = x.norm();
   for (int step = 0; step < max_refinement_steps; ++step) {
-    const Eigen::VectorXd d = solver.solve(residual_extended(A, x, b));
+    const Eigen::VectorXd d = solver.solve(residual(x));
     const double size = d.norm();
     if (!d.allFinite() || !(size < previous)) return;
     x += d;
@@ -44,8 +43,8 @@ void refine(const Solver& solver, const SparseMatrix& A, const Eigen::VectorXd& 
 }
 
 template <class Solver>
-bool try_solve(Solver& solver, const SparseMatrix& A, const Eigen::VectorXd& b, Eigen::VectorXd& x,
-               SolveReport& report) {
+bool try_solve(Solver& solver, const SparseMatrix& A, const Eigen::VectorXd& b, const ResidualFunction& residual,
+               Eigen::VectorXd& x, SolveReport& report) {
   auto t0 = Clock::now();
   solver.compute(A);
   report.t_factorize = seconds_since(t0);
@@ -53,7 +52,7 @@ bool try_solve(Solver& solver, const SparseMatrix& A, const Eigen::VectorXd& b, 
   t0 = Clock::now();
   x = solver.solve(b);
   const bool ok = solver.info() == Eigen::Success && x.allFinite();
-  if (ok) refine(solver, A, b, x, report);
+  if (ok) refine(solver, residual, x, report);
   report.t_solve = seconds_since(t0);
   return ok;
 }
@@ -61,7 +60,9 @@ bool try_solve(Solver& solver, const SparseMatrix& A, const Eigen::VectorXd& b, 
 }  // namespace
 
 Eigen::VectorXd solve_linear_system(const SparseMatrix& A, const Eigen::VectorXd& b, SolverKind kind,
-                                    SolveReport& report) {
+                                    SolveReport& report, const ResidualFunction& given_residual) {
+  const ResidualFunction residual =
+      given_residual ? given_residual : [&](const Eigen::VectorXd& x) { return residual_extended(A, x, b); };
   Eigen::VectorXd x;
   if (A.rows() == 0) {
     report.method = "none (no free unknowns)";
@@ -71,17 +72,17 @@ Eigen::VectorXd solve_linear_system(const SparseMatrix& A, const Eigen::VectorXd
   if (kind == SolverKind::cholmod) {
     Eigen::CholmodSupernodalLLT<SparseMatrix, Eigen::Lower> llt;
     llt.cholmod().print = 0;  // its warnings would go to stdout; a failure is reported by the fallback
-    ok = try_solve(llt, A, b, x, report);
+    ok = try_solve(llt, A, b, residual, x, report);
     report.method = "cholmod";
   }
   if (!ok) {
     Eigen::UmfPackLU<SparseMatrix> lu;
-    ok = try_solve(lu, A, b, x, report);
+    ok = try_solve(lu, A, b, residual, x, report);
     report.method = kind == SolverKind::cholmod ? "umfpack (cholmod failed)" : "umfpack";
   }
   if (!ok) throw NumericalError("the system matrix is singular: " + report.method + " could not factorize it");
   const double bnorm = b.norm();
-  const double rnorm = residual_extended(A, x, b).norm();
+  const double rnorm = residual(x).norm();
   report.relative_residual = bnorm > 0 ? rnorm / bnorm : rnorm;
   if (!(report.relative_residual < 1e-6))
     throw NumericalError("linear solve inaccurate: relative residual " + std::to_string(report.relative_residual) +

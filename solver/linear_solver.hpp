@@ -7,6 +7,7 @@
 /// error floor well above what the assembled system determines.
 
 #include <Eigen/Core>
+#include <functional>
 #include <string>
 
 #include "assembly/sparsity.hpp"
@@ -23,12 +24,16 @@ struct SolveReport {
   int refinement_steps = 0;     ///< iterative-refinement corrections applied
 };
 
+/// r(x) = b − A x evaluated more accurately than the double A allows, e.g. on the whole system
+/// before elimination with the matrix kept in extended precision (reduced_residual).
+using ResidualFunction = std::function<Eigen::VectorXd(const Eigen::VectorXd& x)>;
+
 /// Solve A x = b (A stored with both triangles). With cholmod, a failed factorization (matrix not
 /// positive definite) falls back to UMFPACK. Then x ← x + A⁻¹ r with r = b − A x in long double
-/// while the corrections keep shrinking (at most max_refinement_steps). Throws NumericalError when
-/// every method fails or the residual is not small.
+/// (or r = residual(x) when given) while the corrections keep shrinking (at most
+/// max_refinement_steps). Throws NumericalError when every method fails or the residual is not small.
 constexpr int max_refinement_steps = 8;
 Eigen::VectorXd solve_linear_system(const SparseMatrix& A, const Eigen::VectorXd& b, SolverKind kind,
-                                    SolveReport& report);
+                                    SolveReport& report, const ResidualFunction& residual = {});
 
 }  // namespace iga

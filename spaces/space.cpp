@@ -115,4 +115,12 @@ void append_triangle_grid(SampleCell& cell, const Point2& a, const Point2& b, co
     }
 }
 
+bool Space::closed_form_element_matrix_extended(int element, BilinearForm form,
+                                               Eigen::Matrix<long double, Eigen::Dynamic, Eigen::Dynamic>& local) const {
+  Eigen::MatrixXd rounded;
+  if (!closed_form_element_matrix(element, form, rounded)) return false;
+  local = rounded.cast<long double>();
+  return true;
+}
+
 }  // namespace iga

@@ -194,6 +194,11 @@ class Space {
   virtual bool closed_form_element_matrix(int /*element*/, BilinearForm /*form*/, Eigen::MatrixXd& /*local*/) const {
     return false;
   }
+  /// The same closed form in long double, not rounded to double: the residuals of iterative
+  /// refinement need the matrix beyond double precision (assembly/split_matrix.hpp). The default
+  /// widens closed_form_element_matrix; a space with a closed form should override it.
+  virtual bool closed_form_element_matrix_extended(int element, BilinearForm form,
+                                                   Eigen::Matrix<long double, Eigen::Dynamic, Eigen::Dynamic>& local) const;
 
   /// The largest jump of the physical gradient of Σ c_i N_i across interior element edges, for
   /// spaces that can locate both sides of their edges (a C1 space has it at round-off). Reported

@@ -2,6 +2,7 @@
 
 #include <Eigen/LU>
 #include <cmath>
+#include <type_traits>
 #include <vector>
 
 #include "spaces/ws4/ws4_basis.hpp"
@@ -14,7 +15,6 @@ namespace {
 int hessian_index(int a, int b) { return a + b; }
 
 using Real = long double;
-using MatrixL = Eigen::Matrix<Real, Eigen::Dynamic, Eigen::Dynamic>;
 
 /// 5-point Gauss–Legendre on [0, 1] in long double (exact to degree 9).
 struct Gauss5 {
@@ -37,7 +37,9 @@ struct Gauss5 {
 /// long double. A double computation leaves round-off of ε Σ_q w_q |∂²B_i ∂²B_j| (x_q) in the
 /// entries, much more than ε |K_ij| where the pieces cancel, and that error does not annihilate
 /// linear functions: the biharmonic system amplifies it into an L2 error floor.
-Ws4ReferenceMatrices build() {
+// The ten integral tables ∫ table_k table_lᵀ below, in long double (computed once).
+const std::vector<MatrixL>& reference_sums() {
+  static const std::vector<MatrixL> sums = [] {
   const Ws4Basis& basis = Ws4Basis::reference();
   const Ws4Split& split = basis.split();
   const Gauss5 g;
@@ -86,14 +88,27 @@ Ws4ReferenceMatrices build() {
     for (int p = 0; p < 10; ++p)
       sums[p].noalias() += table[pairs[p][0]] * weights.asDiagonal() * table[pairs[p][1]].transpose();
   }
-  // Round once; a symmetric integrand gives an exactly symmetric matrix.
+  return sums;
+  }();
+  return sums;
+}
+
+const int kPairs[10][2] = {{0, 0}, {1, 1}, {1, 2}, {2, 2}, {3, 3}, {3, 4}, {3, 5}, {4, 4}, {4, 5}, {5, 5}};
+
+/// The reference matrices from the sums, in double (rounded once) or long double.
+template <class Matrices>
+Matrices build() {
+  using Matrix = std::remove_reference_t<decltype(Matrices{}.mass)>;
+  using Scalar = typename Matrix::Scalar;
+  const std::vector<MatrixL>& sums = reference_sums();
+  const auto& pairs = kPairs;
+  // A symmetric integrand gives an exactly symmetric matrix.
   auto rounded = [&](int p) {
-    Eigen::MatrixXd m = sums[p].cast<double>();
-    if (pairs[p][0] == pairs[p][1])
-      m = m.triangularView<Eigen::Upper>().toDenseMatrix().selfadjointView<Eigen::Upper>();
+    Matrix m = sums[p].template cast<Scalar>();
+    if (pairs[p][0] == pairs[p][1]) m = m.template triangularView<Eigen::Upper>().toDenseMatrix().template selfadjointView<Eigen::Upper>();
     return m;
   };
-  Ws4ReferenceMatrices m;
+  Matrices m;
   m.mass = rounded(0);
   m.grad[0][0] = rounded(1);
   m.grad[0][1] = rounded(2);
@@ -109,20 +124,18 @@ Ws4ReferenceMatrices build() {
   return m;
 }
 
-}  // namespace
-
-const Ws4ReferenceMatrices& Ws4ReferenceMatrices::get() {
-  static const Ws4ReferenceMatrices m = build();
-  return m;
-}
-
-Eigen::MatrixXd ws4_form_matrix(BilinearForm form, const Eigen::Matrix2d& jacobian) {
-  const Ws4ReferenceMatrices& r = Ws4ReferenceMatrices::get();
-  const double det = std::abs(jacobian.determinant());
+/// Element matrix of `form` from reference matrices `r`, in their scalar type.
+template <class Matrices>
+auto form_matrix(const Matrices& r, BilinearForm form, const Eigen::Matrix2d& jacobian) {
+  using Matrix = std::remove_cv_t<std::remove_reference_t<decltype(r.mass)>>;
+  using Scalar = typename Matrix::Scalar;
+  using Matrix2 = Eigen::Matrix<Scalar, 2, 2>;
+  const Matrix2 jac = jacobian.cast<Scalar>();
+  const Scalar det = std::abs(jac.determinant());
   // ∇_x = J^{-T} ∇_ξ and H_x = J^{-T} H_ξ J^{-1}; G = J^{-1} J^{-T} collects the metric.
-  const Eigen::Matrix2d jinv = jacobian.inverse();
-  const Eigen::Matrix2d g = jinv * jinv.transpose();
-  Eigen::MatrixXd k = Eigen::MatrixXd::Zero(Ws4Basis::size, Ws4Basis::size);
+  const Matrix2 jinv = jac.inverse();
+  const Matrix2 g = jinv * jinv.transpose();
+  Matrix k = Matrix::Zero(Ws4Basis::size, Ws4Basis::size);
   switch (form) {
     case BilinearForm::mass:
       k = det * r.mass;
@@ -133,7 +146,7 @@ Eigen::MatrixXd ws4_form_matrix(BilinearForm form, const Eigen::Matrix2d& jacobi
       break;
     case BilinearForm::bilaplace: {
       // Δ_x B = Σ_ab G_ab ∂_ab B = G_00 ∂ξξ + 2 G_01 ∂ξη + G_11 ∂ηη.
-      const double alpha[3] = {g(0, 0), 2 * g(0, 1), g(1, 1)};
+      const Scalar alpha[3] = {g(0, 0), 2 * g(0, 1), g(1, 1)};
       for (int p = 0; p < 3; ++p)
         for (int q = 0; q < 3; ++q) k += (det * alpha[p] * alpha[q]) * r.hess[p][q];
       break;
@@ -150,7 +163,9 @@ Eigen::MatrixXd ws4_form_matrix(BilinearForm form, const Eigen::Matrix2d& jacobi
   return k;
 }
 
-Eigen::MatrixXd symmetric_congruence_extended(const Eigen::MatrixXd& c, const Eigen::MatrixXd& k) {
+/// (Cᵀ K C) in long double for a symmetric K, over the nonzeros of C.
+template <class MatrixK>
+void congruence_long(const Eigen::MatrixXd& c, const MatrixK& k, MatrixL& out) {
   const int n = static_cast<int>(c.rows());
   // Only the nonzeros of C enter (a WS4 extraction has ≈ 800 of 2601): skipping exact zeros
   // changes no term of the long double sums, and cuts the work ≈ 4×.
@@ -177,21 +192,47 @@ Eigen::MatrixXd symmetric_congruence_extended(const Eigen::MatrixXd& c, const Ei
   t.resize(static_cast<size_t>(n) * n);
   for (int m = 0; m < n; ++m)
     for (int j = 0; j < n; ++j) {
-      const double* kj = k.col(j).data();
+      const auto* kj = k.col(j).data();
       long double s = 0;
       for (int e = start[m]; e < start[m + 1]; ++e) s += static_cast<long double>(nz[e].value) * kj[nz[e].row];
       t[static_cast<size_t>(m) * n + j] = s;
     }
-  Eigen::MatrixXd out(n, n);
+  out.resize(n, n);
   for (int m = 0; m < n; ++m) {
     const long double* row = &t[static_cast<size_t>(m) * n];
     for (int p = m; p < n; ++p) {
       long double s = 0;
       for (int e = start[p]; e < start[p + 1]; ++e) s += static_cast<long double>(nz[e].value) * row[nz[e].row];
-      out(m, p) = out(p, m) = static_cast<double>(s);
+      out(m, p) = out(p, m) = s;
     }
   }
-  return out;
+}
+
+}  // namespace
+
+const Ws4ReferenceMatrices& Ws4ReferenceMatrices::get() {
+  static const Ws4ReferenceMatrices m = build<Ws4ReferenceMatrices>();
+  return m;
+}
+
+const Ws4ReferenceMatricesExtended& Ws4ReferenceMatricesExtended::get() {
+  static const Ws4ReferenceMatricesExtended m = build<Ws4ReferenceMatricesExtended>();
+  return m;
+}
+
+Eigen::MatrixXd ws4_form_matrix(BilinearForm form, const Eigen::Matrix2d& jacobian) {
+  return form_matrix(Ws4ReferenceMatrices::get(), form, jacobian);
+}
+
+Eigen::MatrixXd symmetric_congruence_extended(const Eigen::MatrixXd& c, const Eigen::MatrixXd& k) {
+  thread_local MatrixL out;
+  congruence_long(c, k, out);
+  return out.cast<double>();
+}
+
+void ws4_element_matrix_extended(BilinearForm form, const Eigen::Matrix2d& jacobian, const Eigen::MatrixXd& c,
+                                 MatrixL& local) {
+  congruence_long(c, form_matrix(Ws4ReferenceMatricesExtended::get(), form, jacobian), local);
 }
 
 }  // namespace iga::ws4

@@ -20,6 +20,16 @@ struct Ws4ReferenceMatrices {
   static const Ws4ReferenceMatrices& get();
 };
 
+using MatrixL = Eigen::Matrix<long double, Eigen::Dynamic, Eigen::Dynamic>;
+
+/// The same integrals before rounding to double, for element matrices kept in long double.
+struct Ws4ReferenceMatricesExtended {
+  MatrixL mass;
+  MatrixL grad[2][2];
+  MatrixL hess[3][3];
+  static const Ws4ReferenceMatricesExtended& get();
+};
+
 /// Element matrix of `form` in the basis B_i of the triangle x = P0 + J ξ (51 x 51).
 Eigen::MatrixXd ws4_form_matrix(BilinearForm form, const Eigen::Matrix2d& jacobian);
 
@@ -28,5 +38,12 @@ Eigen::MatrixXd ws4_form_matrix(BilinearForm form, const Eigen::Matrix2d& jacobi
 /// different sizes, and a double product loses digits to cancellation that the biharmonic system
 /// (conditioned like h⁻⁴) then amplifies into an L2 error floor.
 Eigen::MatrixXd symmetric_congruence_extended(const Eigen::MatrixXd& c, const Eigen::MatrixXd& k);
+
+/// Cᵀ K C with K the element matrix of `form` on the triangle of `jacobian`, everything in long
+/// double and not rounded: the residuals of iterative refinement need the element matrices beyond
+/// double, or their rounding (which does not annihilate polynomials) returns as an error floor
+/// growing like h⁻⁴.
+void ws4_element_matrix_extended(BilinearForm form, const Eigen::Matrix2d& jacobian, const Eigen::MatrixXd& c,
+                                 MatrixL& local);
 
 }  // namespace iga::ws4

@@ -342,6 +342,12 @@ bool Ws4Space::closed_form_element_matrix(int element, BilinearForm form, Eigen:
   return true;
 }
 
+bool Ws4Space::closed_form_element_matrix_extended(int element, BilinearForm form,
+                                                  Eigen::Matrix<long double, Eigen::Dynamic, Eigen::Dynamic>& local) const {
+  ws4_element_matrix_extended(form, jacobian(element), extraction_[element], local);
+  return true;
+}
+
 RulePtr Ws4Space::quadrature(int, int degree) const {
   degree = std::max(degree, 0);
   std::lock_guard<std::mutex> lock(rule_mutex_);

@@ -68,6 +68,8 @@ class Ws4Space final : public Space {
   /// C_Kᵀ K_B C_K with K_B from the universal reference matrices, the product accumulated in long
   /// double (ws4_reference_matrices.hpp).
   bool closed_form_element_matrix(int element, BilinearForm form, Eigen::MatrixXd& local) const override;
+  bool closed_form_element_matrix_extended(int element, BilinearForm form,
+                                           Eigen::Matrix<long double, Eigen::Dynamic, Eigen::Dynamic>& local) const override;
 
   /// Draws the element on its split (ws4_sample_cell.hpp): the 342 fan triangles over the 178 split
   /// vertices, each subdivided further for resolution >= 16, so linear cells never straddle a piece.
