@@ -29,67 +29,51 @@ void add_weighted_product(const Eigen::MatrixXd& A, const Eigen::MatrixXd& B, co
   local.noalias() += factor * (A * w.asDiagonal()) * B.transpose();
 }
 // local += factor A diag(w) Bᵀ in long double.
-void add_weighted_product_extended(const Eigen::MatrixXd& A, const Eigen::MatrixXd& B, const Eigen::VectorXd& w,
-                                   long double factor, MatrixXld& local) {
+void add_weighted_product(const Eigen::MatrixXd& A, const Eigen::MatrixXd& B, const Eigen::VectorXd& w,
+                          long double factor, MatrixXld& local) {
   thread_local MatrixXld aw, b;
   aw = A.cast<long double>() * w.cast<long double>().asDiagonal();
   b = B.cast<long double>();
   local.noalias() += factor * aw * b.transpose();
 }
-}  // namespace
 
-void element_matrix_extended(BilinearForm form, const ElementValues& ev, MatrixXld& local) {
+// The element matrix of `form`, accumulated in the scalar type of `local` (double, or long double
+// for the extended-precision residuals).
+template <class Local>
+void form_matrix(BilinearForm form, const ElementValues& ev, Local& local) {
+  using Scalar = typename Local::Scalar;
   const PointValues& v = ev.values();
   const Eigen::VectorXd& w = ev.jxw();
   const int n = ev.num_functions();
   local.setZero(n, n);
   switch (form) {
     case BilinearForm::mass:
-      add_weighted_product_extended(v.value, v.value, w, 1.0L, local);
+      add_weighted_product(v.value, v.value, w, Scalar(1), local);
       break;
     case BilinearForm::laplace:
-      add_weighted_product_extended(v.dx, v.dx, w, 1.0L, local);
-      add_weighted_product_extended(v.dy, v.dy, w, 1.0L, local);
+      add_weighted_product(v.dx, v.dx, w, Scalar(1), local);
+      add_weighted_product(v.dy, v.dy, w, Scalar(1), local);
       break;
     case BilinearForm::bilaplace: {
       // Δφ rounded once per function and point: a perturbation of the functions, not of K.
       const Eigen::MatrixXd lap = v.dxx + v.dyy;
-      add_weighted_product_extended(lap, lap, w, 1.0L, local);
+      add_weighted_product(lap, lap, w, Scalar(1), local);
       break;
     }
     case BilinearForm::hessian:
-      add_weighted_product_extended(v.dxx, v.dxx, w, 1.0L, local);
-      add_weighted_product_extended(v.dxy, v.dxy, w, 2.0L, local);
-      add_weighted_product_extended(v.dyy, v.dyy, w, 1.0L, local);
+      add_weighted_product(v.dxx, v.dxx, w, Scalar(1), local);
+      add_weighted_product(v.dxy, v.dxy, w, Scalar(2), local);
+      add_weighted_product(v.dyy, v.dyy, w, Scalar(1), local);
       break;
   }
+}
+}  // namespace
+
+void element_matrix_extended(BilinearForm form, const ElementValues& ev, MatrixXld& local) {
+  form_matrix(form, ev, local);
 }
 
-void element_matrix(BilinearForm form, const ElementValues& ev, Eigen::MatrixXd& local) {
-  const PointValues& v = ev.values();
-  const Eigen::VectorXd& w = ev.jxw();
-  const int n = ev.num_functions();
-  local.setZero(n, n);
-  switch (form) {
-    case BilinearForm::mass:
-      add_weighted_product(v.value, v.value, w, 1.0, local);
-      break;
-    case BilinearForm::laplace:
-      add_weighted_product(v.dx, v.dx, w, 1.0, local);
-      add_weighted_product(v.dy, v.dy, w, 1.0, local);
-      break;
-    case BilinearForm::bilaplace: {
-      const Eigen::MatrixXd lap = v.dxx + v.dyy;
-      add_weighted_product(lap, lap, w, 1.0, local);
-      break;
-    }
-    case BilinearForm::hessian:
-      add_weighted_product(v.dxx, v.dxx, w, 1.0, local);
-      add_weighted_product(v.dxy, v.dxy, w, 2.0, local);
-      add_weighted_product(v.dyy, v.dyy, w, 1.0, local);
-      break;
-  }
-}
+void element_matrix(BilinearForm form, const ElementValues& ev, Eigen::MatrixXd& local) { form_matrix(form, ev, local); }
 
 void element_load(const ScalarField& f, const ElementValues& ev, Eigen::VectorXd& local) {
   const PointValues& v = ev.values();

@@ -97,21 +97,4 @@ std::vector<std::vector<int>> colour_elements(const ElementDofTable& table, int 
   return groups;
 }
 
-void scatter_add(const std::vector<int>& dofs, const Eigen::MatrixXd& local, SparseMatrix& matrix) {
-  const int n = static_cast<int>(dofs.size());
-  const int* outer = matrix.outerIndexPtr();
-  const int* inner = matrix.innerIndexPtr();
-  double* values = matrix.valuePtr();
-  for (int j = 0; j < n; ++j) {
-    const int col = dofs[j];
-    const int* first = inner + outer[col];
-    const int* last = inner + outer[col + 1];
-    for (int i = 0; i < n; ++i) {
-      const int* pos = std::lower_bound(first, last, dofs[i]);
-      assert(pos != last && *pos == dofs[i]);
-      values[pos - inner] += local(i, j);
-    }
-  }
-}
-
 }  // namespace iga

@@ -9,19 +9,7 @@ namespace iga {
 
 void scatter_add(const std::vector<int>& dofs, const MatrixXld& local, const SparseMatrix& pattern,
                  std::vector<long double>& values) {
-  const int n = static_cast<int>(dofs.size());
-  const int* outer = pattern.outerIndexPtr();
-  const int* inner = pattern.innerIndexPtr();
-  for (int j = 0; j < n; ++j) {
-    const int col = dofs[j];
-    const int* first = inner + outer[col];
-    const int* last = inner + outer[col + 1];
-    for (int i = 0; i < n; ++i) {
-      const int* pos = std::lower_bound(first, last, dofs[i]);
-      assert(pos != last && *pos == dofs[i]);
-      values[pos - inner] += local(i, j);
-    }
-  }
+  scatter_add_values(dofs, local, pattern, values.data());
 }
 
 SplitMatrix split_matrix(const SparseMatrix& pattern, const std::vector<long double>& values) {
