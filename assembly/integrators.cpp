@@ -42,6 +42,7 @@ void element_matrix(BilinearForm form, const ElementValues& ev, Eigen::MatrixXd&
     case BilinearForm::laplace:
       add_weighted_product(v.dx, v.dx, w, 1.0, local);
       add_weighted_product(v.dy, v.dy, w, 1.0, local);
+      if (v.dz.size() > 0) add_weighted_product(v.dz, v.dz, w, 1.0, local);  // surfaces in 3D
       break;
     case BilinearForm::bilaplace: {
       const Eigen::MatrixXd lap = v.dxx + v.dyy;
