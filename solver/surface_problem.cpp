@@ -17,15 +17,16 @@ ProblemSpec parse_surface_problem(const ConfigNode& node) {
   p.form = BilinearForm::laplace;
   const auto exact = node.find("exact");
   const auto source = node.find("source");
-  if (exact && source) source->fail("the source is derived from 'exact'; give one or the other");
+  if (!exact && !source) node.fail("give 'exact' (a solution in x, y, z), 'source', or both");
   if (exact) {
     p.surface_exact = SymbolicFunction::parse_xyz(exact->as_string(), exact->where());
     p.source_where = p.data_where = exact->where();
-  } else if (source) {
+  }
+  // With both, the source is used as given and `exact` only measures the errors: data of another
+  // surface (the true sphere) on the constructed one, where the geometric error shows.
+  if (source) {
     p.surface_source = SymbolicFunction::parse_xyz(source->as_string(), source->where());
     p.source_where = source->where();
-  } else {
-    node.fail("give 'exact' (a solution in x, y, z) or 'source'");
   }
   return p;
 }
@@ -48,7 +49,7 @@ SurfaceExactSolution surface_exact_solution(const ProblemSpec& problem) {
 }
 
 SurfaceSource surface_source(const ProblemSpec& problem) {
-  if (!problem.surface_exact) {
+  if (problem.surface_source || !problem.surface_exact) {
     const SymbolicFunction f = problem.surface_source.value_or(SymbolicFunction::constant(0.0));
     return [f](const Eigen::Vector3d& x, const Eigen::Vector3d&, double) { return f.at(x); };
   }

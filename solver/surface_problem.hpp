@@ -12,13 +12,14 @@
 
 namespace iga {
 
-/// `problem:` with `pde: laplace_beltrami` (keys pde, exact, source; expressions in x, y, z).
+/// `problem:` with `pde: laplace_beltrami` (keys pde, exact, source; expressions in x, y, z). With
+/// both exact and source, the source is used as given and exact measures the errors.
 ProblemSpec parse_surface_problem(const ConfigNode& node);
 
 /// u and its ambient gradient as callables (empty when the problem has no exact solution).
 SurfaceExactSolution surface_exact_solution(const ProblemSpec& problem);
 
-/// f(x, n, H) = −Δ_Γu + u from the exact solution, or the given source.
+/// The given source, else f(x, n, H) = −Δ_Γu + u from the exact solution.
 SurfaceSource surface_source(const ProblemSpec& problem);
 
 /// Assemble the Laplace–Beltrami and mass matrices, the load, solve, and measure the errors.
