@@ -48,6 +48,8 @@ struct ProblemSpec {
   /// laplace_beltrami only: the exact solution or the source as functions of x, y, z (the planar
   /// members exact/source then stay unset/zero).
   std::optional<SymbolicFunction> surface_exact, surface_source;
+  /// laplace_beltrami: c in −Δ_Γu + c u = f (c = 0: the solution is fixed up to a constant).
+  double reaction = 1.0;
 
   /// u, ∇u, D²u of the exact solution as callables (empty members when there is none).
   ExactSolution exact_solution() const;

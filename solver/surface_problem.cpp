@@ -11,8 +11,12 @@
 namespace iga {
 
 ProblemSpec parse_surface_problem(const ConfigNode& node) {
-  node.check_keys({"pde", "exact", "source"});
+  node.check_keys({"pde", "exact", "source", "reaction"});
   ProblemSpec p;
+  if (const auto c = node.find("reaction")) {
+    p.reaction = c->as_double();
+    if (!(p.reaction >= 0.0 && std::isfinite(p.reaction))) c->fail("reaction must be a number >= 0");
+  }
   p.pde = Pde::laplace_beltrami;
   p.form = BilinearForm::laplace;
   const auto exact = node.find("exact");
@@ -57,12 +61,13 @@ SurfaceSource surface_source(const ProblemSpec& problem) {
   const SymbolicFunction ux = u.diff_x(), uy = u.diff_y(), uz = u.diff_z();
   const SymbolicFunction uxx = ux.diff_x(), uxy = ux.diff_y(), uxz = ux.diff_z(), uyy = uy.diff_y(),
                          uyz = uy.diff_z(), uzz = uz.diff_z();
+  const double c = problem.reaction;
   return [=](const Eigen::Vector3d& x, const Eigen::Vector3d& n, double H) {
     const Eigen::Vector3d g(ux.at(x), uy.at(x), uz.at(x));
     Eigen::Matrix3d D;
     D << uxx.at(x), uxy.at(x), uxz.at(x), uxy.at(x), uyy.at(x), uyz.at(x), uxz.at(x), uyz.at(x), uzz.at(x);
     const double laplace_beltrami = D.trace() - n.dot(D * n) - H * g.dot(n);
-    return -laplace_beltrami + u.at(x);
+    return -laplace_beltrami + c * u.at(x);
   };
 }
 
@@ -92,15 +97,42 @@ DiscreteSolution solve_surface_problem(const Space& space, const ProblemSpec& pr
   say("assembling");
   auto t0 = Clock::now();
   const Assembler assembler(space);
-  const SparseMatrix A = assembler.matrix(BilinearForm::laplace, qa) + assembler.matrix(BilinearForm::mass, qa);
-  const Eigen::VectorXd b = surface_load(space, surface_source(problem), qa);
+  const SparseMatrix M = assembler.matrix(BilinearForm::mass, qa);
+  SparseMatrix A = assembler.matrix(BilinearForm::laplace, qa);
+  if (problem.reaction > 0) A += problem.reaction * M;
+  Eigen::VectorXd b = surface_load(space, surface_source(problem), qa);
   if (!b.allFinite())
     throw InputError(problem.source_where + ": the source term is not finite at some point of the surface");
+  // Without reaction, constants (Σ N_i = 1) span the kernel: make the load orthogonal to them
+  // (∫f = 0 holds for exact data only up to quadrature), pin one coefficient, and shift the
+  // solution to zero mean afterwards.
+  const Eigen::VectorXd ones = Eigen::VectorXd::Ones(space.dimension());
+  const Eigen::VectorXd mass_of_one = M * ones;
+  const double area = ones.dot(mass_of_one);
+  const bool pure = problem.reaction == 0;
+  if (pure) {
+    b -= (b.sum() / area) * mass_of_one;
+    A.prune([](Eigen::Index i, Eigen::Index j, double) { return i != 0 && j != 0; });
+    A.coeffRef(0, 0) = 1.0;
+    b(0) = 0.0;
+  }
   r.t_assemble = seconds_since(t0);
 
   say("factorizing and solving (" + std::to_string(r.free_dofs) + " unknowns)");
   t0 = Clock::now();
   out.coefficients = solve_linear_system(A, b, solver, out.solve);
+  if (pure) {
+    out.coefficients.array() -= mass_of_one.dot(out.coefficients) / area;
+    // With an exact solution, compare with its own mean: ∫u = Σ_i ∫u N_i.
+    if (problem.surface_exact) {
+      const SymbolicFunction u = *problem.surface_exact;
+      const double mean =
+          surface_load(space, [u](const Eigen::Vector3d& x, const Eigen::Vector3d&, double) { return u.at(x); },
+                       space.error_quadrature_degree())
+              .sum() / area;
+      out.coefficients.array() += mean;
+    }
+  }
   r.t_solve = seconds_since(t0);
 
   if (problem.surface_exact) {

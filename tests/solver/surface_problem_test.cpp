@@ -54,6 +54,8 @@ space: {type: surface, degree: 2}
 )"),
                InputError);
   EXPECT_THROW(test::problem_from_yaml("problem: {pde: laplace_beltrami}"), InputError);
+  EXPECT_THROW(test::problem_from_yaml("problem: {pde: laplace_beltrami, exact: \"x\", reaction: -1}"), InputError);
+  EXPECT_EQ(test::problem_from_yaml("problem: {pde: laplace_beltrami, exact: \"x\", reaction: 0}").reaction, 0.0);
 }
 
 TEST(SurfaceProblem, OpenSurfacesAreAnInputError) {

@@ -139,3 +139,21 @@ TEST(SurfaceLaplaceBeltrami, OptimalRatesOnTheIcosphereSurface) {
 
 }  // namespace
 }  // namespace iga
+
+namespace iga {
+namespace {
+
+TEST(SurfaceLaplaceBeltrami, ZeroMeanProblemWithoutReaction) {
+  // −Δ_Γu = f: unique up to constants; shifted to the exact solution's mean, the rates are optimal.
+  const std::string yaml = R"(
+problem: {pde: laplace_beltrami, exact: "x*y + sin(z) + x", reaction: 0}
+domain: {type: surface, mesh: octahedron}
+space: {type: surface, degree: 2}
+)";
+  const test::Rates r = test::last_rates(yaml, 5);
+  EXPECT_NEAR(r.l2, 3.0, 0.25);
+  EXPECT_NEAR(r.h1, 2.0, 0.15);
+}
+
+}  // namespace
+}  // namespace iga
