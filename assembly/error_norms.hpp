@@ -22,5 +22,10 @@ struct ErrorNorms {
 ErrorNorms error_norms(const Space& space, const Eigen::VectorXd& coefficients, const ExactSolution& exact,
                        int quad_degree);
 
+/// The same for a space on a surface in 3D (ambient_dimension() == 3): L2 error and the H1
+/// seminorm of the error's surface gradient, ∇_Γu = ∇u − (∇u·n) n.
+ErrorNorms surface_error_norms(const Space& space, const Eigen::VectorXd& coefficients,
+                               const SurfaceExactSolution& exact, int quad_degree);
+
 
 }  // namespace iga

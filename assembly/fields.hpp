@@ -15,6 +15,19 @@ using ScalarField = std::function<double(const Point2& x)>;
 /// g(x, n): boundary data that may depend on the outward unit normal n (e.g. du/dn = grad u . n).
 using BoundaryField = std::function<double(const Point2& x, const Point2& n)>;
 
+/// f(x) at a point of a surface in 3D.
+using SurfaceField = std::function<double(const Eigen::Vector3d& x)>;
+/// f(x, n, H) on a surface in 3D: data that depend on the surface's unit normal n and mean
+/// curvature H = div_Γ n at x (e.g. f = −Δ_Γ u + u computed from u given in x, y, z).
+using SurfaceSource = std::function<double(const Eigen::Vector3d& x, const Eigen::Vector3d& n, double H)>;
+
+/// An exact solution on a surface in 3D, given in ambient coordinates: u and its ambient gradient
+/// (the error norms project the gradient onto the tangent plane).
+struct SurfaceExactSolution {
+  SurfaceField u, ux, uy, uz;
+  bool has_gradient() const { return ux && uy && uz; }
+};
+
 /// An exact solution and its derivatives; members left empty are not available.
 struct ExactSolution {
   ScalarField u, ux, uy, uxx, uxy, uyy;

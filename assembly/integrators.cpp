@@ -53,6 +53,7 @@ void form_matrix(BilinearForm form, const ElementValues& ev, Local& local) {
     case BilinearForm::laplace:
       add_weighted_product(v.dx, v.dx, w, Scalar(1), local);
       add_weighted_product(v.dy, v.dy, w, Scalar(1), local);
+      if (v.dz.size() > 0) add_weighted_product(v.dz, v.dz, w, Scalar(1), local);  // surfaces in 3D
       break;
     case BilinearForm::bilaplace: {
       // Δφ rounded once per function and point: a perturbation of the functions, not of K.

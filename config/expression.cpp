@@ -26,6 +26,7 @@ using expression_detail::number;
 using expression_detail::Program;
 using expression_detail::sym_x;
 using expression_detail::sym_y;
+using expression_detail::sym_z;
 using expression_detail::Unsupported;
 
 namespace {
@@ -192,6 +193,28 @@ SymbolicFunction SymbolicFunction::parse(const std::string& text, const std::str
   return f;
 }
 
+SymbolicFunction SymbolicFunction::parse_xyz(const std::string& text, const std::string& where) {
+  std::lock_guard<std::recursive_mutex> lock(ginac_mutex());
+  GiNaC::ex e;
+  try {
+    GiNaC::symtab table;
+    table["x"] = sym_x();
+    table["y"] = sym_y();
+    table["z"] = sym_z();
+    table["pi"] = GiNaC::Pi;
+    GiNaC::parser reader(table, /*strict=*/true);
+    e = reader(text);
+  } catch (const std::exception& err) {
+    std::string reason = parse_reason(err.what());
+    const std::string planar = "(known: x, y, pi";
+    if (const auto at = reason.find(planar); at != std::string::npos) reason.replace(at, planar.size(), "(known: x, y, z, pi");
+    throw InputError(prefix(where) + "cannot parse '" + text + "': " + reason);
+  }
+  SymbolicFunction f;
+  f.impl_ = make_impl(e, where, text, "parse");
+  return f;
+}
+
 SymbolicFunction SymbolicFunction::constant(double value) {
   if (!std::isfinite(value)) throw InputError("constant function: value " + number(value) + " is not finite");
   std::lock_guard<std::recursive_mutex> lock(ginac_mutex());
@@ -230,6 +253,14 @@ SymbolicFunction SymbolicFunction::diff_y() const {
   return f;
 }
 
+SymbolicFunction SymbolicFunction::diff_z() const {
+  auto self = impl_or_zero(impl_);
+  std::lock_guard<std::recursive_mutex> lock(ginac_mutex());
+  SymbolicFunction f;
+  f.impl_ = make_impl(tidy(self->expr->diff(sym_z())), self->where, self->source, "differentiate");
+  return f;
+}
+
 namespace {
 GiNaC::ex laplace(const GiNaC::ex& u) { return tidy(u.diff(sym_x(), 2) + u.diff(sym_y(), 2)); }
 }  // namespace
@@ -265,6 +296,11 @@ std::string SymbolicFunction::str() const { return impl_ ? impl_->text : "0"; }
 double SymbolicFunction::operator()(const Eigen::Vector2d& p) const {
   if (!impl_) return 0.0;
   return evaluator(impl_)(p.x(), p.y());
+}
+
+double SymbolicFunction::at(const Eigen::Vector3d& p) const {
+  if (!impl_) return 0.0;
+  return evaluator(impl_)(p.x(), p.y(), p.z());
 }
 
 }  // namespace iga

@@ -17,10 +17,13 @@ class SymbolicFunction {
   /// Parse `text` in the variables x and y. Throws InputError "<where>: cannot parse '...': reason"
   /// (also for unknown symbols); `where` names the config place.
   static SymbolicFunction parse(const std::string& text, const std::string& where);
+  /// Parse `text` in the variables x, y and z (functions on surfaces in 3D; evaluate with at()).
+  static SymbolicFunction parse_xyz(const std::string& text, const std::string& where);
   static SymbolicFunction constant(double value);
 
   SymbolicFunction diff_x() const;
   SymbolicFunction diff_y() const;
+  SymbolicFunction diff_z() const;  ///< zero for functions of x and y
   SymbolicFunction laplacian() const;    ///< u_xx + u_yy
   SymbolicFunction bilaplacian() const;  ///< Δ²u
   SymbolicFunction operator-() const;
@@ -32,6 +35,8 @@ class SymbolicFunction {
   /// Evaluate at a point. Thread-safe: each thread uses its own compiled muParser instance.
   double operator()(const Eigen::Vector2d& p) const;
   double operator()(double x, double y) const { return (*this)(Eigen::Vector2d(x, y)); }
+  /// Evaluate at a point in 3D (functions from parse_xyz; thread-safe like operator()).
+  double at(const Eigen::Vector3d& p) const;
 
   struct Impl;
 

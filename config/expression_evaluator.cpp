@@ -20,6 +20,7 @@ Evaluator::Evaluator(const Program& program) : temps_(program.temporaries) {
     parser->DefineConst("Pi", std::numbers::pi);
     parser->DefineVar("x", &x_);
     parser->DefineVar("y", &y_);
+    parser->DefineVar("z", &z_);
     for (size_t i = 0; i < temps_.size(); ++i) parser->DefineVar("_t" + std::to_string(i), &temps_[i]);
     parser->DefineFun("step", step_function);
     parser->DefineFun("tgamma", tgamma_function);

@@ -16,7 +16,7 @@
 namespace iga::expression_detail {
 
 /// Statements for muParser: "_t0=..., _t1=..., result", split in stages below muParser's length limit.
-/// Reads the variables x and y, the constant Pi, the temporaries _t<i> and muParser's functions plus
+/// Reads the variables x, y (and z for functions on surfaces), the constant Pi, the temporaries _t<i> and muParser's functions plus
 /// step, tgamma and lgamma.
 struct Program {
   std::vector<std::string> stages;  ///< run in order; the value of the last one is the result
@@ -36,9 +36,14 @@ class Evaluator {
     for (size_t i = 0; i + 1 < stages_.size(); ++i) stages_[i]->Eval();
     return stages_.back()->Eval();
   }
+  /// The same at a point in 3D (functions of x, y, z).
+  double operator()(double x, double y, double z) {
+    z_ = z;
+    return (*this)(x, y);
+  }
 
  private:
-  double x_ = 0, y_ = 0;
+  double x_ = 0, y_ = 0, z_ = 0;
   std::vector<double> temps_;
   std::vector<std::unique_ptr<mu::Parser>> stages_;
 };

@@ -13,6 +13,11 @@ const GiNaC::realsymbol& sym_x() {
   static const auto* s = new GiNaC::realsymbol("x");
   return *s;
 }
+const GiNaC::realsymbol& sym_z() {
+  static const auto* s = new GiNaC::realsymbol("z");
+  return *s;
+}
+
 const GiNaC::realsymbol& sym_y() {
   static const auto* s = new GiNaC::realsymbol("y");
   return *s;
@@ -97,7 +102,7 @@ class MuPrinter {
            GiNaC::ex_to<GiNaC::numeric>(e.op(1)).is_negative();
   }
 
-  static bool is_constant(const GiNaC::ex& e) { return !e.has(sym_x()) && !e.has(sym_y()); }
+  static bool is_constant(const GiNaC::ex& e) { return !e.has(sym_x()) && !e.has(sym_y()) && !e.has(sym_z()); }
 
   /// Function calls, sums and non-trivial powers: evaluated once per point when they occur repeatedly.
   /// Not constants: muParser folds those when it compiles, a temporary would be recomputed each time.
@@ -131,7 +136,7 @@ class MuPrinter {
     if (is_a<numeric>(e)) return print_numeric(ex_to<numeric>(e));
     if (is_a<symbol>(e)) {
       const std::string name = ex_to<symbol>(e).get_name();
-      if (name != "x" && name != "y") throw Unsupported("unknown symbol '" + name + "'");
+      if (name != "x" && name != "y" && name != "z") throw Unsupported("unknown symbol '" + name + "'");
       return {name, kAtom};
     }
     if (is_a<constant>(e)) {

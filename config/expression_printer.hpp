@@ -18,6 +18,8 @@ namespace iga::expression_detail {
 /// SymbolicFunctions may be destroyed in any order at exit.
 const GiNaC::realsymbol& sym_x();
 const GiNaC::realsymbol& sym_y();
+/// z: only in functions parsed with SymbolicFunction::parse_xyz (surfaces in 3D).
+const GiNaC::realsymbol& sym_z();
 
 /// Why an expression cannot be turned into muParser text (turned into an InputError by the caller).
 struct Unsupported : std::runtime_error {

@@ -73,7 +73,7 @@ nlohmann::json optional_json(std::optional<double> v) { return v ? nlohmann::jso
 /// problem.form as a config spells it (parse_problem accepts `laplacian` and `hessian`, biharmonic
 /// only), so summary.json echoes a value a config can take; empty for Poisson, which has no form key.
 std::string form_as_configured(const ProblemSpec& problem) {
-  if (problem.pde == Pde::poisson) return {};
+  if (problem.pde != Pde::biharmonic) return {};
   return problem.form == BilinearForm::hessian ? "hessian" : "laplacian";
 }
 
@@ -132,6 +132,8 @@ void write_summary_json(const StudySettings& settings, const StudyResult& result
   j["problem"] = {{"pde", to_string(settings.problem.pde)},
                   {"exact", settings.problem.exact ? json(settings.problem.exact->str()) : json(nullptr)},
                   {"source", settings.problem.source.str()}};
+  if (settings.problem.surface_exact) j["problem"]["exact"] = settings.problem.surface_exact->str();
+  if (settings.problem.surface_source) j["problem"]["source"] = settings.problem.surface_source->str();
   if (const std::string form = form_as_configured(settings.problem); !form.empty()) j["problem"]["form"] = form;
   for (const BoundaryPart& p : settings.problem.boundary) j["problem"]["boundary"][p.name] = to_string(p.kind);
   j["norms"] = "l2: L2 norm; h1: H1 seminorm |e|_1 = ||grad e||; h2: H2 seminorm |e|_2 = ||D^2 e|| (Frobenius)";

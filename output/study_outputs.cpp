@@ -18,6 +18,8 @@ StudyResult run_study_with_vtk(const StudySettings& settings, const std::string&
     VtkFieldOptions opt;
     opt.samples = settings.vtk_samples;
     opt.exact = exact.u;
+    if (settings.problem.surface_exact)
+      opt.exact3 = [u = *settings.problem.surface_exact](const Eigen::Vector3d& x) { return u.at(x); };
     opt.laplacian = settings.problem.pde == Pde::biharmonic;
     const std::string name = "solution_" + std::to_string(level) + ".vtu";
     write_solution_vtu(space, sol.coefficients, opt, (dir / name).string());

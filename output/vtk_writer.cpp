@@ -157,6 +157,12 @@ void write_solution_vtu(const Space& space, const Eigen::VectorXd& coefficients,
           grad_ptr[3 * p + 1] = uh.dy(k);
           grad_ptr[3 * p + 2] = 0.0;
         }
+        if (geometry.x3.cols() == q)  // a surface in 3D: ambient points, surface gradient
+          for (int k = 0; k < q; ++k) {
+            const vtkIdType p = first + k;
+            xyz[3 * p + 2] = geometry.x3(2, k);
+            grad_ptr[3 * p + 2] = uh.dz(k);
+          }
         if (laplace_ptr)
           for (int k = 0; k < q; ++k) laplace_ptr[first + k] = uh.dxx(k) + uh.dyy(k);
       } catch (...) {
@@ -176,13 +182,14 @@ void write_solution_vtu(const Space& space, const Eigen::VectorXd& coefficients,
   grid->SetCells(cell_types, cells);
   grid->GetPointData()->SetScalars(u);
   grid->GetPointData()->SetVectors(grad_u);
-  if (options.exact) {
+  if (options.exact || options.exact3) {
     // The exact solution is thread-safe (VtkFieldOptions::exact), so points are split over threads.
     auto u_exact = make_point_field("u_exact", 1, num_points);
     auto error = make_point_field("error", 1, num_points);
 #pragma omp parallel for schedule(static)
     for (vtkIdType p = 0; p < num_points; ++p) {
-      const double exact = options.exact(Point2(xyz[3 * p], xyz[3 * p + 1]));
+      const double exact = options.exact3 ? options.exact3(Eigen::Vector3d(xyz[3 * p], xyz[3 * p + 1], xyz[3 * p + 2]))
+                                          : options.exact(Point2(xyz[3 * p], xyz[3 * p + 1]));
       u_exact->SetValue(p, exact);
       error->SetValue(p, u_ptr[p] - exact);
     }
@@ -216,7 +223,8 @@ void write_mesh_vtu(const Space& space, int samples, const std::string& filename
     evaluator->evaluate_geometry(e, outline, geometry);
     ids.clear();
     for (int k = 0; k < outline.size(); ++k)
-      ids.push_back(points->InsertNextPoint(geometry.x(0, k), geometry.x(1, k), 0.0));
+      ids.push_back(points->InsertNextPoint(geometry.x(0, k), geometry.x(1, k),
+                                            geometry.x3.cols() == outline.size() ? geometry.x3(2, k) : 0.0));
     ids.push_back(ids.front());
     lines->InsertNextCell(static_cast<vtkIdType>(ids.size()), ids.data());
     cell_element->InsertNextValue(e);

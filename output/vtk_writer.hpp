@@ -18,12 +18,15 @@ struct VtkFieldOptions {
   /// Exact solution, if known: adds point fields `u_exact` and `error` (u - u_exact).
   /// Called from several threads at once, so it must be thread-safe (as every ScalarField).
   std::function<double(const Point2&)> exact;
+  /// The same on a surface in 3D (spaces with ambient_dimension() == 3), used instead of `exact`.
+  std::function<double(const Eigen::Vector3d&)> exact3;
   /// Adds the point field `laplace_u` (for biharmonic problems).
   bool laplacian = false;
 };
 
 /// Write the discrete function sum_i coefficients(i) N_i as an unstructured grid with point fields
-/// `u`, `grad_u` (3 components, z = 0) and the optional ones of `options`.
+/// `u`, `grad_u` (3 components, z = 0 in the plane; on a surface in 3D the points are the surface's
+/// and grad_u its surface gradient) and the optional ones of `options`.
 /// Throws std::runtime_error if the file cannot be written.
 void write_solution_vtu(const Space& space, const Eigen::VectorXd& coefficients, const VtkFieldOptions& options,
                         const std::string& filename);

@@ -1,8 +1,12 @@
 #include "solver/problem.hpp"
 
+#include "solver/surface_problem.hpp"
+
 namespace iga {
 
-std::string to_string(Pde pde) { return pde == Pde::poisson ? "poisson" : "biharmonic"; }
+std::string to_string(Pde pde) {
+  return pde == Pde::poisson ? "poisson" : (pde == Pde::biharmonic ? "biharmonic" : "laplace_beltrami");
+}
 
 std::string to_string(BoundaryKind kind) {
   switch (kind) {
@@ -68,9 +72,13 @@ ProblemSpec manufactured_problem(Pde pde, const SymbolicFunction& u, std::vector
 }
 
 ProblemSpec parse_problem(const ConfigNode& node) {
+  // Surfaces have their own keys (no boundary; reaction).
+  if (const auto pde = node.find("pde"); pde && pde->is_scalar() && pde->as_string() == "laplace_beltrami")
+    return parse_surface_problem(node);
   node.check_keys({"pde", "exact", "source", "boundary", "data", "form"});
   ProblemSpec p;
-  p.pde = node["pde"].as_choice({"poisson", "biharmonic"}) == "poisson" ? Pde::poisson : Pde::biharmonic;
+  const std::string pde = node["pde"].as_choice({"poisson", "biharmonic", "laplace_beltrami"});
+  p.pde = pde == "poisson" ? Pde::poisson : Pde::biharmonic;  // laplace_beltrami returned above
 
   if (auto form = node.find("form")) {
     if (p.pde == Pde::poisson) form->fail("'form' applies to biharmonic problems only");

@@ -14,7 +14,8 @@
 
 namespace iga {
 
-enum class Pde { poisson, biharmonic };
+/// laplace_beltrami: −Δ_Γu + u = f on a closed surface in 3D (solver/surface_problem.hpp).
+enum class Pde { poisson, biharmonic, laplace_beltrami };
 enum class BoundaryKind { dirichlet, neumann, clamped, simply_supported };
 
 std::string to_string(Pde pde);
@@ -44,12 +45,18 @@ struct ProblemSpec {
   /// for messages about them found only while solving.
   std::string source_where = "problem.source", data_where = "problem.data";
 
+  /// laplace_beltrami only: the exact solution or the source as functions of x, y, z (the planar
+  /// members exact/source then stay unset/zero).
+  std::optional<SymbolicFunction> surface_exact, surface_source;
+  /// laplace_beltrami: c in −Δ_Γu + c u = f (c = 0: the solution is fixed up to a constant).
+  double reaction = 1.0;
+
   /// u, ∇u, D²u of the exact solution as callables (empty members when there is none).
   ExactSolution exact_solution() const;
   /// ∂u/∂n as a boundary field (from ∇u when known).
   BoundaryField normal_derivative_field() const;
   /// Degree of the differential operator (2 or 4).
-  int order() const { return pde == Pde::poisson ? 2 : 4; }
+  int order() const { return pde == Pde::biharmonic ? 4 : 2; }
 };
 
 /// A problem with manufactured solution `u`: source and all boundary data derived from it.

@@ -7,6 +7,7 @@
 #include "assembly/assembler.hpp"
 #include "assembly/boundary_conditions.hpp"
 #include "solver/boundary_edge_kinds.hpp"
+#include "solver/surface_problem.hpp"
 #include "config/errors.hpp"
 
 namespace iga {
@@ -44,6 +45,7 @@ DiscreteSolution solve_problem(const Space& space, const ProblemSpec& problem, S
   const auto say = [&](const std::string& msg) {
     if (progress) progress(msg);
   };
+  if (problem.pde == Pde::laplace_beltrami) return solve_surface_problem(space, problem, solver, progress);
   check_boundary_parts(space, problem);
   DiscreteSolution out;
   LevelResult& r = out.result;

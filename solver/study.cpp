@@ -27,7 +27,7 @@ std::string format_seconds(double s) {
 }  // namespace
 
 OptimalRates optimal_rates(Pde pde, int degree) {
-  if (pde == Pde::poisson) return {degree + 1, degree, degree - 1};
+  if (pde != Pde::biharmonic) return {degree + 1, degree, degree - 1};
   return {degree - 1 + std::min(2, degree - 1), degree - 1 + std::min(1, degree - 1), degree - 1};
 }
 
@@ -41,6 +41,10 @@ StudySettings parse_study(const ConfigNode& root, const std::string& config_path
   check_space_request(root["space"], s.limits);
   const SpacePtr coarse = make_space(root["domain"], root["space"], 0);
   check_boundary_parts(*coarse, s.problem);
+  if ((s.problem.pde == Pde::laplace_beltrami) != (coarse->ambient_dimension() == 3))
+    root["problem"]["pde"].fail(s.problem.pde == Pde::laplace_beltrami
+                                    ? "laplace_beltrami needs a surface in 3D (domain.type: surface, space.type: surface)"
+                                    : "a surface in 3D takes pde: laplace_beltrami");
   if (s.problem.pde == Pde::biharmonic && coarse->continuity() < 1)
     root["space"].fail("the biharmonic problem needs a C1 (H2-conforming) space; this " + coarse->type() +
                        " space is only C" + std::to_string(coarse->continuity()) +

@@ -11,9 +11,7 @@ ElementValues::ElementValues(const Space& space, unsigned flags)
 
 void ElementValues::reinit(int element, const QuadratureRule& rule) {
   evaluator_->evaluate(element, rule, flags_, data_);
-  const int q = rule.size();
-  jxw_.resize(q);
-  for (int k = 0; k < q; ++k) jxw_(k) = rule.weights[k] * std::abs(data_.jacobian[k].determinant());
+  integration_weights(rule, data_, jxw_);
 }
 
 void ElementValues::reinit_edge(int element, int edge, const QuadratureRule& rule) {

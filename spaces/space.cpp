@@ -1,5 +1,7 @@
 #include "spaces/space.hpp"
 
+#include "spaces/surface_values.hpp"
+
 #include <Eigen/LU>  // Matrix2d::determinant
 #include <cmath>
 #include <stdexcept>
@@ -42,6 +44,10 @@ QuadratureRule edge_rule(CellShape shape, int edge, const QuadratureRule& rule_0
 void integration_weights(const QuadratureRule& rule, const PointValues& geometry, Eigen::VectorXd& jxw) {
   const int q = rule.size();
   jxw.resize(q);
+  if (!geometry.jacobian3.empty()) {
+    for (int k = 0; k < q; ++k) jxw(k) = rule.weights[k] * surface_measure(geometry.jacobian3[k]);
+    return;
+  }
   for (int k = 0; k < q; ++k) jxw(k) = rule.weights[k] * std::abs(geometry.jacobian[k].determinant());
 }
 
@@ -57,6 +63,7 @@ void Space::Evaluator::evaluate_function(int element, const QuadratureRule& poin
   if (flags & update_gradients) {
     out.dx.noalias() = geometry.dx.transpose() * c;
     out.dy.noalias() = geometry.dy.transpose() * c;
+    if (geometry.dz.size() > 0) out.dz.noalias() = geometry.dz.transpose() * c;
   }
   if (flags & update_hessians) {
     out.dxx.noalias() = geometry.dxx.transpose() * c;

@@ -3,12 +3,13 @@
 #include "spaces/bspline/bspline_from_config.hpp"
 #include "spaces/g1/g1_from_config.hpp"
 #include "spaces/g1_4split/g1_4split_from_config.hpp"
+#include "spaces/surface/surface_space_from_config.hpp"
 #include "spaces/tmesh/tmesh_from_config.hpp"
 #include "spaces/ws4/ws4_from_config.hpp"
 
 namespace iga {
 
-std::vector<std::string> space_types() { return {"bspline", "ws4", "tmesh", "g1", "g1_4split"}; }
+std::vector<std::string> space_types() { return {"bspline", "ws4", "tmesh", "g1", "g1_4split", "surface"}; }
 
 SpacePtr make_space(const ConfigNode& domain, const ConfigNode& space, int level) {
   const std::string type = space["type"].as_choice(space_types());
@@ -17,6 +18,7 @@ SpacePtr make_space(const ConfigNode& domain, const ConfigNode& space, int level
   if (type == "tmesh") return make_tmesh_space(domain, space, level);
   if (type == "g1") return make_g1_space(domain, space, level);
   if (type == "g1_4split") return make_g1_4split_space(domain, space, level);
+  if (type == "surface") return make_surface_space(domain, space, level);
   space["type"].fail("unsupported space type '" + type + "'");
 }
 

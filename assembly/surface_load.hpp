@@ -1,0 +1,17 @@
+#pragma once
+/// @file
+/// Load vectors on surfaces in 3D whose data depend on the surface's own normal and curvature
+/// at each quadrature point (Laplace–Beltrami sources computed from an exact solution).
+
+#include <Eigen/Core>
+
+#include "assembly/fields.hpp"
+#include "spaces/space.hpp"
+
+namespace iga {
+
+/// b_i = ∫_Γ f(x, n, H) N_i dA over all elements, with rules of degree `quad_degree`. The space
+/// must have ambient_dimension() == 3 and fill normal3 and mean_curvature.
+Eigen::VectorXd surface_load(const Space& space, const SurfaceSource& f, int quad_degree);
+
+}  // namespace iga

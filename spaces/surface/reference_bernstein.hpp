@@ -1,0 +1,36 @@
+#pragma once
+/// @file
+/// Bernstein polynomials of degree p on the reference triangle, λ = (1 − ξ − η, ξ, η), tabulated
+/// at the points of a rule (values and ξ, η derivatives; functions in bezier_index order).
+
+#include <Eigen/Core>
+#include <map>
+#include <memory>
+
+#include "quadrature/quadrature_rule.hpp"
+
+namespace iga {
+
+struct ReferenceBernstein {
+  Eigen::MatrixXd value, dxi, deta;  ///< (p+1)(p+2)/2 x q
+};
+
+/// The table of degree `degree` at the points of `points`.
+ReferenceBernstein reference_bernstein(int degree, const QuadratureRule& points);
+
+/// Per-evaluator cache of tables keyed by rule address (rules are shared through RulePtr), checked
+/// against the rule's size and first point in case an address is reused.
+class ReferenceBernsteinCache {
+ public:
+  const ReferenceBernstein& get(int degree, const QuadratureRule& points);
+
+ private:
+  struct Entry {
+    int size = 0;
+    Point2 first;
+    ReferenceBernstein table;
+  };
+  std::map<const QuadratureRule*, Entry> entries_;
+};
+
+}  // namespace iga

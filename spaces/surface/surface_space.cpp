@@ -1,0 +1,179 @@
+#include "spaces/surface/surface_space.hpp"
+
+#include <Eigen/Geometry>  // cross
+#include <Eigen/LU>
+
+#include <algorithm>
+#include <map>
+#include <stdexcept>
+
+#include "geometry/rsd/bezier_jet.hpp"
+#include "geometry/surface_from_config.hpp"
+#include "spaces/surface/reference_bernstein.hpp"
+#include "spaces/surface_values.hpp"
+
+namespace iga {
+
+namespace {
+
+using Key = std::array<int, 4>;
+
+/// The global identity of lattice point k (integer barycentrics, sum N) of triangle `tri`:
+/// a mesh vertex, a position on a mesh edge counted from its smaller vertex, or a patch interior point.
+Key lattice_key(const std::array<int, 3>& tri, int patch, const std::array<int, 3>& k) {
+  int nonzero = 0;
+  for (int a = 0; a < 3; ++a) nonzero += k[a] != 0;
+  if (nonzero == 1) {
+    for (int a = 0; a < 3; ++a)
+      if (k[a] != 0) return {0, tri[a], 0, 0};
+  }
+  if (nonzero == 2) {
+    int a = 0;
+    while (k[a] == 0) ++a;
+    int b = a + 1;
+    while (k[b] == 0) ++b;
+    if (tri[a] > tri[b]) std::swap(a, b);
+    return {1, tri[a], tri[b], k[a]};
+  }
+  return {2, patch, k[0], k[1]};
+}
+
+}  // namespace
+
+SurfaceBernsteinSpace::SurfaceBernsteinSpace(std::shared_ptr<const rsd::RsdSurface> surface, int degree,
+                                             int subdivisions)
+    : surface_(std::move(surface)), degree_(degree), subdivisions_(subdivisions) {
+  if (degree < 1 || degree > 8) throw std::invalid_argument("SurfaceBernsteinSpace: degree must be in 1..8");
+  if (subdivisions < 1) throw std::invalid_argument("SurfaceBernsteinSpace: subdivisions must be >= 1");
+  const int m = subdivisions, p = degree;
+  const TriangleSurfaceMesh& mesh = surface_->mesh;
+  std::map<std::pair<int, int>, int> edge_count;
+  for (const auto& t : mesh.triangles)
+    for (int a = 0; a < 3; ++a) ++edge_count[std::minmax(t[a], t[(a + 1) % 3])];
+
+  std::map<Key, int> numbering;
+  for (int n = 0; n < mesh.num_triangles(); ++n) {
+    const auto& tri = mesh.triangles[n];
+    // Lattice point (i, j) of the patch reference coordinates (ξ, η) = (i/m, j/m) has barycentrics
+    // (m − i − j, i, j): both kinds of sub-triangle are counterclockwise in (ξ, η).
+    std::vector<std::array<std::array<int, 3>, 3>> subs;
+    const auto bary = [m](int i, int j) { return std::array<int, 3>{m - i - j, i, j}; };
+    for (int j = 0; j < m; ++j)
+      for (int i = 0; i + j < m; ++i) {
+        subs.push_back({bary(i, j), bary(i + 1, j), bary(i, j + 1)});
+        if (i + j + 2 <= m) subs.push_back({bary(i + 1, j), bary(i + 1, j + 1), bary(i, j + 1)});
+      }
+    for (const auto& s : subs) {
+      Element el;
+      el.patch = n;
+      for (int c = 0; c < 3; ++c) el.corner[c] = Eigen::Vector3d(s[c][0], s[c][1], s[c][2]) / m;
+      std::vector<int> dofs(bezier_count(p));
+      for (int b1 = p; b1 >= 0; --b1)
+        for (int b2 = p - b1; b2 >= 0; --b2) {
+          const int b3 = p - b1 - b2;
+          std::array<int, 3> k;
+          for (int a = 0; a < 3; ++a) k[a] = b1 * s[0][a] + b2 * s[1][a] + b3 * s[2][a];
+          const auto [it, inserted] = numbering.try_emplace(lattice_key(tri, n, k), dimension_);
+          if (inserted) ++dimension_;
+          dofs[bezier_index(p, b1, b2)] = it->second;
+        }
+      // Edges of the reference triangle: 0 = corners (0,1), 1 = (1,2), 2 = (2,0). An element edge
+      // lies on a mesh edge when both corners have the same zero barycentric.
+      for (int edge = 0; edge < 3; ++edge) {
+        const auto& u = s[edge];
+        const auto& v = s[(edge + 1) % 3];
+        for (int a = 0; a < 3; ++a)
+          if (u[a] == 0 && v[a] == 0 && edge_count[std::minmax(tri[(a + 1) % 3], tri[(a + 2) % 3])] == 1)
+            boundary_.push_back({static_cast<int>(elements_.size()), edge});
+      }
+      const BezierTriangle& patch = surface_->patches[n];
+      for (int c = 0; c < 3; ++c)
+        mesh_size_ = std::max(mesh_size_, (patch.value(el.corner[c]) - patch.value(el.corner[(c + 1) % 3])).norm());
+      elements_.push_back(el);
+      dofs_.push_back(std::move(dofs));
+    }
+  }
+}
+
+std::vector<std::pair<std::string, std::string>> SurfaceBernsteinSpace::parameters() const {
+  std::vector<std::pair<std::string, std::string>> out = {
+      {"degree", std::to_string(degree_)},
+      {"subdivisions", std::to_string(subdivisions_)},
+      {"elements", std::to_string(num_elements())},
+      {"surface_triangles", std::to_string(surface_->mesh.num_triangles())}};
+  for (auto& entry : surface_report_entries(*surface_)) out.push_back({"surface_" + entry.first, entry.second});
+  return out;
+}
+
+std::vector<BoundaryEdge> SurfaceBernsteinSpace::boundary_edges(const std::string& name) const {
+  if (name != "all") throw std::invalid_argument("SurfaceBernsteinSpace: no boundary part '" + name + "'");
+  return boundary_;
+}
+
+namespace {
+
+class SurfaceEvaluator : public Space::Evaluator {
+ public:
+  explicit SurfaceEvaluator(const SurfaceBernsteinSpace& space) : space_(space) {}
+
+  void evaluate(int element, const QuadratureRule& points, unsigned flags, PointValues& out) override {
+    if (flags & (update_hessians | update_laplacian_gradient | update_bilaplacian))
+      throw std::logic_error("surface space: second derivatives on surfaces are not implemented");
+    const ReferenceBernstein& table = tables_.get(space_.degree(), points);
+    const SurfaceBernsteinSpace::Element& el = space_.element(element);
+    const BezierTriangle& patch = space_.surface().patches[el.patch];
+    const Eigen::Vector3d dxi = el.corner[1] - el.corner[0], deta = el.corner[2] - el.corner[0];
+    const bool curvature = flags & update_surface_curvature;
+    const int q = points.size();
+    space_.element_dofs(element, out.dofs);
+    out.x3.resize(3, q);
+    out.jacobian3.resize(q);
+    out.jacobian.clear();
+    if (curvature) {
+      out.normal3.resize(3, q);
+      out.mean_curvature.resize(q);
+    }
+    for (int k = 0; k < q; ++k) {
+      const Point2& r = points.points[k];
+      const Eigen::Vector3d t = el.corner[0] + r.x() * dxi + r.y() * deta;
+      const BezierJet jet = bezier_jet(patch, t, curvature);
+      out.x3.col(k) = jet.x;
+      Eigen::Matrix<double, 3, 2>& J = out.jacobian3[k];
+      J.col(0) = jet.d[0] * dxi(0) + jet.d[1] * dxi(1) + jet.d[2] * dxi(2);
+      J.col(1) = jet.d[0] * deta(0) + jet.d[1] * deta(1) + jet.d[2] * deta(2);
+      if (curvature) {
+        // Second fundamental form B_ij = F_ij · n and H = −tr(G⁻¹B) = div_Γ n (2 on the unit
+        // sphere with the outward normal).
+        const Eigen::Vector3d n = J.col(0).cross(J.col(1)).normalized();
+        const auto second = [&](const Eigen::Vector3d& u, const Eigen::Vector3d& v) {
+          Eigen::Vector3d s = Eigen::Vector3d::Zero();
+          for (int a = 0; a < 3; ++a)
+            for (int b = 0; b < 3; ++b) s += u(a) * v(b) * jet.dd[a][b];
+          return s.dot(n);
+        };
+        Eigen::Matrix2d B;
+        B(0, 0) = second(dxi, dxi);
+        B(0, 1) = B(1, 0) = second(dxi, deta);
+        B(1, 1) = second(deta, deta);
+        const Eigen::Matrix2d G = J.transpose() * J;
+        out.normal3.col(k) = n;
+        out.mean_curvature(k) = -(G.inverse() * B).trace();
+      }
+    }
+    out.x = out.x3.topRows(2);
+    if (flags & update_values) out.value = table.value;
+    if (flags & update_gradients) complete_surface_gradients(table.dxi, table.deta, out);
+  }
+
+ private:
+  const SurfaceBernsteinSpace& space_;
+  ReferenceBernsteinCache tables_;
+};
+
+}  // namespace
+
+std::unique_ptr<Space::Evaluator> SurfaceBernsteinSpace::make_evaluator() const {
+  return std::make_unique<SurfaceEvaluator>(*this);
+}
+
+}  // namespace iga

@@ -1,0 +1,65 @@
+#pragma once
+/// @file
+/// C0 Bernstein elements of degree p on a G1 surface in 3D (an RSD surface, geometry/rsd/):
+/// every patch's parameter triangle is split into m² congruent sub-triangles (m = 2^level), and
+/// each sub-triangle, composed with the patch map, is one element. Refinement splits the
+/// sub-triangles of the *fixed* surface, so the spaces are nested and the surface stays the exact
+/// geometry at every level (re-running the construction on a finer mesh would change the surface).
+///
+/// Degrees of freedom are the points of the (m·p)-lattice of every patch, shared across patch
+/// edges: both neighbours of an edge parametrise it identically (λ_i along the edge), so equal
+/// lattice positions are equal surface points and C0 holds with ordinary sharing.
+
+#include <array>
+#include <memory>
+#include <vector>
+
+#include "geometry/rsd/rsd_surface.hpp"
+#include "spaces/gauss_rule_cache.hpp"
+#include "spaces/space.hpp"
+
+namespace iga {
+
+class SurfaceBernsteinSpace : public Space {
+ public:
+  /// Degree 1..8 Bernstein triangles on `subdivisions`² sub-triangles of every patch.
+  SurfaceBernsteinSpace(std::shared_ptr<const rsd::RsdSurface> surface, int degree, int subdivisions);
+
+  /// One element: its patch and the patch barycentrics of its three corners (counterclockwise).
+  struct Element {
+    int patch = 0;
+    std::array<Eigen::Vector3d, 3> corner;
+  };
+
+  std::unique_ptr<Evaluator> make_evaluator() const override;
+  int ambient_dimension() const override { return 3; }
+  std::string type() const override { return "surface"; }
+  std::vector<std::pair<std::string, std::string>> parameters() const override;
+  int dimension() const override { return dimension_; }
+  void element_dofs(int element, std::vector<int>& out) const override { out = dofs_[element]; }
+  int num_elements() const override { return static_cast<int>(elements_.size()); }
+  CellShape cell_shape(int) const override { return CellShape::triangle; }
+  double mesh_size() const override { return mesh_size_; }
+  int degree() const override { return degree_; }
+  bool affine_elements() const override { return false; }
+  RulePtr quadrature(int, int degree) const override { return rules_.triangle(degree); }
+  RulePtr edge_quadrature(int, int edge, int degree) const override { return rules_.triangle_edge(edge, degree); }
+  std::vector<std::string> boundary_names() const override { return {}; }
+  std::vector<BoundaryEdge> boundary_edges(const std::string& name) const override;
+
+  const rsd::RsdSurface& surface() const { return *surface_; }
+  int subdivisions() const { return subdivisions_; }
+  const Element& element(int e) const { return elements_[e]; }
+
+ private:
+  std::shared_ptr<const rsd::RsdSurface> surface_;
+  int degree_, subdivisions_;
+  int dimension_ = 0;
+  double mesh_size_ = 0;
+  std::vector<Element> elements_;
+  std::vector<std::vector<int>> dofs_;   ///< per element, local Bernstein order (bezier_index)
+  std::vector<BoundaryEdge> boundary_;   ///< element edges on boundary (single) mesh edges
+  GaussRuleCache rules_;
+};
+
+}  // namespace iga
