@@ -109,7 +109,8 @@ std::vector<Case> load_catalogue() {
       c.args = {"--quiet"};  // first, so that no option of the case can take it as its value
       const auto args = node["args"] ? strings(node["args"]) : std::vector<std::string>{"case.yaml"};
       c.args.insert(c.args.end(), args.begin(), args.end());
-      if (std::find(c.args.begin(), c.args.end(), "--output") == c.args.end() &&
+      const bool output_option = !node["output_option"] || node["output_option"].as<bool>();
+      if (output_option && std::find(c.args.begin(), c.args.end(), "--output") == c.args.end() &&
           std::find(c.args.begin(), c.args.end(), "-o") == c.args.end()) {
         c.args.push_back("--output");
         c.args.push_back("{out}");
