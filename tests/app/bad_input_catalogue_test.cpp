@@ -87,6 +87,9 @@ std::vector<std::string> strings(const YAML::Node& list) {
   return out;
 }
 
+const std::set<std::string> kCaseKeys = {"name", "what", "config", "files", "args", "output_option",
+                                         "exit", "stderr", "stderr_absent", "absent"};
+
 std::vector<Case> load_catalogue() {
   std::vector<Case> cases;
   std::set<std::string> names;
@@ -100,6 +103,9 @@ std::vector<Case> load_catalogue() {
       Case c;
       c.group = manifest.stem().string();
       c.name = node["name"].as<std::string>();
+      for (const auto& kv : node)  // a misspelt key would silently drop a check
+        if (!kCaseKeys.count(kv.first.as<std::string>()))
+          throw std::runtime_error(manifest.string() + ": case " + c.name + ": unknown key " + kv.first.as<std::string>());
       if (!names.insert(c.group + "_" + c.name).second)
         throw std::runtime_error(manifest.string() + ": case name repeated: " + c.name);
       c.what = node["what"] ? node["what"].as<std::string>() : "";
@@ -269,7 +275,7 @@ std::string case_name(const ::testing::TestParamInfo<Case>& info) { return info.
 INSTANTIATE_TEST_SUITE_P(Catalogue, BadInput, ::testing::ValuesIn(load_catalogue()), case_name);
 
 /// The catalogue keeps its promised breadth.
-TEST(BadInputCatalogue, HasAtLeastEightyCasesInEveryGroup) {
+TEST(BadInputCatalogue, HasAtLeastEightyCasesAndEightInEachGroup) {
   const std::vector<Case> cases = load_catalogue();
   EXPECT_GE(cases.size(), 80u);
   std::map<std::string, int> per_group;
