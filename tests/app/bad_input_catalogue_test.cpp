@@ -196,7 +196,10 @@ Outcome run_program(const std::vector<std::string>& args, const fs::path& dir, c
     const rlimit files{rlim_t{1} << 30, rlim_t{1} << 30};  // no case may write a gigabyte
     ::setrlimit(RLIMIT_FSIZE, &files);
     if (!kSanitized) {
-      const rlimit memory{kAddressSpaceBytes, kAddressSpaceBytes};
+      // The soft limit only: a helper process (the Gmsh worker) may set its own, larger limit.
+      rlimit memory{};
+      ::getrlimit(RLIMIT_AS, &memory);
+      memory.rlim_cur = std::min(kAddressSpaceBytes, memory.rlim_max);
       ::setrlimit(RLIMIT_AS, &memory);
     }
     ::execve(argv[0], argv.data(), envp.data());
