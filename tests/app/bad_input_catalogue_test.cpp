@@ -38,8 +38,10 @@ constexpr bool kSanitized = true;  // iga-run is instrumented too: slower, and A
 constexpr bool kSanitized = false;
 #endif
 
-/// Seconds a case may run before it counts as a hang (sanitized Debug code runs far slower).
-constexpr int kTimeoutSeconds = kSanitized ? 300 : 60;
+/// Seconds a case may run before it counts as a hang, unless the case gives its own `timeout`;
+/// sanitized Debug code runs far slower.
+constexpr int kTimeoutSeconds = 60;
+constexpr int kSlowdown = kSanitized ? 5 : 1;
 /// Address space of the program under test: a run that would allocate without bound fails here
 /// (bad_alloc) instead of taking the machine's memory.
 constexpr rlim_t kAddressSpaceBytes = rlim_t{4} << 30;
@@ -72,6 +74,7 @@ struct Case {
   std::map<std::string, std::string> files;  ///< file name (relative to the case folder) -> content
   std::vector<std::string> args;             ///< command line after the program name
   int exit_code = 2;
+  int timeout_seconds = kTimeoutSeconds;
   std::vector<std::string> stderr_patterns;  ///< ECMAScript regexes, each must match somewhere
   std::vector<std::string> stderr_absent;    ///< regexes that must match nowhere (leaked file contents)
   std::vector<std::string> absent;           ///< paths a malicious input tries to create
@@ -88,7 +91,7 @@ std::vector<std::string> strings(const YAML::Node& list) {
 }
 
 const std::set<std::string> kCaseKeys = {"name", "what", "config", "files", "args", "output_option",
-                                         "exit", "stderr", "stderr_absent", "absent"};
+                                         "exit", "stderr", "stderr_absent", "absent", "timeout"};
 
 std::vector<Case> load_catalogue() {
   std::vector<Case> cases;
@@ -122,6 +125,7 @@ std::vector<Case> load_catalogue() {
         c.args.push_back("{out}");
       }
       if (node["exit"]) c.exit_code = node["exit"].as<int>();
+      if (node["timeout"]) c.timeout_seconds = node["timeout"].as<int>();
       c.stderr_patterns = strings(node["stderr"]);
       c.stderr_absent = strings(node["stderr_absent"]);
       c.absent = strings(node["absent"]);
@@ -164,7 +168,7 @@ struct Outcome {
 /// stopped with it), stdout and stderr to files, TMPDIR set to `tmp`; kills the group after the
 /// time limit.
 Outcome run_program(const std::vector<std::string>& args, const fs::path& dir, const fs::path& out_file,
-                    const fs::path& err_file, const fs::path& tmp) {
+                    const fs::path& err_file, const fs::path& tmp, int timeout_seconds) {
   std::vector<std::string> argv_strings{IGA_RUN_BINARY};
   argv_strings.insert(argv_strings.end(), args.begin(), args.end());
   std::vector<char*> argv;
@@ -207,7 +211,7 @@ Outcome run_program(const std::vector<std::string>& args, const fs::path& dir, c
   }
   ::setpgid(pid, pid);  // also here, so the group exists before any kill below
   Outcome outcome;
-  const auto deadline = start + std::chrono::seconds(kTimeoutSeconds);
+  const auto deadline = start + std::chrono::seconds(timeout_seconds);
   for (;;) {
     const pid_t done = ::waitpid(pid, &outcome.status, WNOHANG);
     if (done == pid) break;
@@ -245,13 +249,14 @@ TEST_P(BadInput, Run) {
   for (const auto& a : c.args) args.push_back(substituted(a, values));
   const std::set<std::string> before = entries_under(dir);
 
-  const Outcome run = run_program(args, dir, root / "stdout.txt", root / "stderr.txt", tmp);
+  const int timeout = c.timeout_seconds * kSlowdown;
+  const Outcome run = run_program(args, dir, root / "stdout.txt", root / "stderr.txt", tmp, timeout);
   const std::string err = slurp(root / "stderr.txt");
   SCOPED_TRACE(c.group + "/" + c.name + (c.what.empty() ? "" : " (" + c.what + ")") + "\nstderr:\n" +
                err.substr(0, 4000) + "\nstdout:\n" + slurp(root / "stdout.txt").substr(0, 2000));
   std::printf("%s: %.2f s\n", c.name.c_str(), run.seconds);
 
-  ASSERT_FALSE(run.timed_out) << "no end after " << kTimeoutSeconds << " s";
+  ASSERT_FALSE(run.timed_out) << "no end after " << timeout << " s";
   ASSERT_FALSE(WIFSIGNALED(run.status)) << "ended by signal " << WTERMSIG(run.status) << " ("
                                          << ::strsignal(WTERMSIG(run.status)) << ")";
   ASSERT_TRUE(WIFEXITED(run.status));
