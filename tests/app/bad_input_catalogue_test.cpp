@@ -176,9 +176,18 @@ Outcome run_program(const std::vector<std::string>& args, const fs::path& dir, c
   argv.push_back(nullptr);
   // The environment, with TMPDIR pointing at the case's own folder (staging and helper files
   // land there, so whatever a failed run leaves behind is seen).
+  // Under AddressSanitizer (no address-space limit) its allocator enforces the memory bound.
   std::vector<std::string> env_strings{"TMPDIR=" + tmp.string()};
-  for (char** e = environ; *e; ++e)
-    if (std::string(*e).rfind("TMPDIR=", 0) != 0) env_strings.emplace_back(*e);
+  std::string asan_options = "ASAN_OPTIONS=";
+  for (char** e = environ; *e; ++e) {
+    const std::string var(*e);
+    if (var.rfind("ASAN_OPTIONS=", 0) == 0)
+      asan_options = var + ":";
+    else if (var.rfind("TMPDIR=", 0) != 0)
+      env_strings.push_back(var);
+  }
+  if (kSanitized) asan_options += "hard_rss_limit_mb=4096:max_allocation_size_mb=4096";
+  env_strings.push_back(asan_options);
   std::vector<char*> envp;
   for (auto& s : env_strings) envp.push_back(s.data());
   envp.push_back(nullptr);
