@@ -12,6 +12,7 @@ packages=(
   libgmsh-dev            # Gmsh SDK: reading .msh, meshing .geo domains and polygons (mesh/)
   libseccomp-dev         # system-call filter of the Gmsh worker process (mesh/worker_sandbox.cpp)
   libopenblas0-pthread   # optimized BLAS/LAPACK for CHOLMOD's supernodal factorization (reference BLAS is ~5x slower)
+  clang libclang-rt-14-dev libomp-14-dev   # scripts/fuzz.sh: libFuzzer and the sanitizers for clang, OpenMP for clang
 )
 
 missing=()
