@@ -28,7 +28,18 @@ int run_config(const std::string& config_path, const std::string& output, int le
     if (!quiet) std::cerr << "iga-run: " << msg << std::endl;
   };
 
-  check_output_location(settings.output_dir);  // before the study, not after it
+  // Checked before the study, not after it, and reported where the location came from.
+  try {
+    check_output_location(settings.output_dir);
+  } catch (const InputError& e) {
+    std::string place = "the default output directory";
+    if (!output.empty()) {
+      place = "--output";
+    } else if (const auto out = root.find("output")) {
+      if (const auto dir = out->find("directory")) place = dir->where();
+    }
+    throw InputError(place + ": " + e.what());
+  }
   StagedDirectory staged(settings.output_dir);
   const std::filesystem::path dir(staged.path());
   const StudyResult result = run_study_with_vtk(settings, staged.path(), progress);
@@ -61,7 +72,8 @@ int run_cli(int argc, char** argv) {
   int levels = 0;
   bool quiet = false;
   app.add_option("config", config, "YAML config file (see README)")->required();
-  app.add_option("-o,--output", output, "output directory (default: output.directory, else results/<config name>)");
+  app.add_option("-o,--output", output, "output directory (default: output.directory, else results/<config name>)")
+      ->check([](const std::string& value) { return value.empty() ? std::string("must not be empty") : std::string(); });
   app.add_option("-l,--levels", levels, "number of refinement levels (overrides refinement.levels)")
       ->check(CLI::Range(1, 12));
   app.add_flag("-q,--quiet", quiet, "no progress messages on stderr");

@@ -315,6 +315,10 @@ std::string nearest_word(const std::string& word, const std::vector<std::string>
 Eigen::Vector2d ConfigNode::as_point() const {
   const std::vector<double> v = as_doubles();
   if (v.size() != 2) fail("expected a point [x, y] (got " + std::to_string(v.size()) + " numbers)");
+  // Larger coordinates overflow areas, Jacobians and their products to infinity far from here.
+  constexpr double kMaxCoordinate = 1e100;
+  if (!(std::abs(v[0]) <= kMaxCoordinate && std::abs(v[1]) <= kMaxCoordinate))
+    fail("coordinates must be at most 1e100 in magnitude (got [" + format_number(v[0]) + ", " + format_number(v[1]) + "])");
   return {v[0], v[1]};
 }
 

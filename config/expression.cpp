@@ -7,6 +7,7 @@
 #include <cctype>
 #include <cmath>
 #include <cstdint>
+#include <cstdlib>
 #include <mutex>
 #include <optional>
 #include <regex>
@@ -123,6 +124,80 @@ std::string empty_call(const std::string& text) {
   return {};
 }
 
+/// Text longer than this is not an expression anybody writes by hand.
+constexpr size_t kMaxExpressionLength = 10000;
+/// Parentheses and unary signs deeper than this: GiNaC's parser recurses once per level (100 000
+/// levels overflow the stack) and derivatives of deep compositions grow without bound.
+constexpr int kMaxNesting = 100;
+/// Largest constant exponent: GiNaC evaluates integer powers exactly (2^1000000000 never ends).
+constexpr double kMaxLiteralExponent = 1000;
+
+/// The value of a symbol-free exponent such as "(3^2)" in double precision; nullopt when it has
+/// symbols or is not understood (GiNaC then reports it).
+std::optional<double> constant_value(const std::string& group) {
+  for (const char c : group)
+    if (std::isalpha(static_cast<unsigned char>(c)) && c != 'e' && c != 'E') return std::nullopt;
+  try {
+    mu::Parser parser;
+    parser.SetExpr(group);
+    return parser.Eval();
+  } catch (const mu::Parser::exception_type&) {
+    return std::nullopt;
+  }
+}
+
+/// The closing parenthesis matching the one at `open`, or npos.
+size_t matching_paren(const std::string& text, size_t open) {
+  int depth = 0;
+  for (size_t i = open; i < text.size(); ++i) {
+    if (text[i] == '(') ++depth;
+    if (text[i] == ')' && --depth == 0) return i;
+  }
+  return std::string::npos;
+}
+
+/// Why `text` must not reach GiNaC (empty when it may): calls without arguments, huge texts, deep
+/// nesting, power towers and huge literal exponents, all of which crash or hang the parser or the
+/// exact arithmetic behind it.
+std::string hostile_text(const std::string& text) {
+  if (const std::string name = empty_call(text); !name.empty()) return "function '" + name + "' called with no arguments";
+  if (text.size() > kMaxExpressionLength)
+    return "longer than " + std::to_string(kMaxExpressionLength) + " characters";
+  int depth = 0, signs = 0;
+  for (size_t i = 0; i < text.size(); ++i) {
+    const char c = text[i];
+    if (c == '(' && ++depth > kMaxNesting) return "nested more than " + std::to_string(kMaxNesting) + " levels deep";
+    if (c == ')') --depth;
+    if (c == '+' || c == '-') {
+      if (++signs > kMaxNesting) return "more than " + std::to_string(kMaxNesting) + " signs in a row";
+    } else if (!std::isspace(static_cast<unsigned char>(c))) {
+      signs = 0;
+    }
+    if (c != '^') continue;
+    size_t j = skip_blank(text, i + 1);
+    while (j < text.size() && (text[j] == '+' || text[j] == '-')) j = skip_blank(text, j + 1);
+    // GiNaC raises exact integers to exact integer powers: 2^(2^40) never ends. A literal exponent
+    // or one without symbols (evaluated here in double precision) must stay below the bound.
+    // (GiNaC itself refuses a^b^c without parentheses.)
+    std::optional<double> exponent;
+    if (j < text.size() && text[j] == '(') {
+      const size_t end = matching_paren(text, j);
+      if (end != std::string::npos) exponent = constant_value(text.substr(j, end + 1 - j));
+    } else if (j < text.size() && (std::isdigit(static_cast<unsigned char>(text[j])) || text[j] == '.')) {
+      exponent = std::strtod(text.c_str() + j, nullptr);
+    }
+    if (exponent && !(std::fabs(*exponent) <= kMaxLiteralExponent))
+      return "an exponent larger than " + std::to_string(static_cast<int>(kMaxLiteralExponent)) +
+             " in magnitude (exact powers of that size do not end)";
+  }
+  return {};
+}
+
+/// `text` shortened for messages.
+std::string quoted(const std::string& text) {
+  return "'" + (text.size() > 80 ? text.substr(0, 77) + "..." : text) + "'";
+}
+
 }  // namespace
 
 struct SymbolicFunction::Impl {
@@ -174,8 +249,8 @@ std::shared_ptr<const SymbolicFunction::Impl> make_impl(const GiNaC::ex& e, cons
 }  // namespace
 
 SymbolicFunction SymbolicFunction::parse(const std::string& text, const std::string& where) {
-  if (const std::string name = empty_call(text); !name.empty())
-    throw InputError(prefix(where) + "cannot parse '" + text + "': function '" + name + "' called with no arguments");
+  if (const std::string why = hostile_text(text); !why.empty())
+    throw InputError(prefix(where) + "cannot parse " + quoted(text) + ": " + why);
   std::lock_guard<std::recursive_mutex> lock(ginac_mutex());
   GiNaC::ex e;
   try {
@@ -194,6 +269,8 @@ SymbolicFunction SymbolicFunction::parse(const std::string& text, const std::str
 }
 
 SymbolicFunction SymbolicFunction::parse_xyz(const std::string& text, const std::string& where) {
+  if (const std::string why = hostile_text(text); !why.empty())
+    throw InputError(prefix(where) + "cannot parse " + quoted(text) + ": " + why);
   std::lock_guard<std::recursive_mutex> lock(ginac_mutex());
   GiNaC::ex e;
   try {

@@ -1,5 +1,7 @@
 #include "mesh/worker_sandbox.hpp"
 
+#include <algorithm>
+
 #include <fcntl.h>
 #include <linux/landlock.h>
 #include <sched.h>
@@ -19,6 +21,13 @@ namespace iga {
 namespace {
 
 void set_limit(int resource, rlim_t soft, rlim_t hard) {
+  // Never above a limit the worker inherited (e.g. `ulimit -v` in the caller's shell): raising a
+  // hard limit fails (EPERM), and a lower inherited limit is already as strict as ours.
+  rlimit inherited{};
+  if (::getrlimit(resource, &inherited) == 0 && inherited.rlim_max != RLIM_INFINITY) {
+    hard = std::min(hard, inherited.rlim_max);
+    soft = std::min(soft, hard);
+  }
   const rlimit limit{soft, hard};
   if (::setrlimit(resource, &limit) != 0)
     throw std::runtime_error(std::string("gmsh worker: setrlimit failed: ") + std::strerror(errno));

@@ -100,7 +100,7 @@ Finding check_boundary(const Space& space, const std::vector<Datum>& data, const
 }  // namespace
 
 void check_data_finite(const Space& space, const ProblemSpec& problem) {
-  // Values at vertices; derivatives and the source inside edges only: an integrable point
+  // Values at vertices; derivatives and the derived source inside edges only: an integrable point
   // singularity at a vertex (a re-entrant corner's r^(2/3)) is fine, a singular line is not.
   if (problem.exact) {
     const SymbolicFunction& u = *problem.exact;
@@ -120,7 +120,11 @@ void check_data_finite(const Space& space, const ProblemSpec& problem) {
     if (on_edge.datum >= 0) report(all, on_edge, "an edge midpoint");
     return;  // the boundary data are derived from the exact solution: checked above
   }
+  // A source given as such (not derived from an exact solution) is data like the boundary values:
+  // infinite at a vertex, its load vector is finite only by the accident of the quadrature points.
   const std::vector<Datum> source = {{problem.source_where, "the source term", problem.source}};
+  const Finding at_vertex = check_elements(space, source, {0.0});
+  if (at_vertex.datum >= 0) report(source, at_vertex, "a vertex");
   const Finding on_edge = check_elements(space, source, {0.5});
   if (on_edge.datum >= 0) report(source, on_edge, "an edge midpoint");
 

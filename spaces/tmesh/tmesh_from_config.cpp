@@ -17,6 +17,12 @@ SpacePtr make_tmesh_space(const ConfigNode& domain, const ConfigNode& space, int
   const ConfigNode nn = space["n"];
   const int n = nn.as_int();
   if (n < 2) nn.fail("section spaces need n >= 2 (got " + std::to_string(n) + ")");
+  // n − 2 is the degree of the section spaces' polynomial part: past this their Hermite
+  // interpolation is hopelessly ill-conditioned in double precision.
+  constexpr int kMaxSectionDimension = 24;
+  if (n > kMaxSectionDimension)
+    nn.fail("section spaces of dimension n > " + std::to_string(kMaxSectionDimension) + " are not supported (got " +
+            std::to_string(n) + ")");
   int r = (n - 1) / 2;
   if (auto rn = space.find("regularity")) {
     r = rn->as_int();
