@@ -248,47 +248,42 @@ std::shared_ptr<const SymbolicFunction::Impl> make_impl(const GiNaC::ex& e, cons
 
 }  // namespace
 
-SymbolicFunction SymbolicFunction::parse(const std::string& text, const std::string& where) {
+namespace {
+
+/// The GiNaC expression of `text` in x, y (and z when `with_z`), after the checks of hostile_text.
+GiNaC::ex parse_ginac(const std::string& text, const std::string& where, bool with_z) {
   if (const std::string why = hostile_text(text); !why.empty())
     throw InputError(prefix(where) + "cannot parse " + quoted(text) + ": " + why);
-  std::lock_guard<std::recursive_mutex> lock(ginac_mutex());
-  GiNaC::ex e;
   try {
     GiNaC::symtab table;
     table["x"] = sym_x();
     table["y"] = sym_y();
+    if (with_z) table["z"] = sym_z();
     table["pi"] = GiNaC::Pi;
     GiNaC::parser reader(table, /*strict=*/true);
-    e = reader(text);
+    return reader(text);
   } catch (const std::exception& err) {
-    throw InputError(prefix(where) + "cannot parse '" + text + "': " + parse_reason(err.what()));
+    std::string reason = parse_reason(err.what());
+    const std::string planar = "(known: x, y, pi";
+    if (const auto at = reason.find(planar); with_z && at != std::string::npos)
+      reason.replace(at, planar.size(), "(known: x, y, z, pi");
+    throw InputError(prefix(where) + "cannot parse '" + text + "': " + reason);
   }
+}
+
+}  // namespace
+
+SymbolicFunction SymbolicFunction::parse(const std::string& text, const std::string& where) {
+  std::lock_guard<std::recursive_mutex> lock(ginac_mutex());
   SymbolicFunction f;
-  f.impl_ = make_impl(e, where, text, "parse");
+  f.impl_ = make_impl(parse_ginac(text, where, false), where, text, "parse");
   return f;
 }
 
 SymbolicFunction SymbolicFunction::parse_xyz(const std::string& text, const std::string& where) {
-  if (const std::string why = hostile_text(text); !why.empty())
-    throw InputError(prefix(where) + "cannot parse " + quoted(text) + ": " + why);
   std::lock_guard<std::recursive_mutex> lock(ginac_mutex());
-  GiNaC::ex e;
-  try {
-    GiNaC::symtab table;
-    table["x"] = sym_x();
-    table["y"] = sym_y();
-    table["z"] = sym_z();
-    table["pi"] = GiNaC::Pi;
-    GiNaC::parser reader(table, /*strict=*/true);
-    e = reader(text);
-  } catch (const std::exception& err) {
-    std::string reason = parse_reason(err.what());
-    const std::string planar = "(known: x, y, pi";
-    if (const auto at = reason.find(planar); at != std::string::npos) reason.replace(at, planar.size(), "(known: x, y, z, pi");
-    throw InputError(prefix(where) + "cannot parse '" + text + "': " + reason);
-  }
   SymbolicFunction f;
-  f.impl_ = make_impl(e, where, text, "parse");
+  f.impl_ = make_impl(parse_ginac(text, where, true), where, text, "parse");
   return f;
 }
 
@@ -312,29 +307,31 @@ std::shared_ptr<const SymbolicFunction::Impl> impl_or_zero(
   return *zero;
 }
 
+/// d/ds of `impl` (the zero function for none).
+std::shared_ptr<const SymbolicFunction::Impl> derivative(const std::shared_ptr<const SymbolicFunction::Impl>& impl,
+                                                         const GiNaC::symbol& s) {
+  auto self = impl_or_zero(impl);
+  std::lock_guard<std::recursive_mutex> lock(ginac_mutex());
+  return make_impl(tidy(self->expr->diff(s)), self->where, self->source, "differentiate");
+}
+
 }  // namespace
 
 SymbolicFunction SymbolicFunction::diff_x() const {
-  auto self = impl_or_zero(impl_);
-  std::lock_guard<std::recursive_mutex> lock(ginac_mutex());
   SymbolicFunction f;
-  f.impl_ = make_impl(tidy(self->expr->diff(sym_x())), self->where, self->source, "differentiate");
+  f.impl_ = derivative(impl_, sym_x());
   return f;
 }
 
 SymbolicFunction SymbolicFunction::diff_y() const {
-  auto self = impl_or_zero(impl_);
-  std::lock_guard<std::recursive_mutex> lock(ginac_mutex());
   SymbolicFunction f;
-  f.impl_ = make_impl(tidy(self->expr->diff(sym_y())), self->where, self->source, "differentiate");
+  f.impl_ = derivative(impl_, sym_y());
   return f;
 }
 
 SymbolicFunction SymbolicFunction::diff_z() const {
-  auto self = impl_or_zero(impl_);
-  std::lock_guard<std::recursive_mutex> lock(ginac_mutex());
   SymbolicFunction f;
-  f.impl_ = make_impl(tidy(self->expr->diff(sym_z())), self->where, self->source, "differentiate");
+  f.impl_ = derivative(impl_, sym_z());
   return f;
 }
 
