@@ -66,4 +66,8 @@ ProblemSpec manufactured_problem(Pde pde, const SymbolicFunction& u, std::vector
 /// Parse and validate the `problem:` section (keys pde, exact, source, boundary, data, form).
 ProblemSpec parse_problem(const ConfigNode& node);
 
+/// `problem:` with `pde: laplace_beltrami` (keys pde, exact, source, reaction; expressions in x, y, z). With
+/// both exact and source, the source is used as given and exact measures the errors.
+ProblemSpec parse_surface_problem(const ConfigNode& node);
+
 }  // namespace iga

@@ -10,31 +10,6 @@
 
 namespace iga {
 
-ProblemSpec parse_surface_problem(const ConfigNode& node) {
-  node.check_keys({"pde", "exact", "source", "reaction"});
-  ProblemSpec p;
-  if (const auto c = node.find("reaction")) {
-    p.reaction = c->as_double();
-    if (!(p.reaction >= 0.0 && std::isfinite(p.reaction))) c->fail("reaction must be a number >= 0");
-  }
-  p.pde = Pde::laplace_beltrami;
-  p.form = BilinearForm::laplace;
-  const auto exact = node.find("exact");
-  const auto source = node.find("source");
-  if (!exact && !source) node.fail("give 'exact' (a solution in x, y, z), 'source', or both");
-  if (exact) {
-    p.surface_exact = SymbolicFunction::parse_xyz(exact->as_string(), exact->where());
-    p.source_where = p.data_where = exact->where();
-  }
-  // With both, the source is used as given and `exact` only measures the errors: data of another
-  // surface (the true sphere) on the constructed one, where the geometric error shows.
-  if (source) {
-    p.surface_source = SymbolicFunction::parse_xyz(source->as_string(), source->where());
-    p.source_where = source->where();
-  }
-  return p;
-}
-
 namespace {
 SurfaceField field(const SymbolicFunction& f) {
   return [f](const Eigen::Vector3d& x) { return f.at(x); };

@@ -13,10 +13,6 @@
 
 namespace iga {
 
-/// `problem:` with `pde: laplace_beltrami` (keys pde, exact, source, reaction; expressions in x, y, z). With
-/// both exact and source, the source is used as given and exact measures the errors.
-ProblemSpec parse_surface_problem(const ConfigNode& node);
-
 /// u and its ambient gradient as callables (empty when the problem has no exact solution).
 SurfaceExactSolution surface_exact_solution(const ProblemSpec& problem);
 
