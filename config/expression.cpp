@@ -156,6 +156,34 @@ size_t matching_paren(const std::string& text, size_t open) {
   return std::string::npos;
 }
 
+/// The first number literal whose decimal exponent is out of double range (GiNaC reads "1e999999"
+/// as an exact rational and computes 10^999999), or "".
+std::string huge_number(const std::string& text) {
+  for (size_t i = 0; i < text.size();) {
+    const auto c = static_cast<unsigned char>(text[i]);
+    if (std::isalpha(c) || c == '_') {  // a name: letters and digits (x1 is no number)
+      while (i < text.size() && (std::isalnum(static_cast<unsigned char>(text[i])) || text[i] == '_')) ++i;
+      continue;
+    }
+    if (!std::isdigit(c) && c != '.') {
+      ++i;
+      continue;
+    }
+    const size_t start = i;
+    while (i < text.size() && (std::isdigit(static_cast<unsigned char>(text[i])) || text[i] == '.')) ++i;
+    if (i < text.size() && (text[i] == 'e' || text[i] == 'E')) {
+      size_t j = i + 1;
+      if (j < text.size() && (text[j] == '+' || text[j] == '-')) ++j;
+      const size_t digits = j;
+      while (j < text.size() && std::isdigit(static_cast<unsigned char>(text[j]))) ++j;
+      if (j - digits > 3 || (j > digits && std::stoi(text.substr(digits, j - digits)) > 308))
+        return text.substr(start, std::min<size_t>(j - start, 40));
+      i = j;
+    }
+  }
+  return {};
+}
+
 /// Why `text` must not reach GiNaC (empty when it may): calls without arguments, huge texts, deep
 /// nesting, power towers and huge literal exponents, all of which crash or hang the parser or the
 /// exact arithmetic behind it.
@@ -163,6 +191,8 @@ std::string hostile_text(const std::string& text) {
   if (const std::string name = empty_call(text); !name.empty()) return "function '" + name + "' called with no arguments";
   if (text.size() > kMaxExpressionLength)
     return "longer than " + std::to_string(kMaxExpressionLength) + " characters";
+  if (const std::string number = huge_number(text); !number.empty())
+    return "the number '" + number + "' is out of range (decimal exponents up to 308)";
   int depth = 0, signs = 0;
   for (size_t i = 0; i < text.size(); ++i) {
     const char c = text[i];
