@@ -3,6 +3,7 @@
 // loop or allocate without end, or end the calling process; every failure is an InputError
 // naming the file.
 
+#include "tests/support/input_error.hpp"
 #include "mesh/gmsh_worker.hpp"
 
 #include <gtest/gtest.h>
@@ -25,17 +26,7 @@ namespace fs = std::filesystem;
 
 const std::string source_dir = IGA_SOURCE_DIR;
 
-/// Runs `f`, expects an InputError, and returns its message.
-template <class F>
-std::string input_error(F&& f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  ADD_FAILURE() << "no InputError";
-  return "";
-}
+using test::input_error;
 
 /// A .geo in the scratch folder, meshed by the worker with the static check bypassed.
 GmshJob unchecked_geo(const std::string& name, const std::string& text, double seconds = 20.0) {

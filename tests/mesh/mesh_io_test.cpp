@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <set>
 
+#include "tests/support/input_error.hpp"
 #include "tests/support/scratch_files.hpp"
 #include "config/errors.hpp"
 #include "mesh/mesh_polygon.hpp"
@@ -52,17 +53,7 @@ double longest_edge(const PlanarMesh& m) {
   return h;
 }
 
-/// Runs `f`, expects an InputError, and returns its message.
-template <class F>
-std::string input_error(F&& f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  ADD_FAILURE() << "no InputError";
-  return "";
-}
+using test::input_error;
 
 TEST(MeshIo, GeoLShapeMeshedWithSize) {
   const PlanarMesh coarse = read_mesh_file(l_shape_geo, {0.25, false});
