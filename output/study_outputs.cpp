@@ -3,6 +3,7 @@
 #include <filesystem>
 #include <vector>
 
+#include "output/surface_geometry_vtk.hpp"
 #include "output/vtk_writer.hpp"
 
 namespace iga {
@@ -12,7 +13,7 @@ StudyResult run_study_with_vtk(const StudySettings& settings, const std::string&
   if (!settings.write_vtk) return run_study(settings, progress);
   const std::filesystem::path dir(directory);
   const ExactSolution exact = settings.problem.exact_solution();
-  std::vector<std::string> vtu_files, mesh_files;
+  std::vector<std::string> vtu_files, mesh_files, surface_files;
   const LevelSink write_level = [&](int level, const Space& space, const DiscreteSolution& sol) {
     progress("[level " + std::to_string(level) + "] writing VTK");
     VtkFieldOptions opt;
@@ -27,10 +28,16 @@ StudyResult run_study_with_vtk(const StudySettings& settings, const std::string&
     const std::string mesh = "mesh_" + std::to_string(level) + ".vtu";
     write_mesh_vtu(space, settings.vtk_samples, (dir / mesh).string());
     mesh_files.push_back(mesh);
+    if (space.ambient_dimension() == 3) {  // the surface itself, shaded by its own normals
+      const std::string surface = "surface_" + std::to_string(level) + ".vtu";
+      write_surface_geometry_vtu(space, settings.vtk_samples, (dir / surface).string());
+      surface_files.push_back(surface);
+    }
   };
   StudyResult result = run_study(settings, progress, write_level);
   write_pvd(vtu_files, (dir / "solution.pvd").string());
   write_pvd(mesh_files, (dir / "mesh.pvd").string());
+  if (!surface_files.empty()) write_pvd(surface_files, (dir / "surface.pvd").string());
   return result;
 }
 

@@ -1,6 +1,7 @@
 #pragma once
 /// @file
-/// A study with its files: every level's solution_<l>.vtu / mesh_<l>.vtu and the .pvd collections,
+/// A study with its files: every level's solution_<l>.vtu / mesh_<l>.vtu (and surface_<l>.vtu, the
+/// surface with its normals, for spaces on surfaces in 3D) and the .pvd collections,
 /// written as the study goes (the study loop itself writes nothing).
 
 #include <string>

@@ -121,6 +121,7 @@ DiscreteSolution solve_surface_problem(const Space& space, const ProblemSpec& pr
     r.h1 = e.h1;
     r.t_errors = seconds_since(t0);
   }
+  r.g1_jump = space.max_gradient_jump(out.coefficients);  // surface gradient jump of C1 spaces on surfaces
   return out;
 }
 

@@ -1,20 +1,45 @@
 #include "spaces/g1_4split/g1_4split_from_config.hpp"
 
 #include <algorithm>
+#include <filesystem>
 
 #include "config/errors.hpp"
 #include "mesh/mesh_file_from_config.hpp"
+#include "mesh/read_quad_surface_mesh.hpp"
 #include "spaces/g1/multipatch_domains.hpp"
 #include "spaces/g1/patch_mesh_from_file.hpp"
 #include "spaces/g1_4split/g1_4split_meshes.hpp"
 #include "spaces/g1_4split/g1_4split_space.hpp"
+#include "spaces/g1_4split/g1_4split_surface_space.hpp"
 
 namespace iga {
 
 namespace {
 
+/// A closed quad surface in 3D: a built-in (cube, split_tetrahedron) or a quad .obj/.off file.
+std::pair<QuadTopology, std::vector<Eigen::Vector3d>> surface_mesh(const ConfigNode& domain) {
+  domain.check_keys({"type", "mesh", "file"});
+  const bool builtin = domain.has("mesh"), file = domain.has("file");
+  if (builtin == file)
+    domain.fail("give either 'mesh' (cube or split_tetrahedron) or 'file' (a quad mesh in .obj or .off), not both");
+  if (builtin) {
+    const std::string name = domain["mesh"].as_choice({"cube", "split_tetrahedron"});
+    if (name == "cube") return {cube_topology(), cube_vertices()};
+    return {split_tetrahedron_topology(), split_tetrahedron_vertices()};
+  }
+  const ConfigNode node = domain["file"];
+  std::filesystem::path path = node.as_string();
+  if (path.is_relative()) path = std::filesystem::path(node.file()).parent_path() / path;
+  const QuadSurfaceFile read = node.guard([&] { return read_quad_surface_mesh(path.string()); });
+  QuadTopology topology =
+      node.guard([&] { return QuadTopology(static_cast<int>(read.points.size()), read.quads, read.source); });
+  for (int v = 0; v < topology.num_vertices(); ++v)
+    if (topology.vertex_faces(v) == 0) node.fail(read.source + ": vertex " + std::to_string(v + 1) + " is in no face");
+  return {std::move(topology), read.points};
+}
+
 PatchMesh domain_mesh(const ConfigNode& domain) {
-  const std::string type = domain["type"].as_choice({"multipatch", "mesh_file"});
+  const std::string type = domain["type"].as_choice({"multipatch", "mesh_file", "surface"});
   if (type == "multipatch") {
     domain.check_keys({"type", "name"});
     std::vector<std::string> names = g14_domain_names();
@@ -54,6 +79,31 @@ SpacePtr make_g1_4split_space(const ConfigNode& domain, const ConfigNode& space,
   if (space.has("refinement")) o.nested = space["refinement"].as_choice({"nested", "rebuild"}) == "nested";
   if (level < 0 || level > 6) space.fail("refinement level must be in 0..6 (got " + std::to_string(level) + ")");
   o.level = level;
+  if (domain["type"].as_choice({"multipatch", "mesh_file", "surface"}) == "surface") {
+    if (!o.nested)
+      space["refinement"].fail(
+          "a g1_4split surface is refined nested only (rebuilding would fit a different surface at every level)");
+    const auto [topology, vertices] = surface_mesh(domain);
+    try {
+      return domain.guard([&] { return std::make_shared<const G14SurfaceSpace>(topology, vertices, o); });
+    } catch (const NotSeparable& e) {
+      int works = -1;
+      for (int k = o.degree + 1; k <= 10 && works < 0; ++k) {
+        G14Options t = o;
+        t.degree = k;
+        try {
+          G14SurfaceSpace trial(topology, vertices, t);
+          works = k;
+        } catch (const NotSeparable&) {
+        } catch (const InputError&) {
+          works = k;
+        }
+      }
+      dn.fail("g1_4split degree " + std::to_string(o.degree) + " is below the separability degree of the surface '" +
+              topology.name() + "' at level " + std::to_string(level) + " (" + e.what() +
+              "); the smallest degree that works is " + (works > 0 ? std::to_string(works) : std::string("above 10")));
+    }
+  }
   const PatchMesh mesh = domain_mesh(domain);
   domain.guard([&] { return quad_topology(mesh); });
   try {

@@ -106,7 +106,7 @@ std::vector<std::pair<std::string, std::string>> G14Space::parameters() const {
           {"domain", mesh_->name()}};
 }
 
-RulePtr G14Space::quadrature(int, int degree) const {
+RulePtr SplitRuleCache::cell(int degree) const {
   degree = std::max(degree, 0);
   std::lock_guard<std::mutex> lock(mutex_);
   RulePtr& r = cells_[degree];
@@ -120,7 +120,7 @@ RulePtr G14Space::quadrature(int, int degree) const {
   return r;
 }
 
-RulePtr G14Space::edge_quadrature(int, int edge, int degree) const {
+RulePtr SplitRuleCache::edge(int edge, int degree) const {
   degree = std::max(degree, 0);
   std::lock_guard<std::mutex> lock(mutex_);
   RulePtr& r = edges_[{edge, degree}];
@@ -144,14 +144,14 @@ std::vector<BoundaryEdge> G14Space::boundary_edges(const std::string& name) cons
   return boundary_part_edges(*mesh_, name);
 }
 
-std::vector<InteriorEdge> G14Space::interior_edges() const {
+std::vector<InteriorEdge> quad_interior_edges(const QuadTopology& t) {
   std::vector<InteriorEdge> out;
-  for (int e = 0; e < topology_->num_edges(); ++e) {
-    const QuadEdge& edge = topology_->edge(e);
+  for (int e = 0; e < t.num_edges(); ++e) {
+    const QuadEdge& edge = t.edge(e);
     if (edge.boundary()) continue;
     InteriorEdge ie;
     const QuadSide a = edge.sides[0], b = edge.sides[1];
-    const bool same = topology_->face(a.face)[a.local_edge] == topology_->face(b.face)[b.local_edge];
+    const bool same = t.face(a.face)[a.local_edge] == t.face(b.face)[b.local_edge];
     ie.element_a = a.face;
     ie.edge_a = a.local_edge;
     ie.a0 = 0.0;

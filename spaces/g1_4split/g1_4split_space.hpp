@@ -26,6 +26,22 @@ struct G14Options {
   bool nested = true;
 };
 
+/// Rules on the face's 4 sub-squares (Gauss per sub-square) and on its edges (Gauss per half),
+/// built once per degree; thread-safe.
+class SplitRuleCache {
+ public:
+  RulePtr cell(int degree) const;
+  RulePtr edge(int edge, int degree) const;
+
+ private:
+  mutable std::mutex mutex_;
+  mutable std::map<int, RulePtr> cells_;
+  mutable std::map<std::pair<int, int>, RulePtr> edges_;
+};
+
+/// Every interior edge of `t` once, with the faces' parameters (t runs the same or opposite way).
+std::vector<InteriorEdge> quad_interior_edges(const QuadTopology& t);
+
 class G14Space final : public Space {
  public:
   /// Build on `coarse` refined `options.level` times. Throws NotSeparable when the degree is below
@@ -45,8 +61,8 @@ class G14Space final : public Space {
   int continuity() const override { return 1; }
   bool affine_elements() const override { return false; }
 
-  RulePtr quadrature(int element, int degree) const override;
-  RulePtr edge_quadrature(int element, int edge, int degree) const override;
+  RulePtr quadrature(int, int degree) const override { return rules_.cell(degree); }
+  RulePtr edge_quadrature(int, int edge, int degree) const override { return rules_.edge(edge, degree); }
 
   std::vector<std::string> boundary_names() const override;
   std::vector<BoundaryEdge> boundary_edges(const std::string& name) const override;
@@ -54,7 +70,7 @@ class G14Space final : public Space {
   /// Largest physical gradient jump of Σ c_i N_i across interior edges, sampled at 4k + 8 points
   /// per edge (the jump is piecewise rational of moderate degree on each half).
   std::optional<double> max_gradient_jump(const Eigen::VectorXd& coefficients) const override;
-  std::vector<InteriorEdge> interior_edges() const override;
+  std::vector<InteriorEdge> interior_edges() const override { return quad_interior_edges(*topology_); }
 
   const QuadTopology& topology() const { return *topology_; }
   const G14Basis& basis() const { return basis_; }
@@ -71,10 +87,7 @@ class G14Space final : public Space {
   G14Basis basis_;
   FaceGeometry geometry_;
   double mesh_size_ = 0.0;
-
-  mutable std::mutex mutex_;
-  mutable std::map<int, RulePtr> cells_;
-  mutable std::map<std::pair<int, int>, RulePtr> edges_;
+  SplitRuleCache rules_;
 };
 
 }  // namespace iga

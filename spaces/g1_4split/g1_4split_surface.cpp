@@ -12,8 +12,13 @@ namespace iga {
 
 G14Surface fit_surface(const QuadTopology& topology, const std::vector<Eigen::Vector3d>& vertices, int degree,
                        Blending blending) {
+  return fit_surface(topology, symmetric_gluing(topology, blending), vertices, degree, 1);
+}
+
+G14Surface fit_surface(const QuadTopology& topology, const std::vector<SplitGluing>& gluing,
+                       const std::vector<Eigen::Vector3d>& vertices, int degree, int regularity) {
   G14Surface s;
-  s.basis = build_g14_basis(topology, symmetric_gluing(topology, blending), degree, 1);
+  s.basis = build_g14_basis(topology, gluing, degree, regularity);
   const SplitBSpline& b = s.basis.bspline;
   const int n = b.size();
   const Eigen::VectorXd g = b.greville();

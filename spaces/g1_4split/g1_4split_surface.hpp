@@ -23,6 +23,9 @@ struct G14Surface {
 /// Throws NotSeparable when the degree is below the separability degree.
 G14Surface fit_surface(const QuadTopology& topology, const std::vector<Eigen::Vector3d>& vertices, int degree,
                        Blending blending);
+/// The same with given gluing data and regularity r across the split lines.
+G14Surface fit_surface(const QuadTopology& topology, const std::vector<SplitGluing>& gluing,
+                       const std::vector<Eigen::Vector3d>& vertices, int degree, int regularity);
 
 /// Point, d/du and d/dv of face f at (u, v).
 std::array<Eigen::Vector3d, 3> surface_jet(const G14Surface& s, int face, double u, double v);

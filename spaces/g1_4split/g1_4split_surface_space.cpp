@@ -1,0 +1,227 @@
+#include "spaces/g1_4split/g1_4split_surface_space.hpp"
+
+#include <Eigen/Geometry>  // cross
+#include <Eigen/LU>
+#include <algorithm>
+#include <stdexcept>
+
+#include "config/errors.hpp"
+#include "spaces/g1_4split/face_function.hpp"
+#include "spaces/g1_4split/g1_4split_geometry.hpp"
+#include "spaces/push_forward.hpp"
+#include "spaces/surface_values.hpp"
+
+namespace iga {
+
+namespace {
+
+/// Lower bound of (x_u × x_v) · c / diameter² on one face, c the unit normal at the centre: the
+/// Jacobian of the face's projection onto its centre tangent plane, certified like a planar map.
+double face_fold_bound(const SplitBSpline& b, const std::array<Eigen::VectorXd, 3>& xyz) {
+  Eigen::Vector3d du, dv;
+  for (int d = 0; d < 3; ++d) {
+    const auto j = face_jet(b, xyz[d], Point2(0.5, 0.5));
+    du(d) = j(1);
+    dv(d) = j(2);
+  }
+  const Eigen::Vector3d c = du.cross(dv);
+  if (c.norm() == 0.0) return 0.0;
+  const Eigen::Vector3d e1 = du.normalized(), e2 = c.normalized().cross(e1);
+  const Eigen::VectorXd p = e1(0) * xyz[0] + e1(1) * xyz[1] + e1(2) * xyz[2];
+  const Eigen::VectorXd q = e2(0) * xyz[0] + e2(1) * xyz[1] + e2(2) * xyz[2];
+  return certified_jacobian_bound(b, p, q);
+}
+
+}  // namespace
+
+class G14SurfaceSpace::Evaluator3 final : public Space::Evaluator {
+ public:
+  explicit Evaluator3(const G14SurfaceSpace& s) : space_(s) {}
+
+  void evaluate(int element, const QuadratureRule& rule, unsigned flags, PointValues& out) override {
+    if (flags & (update_hessians | update_laplacian_gradient | update_bilaplacian))
+      throw std::logic_error("g1_4split surface: second derivatives of functions on surfaces are not implemented");
+    const Tables& t = tables(rule);
+    const G14Basis& basis = space_.surface_.basis;
+    const unsigned need = (flags & update_values ? update_values : 0u) | (flags & update_gradients ? update_gradients : 0u);
+    extract_reference_derivatives(basis.extraction[element], t.t, need, ref_);
+    out.dofs = basis.face_dofs[element];
+    const int q = rule.size();
+    const bool curvature = flags & update_surface_curvature;
+    Eigen::Matrix<double, 6, Eigen::Dynamic> X[3];
+    for (int c = 0; c < 3; ++c) {
+      X[c].resize(6, q);
+      const Eigen::VectorXd& coef = space_.surface_.coefficients[element][c];
+      for (int d = 0; d < (curvature ? 6 : 3); ++d) X[c].row(d) = coef.transpose() * t.t[d];
+    }
+    out.x3.resize(3, q);
+    out.jacobian3.resize(q);
+    out.jacobian.clear();
+    if (curvature) {
+      out.normal3.resize(3, q);
+      out.mean_curvature.resize(q);
+    }
+    for (int k = 0; k < q; ++k) {
+      Eigen::Matrix<double, 3, 2>& J = out.jacobian3[k];
+      for (int c = 0; c < 3; ++c) {
+        out.x3(c, k) = X[c](0, k);
+        J(c, 0) = X[c](1, k);
+        J(c, 1) = X[c](2, k);
+      }
+      if (curvature) {
+        // Second fundamental form B_ij = x_ij · n and H = −tr(G⁻¹B) = div_Γ n for this n (the
+        // sign of n does not matter to the problem: H ∂_n u is the same for −n).
+        const Eigen::Vector3d n = J.col(0).cross(J.col(1)).normalized();
+        Eigen::Vector3d xuu, xuv, xvv;
+        for (int c = 0; c < 3; ++c) {
+          xuu(c) = X[c](3, k);
+          xuv(c) = X[c](4, k);
+          xvv(c) = X[c](5, k);
+        }
+        Eigen::Matrix2d B;
+        B << xuu.dot(n), xuv.dot(n), xuv.dot(n), xvv.dot(n);
+        const Eigen::Matrix2d G = J.transpose() * J;
+        out.normal3.col(k) = n;
+        out.mean_curvature(k) = -(G.inverse() * B).trace();
+      }
+    }
+    out.x = out.x3.topRows(2);
+    if (flags & update_values) out.value = ref_.value;
+    if (flags & update_gradients) complete_surface_gradients(ref_.dxi, ref_.deta, out);
+  }
+
+ private:
+  struct Tables {
+    std::vector<Point2> points;
+    Eigen::MatrixXd t[6];
+  };
+  const Tables& tables(const QuadratureRule& rule) {
+    auto it = cache_.find(&rule);
+    if (it != cache_.end() && it->second.points == rule.points) return it->second;
+    if (it == cache_.end() && cache_.size() >= 64) cache_.clear();
+    Tables& t = cache_[&rule];
+    t.points = rule.points;
+    tensor_tables(space_.surface_.basis.bspline, rule.points, t.t);
+    return t;
+  }
+
+  const G14SurfaceSpace& space_;
+  std::map<const QuadratureRule*, Tables> cache_;
+  ReferenceDerivatives ref_;
+};
+
+G14SurfaceSpace::G14SurfaceSpace(const QuadTopology& coarse, const std::vector<Eigen::Vector3d>& vertices,
+                                 const G14Options& options)
+    : options_(options) {
+  if (!options.nested) throw std::invalid_argument("G14SurfaceSpace: refinement is nested only");
+  if (static_cast<int>(vertices.size()) != coarse.num_vertices())
+    throw std::invalid_argument("G14SurfaceSpace: one position per vertex is required");
+  QuadTopology topology = coarse;
+  gluing_ = symmetric_gluing(topology, options.blending);
+  surface_ = fit_surface(topology, gluing_, vertices, options.degree, options.regularity);
+  if (options.level > 0) {
+    // Subdivide the level-0 surface exactly (x, y through one FaceGeometry, z through another)
+    // and inherit the gluing, level by level; the basis is built on the finest level only.
+    const SplitBSpline& b = surface_.basis.bspline;
+    FaceGeometry xy, z;
+    for (const auto& c : surface_.coefficients) {
+      xy.x.push_back(c[0]);
+      xy.y.push_back(c[1]);
+      z.x.push_back(c[2]);
+      z.y.push_back(Eigen::VectorXd::Zero(c[2].size()));
+    }
+    for (int l = 0; l < options.level; ++l) {
+      QuadTopology fine = topology.refined();
+      gluing_ = inherited_gluing(topology, gluing_, fine);
+      xy = subdivide_geometry(b, xy);
+      z = subdivide_geometry(b, z);
+      topology = std::move(fine);
+    }
+    surface_.basis = build_g14_basis(topology, gluing_, options.degree, options.regularity);
+    surface_.coefficients.clear();
+    for (std::size_t f = 0; f < xy.x.size(); ++f) surface_.coefficients.push_back({xy.x[f], xy.y[f], z.x[f]});
+  }
+  topology_ = std::make_shared<const QuadTopology>(std::move(topology));
+
+  const SplitBSpline& b = surface_.basis.bspline;
+  fold_bound_ = 1e300;
+  for (int f = 0; f < topology_->num_faces(); ++f) {
+    fold_bound_ = std::min(fold_bound_, face_fold_bound(b, surface_.coefficients[f]));
+    std::vector<Eigen::Vector3d> pts;
+    for (int j = 0; j < 4; ++j)
+      for (int s = 0; s < 4; ++s) {
+        const Point2 uv = reference_edge_point(CellShape::quadrilateral, j, s / 4.0);
+        pts.push_back(surface_jet(surface_, f, uv.x(), uv.y())[0]);
+      }
+    for (const auto& p : pts)
+      for (const auto& r : pts) mesh_size_ = std::max(mesh_size_, (p - r).norm());
+  }
+  // The same margin as the planar check: a zero of the Jacobian leaves coefficients at round-off.
+  if (fold_bound_ <= 1e-8)
+    throw InputError("g1_4split surface of '" + coarse.name() +
+                     "': a face of the fitted surface is not certified regular (its projection onto the tangent "
+                     "plane at the face centre folds or degenerates); the mesh does not fit the symmetric gluing");
+  normal_jump_ = surface_normal_jump(*topology_, surface_, 4 * options.degree + 8);
+  min_metric_ratio_ = surface_regularity(surface_, 24);
+}
+
+std::unique_ptr<Space::Evaluator> G14SurfaceSpace::make_evaluator() const { return std::make_unique<Evaluator3>(*this); }
+
+std::vector<std::pair<std::string, std::string>> G14SurfaceSpace::parameters() const {
+  const auto sci = [](double x) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.3e", x);
+    return std::string(buf);
+  };
+  return {{"degree", std::to_string(options_.degree)},
+          {"regularity", std::to_string(options_.regularity)},
+          {"blending", blending_name(options_.blending)},
+          {"refinement", "nested"},
+          {"faces", std::to_string(topology_->num_faces())},
+          {"domain", topology_->name()},
+          {"surface_normal_jump", sci(normal_jump_)},
+          {"surface_min_metric_ratio", sci(min_metric_ratio_)},
+          {"surface_fold_bound", sci(fold_bound_)}};
+}
+
+std::vector<BoundaryEdge> G14SurfaceSpace::boundary_edges(const std::string& name) const {
+  if (name != "all") throw std::invalid_argument("G14SurfaceSpace: no boundary part '" + name + "'");
+  std::vector<BoundaryEdge> out;
+  for (int e = 0; e < topology_->num_edges(); ++e)
+    if (topology_->edge(e).boundary()) out.push_back({topology_->edge(e).sides[0].face, topology_->edge(e).sides[0].local_edge});
+  return out;
+}
+
+std::optional<double> G14SurfaceSpace::max_gradient_jump(const Eigen::VectorXd& coefficients) const {
+  const G14Basis& basis = surface_.basis;
+  const SplitBSpline& b = basis.bspline;
+  std::vector<Eigen::VectorXd> faces(topology_->num_faces());
+  for (int f = 0; f < topology_->num_faces(); ++f) {
+    const std::vector<int>& dofs = basis.face_dofs[f];
+    Eigen::VectorXd local(static_cast<Eigen::Index>(dofs.size()));
+    for (std::size_t i = 0; i < dofs.size(); ++i) local[static_cast<Eigen::Index>(i)] = coefficients[dofs[i]];
+    faces[f] = basis.extraction[f] * local;
+  }
+  const int samples = 4 * options_.degree + 8;
+  double worst = 0.0;
+  for (const InteriorEdge& ie : interior_edges())
+    for (int s = 0; s < samples; ++s) {
+      const double t = double(s) / (samples - 1);
+      Eigen::Vector3d grad[2];
+      for (int side = 0; side < 2; ++side) {
+        const int f = side == 0 ? ie.element_a : ie.element_b;
+        const int j = side == 0 ? ie.edge_a : ie.edge_b;
+        const double tt = side == 0 ? ie.a0 + t * (ie.a1 - ie.a0) : ie.b0 + t * (ie.b1 - ie.b0);
+        const Point2 uv = reference_edge_point(CellShape::quadrilateral, j, tt);
+        const auto x = surface_jet(surface_, f, uv.x(), uv.y());
+        const auto u = face_jet(b, faces[f], uv);
+        Eigen::Matrix<double, 3, 2> J;
+        J << x[1], x[2];
+        grad[side] = J * (J.transpose() * J).inverse() * Eigen::Vector2d(u(1), u(2));
+      }
+      worst = std::max(worst, (grad[0] - grad[1]).norm());
+    }
+  return worst;
+}
+
+}  // namespace iga

@@ -1,0 +1,81 @@
+#pragma once
+/// @file
+/// G14SurfaceSpace: the 4-split G1 space on a quad mesh in 3D, as a smooth surface Γ and a space on
+/// it (ambient_dimension() == 3). The three coordinates of the surface are the least-squares
+/// projection of the mesh's bilinear surface onto the space (isoparametric, as in the plane), so
+/// along every edge the G1 relation holds for x, y, z and every function alike: the tangent planes
+/// agree and the surface gradients of the functions are continuous. Refinement is nested: the
+/// gluing is inherited and the level-0 surface is subdivided exactly, so every level solves on the
+/// same surface.
+
+#include <Eigen/Core>
+#include <array>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "spaces/g1_4split/g1_4split_basis.hpp"
+#include "spaces/g1_4split/g1_4split_space.hpp"
+#include "spaces/g1_4split/g1_4split_surface.hpp"
+#include "spaces/space.hpp"
+
+namespace iga {
+
+class G14SurfaceSpace final : public Space {
+ public:
+  /// The surface of `coarse` with corner positions `vertices` (one per vertex), refined
+  /// options.level times (options.nested must hold). Throws NotSeparable below the separability
+  /// degree, InputError when the fitted surface is not certified regular.
+  G14SurfaceSpace(const QuadTopology& coarse, const std::vector<Eigen::Vector3d>& vertices, const G14Options& options);
+
+  std::unique_ptr<Evaluator> make_evaluator() const override;
+  int ambient_dimension() const override { return 3; }
+  std::string type() const override { return "g1_4split"; }
+  /// degree, regularity, blending, refinement, faces, domain and the surface checks:
+  /// surface_normal_jump, surface_min_metric_ratio, surface_fold_bound (see below).
+  std::vector<std::pair<std::string, std::string>> parameters() const override;
+
+  int dimension() const override { return surface_.basis.dimension(); }
+  void element_dofs(int element, std::vector<int>& out) const override { out = surface_.basis.face_dofs[element]; }
+  int num_elements() const override { return topology_->num_faces(); }
+  CellShape cell_shape(int) const override { return CellShape::quadrilateral; }
+  double mesh_size() const override { return mesh_size_; }
+  int degree() const override { return options_.degree; }
+  int continuity() const override { return 1; }
+  bool affine_elements() const override { return false; }
+  RulePtr quadrature(int, int degree) const override { return rules_.cell(degree); }
+  RulePtr edge_quadrature(int, int edge, int degree) const override { return rules_.edge(edge, degree); }
+  std::vector<std::string> boundary_names() const override { return {}; }
+  std::vector<BoundaryEdge> boundary_edges(const std::string& name) const override;
+
+  /// Largest jump of the surface gradient of Σ c_i N_i across interior edges (4k + 8 samples per edge).
+  std::optional<double> max_gradient_jump(const Eigen::VectorXd& coefficients) const override;
+  std::vector<InteriorEdge> interior_edges() const override { return quad_interior_edges(*topology_); }
+
+  const QuadTopology& topology() const { return *topology_; }
+  const G14Basis& basis() const { return surface_.basis; }
+  /// The basis and, per face, the B-spline coefficients of x, y and z.
+  const G14Surface& surface() const { return surface_; }
+
+  /// G1 residual: the largest orientation-free distance min(|n0 − n1|, |n0 + n1|) between the unit
+  /// normals of the two faces at 4k + 8 samples of every interior edge.
+  double normal_jump() const { return normal_jump_; }
+  /// Smallest |x_u × x_v| over a 24 × 24 grid of every face, over the largest (0 at a singular point).
+  double min_metric_ratio() const { return min_metric_ratio_; }
+  /// Fold check, certified: the smallest over faces of a Bernstein lower bound of (x_u × x_v) · c_f
+  /// / diameter², c_f the unit normal at the face's centre. Positive means every face is a regular
+  /// graph over its centre tangent plane (no fold, no singular point).
+  double fold_bound() const { return fold_bound_; }
+
+ private:
+  class Evaluator3;
+
+  G14Options options_;
+  std::shared_ptr<const QuadTopology> topology_;
+  std::vector<SplitGluing> gluing_;
+  G14Surface surface_;
+  double mesh_size_ = 0.0, normal_jump_ = 0.0, min_metric_ratio_ = 0.0, fold_bound_ = 0.0;
+  SplitRuleCache rules_;
+};
+
+}  // namespace iga
