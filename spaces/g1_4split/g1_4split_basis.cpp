@@ -107,6 +107,20 @@ std::vector<SplitGluing> inherited_gluing(const QuadTopology& coarse, const std:
   return out;
 }
 
+int crossing_vertex_with_slope(const QuadTopology& t, const std::vector<SplitGluing>& gluing) {
+  for (int v = 0; v < t.num_vertices(); ++v) {
+    if (t.vertex_on_boundary(v)) continue;
+    bool crossing = true, slope = false;
+    for (int e : t.vertex_edges(v)) {
+      const bool start = t.edge(e).g0 == v;
+      crossing = crossing && std::abs(gluing[e].eval(start ? 0.0 : 1.0, 0, start ? 0 : 1)) < 1e-12;
+      slope = slope || std::abs(gluing[e].eval(start ? 0.0 : 1.0, 1, start ? 0 : 1)) > 1e-12;
+    }
+    if (crossing && slope) return v;
+  }
+  return -1;
+}
+
 Eigen::SparseMatrix<double> global_constraints(const QuadTopology& t, const std::vector<SplitGluing>& gluing,
                                                const SplitBSpline& b) {
   std::vector<Eigen::Triplet<double>> trip;

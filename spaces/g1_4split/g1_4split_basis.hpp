@@ -47,6 +47,11 @@ std::vector<SplitGluing> symmetric_gluing(const QuadTopology& t, Blending blendi
 std::vector<SplitGluing> inherited_gluing(const QuadTopology& coarse, const std::vector<SplitGluing>& gluing,
                                          const QuadTopology& fine);
 
+/// An interior crossing vertex (a = 0 on all its edges) at which some edge has a'(γ) ≠ 0, or -1.
+/// The twist condition there (opposite edges with equal a'(γ)) is not checked edge by edge; the
+/// blendings q0, q1, c1 have a' = 0 at every vertex, the linear one does not.
+int crossing_vertex_with_slope(const QuadTopology& t, const std::vector<SplitGluing>& gluing);
+
 /// Build the local basis for degree k, regularity r. Throws NotSeparable when some vertex datum
 /// cannot be lifted along an edge (k below the edge's separability degree).
 G14Basis build_g14_basis(const QuadTopology& t, const std::vector<SplitGluing>& gluing, int k, int r);

@@ -38,6 +38,16 @@ std::pair<QuadTopology, std::vector<Eigen::Vector3d>> surface_mesh(const ConfigN
   return {std::move(topology), read.points};
 }
 
+/// The linear blending has a'(γ) ≠ 0: refused where an interior crossing vertex sees it (the twist
+/// compatibility of the gluing would fail there).
+void check_linear_blending(const ConfigNode& space, const QuadTopology& topology, const std::vector<SplitGluing>& gluing) {
+  const int v = crossing_vertex_with_slope(topology, gluing);
+  if (v >= 0)
+    space["blending"].fail("blending linear is refused on '" + topology.name() + "': vertex " + std::to_string(v) +
+                           " is an interior valence-4 (crossing) vertex next to a vertex of another gluing value, "
+                           "where linear gluing data have a slope the twists cannot follow; use q1 or c1 there");
+}
+
 PatchMesh domain_mesh(const ConfigNode& domain) {
   const std::string type = domain["type"].as_choice({"multipatch", "mesh_file", "surface"});
   if (type == "multipatch") {
@@ -68,7 +78,7 @@ SpacePtr make_g1_4split_space(const ConfigNode& domain, const ConfigNode& space,
                                std::to_string(o.regularity) + ")");
   }
   if (space.has("blending")) {
-    const std::string b = space["blending"].as_choice({"q1", "c1", "q0"});
+    const std::string b = space["blending"].as_choice({"q1", "c1", "linear", "q0"});
     if (b == "q0")
       space["blending"].fail(
           "blending q0 (the paper's C0 blending) is refused for analysis: with it every function of the space has a "
@@ -84,6 +94,7 @@ SpacePtr make_g1_4split_space(const ConfigNode& domain, const ConfigNode& space,
       space["refinement"].fail(
           "a g1_4split surface is refined nested only (rebuilding would fit a different surface at every level)");
     const auto [topology, vertices] = surface_mesh(domain);
+    if (o.blending == Blending::linear) check_linear_blending(space, topology, symmetric_gluing(topology, o.blending));
     try {
       return domain.guard([&] { return std::make_shared<const G14SurfaceSpace>(topology, vertices, o); });
     } catch (const NotSeparable& e) {
@@ -105,7 +116,8 @@ SpacePtr make_g1_4split_space(const ConfigNode& domain, const ConfigNode& space,
     }
   }
   const PatchMesh mesh = domain_mesh(domain);
-  domain.guard([&] { return quad_topology(mesh); });
+  const QuadTopology topology = domain.guard([&] { return quad_topology(mesh); });
+  if (o.blending == Blending::linear) check_linear_blending(space, topology, symmetric_gluing(topology, o.blending, vertex_angles(mesh)));
   try {
     return domain.guard([&] { return std::make_shared<const G14Space>(mesh, o); });
   } catch (const NotSeparable& e) {

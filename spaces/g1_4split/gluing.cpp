@@ -9,10 +9,19 @@ Blending blending_from_name(const std::string& name) {
   if (name == "q0") return Blending::q0;
   if (name == "q1") return Blending::q1;
   if (name == "c1") return Blending::c1;
-  throw std::invalid_argument("unknown blending '" + name + "' (q0, q1, c1)");
+  if (name == "linear") return Blending::linear;
+  throw std::invalid_argument("unknown blending '" + name + "' (q0, q1, c1, linear)");
 }
 
-std::string blending_name(Blending b) { return b == Blending::q0 ? "q0" : b == Blending::q1 ? "q1" : "c1"; }
+std::string blending_name(Blending b) {
+  switch (b) {
+    case Blending::q0: return "q0";
+    case Blending::q1: return "q1";
+    case Blending::c1: return "c1";
+    case Blending::linear: return "linear";
+  }
+  return "?";
+}
 
 double SplitGluing::eval(double t, int order, int half) const {
   if (half < 0) half = t < 0.5 ? 0 : 1;
@@ -46,6 +55,7 @@ SplitGluing SplitGluing::symmetric(double A0, double A1, Blending b) {
     case Blending::q0: d0 = {{{1, 0, -4, 0}, {0, 0, 0, 0}}}; break;
     case Blending::q1: d0 = {{{1, 0, -2, 0}, {2, -4, 2, 0}}}; break;
     case Blending::c1: d0 = {{{1, 0, -12, 16}, {0, 0, 0, 0}}}; break;
+    case Blending::linear: d0 = {{{1, -1, 0, 0}, {1, -1, 0, 0}}}; break;
   }
   SplitGluing g;
   for (int h = 0; h < 2; ++h) {

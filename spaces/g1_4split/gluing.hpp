@@ -14,7 +14,10 @@ namespace iga {
 /// The blending function d0 of a(t) = A0 d0(t) - A1 d0(1 - t):
 ///  q0: 1 - 4t² | 0 (C0 at 1/2; the paper's example, degenerate for analysis);
 ///  q1: 1 - 2t² | 2(1-t)² (C1, d0 + d1 ≡ 1);  c1: 1 - 12t² + 16t³ | 0 (C1 cubic Hermite).
-enum class Blending { q0, q1, c1 };
+///  linear: 1 - t (one polynomial; its restrictions to sub-edges stay linear, so nested refinement
+///  keeps every edge separable at degree 4; a'(γ) ≠ 0, so it is valid only where no interior
+///  crossing vertex has opposite edges with different a'(γ)).
+enum class Blending { q0, q1, c1, linear };
 
 /// Parses "q0", "q1", "c1"; throws std::invalid_argument otherwise.
 Blending blending_from_name(const std::string& name);
