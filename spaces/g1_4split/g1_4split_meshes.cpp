@@ -8,20 +8,25 @@
 
 namespace iga {
 
-std::vector<std::string> g14_domain_names() { return {"fan3", "fan5", "fan6", "grid2x2", "halffan3"}; }
+std::vector<std::string> g14_domain_names() { return {"fan3", "fan5", "fan6", "grid2x2", "halffan3", "fan3+", "fan5+"}; }
 
 PatchMesh g14_domain(const std::string& name) {
   const double pi = std::acos(-1.0);
   using P = Point2;
-  if (name == "fan3" || name == "fan5" || name == "fan6") {
+  if (name == "fan3" || name == "fan5" || name == "fan6" || name == "fan3+" || name == "fan5+") {
     const int n = name[3] - '0';
+    const bool plus = name.size() == 5;
     std::vector<P> s(n), c(n);
     for (int i = 0; i < n; ++i) {
       s[i] = std::cos(pi / n) * P(std::cos(2 * pi * i / n), std::sin(2 * pi * i / n));
       c[i] = P(std::cos((2 * i - 1) * pi / n), std::sin((2 * i - 1) * pi / n));
     }
+    // The extra quad [s0, c0, p, c1] makes s0 an interior valence-3 vertex; s0 moves in along its
+    // spoke so that its three edges are not in a half-plane (an affine image of a regular 3-fan).
+    if (plus) s[0] *= 0.6;
     std::vector<PatchCorners> patches;
     for (int i = 0; i < n; ++i) patches.push_back({P(0, 0), s[(i + n - 1) % n], c[i], s[i]});
+    if (plus) patches.push_back({s[0], c[0], P(1.6 * std::cos(pi / n) + 0.4, 0), c[1 % n]});
     return mesh_from_patches(patches, name);
   }
   if (name == "grid2x2") {

@@ -105,3 +105,79 @@ TEST(G14Dimension, NestedRefinementKeepsTheSpaceCountedByBruteForce) {
 
 }  // namespace
 }  // namespace iga
+
+namespace iga {
+namespace {
+
+/// Brute force, formula and local basis on a planar built-in with its own boundary angles.
+int planar_dimension(const std::string& name, Blending blending, int k, int r) {
+  const PatchMesh m = g14_domain(name);
+  const QuadTopology t = quad_topology(m);
+  const auto g = symmetric_gluing(t, blending, vertex_angles(m));
+  const int brute = nullspace_dimension(Eigen::MatrixXd(global_constraints(t, g, SplitBSpline(k, r))));
+  EXPECT_EQ(g14_dimension_formula(t, g, k, r), brute) << name << " k=" << k << " r=" << r;
+  return brute;
+}
+
+TEST(G14Dimension, PlanarFan3PlusAndFan5Plus) {
+  // The extra quad makes s0 an interior valence-3 vertex; its edges to the bent boundary vertices
+  // c0, c1 join different gluing values, so q1 needs degree 5 and fan5+ stops at degree 4.
+  for (const char* name : {"fan3+", "fan5+"}) {
+    const PatchMesh m = g14_domain(name);
+    const QuadTopology t = quad_topology(m);
+    EXPECT_EQ(t.num_faces(), name[3] - '0' + 1);
+    const auto q1 = symmetric_gluing(t, Blending::q1, vertex_angles(m));
+    const auto lin = symmetric_gluing(t, Blending::linear, vertex_angles(m));
+    const int dq1 = planar_dimension(name, Blending::q1, 5, 1), dlin = planar_dimension(name, Blending::linear, 4, 1);
+    std::printf("%s planar: q1 k=5 %d, linear k=4 %d\n", name, dq1, dlin);
+    check_local(t, q1, 5, dq1);
+    check_local(t, lin, 4, dlin);
+    EXPECT_THROW(build_g14_basis(t, q1, 4, 1), NotSeparable) << name;
+  }
+  // The topological fan5+ (straight boundary rule, A = 0 at the 2-face boundary vertices): its
+  // 5–3 edge is not separable at k = 4 with q0 (notes §12.8: 263 by brute force).
+  EXPECT_EQ(brute_force(mesh("fan5+"), symmetric_gluing(mesh("fan5+"), Blending::q0), 4), 263);
+}
+
+TEST(G14Dimension, C1Blending) {
+  // Notes §9.1: with c1 the fan3 dimensions are those of q0 (69, 141, 237, 357 for k = 3..6).
+  const QuadTopology fan3 = mesh("fan3");
+  const auto g = symmetric_gluing(fan3, Blending::c1);
+  for (const auto [k, dim] : {std::pair{4, 141}, std::pair{5, 237}, std::pair{6, 357}}) {
+    EXPECT_EQ(brute_force(fan3, g, k), dim) << k;
+    EXPECT_EQ(g14_dimension_formula(fan3, g, k, 1), dim) << k;
+    check_local(fan3, g, k, dim);
+  }
+  EXPECT_EQ(brute_force(fan3, g, 3), 69);
+  // c1 on edges with equal non-zero end values needs degree 5 (notes §4.5): the cube.
+  const QuadTopology cube = mesh("cube");
+  const auto gc = symmetric_gluing(cube, Blending::c1);
+  EXPECT_THROW(build_g14_basis(cube, gc, 4, 1), NotSeparable);
+  const int brute = brute_force(cube, gc, 5);
+  std::printf("cube, c1, k=5: %d\n", brute);
+  EXPECT_EQ(g14_dimension_formula(cube, gc, 5, 1), brute);
+  check_local(cube, gc, 5, brute);
+}
+
+TEST(G14Dimension, RegularityTwoAcrossTheSplitLines) {
+  // Notes §9.1, q0, r = 2: 99, 183, 291 for k = 4..6; the formula with (2k − r − 3)² face functions
+  // and 4k − 2r − 6 per boundary edge.
+  const QuadTopology fan3 = mesh("fan3");
+  const auto g = symmetric_gluing(fan3, Blending::q0);
+  for (const auto [k, dim] : {std::pair{4, 99}, std::pair{5, 183}, std::pair{6, 291}}) {
+    EXPECT_EQ(nullspace_dimension(Eigen::MatrixXd(global_constraints(fan3, g, SplitBSpline(k, 2)))), dim) << k;
+    EXPECT_EQ(g14_dimension_formula(fan3, g, k, 2), dim) << k;
+  }
+  // The local construction at r = 2 (q1, grid and fan5) spans the whole null space.
+  for (const char* name : {"grid2x2", "fan5"}) {
+    const QuadTopology t = mesh(name);
+    const auto gq = symmetric_gluing(t, Blending::q1);
+    const int brute = nullspace_dimension(Eigen::MatrixXd(global_constraints(t, gq, SplitBSpline(6, 2))));
+    EXPECT_EQ(g14_dimension_formula(t, gq, 6, 2), brute) << name;
+    EXPECT_EQ(build_g14_basis(t, gq, 6, 2).dimension(), brute) << name;
+  }
+  EXPECT_EQ(brute_force(mesh("grid2x2"), symmetric_gluing(mesh("grid2x2"), Blending::q1), 4), 196);
+}
+
+}  // namespace
+}  // namespace iga
