@@ -94,12 +94,16 @@ void declare(std::map<std::string, std::set<std::string>> DeclaredConfig::*table
 
 }  // namespace
 
-ConfigNode::ConfigNode(YAML::Node node, std::string path, std::shared_ptr<const std::string> file)
-    : node_(std::move(node)), path_(std::move(path)), file_(std::move(file)) {}
+ConfigNode::ConfigNode(YAML::Node node, std::string path, std::shared_ptr<const std::string> file,
+                       std::shared_ptr<const YAML::Node> root)
+    : node_(std::move(node)), path_(std::move(path)), file_(std::move(file)), root_(std::move(root)) {}
+
+ConfigNode ConfigNode::root() const { return ConfigNode(*root_, "", file_, root_); }
 
 ConfigNode ConfigNode::load_string(const std::string& text, const std::string& name) {
   try {
-    return ConfigNode(YAML::Load(text), "", shared_name(name));
+    auto root = std::make_shared<const YAML::Node>(YAML::Load(text));
+    return ConfigNode(*root, "", shared_name(name), root);
   } catch (const YAML::ParserException& e) {
     throw InputError(location(name, e.mark) + ": YAML syntax error: " + e.msg);
   } catch (const YAML::Exception& e) {
@@ -151,7 +155,7 @@ std::optional<ConfigNode> ConfigNode::find(const std::string& key) const {
   // Iterate instead of node_[key]: we also need the key's own mark.
   for (const auto& kv : node_) {
     if (!kv.first.IsScalar() || kv.first.Scalar() != key) continue;
-    ConfigNode child(kv.second, path_.empty() ? key : path_ + "." + key, file_);
+    ConfigNode child(kv.second, path_.empty() ? key : path_ + "." + key, file_, root_);
     child.key_mark_ = kv.first.Mark();
     return child;
   }
@@ -172,7 +176,7 @@ std::vector<ConfigNode> ConfigNode::items() const {
   std::vector<ConfigNode> out;
   out.reserve(node_.size());
   for (size_t i = 0; i < node_.size(); ++i)
-    out.push_back(ConfigNode(node_[i], path_ + "[" + std::to_string(i) + "]", file_));
+    out.push_back(ConfigNode(node_[i], path_ + "[" + std::to_string(i) + "]", file_, root_));
   return out;
 }
 

@@ -31,6 +31,9 @@ class ConfigNode {
 
   /// Dotted key path of this node, e.g. "space.degree" (empty for the root).
   const std::string& path() const { return path_; }
+  /// The whole config this node belongs to (its root map), e.g. for a builder handed only the
+  /// `domain:` section that must also honour the config's `limits:`.
+  ConfigNode root() const;
   /// "FILE:LINE:COL: path" for messages (fail() appends ": message").
   std::string where() const;
   /// Throw InputError "where(): message".
@@ -84,10 +87,12 @@ class ConfigNode {
   const std::string& file() const { return *file_; }
 
  private:
-  ConfigNode(YAML::Node node, std::string path, std::shared_ptr<const std::string> file);
+  ConfigNode(YAML::Node node, std::string path, std::shared_ptr<const std::string> file,
+             std::shared_ptr<const YAML::Node> root);
   YAML::Node node_;
   std::string path_;
   std::shared_ptr<const std::string> file_;
+  std::shared_ptr<const YAML::Node> root_;
   YAML::Mark key_mark_ = YAML::Mark::null_mark();  ///< of the key; an empty value has no place of its own
 };
 

@@ -3,7 +3,15 @@
 #include <cctype>
 #include <string>
 
+#include "config/resource_limits.hpp"
+
 namespace iga {
+
+MeshLimits mesh_limits(const ConfigNode& node) {
+  MeshLimits limits;
+  limits.max_elements = parse_limits(node.root().find("limits")).max_elements;
+  return limits;
+}
 
 MeshFileRequest mesh_file_request(const ConfigNode& domain) {
   MeshFileRequest request;
@@ -23,6 +31,7 @@ MeshFileRequest mesh_file_request(const ConfigNode& domain) {
     if (!(request.options.mesh_size > 0.0)) n->fail("mesh_size must be > 0");
   }
   if (const auto n = domain.find("recombine")) request.options.recombine = n->as_bool();
+  request.options.limits = mesh_limits(domain);
   return request;
 }
 

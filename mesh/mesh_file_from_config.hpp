@@ -19,6 +19,11 @@ struct MeshFileRequest {
 /// Reads `file`, `mesh_size` and `recombine` from `domain` (options.config_folder: the config
 /// file's folder, where a .geo's Includes may also read); `mesh_size` and `recombine` on a file
 /// that is not `.geo` (case-insensitive) are rejected at their key, as is mesh_size <= 0.
+/// options.limits as mesh_limits(domain).
 MeshFileRequest mesh_file_request(const ConfigNode& domain);
+
+/// The mesh limits of the config that `node` belongs to: max_elements from its `limits:` section
+/// (limits.max_elements, the same number the study checks each level against), the rest defaults.
+MeshLimits mesh_limits(const ConfigNode& node);
 
 }  // namespace iga

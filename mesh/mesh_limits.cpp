@@ -14,7 +14,7 @@ void check_element_estimate(double area, double h, const MeshLimits& limits, con
   if (!(estimate <= limits.max_elements))
     throw InputError(source + ": mesh size " + format_number(h) + " on an area of " + format_number(area) +
                      " gives about " + format_number(estimate) + " triangles, more than the limit of " +
-                     format_number(limits.max_elements) + " elements (use a larger mesh size or raise the limit)");
+                     format_number(limits.max_elements) + " elements (use a larger mesh size, or raise limits.max_elements in the config)");
 }
 
 }  // namespace iga

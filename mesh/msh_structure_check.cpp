@@ -80,7 +80,7 @@ class MshChecker {
                            "), which the $Entities section does not define");
     if (static_cast<double>(surface_elements_) > limits_.max_elements)
       fail_at_end("the mesh has " + std::to_string(surface_elements_) + " 2D elements, more than the limit of " +
-                  format_number(limits_.max_elements));
+                  format_number(limits_.max_elements) + " (limits.max_elements in the config)");
   }
 
  private:

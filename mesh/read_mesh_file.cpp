@@ -17,8 +17,8 @@ namespace {
 
 /// Checks the file in our own code first (a .geo's statements, a .msh's structure), then lets the
 /// Gmsh worker read or mesh it.
-PlanarMesh read_with_gmsh(const std::string& path, const MeshFileOptions& options, const MeshLimits& limits,
-                          bool mesh_geometry) {
+PlanarMesh read_with_gmsh(const std::string& path, const MeshFileOptions& options, bool mesh_geometry) {
+  const MeshLimits& limits = options.limits;
   namespace fs = std::filesystem;
   std::vector<fs::path> roots = {fs::absolute(path).parent_path()};
   if (!options.config_folder.empty()) roots.push_back(fs::absolute(options.config_folder));
@@ -46,7 +46,7 @@ PlanarMesh read_with_gmsh(const std::string& path, const MeshFileOptions& option
 
 }  // namespace
 
-PlanarMesh read_mesh_file(const std::string& path, const MeshFileOptions& options, const MeshLimits& limits) {
+PlanarMesh read_mesh_file(const std::string& path, const MeshFileOptions& options) {
   if (!(options.mesh_size >= 0.0))
     throw InputError(path + ": mesh size must be >= 0 (got " + format_number(options.mesh_size) + ")");
   // Gmsh 4.8 only logs a missing file, so readability is checked here for every format.
@@ -57,8 +57,8 @@ PlanarMesh read_mesh_file(const std::string& path, const MeshFileOptions& option
                  [](unsigned char c) { return std::tolower(c); });
   if (extension != ".geo" && (options.mesh_size > 0.0 || options.recombine))
     throw InputError(path + ": a mesh size or recombination applies to .geo files only (a mesh is used as it is)");
-  if (extension == ".msh") return read_with_gmsh(path, options, limits, false);
-  if (extension == ".geo") return read_with_gmsh(path, options, limits, true);
+  if (extension == ".msh") return read_with_gmsh(path, options, false);
+  if (extension == ".geo") return read_with_gmsh(path, options, true);
   if (extension == ".obj") return read_obj_mesh(in, path);
   if (extension == ".off") return read_off_mesh(in, path);
   throw InputError(path + ": unknown mesh file extension '" + extension + "' (supported: .msh, .geo, .obj, .off)");

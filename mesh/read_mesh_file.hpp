@@ -37,8 +37,10 @@ struct MeshFileOptions {
   /// `.geo` only: a second folder (besides the file's own) that Include statements may read from,
   /// the config file's folder; empty for none.
   std::string config_folder;
+  /// What reading or meshing may cost (element count or estimate, Gmsh time and memory).
+  MeshLimits limits;
 };
 
-PlanarMesh read_mesh_file(const std::string& path, const MeshFileOptions& options = {}, const MeshLimits& limits = {});
+PlanarMesh read_mesh_file(const std::string& path, const MeshFileOptions& options = {});
 
 }  // namespace iga

@@ -8,6 +8,7 @@
 #include "solver/boundary_edge_kinds.hpp"
 #include "solver/data_finiteness.hpp"
 #include "solver/dorfler_marking.hpp"
+#include "solver/output_location.hpp"
 #include "solver/resource_checks.hpp"
 #include "config/errors.hpp"
 #include "solver/solve_problem.hpp"
@@ -36,6 +37,41 @@ StudySettings parse_study(const ConfigNode& root, const std::string& config_path
   root.check_keys({"problem", "domain", "space", "refinement", "solver", "output", "limits"});
   StudySettings s(root, parse_problem(root["problem"]));
   s.limits = parse_limits(root.find("limits"));
+
+  // The output location and the solver first: they cost nothing to check, and building level 0
+  // below may take a while (a .geo meshed by Gmsh, a large first level).
+  if (auto solver = root.find("solver")) {
+    solver->check_keys({"type"});
+    if (auto type = solver->find("type"))
+      s.solver = type->as_choice({"cholmod", "umfpack"}) == "cholmod" ? SolverKind::cholmod : SolverKind::umfpack;
+  }
+  s.output_dir = "results/" + std::filesystem::path(config_path).stem().string();
+  std::string output_place = "the default output directory";
+  if (auto output = root.find("output")) {
+    output->check_keys({"directory", "vtk", "plot"});
+    if (auto dir = output->find("directory")) {
+      s.output_dir = dir->as_string();
+      output_place = dir->where();
+    }
+    if (auto vtk = output->find("vtk")) {
+      if (vtk->is_scalar()) {
+        s.write_vtk = vtk->as_bool();
+      } else {
+        vtk->check_keys({"enabled", "samples"});
+        s.write_vtk = vtk->get_bool("enabled", true);
+        if (auto samples = vtk->find("samples")) {
+          s.vtk_samples = samples->as_int();
+          if (s.vtk_samples < 1 || s.vtk_samples > 64) samples->fail("samples must be between 1 and 64");
+        }
+      }
+    }
+    if (auto plot = output->find("plot")) s.write_plot = plot->as_bool();
+  }
+  if (!output_override.empty()) {
+    s.output_dir = output_override;
+    output_place = "--output";
+  }
+  check_output_directory(s.output_dir, output_place);
   // Domain, space and boundary part names are validated on the coarsest space (cheap), so that
   // every input error surfaces before the study starts; what it asks for is checked first.
   check_space_request(root["space"], s.limits);
@@ -109,31 +145,6 @@ StudySettings parse_study(const ConfigNode& root, const std::string& config_path
                  "level " + std::to_string(level) + " (estimated from level 0)");
   }
 
-  if (auto solver = root.find("solver")) {
-    solver->check_keys({"type"});
-    if (auto type = solver->find("type"))
-      s.solver = type->as_choice({"cholmod", "umfpack"}) == "cholmod" ? SolverKind::cholmod : SolverKind::umfpack;
-  }
-
-  s.output_dir = "results/" + std::filesystem::path(config_path).stem().string();
-  if (auto output = root.find("output")) {
-    output->check_keys({"directory", "vtk", "plot"});
-    if (auto dir = output->find("directory")) s.output_dir = dir->as_string();
-    if (auto vtk = output->find("vtk")) {
-      if (vtk->is_scalar()) {
-        s.write_vtk = vtk->as_bool();
-      } else {
-        vtk->check_keys({"enabled", "samples"});
-        s.write_vtk = vtk->get_bool("enabled", true);
-        if (auto samples = vtk->find("samples")) {
-          s.vtk_samples = samples->as_int();
-          if (s.vtk_samples < 1 || s.vtk_samples > 64) samples->fail("samples must be between 1 and 64");
-        }
-      }
-    }
-    if (auto plot = output->find("plot")) s.write_plot = plot->as_bool();
-  }
-  if (!output_override.empty()) s.output_dir = output_override;
   return s;
 }
 

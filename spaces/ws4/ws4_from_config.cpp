@@ -95,7 +95,7 @@ BaseMesh polygon(const ConfigNode& domain, const ConfigNode& space) {
   const double h = domain["mesh_size"].as_double();
   if (!(h > 0.0)) domain["mesh_size"].fail("mesh_size must be > 0");
   // Messages name the domain's place; the mesh's own source stays "polygon".
-  const PlanarMesh mesh = domain.guard([&] { return mesh_polygon(shape, h, false, "polygon"); });
+  const PlanarMesh mesh = domain.guard([&] { return mesh_polygon(shape, h, false, "polygon", mesh_limits(domain)); });
   return {domain.guard([&] { return ws4::triangulation_from_mesh(mesh); }),
           "polygon, " + std::to_string(shape.outer.size()) + " vertices, " + std::to_string(shape.holes.size()) +
               (shape.holes.size() == 1 ? " hole" : " holes") + ", mesh size " + format_number(h) + " (Gmsh)"};

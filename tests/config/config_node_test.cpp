@@ -231,5 +231,14 @@ TEST(ConfigNode, EmptyDocumentAndSection) {
   EXPECT_EQ(error_of([&] { section["vtk"]; }), "s.yaml:1:1: missing key 'vtk' in 'out'");
 }
 
+TEST(ConfigNode, RootIsReachableFromAnyNode) {
+  // Builders handed one section (a domain) still read the config's limits: through root().
+  const ConfigNode root = ConfigNode::load_string("a: {b: [{c: 1}]}\nlimits: {max_elements: 5}\n", "cfg.yaml");
+  const ConfigNode deep = root["a"]["b"].items()[0]["c"];
+  EXPECT_EQ(deep.root().path(), "");
+  EXPECT_EQ(deep.root()["limits"]["max_elements"].as_int(), 5);
+  EXPECT_EQ(deep.root()["limits"]["max_elements"].where(), root["limits"]["max_elements"].where());
+}
+
 }  // namespace
 }  // namespace iga

@@ -157,12 +157,12 @@ TEST(GmshWorker, GmshMeshingErrorsAreInputErrors) {
     if (name == "huge.geo") EXPECT_NE(message.find("time limit"), std::string::npos) << message;
   }
   // The same scripts through read_mesh_file (static check, then the worker): an InputError or a mesh.
-  MeshLimits quick;
-  quick.seconds = 10.0;
+  MeshFileOptions quick;
+  quick.limits.seconds = 10.0;
   for (const auto& [name, text] : scripts) {
     const std::string path = test::scratch_file(name, text);
     try {
-      read_mesh_file(path, {}, quick);
+      read_mesh_file(path, quick);
     } catch (const InputError& e) {
       EXPECT_EQ(std::string(e.what()).rfind(path + ": ", 0), 0u) << e.what();
     }
@@ -179,10 +179,10 @@ TEST(GmshWorker, MeshSizeIsCheckedBeforeMeshing) {
   EXPECT_NE(message.find("more than the limit of 2e+06 elements"), std::string::npos) << message;
   EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(30));
   // A raised limit lets a finer mesh through: h = 0.02 on the L-shape (estimate 4 / 1.73e-4 = 23 094).
-  MeshLimits small;
-  small.max_elements = 1e4;
+  MeshFileOptions small{0.02, false};
+  small.limits.max_elements = 1e4;
   EXPECT_NE(input_error([&] {
-              read_mesh_file(l_shape, {0.02, false}, small);
+              read_mesh_file(l_shape, small);
             }).find("more than the limit of 10000"),
             std::string::npos);
   // Polygons: the exact area (3 x 1 = 3) gives 3 / (sqrt(3)/4 * 1e-18) = 6.9282e18.
@@ -190,7 +190,7 @@ TEST(GmshWorker, MeshSizeIsCheckedBeforeMeshing) {
   const PolygonDomain strip{{V(0, 0), V(3, 0), V(3, 1), V(0, 1)}, {}};
   EXPECT_EQ(input_error([&] { mesh_polygon(strip, 1e-9, false, "cfg.yaml:4:3: domain"); }),
             "cfg.yaml:4:3: domain: mesh size 1e-09 on an area of 3 gives about 6.9282e+18 triangles, more than the "
-            "limit of 2e+06 elements (use a larger mesh size or raise the limit)");
+            "limit of 2e+06 elements (use a larger mesh size, or raise limits.max_elements in the config)");
   const PolygonDomain nan_vertex{{V(0, 0), V(std::nan(""), 0), V(0, 1)}, {}};
   EXPECT_EQ(input_error([&] { mesh_polygon(nan_vertex, 0.1, false, "polygon"); }),
             "polygon: outer vertex 2 (nan, 0) is not finite");

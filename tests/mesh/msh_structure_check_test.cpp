@@ -167,7 +167,7 @@ TEST(MshStructureCheck, SizesAreLimitedBeforeReading) {
   limits.max_elements = 3;
   // 4 triangles against a limit of 3 (the 8 elements in all are within 4 x 3).
   const std::string path = (test::scratch_folder() / "limit_2d.msh").string();
-  EXPECT_EQ(refusal("limit_2d.msh", base, limits), path + ": the mesh has 4 2D elements, more than the limit of 3");
+  EXPECT_EQ(refusal("limit_2d.msh", base, limits), path + ": the mesh has 4 2D elements, more than the limit of 3 (limits.max_elements in the config)");
   // A header count beyond 2 x the limit is refused at its line, before anything is read.
   const std::string huge = mutate(base, "$Nodes\n5\n", "$Nodes\n1000000000000\n");
   EXPECT_NE(refusal("limit_header.msh", huge).find(":11: node count 1000000000000 is more than the limit of 8e+06"),

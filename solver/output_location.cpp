@@ -1,0 +1,41 @@
+#include "solver/output_location.hpp"
+
+#include <unistd.h>
+
+#include <filesystem>
+#include <random>
+#include <system_error>
+
+#include "config/errors.hpp"
+
+namespace iga {
+
+namespace fs = std::filesystem;
+
+void check_output_directory(const std::string& path, const std::string& place) {
+  const auto fail = [&](const std::string& why) {
+    throw InputError(place + ": output directory '" + path + "' " + why);
+  };
+  std::error_code ec;
+  const fs::path target = fs::absolute(path, ec);
+  if (ec) fail("cannot be resolved: " + ec.message());
+  if (fs::exists(target, ec) && !fs::is_directory(target, ec)) fail("exists and is not a directory");
+  fs::path ancestor = target.parent_path();
+  while (!ancestor.empty() && !fs::exists(ancestor, ec) && ancestor != ancestor.parent_path())
+    ancestor = ancestor.parent_path();
+  if (!fs::is_directory(ancestor, ec)) fail("cannot be created: '" + ancestor.string() + "' is not a directory");
+  if (::access(ancestor.c_str(), W_OK) != 0) fail("cannot be created: '" + ancestor.string() + "' is not writable");
+  // Permission bits do not tell everything (root passes access(), /proc refuses new entries, a
+  // read-only mount, a full disk): create and remove a probe directory where the results will go.
+  std::random_device rd;
+  std::string name(".");  // appended, not "." + string: GCC 12 warns wrongly (-Wrestrict) about that
+  name += target.filename().string();
+  name += ".probe-" + std::to_string(::getpid()) + "-" + std::to_string(rd() % 1000000);
+  const fs::path probe = ancestor / name;
+  if (!fs::create_directory(probe, ec) || ec)
+    fail("cannot be created: no directory can be made in '" + ancestor.string() + "'" +
+         (ec ? ": " + ec.message() : std::string()));
+  fs::remove(probe, ec);
+}
+
+}  // namespace iga
