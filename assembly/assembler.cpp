@@ -1,6 +1,8 @@
 #include "assembly/parallel.hpp"
 #include "assembly/assembler.hpp"
 
+#include <algorithm>
+#include <cassert>
 #include <memory>
 
 namespace iga {
@@ -14,6 +16,7 @@ Assembler::Assembler(const Space& space)
 
 template <class Scratch, class Work>
 void Assembler::for_each_element(unsigned flags, Work&& work) const {
+  keep_eigen_serial();
   // One thread team for all colours (evaluators and scratch are built once per thread); the
   // implicit barrier after each `omp for` keeps colours apart. Small meshes stay serial: there
   // the barriers would cost more than the work, notably on a machine busy with other processes.
@@ -65,30 +68,43 @@ SplitMatrix Assembler::matrix_extended(BilinearForm form, int quad_degree) const
 }
 
 Eigen::VectorXd Assembler::load(const ScalarField& f, int quad_degree) const {
+  return load(
+      [&f](const Eigen::Matrix2Xd& points, Eigen::MatrixXd& values) {
+        values.resize(1, points.cols());
+        for (Eigen::Index k = 0; k < points.cols(); ++k) values(0, k) = f(points.col(k));
+      },
+      quad_degree);
+}
+
+Eigen::VectorXd Assembler::load(const BatchField& f, int quad_degree) const {
   // Geometry first, then the transposed evaluation Σ_q f(x_q) JxW_q N_i(x_q) (Space::Evaluator::
   // integrate_values), so a space never has to tabulate all its functions for a load vector.
-  Eigen::VectorXd b = Eigen::VectorXd::Zero(space_.dimension());
-  #pragma omp parallel if (worth_threads(space_.num_elements()))
+  // Element vectors go to their own slots (no colours, no barriers between them) and are added
+  // in element order afterwards: the same sums whatever the number of threads.
+  keep_eigen_serial();
+  const int ne = space_.num_elements();
+  std::vector<double> locals(table_.dofs.size());
+  #pragma omp parallel if (worth_threads(ne))
   {
     const std::unique_ptr<Space::Evaluator> evaluator = space_.make_evaluator();
     PointValues geometry;
     Eigen::VectorXd jxw, fw, local;
-    for (const std::vector<int>& group : colours_) {
-      const int m = static_cast<int>(group.size());
+    Eigen::MatrixXd fx;
 #pragma omp for schedule(dynamic, 16)
-      for (int k = 0; k < m; ++k) {
-        const int e = group[k];
-        const RulePtr rule_ptr = space_.quadrature(e, quad_degree);  // keeps the rule alive
-        const QuadratureRule& rule = *rule_ptr;
-        evaluator->evaluate_geometry(e, rule, geometry);
-        integration_weights(rule, geometry, jxw);
-        fw.resize(rule.size());
-        for (int q = 0; q < rule.size(); ++q) fw(q) = f(geometry.x.col(q)) * jxw(q);
-        evaluator->integrate_values(e, rule, geometry, fw, local);
-        for (int i = 0; i < local.size(); ++i) b(geometry.dofs[i]) += local(i);
-      }
+    for (int e = 0; e < ne; ++e) {
+      const RulePtr rule_ptr = space_.quadrature(e, quad_degree);  // keeps the rule alive
+      const QuadratureRule& rule = *rule_ptr;
+      evaluator->evaluate_geometry(e, rule, geometry);
+      integration_weights(rule, geometry, jxw);
+      f(geometry.x, fx);
+      fw = fx.row(0).transpose().cwiseProduct(jxw);
+      evaluator->integrate_values(e, rule, geometry, fw, local);
+      assert(local.size() == table_.size(e));
+      std::copy(local.data(), local.data() + local.size(), locals.begin() + table_.offsets[e]);
     }
   }
+  Eigen::VectorXd b = Eigen::VectorXd::Zero(space_.dimension());
+  for (size_t k = 0; k < locals.size(); ++k) b(table_.dofs[k]) += locals[k];
   return b;
 }
 

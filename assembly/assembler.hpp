@@ -28,6 +28,8 @@ class Assembler {
   SplitMatrix matrix_extended(BilinearForm form, int quad_degree) const;
   /// Load vector ∫ f N_i.
   Eigen::VectorXd load(const ScalarField& f, int quad_degree) const;
+  /// The same with f evaluated at all points of an element at once (row 0 of its values).
+  Eigen::VectorXd load(const BatchField& f, int quad_degree) const;
 
   /// What a boundary integral tests against.
   enum class BoundaryTest { value, normal_derivative };

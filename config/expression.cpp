@@ -407,4 +407,47 @@ double SymbolicFunction::at(const Eigen::Vector3d& p) const {
   return evaluator(impl_)(p.x(), p.y(), p.z());
 }
 
+struct FunctionBatch::Impl {
+  Program program;
+  int size = 0;
+  std::uint64_t id = next_id++;  ///< keys the per-thread cache, like SymbolicFunction's
+};
+
+FunctionBatch::FunctionBatch(const std::vector<SymbolicFunction>& functions) {
+  auto impl = std::make_shared<Impl>();
+  impl->size = static_cast<int>(functions.size());
+  std::lock_guard<std::recursive_mutex> lock(ginac_mutex());
+  std::vector<GiNaC::ex> es;
+  std::string where;
+  for (const SymbolicFunction& f : functions) {
+    const auto self = impl_or_zero(f.impl_);
+    es.push_back(*self->expr);
+    if (where.empty()) where = self->where;
+  }
+  try {
+    impl->program = mu_program(es);
+    EvaluatorCache::this_thread().add(impl->id, impl, impl->program);  // compile now: errors here
+  } catch (const Unsupported& u) {
+    throw InputError(prefix(where) + "cannot evaluate: " + u.what());
+  } catch (const mu::Parser::exception_type& err) {
+    throw InputError(prefix(where) + "cannot evaluate: muParser rejects '" + err.GetExpr() + "': " + err.GetMsg());
+  }
+  impl_ = std::move(impl);
+}
+
+int FunctionBatch::size() const { return impl_->size; }
+
+void FunctionBatch::evaluate(const Eigen::Matrix2Xd& points, Eigen::MatrixXd& values) const {
+  EvaluatorCache& cache = EvaluatorCache::this_thread();
+  Evaluator* e = cache.find(impl_->id);
+  if (!e) e = &cache.add(impl_->id, impl_, impl_->program);
+  const std::vector<int>& results = impl_->program.results;
+  const int m = impl_->size;
+  values.resize(m, points.cols());
+  for (Eigen::Index k = 0; k < points.cols(); ++k) {
+    (*e)(points(0, k), points(1, k));
+    for (int i = 0; i < m; ++i) values(i, k) = e->temporary(results[i]);
+  }
+}
+
 }  // namespace iga
