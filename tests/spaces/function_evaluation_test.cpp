@@ -1,8 +1,8 @@
 /// @file
-/// Space::Evaluator::evaluate_function and integrate_values: the WS4 and T-mesh fast paths (contract
-/// with the extraction first) agree with the default implementations (all active functions, then contract)
-/// to round-off, on a perturbed WS4 mesh and on a curved B-spline patch; Assembler::load agrees with
-/// the element-by-element load from ElementValues, on both spaces.
+/// Space::Evaluator::evaluate_function and integrate_values: the WS4, T-mesh and B-spline fast
+/// paths (contract with the extraction first) agree with the default implementations (all active
+/// functions, then contract) to round-off, on a perturbed WS4 mesh, a graded T-mesh and a curved
+/// B-spline patch; Assembler::load agrees with the element-by-element load from ElementValues.
 
 #include <gtest/gtest.h>
 
@@ -180,6 +180,7 @@ TEST(FunctionEvaluation, BsplinePartitionOfUnity) {
 
 TEST(FunctionEvaluation, Ws4FastPathMatchesDefault) { check_function_paths(*perturbed_ws4(2), 8); }
 TEST(FunctionEvaluation, TmeshFastPathMatchesDefault) { check_function_paths(*graded_tmesh(), 10); }
+TEST(FunctionEvaluation, BsplineFastPathMatchesDefault) { check_function_paths(*annulus_bspline(), 8); }
 TEST(IntegrateValues, Ws4FastPathMatchesDefault) { check_integrate_paths(*perturbed_ws4(2), 8); }
 TEST(IntegrateValues, BsplineMatchesValueTable) { check_integrate_paths(*annulus_bspline(), 8); }
 TEST(AssemblerLoad, Ws4MatchesElementValues) { check_load(*perturbed_ws4(2), 8); }
