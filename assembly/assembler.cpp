@@ -1,6 +1,10 @@
 #include "assembly/parallel.hpp"
 #include "assembly/assembler.hpp"
 
+#include <omp.h>
+
+#include <algorithm>
+#include <cassert>
 #include <memory>
 
 namespace iga {
@@ -9,86 +13,142 @@ namespace iga {
 Assembler::Assembler(const Space& space)
     : space_(space),
       table_(collect_element_dofs(space)),
-      pattern_(sparsity_pattern(table_, space.dimension())),
-      colours_(colour_elements(table_, space.dimension())) {}
+      pattern_(sparsity_pattern(table_, space.dimension())) {
+  for (int e = 0; e < table_.num_elements(); ++e) max_local_ = std::max(max_local_, table_.size(e));
+}
 
-template <class Scratch, class Work>
-void Assembler::for_each_element(unsigned flags, Work&& work) const {
-  // One thread team for all colours (evaluators and scratch are built once per thread); the
-  // implicit barrier after each `omp for` keeps colours apart. Small meshes stay serial: there
-  // the barriers would cost more than the work, notably on a machine busy with other processes.
-  #pragma omp parallel if (worth_threads(space_.num_elements()))
+namespace {
+
+/// The element matrix of `form` in double or long double (the type of `local`): the space's closed
+/// form if it has one (rows in element_dofs order, as the table), else quadrature.
+bool closed_form(const Space& space, int e, BilinearForm form, Eigen::MatrixXd& local) {
+  return space.closed_form_element_matrix(e, form, local);
+}
+bool closed_form(const Space& space, int e, BilinearForm form, MatrixXld& local) {
+  return space.closed_form_element_matrix_extended(e, form, local);
+}
+void quadrature_matrix(BilinearForm form, const ElementValues& ev, Eigen::MatrixXd& local) {
+  element_matrix(form, ev, local);
+}
+void quadrature_matrix(BilinearForm form, const ElementValues& ev, MatrixXld& local) {
+  element_matrix_extended(form, ev, local);
+}
+
+/// Add the columns j of `local` with dofs[j] in [first, last) into `values` (aligned with the
+/// value array of `pattern`): the part of the element matrix this thread owns.
+template <class Local, class Value>
+void scatter_owned_columns(const std::vector<int>& dofs, const Local& local, const SparseMatrix& pattern,
+                           Value* values, int first, int last) {
+  const int n = static_cast<int>(dofs.size());
+  const int* outer = pattern.outerIndexPtr();
+  const int* inner = pattern.innerIndexPtr();
+  for (int j = 0; j < n; ++j) {
+    if (dofs[j] < first || dofs[j] >= last) continue;
+    const int* begin = inner + outer[dofs[j]];
+    const int* end = inner + outer[dofs[j] + 1];
+    for (int i = 0; i < n; ++i) {
+      const int* pos = std::lower_bound(begin, end, dofs[i]);
+      assert(pos != end && *pos == dofs[i]);
+      values[pos - inner] += local(i, j);
+    }
+  }
+}
+
+}  // namespace
+
+template <class Local, class Value>
+void Assembler::assemble(BilinearForm form, int quad_degree, Value* values) const {
+  // Blocks of consecutive elements: their matrices are computed in parallel into slots, then each
+  // thread adds the columns it owns (an equal share of the dofs), element by element. Every entry
+  // receives its contributions in element order whatever the number of threads (bitwise the same
+  // matrix), and there are two barriers per block instead of one per colour: colours of a small
+  // mesh hold a few dozen elements each, too few to keep two threads busy between barriers.
+  keep_eigen_serial();
+  const int ne = space_.num_elements();
+  const int dim = space_.dimension();
+  using Scalar = typename Local::Scalar;
+  constexpr long kBlockBytes = 16L << 20;  // slots of one block: well inside the last-level cache
+  const long per_element = std::max<long>(1, static_cast<long>(max_local_) * max_local_ * sizeof(Scalar));
+  const int block = static_cast<int>(std::max<long>(1, std::min<long>(ne, std::max<long>(64, kBlockBytes / per_element))));
+  std::vector<Local> slots(std::min(block, ne));
+  std::vector<std::vector<int>> slot_dofs(slots.size());
+#pragma omp parallel if (worth_threads(ne))
   {
-    ElementValues ev(space_, flags);
-    Scratch scratch;
-    for (const std::vector<int>& group : colours_) {
-      const int m = static_cast<int>(group.size());
-#pragma omp for schedule(dynamic, 16)
-      for (int k = 0; k < m; ++k) work(group[k], ev, scratch);
+    ElementValues ev(space_, flags_for(form));
+    const int threads = omp_get_num_threads(), me = omp_get_thread_num();
+    const int own_first = static_cast<int>(static_cast<long>(dim) * me / threads);
+    const int own_last = static_cast<int>(static_cast<long>(dim) * (me + 1) / threads);
+    for (int first = 0; first < ne; first += block) {
+      const int last = std::min(ne, first + block);
+#pragma omp for schedule(dynamic, 8)
+      for (int e = first; e < last; ++e) {
+        Local& local = slots[e - first];
+        std::vector<int>& dofs = slot_dofs[e - first];
+        if (closed_form(space_, e, form, local)) {
+          dofs.assign(table_.begin(e), table_.begin(e + 1));
+        } else {
+          ev.reinit(e, *space_.quadrature(e, quad_degree));
+          quadrature_matrix(form, ev, local);
+          dofs = ev.dofs();
+        }
+      }
+      for (int e = first; e < last; ++e)
+        scatter_owned_columns(slot_dofs[e - first], slots[e - first], pattern_, values, own_first, own_last);
+#pragma omp barrier
     }
   }
 }
 
 SparseMatrix Assembler::matrix(BilinearForm form, int quad_degree) const {
   SparseMatrix A = pattern_;
-  for_each_element<Eigen::MatrixXd>(flags_for(form), [&](int e, ElementValues& ev, Eigen::MatrixXd& local) {
-    if (space_.closed_form_element_matrix(e, form, local)) {
-      thread_local std::vector<int> dofs;
-      dofs.assign(table_.begin(e), table_.begin(e + 1));
-      scatter_add(dofs, local, A);
-      return;
-    }
-    ev.reinit(e, *space_.quadrature(e, quad_degree));
-    element_matrix(form, ev, local);
-    scatter_add(ev.dofs(), local, A);
-  });
+  assemble<Eigen::MatrixXd>(form, quad_degree, A.valuePtr());
   return A;
 }
 
 SplitMatrix Assembler::matrix_extended(BilinearForm form, int quad_degree) const {
   std::vector<long double> values(pattern_.nonZeros(), 0.0L);
-  struct Scratch {
-    MatrixXld local;
-    std::vector<int> dofs;
-  };
-  for_each_element<Scratch>(flags_for(form), [&](int e, ElementValues& ev, Scratch& s) {
-    if (space_.closed_form_element_matrix_extended(e, form, s.local)) {
-      s.dofs.assign(table_.begin(e), table_.begin(e + 1));
-      scatter_add(s.dofs, s.local, pattern_, values);
-      return;
-    }
-    ev.reinit(e, *space_.quadrature(e, quad_degree));
-    element_matrix_extended(form, ev, s.local);
-    scatter_add(ev.dofs(), s.local, pattern_, values);
-  });
+  assemble<MatrixXld>(form, quad_degree, values.data());
   return split_matrix(pattern_, values);
 }
 
 Eigen::VectorXd Assembler::load(const ScalarField& f, int quad_degree) const {
+  return load(
+      [&f](const Eigen::Matrix2Xd& points, Eigen::MatrixXd& values) {
+        values.resize(1, points.cols());
+        for (Eigen::Index k = 0; k < points.cols(); ++k) values(0, k) = f(points.col(k));
+      },
+      quad_degree);
+}
+
+Eigen::VectorXd Assembler::load(const BatchField& f, int quad_degree) const {
   // Geometry first, then the transposed evaluation Σ_q f(x_q) JxW_q N_i(x_q) (Space::Evaluator::
   // integrate_values), so a space never has to tabulate all its functions for a load vector.
-  Eigen::VectorXd b = Eigen::VectorXd::Zero(space_.dimension());
-  #pragma omp parallel if (worth_threads(space_.num_elements()))
+  // Element vectors go to their own slots (no colours, no barriers between them) and are added
+  // in element order afterwards: the same sums whatever the number of threads.
+  keep_eigen_serial();
+  const int ne = space_.num_elements();
+  std::vector<double> locals(table_.dofs.size());
+  #pragma omp parallel if (worth_threads(ne))
   {
     const std::unique_ptr<Space::Evaluator> evaluator = space_.make_evaluator();
     PointValues geometry;
     Eigen::VectorXd jxw, fw, local;
-    for (const std::vector<int>& group : colours_) {
-      const int m = static_cast<int>(group.size());
+    Eigen::MatrixXd fx;
 #pragma omp for schedule(dynamic, 16)
-      for (int k = 0; k < m; ++k) {
-        const int e = group[k];
-        const RulePtr rule_ptr = space_.quadrature(e, quad_degree);  // keeps the rule alive
-        const QuadratureRule& rule = *rule_ptr;
-        evaluator->evaluate_geometry(e, rule, geometry);
-        integration_weights(rule, geometry, jxw);
-        fw.resize(rule.size());
-        for (int q = 0; q < rule.size(); ++q) fw(q) = f(geometry.x.col(q)) * jxw(q);
-        evaluator->integrate_values(e, rule, geometry, fw, local);
-        for (int i = 0; i < local.size(); ++i) b(geometry.dofs[i]) += local(i);
-      }
+    for (int e = 0; e < ne; ++e) {
+      const RulePtr rule_ptr = space_.quadrature(e, quad_degree);  // keeps the rule alive
+      const QuadratureRule& rule = *rule_ptr;
+      evaluator->evaluate_geometry(e, rule, geometry);
+      integration_weights(rule, geometry, jxw);
+      f(geometry.x, fx);
+      fw = fx.row(0).transpose().cwiseProduct(jxw);
+      evaluator->integrate_values(e, rule, geometry, fw, local);
+      assert(local.size() == table_.size(e));
+      std::copy(local.data(), local.data() + local.size(), locals.begin() + table_.offsets[e]);
     }
   }
+  Eigen::VectorXd b = Eigen::VectorXd::Zero(space_.dimension());
+  for (size_t k = 0; k < locals.size(); ++k) b(table_.dofs[k]) += locals[k];
   return b;
 }
 

@@ -1,9 +1,9 @@
 #pragma once
 /// @file
 /// The generic parallel assembler: written once against the Space interface, used by every space.
-/// Construction precomputes the element index table, the sparsity pattern and an element
-/// colouring; each assembly then runs colour by colour with one ElementValues per thread and adds
-/// into the precomputed pattern without locks.
+/// Construction precomputes the element index table and the sparsity pattern; each assembly runs
+/// over blocks of consecutive elements with one ElementValues per thread and adds into the
+/// precomputed pattern without locks, each thread the columns it owns.
 
 #include <Eigen/Core>
 #include <vector>
@@ -28,6 +28,8 @@ class Assembler {
   SplitMatrix matrix_extended(BilinearForm form, int quad_degree) const;
   /// Load vector ∫ f N_i.
   Eigen::VectorXd load(const ScalarField& f, int quad_degree) const;
+  /// The same with f evaluated at all points of an element at once (row 0 of its values).
+  Eigen::VectorXd load(const BatchField& f, int quad_degree) const;
 
   /// What a boundary integral tests against.
   enum class BoundaryTest { value, normal_derivative };
@@ -36,19 +38,17 @@ class Assembler {
                                 int quad_degree) const;
 
   const ElementDofTable& element_dofs() const { return table_; }
-  int num_colours() const { return static_cast<int>(colours_.size()); }
 
  private:
-  /// Run work(e, ev, scratch) on every element e, colour by colour, in parallel: one ElementValues
-  /// (for work to reinit when it needs quadrature data) and one Scratch per thread, so threads share
-  /// nothing mutable but the output, which elements of one colour never touch at the same place.
-  template <class Scratch, class Work>
-  void for_each_element(unsigned flags, Work&& work) const;
+  /// Add the element matrices of `form` (Local: double or long double) into `values`, aligned
+  /// with the value array of the pattern; in parallel without locks (see the definition).
+  template <class Local, class Value>
+  void assemble(BilinearForm form, int quad_degree, Value* values) const;
 
   const Space& space_;
   ElementDofTable table_;
   SparseMatrix pattern_;
-  std::vector<std::vector<int>> colours_;
+  int max_local_ = 0;  ///< most active functions on one element
 };
 
 }  // namespace iga

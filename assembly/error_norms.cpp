@@ -1,55 +1,112 @@
-#include "assembly/parallel.hpp"
 #include "assembly/error_norms.hpp"
 
-#include <cmath>
+#include <Eigen/Geometry>  // cross
 
+#include <array>
+#include <cmath>
 #include <memory>
 
+#include "assembly/parallel.hpp"
 #include "spaces/space.hpp"
 
 namespace iga {
 
-ErrorNorms error_norms(const Space& space, const Eigen::VectorXd& coefficients, const ExactSolution& exact,
-                       int quad_degree) {
-  const bool grad = exact.has_gradient(), hess = exact.has_hessian();
-  const unsigned flags = update_values | (grad ? update_gradients : 0u) | (hess ? update_hessians : 0u);
+namespace {
+
+/// The element loop both norms share: u_h and its derivatives from Space::Evaluator::
+/// evaluate_function (coefficients contracted once per element, then one table product per
+/// array), then `add(geometry, uh, jxw, sums)` accumulates the element's squared errors.
+template <int N, class Add>
+std::array<double, N> sum_over_elements(const Space& space, const Eigen::VectorXd& coefficients, unsigned flags,
+                                        int quad_degree, Add&& add) {
+  keep_eigen_serial();
   const int ne = space.num_elements();
-  double l2 = 0, h1 = 0, h2 = 0;
-#pragma omp parallel reduction(+ : l2, h1, h2) if (worth_threads(ne))
+  std::array<double, N> total{};
+#pragma omp parallel if (worth_threads(ne))
   {
-    // u_h and its derivatives come from Space::Evaluator::evaluate_function (one contraction per
-    // element instead of one table per active function).
     const std::unique_ptr<Space::Evaluator> evaluator = space.make_evaluator();
     PointValues geometry;
     FunctionValues uh;
     Eigen::VectorXd jxw;
-#pragma omp for schedule(dynamic, 16)
+    std::array<double, N> sums{};
+#pragma omp for schedule(dynamic, 16) nowait
     for (int e = 0; e < ne; ++e) {
       const RulePtr rule_ptr = space.quadrature(e, quad_degree);  // keeps the rule alive
       const QuadratureRule& rule = *rule_ptr;
       evaluator->evaluate_function(e, rule, coefficients, flags, geometry, uh);
       integration_weights(rule, geometry, jxw);
-      for (int k = 0; k < rule.size(); ++k) {
-        const Point2 x = geometry.x.col(k);
-        const double w = jxw(k);
-        l2 += w * std::pow(uh.value(k) - exact.u(x), 2);
-        if (grad) {
-          const double ex = uh.dx(k) - exact.ux(x), ey = uh.dy(k) - exact.uy(x);
-          h1 += w * (ex * ex + ey * ey);
-        }
-        if (hess) {
-          const double exx = uh.dxx(k) - exact.uxx(x);
-          const double exy = uh.dxy(k) - exact.uxy(x);
-          const double eyy = uh.dyy(k) - exact.uyy(x);
-          h2 += w * (exx * exx + 2 * exy * exy + eyy * eyy);
-        }
-      }
+      add(geometry, uh, jxw, sums);
     }
+#pragma omp critical(iga_error_norms)
+    for (int i = 0; i < N; ++i) total[i] += sums[i];
   }
+  return total;
+}
+
+/// Σ_k w_k (a_k − b_k)².
+double weighted_square(const Eigen::VectorXd& w, const Eigen::VectorXd& a, const Eigen::VectorXd& b) {
+  return w.dot((a - b).cwiseAbs2());
+}
+
+}  // namespace
+
+ErrorNorms error_norms(const Space& space, const Eigen::VectorXd& coefficients, const ExactSolution& exact,
+                       int quad_degree) {
+  const bool grad = exact.has_gradient(), hess = exact.has_hessian();
+  const unsigned flags = update_values | (grad ? update_gradients : 0u) | (hess ? update_hessians : 0u);
+  const auto sums = sum_over_elements<3>(
+      space, coefficients, flags, quad_degree,
+      [&](const PointValues& geometry, const FunctionValues& uh, const Eigen::VectorXd& w, std::array<double, 3>& s) {
+        const int q = static_cast<int>(w.size());
+        // The exact solution and its derivatives, one row each (u, ux, uy, uxx, uxy, uyy).
+        thread_local Eigen::MatrixXd jet;
+        if (exact.jet) {
+          exact.jet(geometry.x, jet);
+        } else {
+          jet.resize(6, q);
+          const ScalarField* fields[6] = {&exact.u, &exact.ux, &exact.uy, &exact.uxx, &exact.uxy, &exact.uyy};
+          for (int i = 0; i < 6; ++i)
+            if (*fields[i])
+              for (int k = 0; k < q; ++k) jet(i, k) = (*fields[i])(geometry.x.col(k));
+        }
+        s[0] += weighted_square(w, uh.value, jet.row(0).transpose());
+        if (grad) s[1] += weighted_square(w, uh.dx, jet.row(1).transpose()) + weighted_square(w, uh.dy, jet.row(2).transpose());
+        if (hess)
+          s[2] += weighted_square(w, uh.dxx, jet.row(3).transpose()) + 2 * weighted_square(w, uh.dxy, jet.row(4).transpose()) +
+                  weighted_square(w, uh.dyy, jet.row(5).transpose());
+      });
   ErrorNorms r;
-  r.l2 = std::sqrt(l2);
-  if (grad) r.h1 = std::sqrt(h1);
-  if (hess) r.h2 = std::sqrt(h2);
+  r.l2 = std::sqrt(sums[0]);
+  if (grad) r.h1 = std::sqrt(sums[1]);
+  if (hess) r.h2 = std::sqrt(sums[2]);
+  return r;
+}
+
+ErrorNorms surface_error_norms(const Space& space, const Eigen::VectorXd& coefficients,
+                               const SurfaceExactSolution& exact, int quad_degree) {
+  const bool grad = exact.has_gradient();
+  const unsigned flags = update_values | (grad ? update_gradients : 0u);
+  const auto sums = sum_over_elements<2>(
+      space, coefficients, flags, quad_degree,
+      [&](const PointValues& geometry, const FunctionValues& uh, const Eigen::VectorXd& w, std::array<double, 2>& s) {
+        for (int k = 0; k < w.size(); ++k) {
+          const Eigen::Vector3d x = geometry.x3.col(k);
+          s[0] += w(k) * std::pow(uh.value(k) - exact.u(x), 2);
+          if (grad) {
+            // The error of the surface gradient: the exact ambient gradient projected onto the
+            // tangent plane, ∇_Γu = ∇u − (∇u·n) n.
+            const Eigen::Vector3d n =
+                geometry.jacobian3[k].col(0).cross(geometry.jacobian3[k].col(1)).normalized();
+            Eigen::Vector3d g(exact.ux(x), exact.uy(x), exact.uz(x));
+            g -= g.dot(n) * n;
+            const Eigen::Vector3d e3 = Eigen::Vector3d(uh.dx(k), uh.dy(k), uh.dz(k)) - g;
+            s[1] += w(k) * e3.squaredNorm();
+          }
+        }
+      });
+  ErrorNorms r;
+  r.l2 = std::sqrt(sums[0]);
+  if (grad) r.h1 = std::sqrt(sums[1]);
   return r;
 }
 

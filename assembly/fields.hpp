@@ -12,6 +12,10 @@ namespace iga {
 
 /// f(x): a source term or a component of an exact solution.
 using ScalarField = std::function<double(const Point2& x)>;
+/// Several fields at the q points of an element at once: values(i, k) = f_i(points.col(k)),
+/// values resized to (number of fields) x q. Loops over quadrature points prefer it to a
+/// ScalarField per point (one compiled program for all points and all fields).
+using BatchField = std::function<void(const Eigen::Matrix2Xd& points, Eigen::MatrixXd& values)>;
 /// g(x, n): boundary data that may depend on the outward unit normal n (e.g. du/dn = grad u . n).
 using BoundaryField = std::function<double(const Point2& x, const Point2& n)>;
 
@@ -31,6 +35,9 @@ struct SurfaceExactSolution {
 /// An exact solution and its derivatives; members left empty are not available.
 struct ExactSolution {
   ScalarField u, ux, uy, uxx, uxy, uyy;
+  /// Optional: the same six functions (rows u, ux, uy, uxx, uxy, uyy) in one batch, which the
+  /// error norms use when it is set; rows of members left empty above are not read.
+  BatchField jet;
   bool has_gradient() const { return ux && uy; }
   bool has_hessian() const { return uxx && uxy && uyy; }
 };

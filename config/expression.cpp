@@ -3,6 +3,7 @@
 #include <ginac/ginac.h>
 #include <muParser.h>
 
+#include <algorithm>
 #include <atomic>
 #include <cctype>
 #include <cmath>
@@ -16,6 +17,7 @@
 #include "config/errors.hpp"
 #include "config/expression_evaluator.hpp"
 #include "config/expression_printer.hpp"
+#include "config/expression_vector_program.hpp"
 
 namespace iga {
 
@@ -405,6 +407,67 @@ double SymbolicFunction::operator()(const Eigen::Vector2d& p) const {
 double SymbolicFunction::at(const Eigen::Vector3d& p) const {
   if (!impl_) return 0.0;
   return evaluator(impl_)(p.x(), p.y(), p.z());
+}
+
+struct FunctionBatch::Impl {
+  std::optional<expression_detail::VectorProgram> vector;  ///< preferred; else the muParser program
+  Program program;
+  int size = 0;
+  std::uint64_t id = next_id++;  ///< keys the per-thread cache, like SymbolicFunction's
+};
+
+FunctionBatch::FunctionBatch(const std::vector<SymbolicFunction>& functions) {
+  auto impl = std::make_shared<Impl>();
+  impl->size = static_cast<int>(functions.size());
+  std::lock_guard<std::recursive_mutex> lock(ginac_mutex());
+  std::vector<GiNaC::ex> es;
+  std::string where;
+  for (const SymbolicFunction& f : functions) {
+    const auto self = impl_or_zero(f.impl_);
+    es.push_back(*self->expr);
+    if (where.empty()) where = self->where;
+  }
+  impl->vector = expression_detail::vector_program(es);
+  if (impl->vector) {
+    impl_ = std::move(impl);
+    return;
+  }
+  try {
+    impl->program = mu_program(es);
+    EvaluatorCache::this_thread().add(impl->id, impl, impl->program);  // compile now: errors here
+  } catch (const Unsupported& u) {
+    throw InputError(prefix(where) + "cannot evaluate: " + u.what());
+  } catch (const mu::Parser::exception_type& err) {
+    throw InputError(prefix(where) + "cannot evaluate: muParser rejects '" + err.GetExpr() + "': " + err.GetMsg());
+  }
+  impl_ = std::move(impl);
+}
+
+int FunctionBatch::size() const { return impl_->size; }
+
+void FunctionBatch::evaluate(const Eigen::Matrix2Xd& points, Eigen::MatrixXd& values) const {
+  const int m = impl_->size;
+  const Eigen::Index q = points.cols();
+  values.resize(m, q);
+  if (impl_->vector) {
+    using expression_detail::VectorProgram;
+    thread_local std::vector<double> work;
+    double x[VectorProgram::kBlock], y[VectorProgram::kBlock];
+    for (Eigen::Index first = 0; first < q; first += VectorProgram::kBlock) {
+      const int count = static_cast<int>(std::min<Eigen::Index>(VectorProgram::kBlock, q - first));
+      for (int k = 0; k < count; ++k) x[k] = points(0, first + k), y[k] = points(1, first + k);
+      impl_->vector->run(x, y, count, work, values.data() + first * m, m);
+    }
+    return;
+  }
+  EvaluatorCache& cache = EvaluatorCache::this_thread();
+  Evaluator* e = cache.find(impl_->id);
+  if (!e) e = &cache.add(impl_->id, impl_, impl_->program);
+  const std::vector<int>& results = impl_->program.results;
+  for (Eigen::Index k = 0; k < points.cols(); ++k) {
+    (*e)(points(0, k), points(1, k));
+    for (int i = 0; i < m; ++i) values(i, k) = e->temporary(results[i]);
+  }
 }
 
 }  // namespace iga

@@ -7,6 +7,7 @@
 
 #include <memory>
 #include <string>
+#include <vector>
 
 #include <Eigen/Core>
 
@@ -37,6 +38,26 @@ class SymbolicFunction {
   double operator()(double x, double y) const { return (*this)(Eigen::Vector2d(x, y)); }
   /// Evaluate at a point in 3D (functions from parse_xyz; thread-safe like operator()).
   double at(const Eigen::Vector3d& p) const;
+
+  struct Impl;
+
+ private:
+  friend class FunctionBatch;
+  std::shared_ptr<const Impl> impl_;
+};
+
+/// Several functions of (x, y) evaluated together at many points, e.g. an exact solution and its
+/// derivatives in the error norms. One muParser program computes the subexpressions they share
+/// (sin(pi x) in u, u_x, u_xx, ...) once per point, and the per-thread lookup of the compiled
+/// program happens once per batch instead of once per function and point.
+class FunctionBatch {
+ public:
+  /// Throws InputError like SymbolicFunction::parse if muParser rejects the joint program.
+  explicit FunctionBatch(const std::vector<SymbolicFunction>& functions);
+
+  int size() const;
+  /// values(i, k) = f_i(points.col(k)), values resized to size() x points.cols(). Thread-safe.
+  void evaluate(const Eigen::Matrix2Xd& points, Eigen::MatrixXd& values) const;
 
   struct Impl;
 

@@ -21,6 +21,7 @@ namespace iga::expression_detail {
 struct Program {
   std::vector<std::string> stages;  ///< run in order; the value of the last one is the result
   int temporaries = 0;
+  std::vector<int> results;  ///< several functions at once: the temporary holding each one's value
 };
 
 /// One thread's compiled muParser instances for one function. Variables are bound by address, so
@@ -41,6 +42,8 @@ class Evaluator {
     z_ = z;
     return (*this)(x, y);
   }
+  /// Temporary i after the last evaluation (the results of a program of several functions).
+  double temporary(int i) const { return temps_[i]; }
 
  private:
   double x_ = 0, y_ = 0, z_ = 0;

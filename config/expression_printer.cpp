@@ -60,13 +60,40 @@ class MuPrinter {
   std::string flat(const GiNaC::ex& e) { return print(e).text; }
 
   Program compile(const GiNaC::ex& e) {
+    count_uses(e);
+    statements_.clear();
+    const std::string result = print(e).text;
+    return finish(result);
+  }
+
+  /// Several expressions in one program: subexpressions shared between them (u and its
+  /// derivatives share their sines and cosines) are computed once; expression i is left in
+  /// temporary results[i].
+  Program compile_many(const std::vector<GiNaC::ex>& es) {
+    for (const GiNaC::ex& e : es) count_uses(e);
+    statements_.clear();
+    std::vector<int> results;
+    for (const GiNaC::ex& e : es) {
+      const std::string text = print(e).text;
+      results.push_back(temporaries_);
+      new_temporary(text);
+    }
+    Program program = finish("");
+    program.results = std::move(results);
+    return program;
+  }
+
+ private:
+  void count_uses(const GiNaC::ex& e) {
     for (auto it = e.preorder_begin(); it != e.preorder_end(); ++it) {
       // A negative power is printed as a denominator, i.e. through its positive counterpart.
       const GiNaC::ex key = is_negative_power(*it) ? GiNaC::power(it->op(0), -it->op(1)) : *it;
       if (worth_sharing(key)) ++uses_[key];
     }
-    statements_.clear();
-    const std::string result = print(e).text;
+  }
+
+  /// The statements so far, then `result` (none when empty), cut into stages.
+  Program finish(const std::string& result) {
     Program program;
     program.temporaries = temporaries_;
     std::string stage;
@@ -76,12 +103,11 @@ class MuPrinter {
       stage += (stage.empty() ? "" : ", ") + s;
     };
     for (const std::string& s : statements_) append(s);
-    append(result);
+    if (!result.empty()) append(result);
     program.stages.push_back(stage);
     return program;
   }
 
- private:
   // Precedence of what a printed piece is, from loosest to tightest.
   enum Prec { kAdd = 1, kMul = 2, kPow = 3, kAtom = 4 };
   struct Printed {
@@ -321,5 +347,7 @@ class MuPrinter {
 std::string mu_text(const GiNaC::ex& e) { return MuPrinter(false).flat(e); }
 
 Program mu_program(const GiNaC::ex& e) { return MuPrinter(true).compile(e); }
+
+Program mu_program(const std::vector<GiNaC::ex>& es) { return MuPrinter(true).compile_many(es); }
 
 }  // namespace iga::expression_detail

@@ -8,6 +8,7 @@
 
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "config/expression_evaluator.hpp"
 
@@ -35,5 +36,9 @@ std::string mu_text(const GiNaC::ex& e);
 /// `e` as muParser statements: repeated function calls, sums and powers are hoisted into temporaries
 /// and every statement is kept short. Throws Unsupported.
 Program mu_program(const GiNaC::ex& e);
+
+/// Several expressions as one program that computes their common subexpressions once; the value
+/// of expression i is left in temporary Program::results[i]. Throws Unsupported.
+Program mu_program(const std::vector<GiNaC::ex>& es);
 
 }  // namespace iga::expression_detail

@@ -24,6 +24,10 @@ ScalarField field(const SymbolicFunction& f) {
   return [f](const Point2& x) { return f(x); };
 }
 
+BatchField batch_field(FunctionBatch batch) {
+  return [batch](const Eigen::Matrix2Xd& points, Eigen::MatrixXd& values) { batch.evaluate(points, values); };
+}
+
 SymbolicFunction parse_expression(const ConfigNode& node) { return SymbolicFunction::parse(node.as_string(), node.where()); }
 
 }  // namespace
@@ -36,9 +40,11 @@ ExactSolution ProblemSpec::exact_solution() const {
   s.u = field(u);
   s.ux = field(ux);
   s.uy = field(uy);
-  s.uxx = field(ux.diff_x());
-  s.uxy = field(ux.diff_y());
-  s.uyy = field(uy.diff_y());
+  const SymbolicFunction uxx = ux.diff_x(), uxy = ux.diff_y(), uyy = uy.diff_y();
+  s.uxx = field(uxx);
+  s.uxy = field(uxy);
+  s.uyy = field(uyy);
+  s.jet = batch_field(FunctionBatch({u, ux, uy, uxx, uxy, uyy}));
   return s;
 }
 

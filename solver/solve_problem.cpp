@@ -70,8 +70,9 @@ DiscreteSolution solve_problem(const Space& space, const ProblemSpec& problem, S
   const Assembler assembler(space);
   // Extended precision: the residuals below must see A's entries beyond their double rounding.
   const SplitMatrix A = assembler.matrix_extended(problem.form, qa);
-  const SymbolicFunction source = problem.source;
-  Eigen::VectorXd b = assembler.load([source](const Point2& x) { return source(x); }, qa);
+  const FunctionBatch source_batch({problem.source});
+  Eigen::VectorXd b = assembler.load(
+      [&source_batch](const Eigen::Matrix2Xd& x, Eigen::MatrixXd& values) { source_batch.evaluate(x, values); }, qa);
   const BoundaryField dudn = problem.normal_derivative_field();
   // Natural conditions: Neumann flux ∫ g_N v, and for simply supported plates ∫ Δu ∂v/∂n
   // (from ∫ Δ²u v = ∫ Δu Δv − ∫_Γ Δu ∂v/∂n when v = 0 on Γ).

@@ -75,7 +75,10 @@ StudySettings parse_study(const ConfigNode& root, const std::string& config_path
   // Domain, space and boundary part names are validated on the coarsest space (cheap), so that
   // every input error surfaces before the study starts; what it asks for is checked first.
   check_space_request(root["space"], s.limits);
+  const auto t_coarse = Clock::now();
   const SpacePtr coarse = make_space(root["domain"], root["space"], 0);
+  s.level0 = coarse;
+  s.level0_seconds = seconds_since(t_coarse);
   check_boundary_parts(*coarse, s.problem);
   if ((s.problem.pde == Pde::laplace_beltrami) != (coarse->ambient_dimension() == 3))
     root["problem"]["pde"].fail(s.problem.pde == Pde::laplace_beltrami
@@ -159,8 +162,9 @@ StudyResult run_study(const StudySettings& settings, const ProgressSink& progres
     const std::string tag = "[level " + std::to_string(level) + "] ";
     progress(tag + "building space");
     auto t0 = Clock::now();
-    const SpacePtr space = next ? next : make_space(domain, space_node, settings.adaptive ? 0 : level);
-    const double t_space = seconds_since(t0) + t_next;
+    const bool reuse = !next && level == 0 && settings.level0;
+    const SpacePtr space = next ? next : reuse ? settings.level0 : make_space(domain, space_node, settings.adaptive ? 0 : level);
+    const double t_space = seconds_since(t0) + t_next + (reuse ? settings.level0_seconds : 0.0);
     check_size(measure(*space), settings.limits, space_node, "level " + std::to_string(level));  // before assembly
     progress(tag + "space: " + std::to_string(space->dimension()) + " dofs, " +
              std::to_string(space->num_elements()) + " elements (" + format_seconds(t_space) + ")");

@@ -35,6 +35,10 @@ struct StudySettings {
   int vtk_samples = 8;     ///< samples per element edge
   bool write_plot = true;
   ResourceLimits limits;   ///< the limits: section (defaults when absent)
+  /// Level 0 as parse_study built it to validate the config, and its build time: run_study starts
+  /// from it instead of building it again (a one-level study of a large space built it twice).
+  SpacePtr level0;
+  double level0_seconds = 0.0;
 };
 
 /// Parse and validate the whole config (all sections) before anything is computed, so a typo

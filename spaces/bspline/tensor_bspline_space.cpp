@@ -32,8 +32,17 @@ class TensorBSplineSpace::TensorEvaluator final : public Space::Evaluator {
   explicit TensorEvaluator(const TensorBSplineSpace& space) : space_(space) {}
 
   void evaluate(int element, const QuadratureRule& rule, unsigned flags, PointValues& out) override;
+  /// u_h = Σ c_ab N_a(u) M_b(v) by sum factorization: the reference derivatives of u_h are
+  /// tu_dᵀ C tv_e at each point, with no table of every active function (the error norms' path).
+  void evaluate_function(int element, const QuadratureRule& rule, const Eigen::VectorXd& coefficients, unsigned flags,
+                         PointValues& geometry, FunctionValues& out) override;
 
  private:
+  /// tu_, tv_: the element's 1D active functions and derivatives up to order nd at the points.
+  void active_1d(int element, const QuadratureRule& rule, int nd);
+  /// jets_: the geometry map at the points (second derivatives only when `hess`).
+  void geometry_jets(int element, const QuadratureRule& rule, bool hess);
+
   /// Bernstein values and derivatives (orders 0..2) at the points of one rule: (p+1) x q each.
   struct Tables {
     std::vector<Point2> points;  // copy, to detect a different rule at a reused address
@@ -45,7 +54,8 @@ class TensorBSplineSpace::TensorEvaluator final : public Space::Evaluator {
   std::map<const QuadratureRule*, Tables> cache_;
   // Scratch reused between calls.
   Eigen::MatrixXd tu_[3], tv_[3];
-  ReferenceDerivatives ref_;
+  ReferenceDerivatives ref_, one_;
+  PointValues single_;
   std::vector<GeometryJet> jets_;
 };
 
@@ -74,24 +84,28 @@ const TensorBSplineSpace::TensorEvaluator::Tables& TensorBSplineSpace::TensorEva
   return t;
 }
 
-void TensorBSplineSpace::TensorEvaluator::evaluate(int element, const QuadratureRule& rule, unsigned flags,
-                                                   PointValues& out) {
+void TensorBSplineSpace::TensorEvaluator::active_1d(int element, const QuadratureRule& rule, int nd) {
   const TensorBSplineSpace& s = space_;
   const Tables& t = tables(rule);
   const int nex = s.num_elements_u();
   const int ex = element % nex, ey = element / nex;
+  // 1D active functions at the points: extraction times Bernstein tables.
+  for (int d = 0; d <= nd; ++d) {
+    tu_[d].noalias() = s.extraction_u_[ex] * t.bu[d];
+    tv_[d].noalias() = s.extraction_v_[ey] * t.bv[d];
+  }
+}
+
+void TensorBSplineSpace::TensorEvaluator::evaluate(int element, const QuadratureRule& rule, unsigned flags,
+                                                   PointValues& out) {
+  const TensorBSplineSpace& s = space_;
   const int pu = s.knots_u_.degree(), pv = s.knots_v_.degree();
   const int q = rule.size();
   const bool values = (flags & update_values) != 0;
   const bool grads = (flags & (update_gradients | update_hessians)) != 0;
   const bool hess = (flags & update_hessians) != 0;
   const int nd = hess ? 2 : (grads ? 1 : 0);
-
-  // 1D active functions at the points: extraction times Bernstein tables.
-  for (int d = 0; d <= nd; ++d) {
-    tu_[d].noalias() = s.extraction_u_[ex] * t.bu[d];
-    tv_[d].noalias() = s.extraction_v_[ey] * t.bv[d];
-  }
+  active_1d(element, rule, nd);
   const int n = (pu + 1) * (pv + 1);
   if (values) ref_.value.resize(n, q);
   if (grads) {
@@ -118,9 +132,61 @@ void TensorBSplineSpace::TensorEvaluator::evaluate(int element, const Quadrature
           ref_.detaeta(i, k) = tu_[0](a, k) * tv_[2](b, k);
         }
       }
-
   s.element_dofs(element, out.dofs);
+  geometry_jets(element, rule, hess);
+  push_forward(jets_, ref_, flags, out);
+}
 
+void TensorBSplineSpace::TensorEvaluator::evaluate_function(int element, const QuadratureRule& rule,
+                                                            const Eigen::VectorXd& coefficients, unsigned flags,
+                                                            PointValues& geometry, FunctionValues& out) {
+  if (flags & (update_laplacian_gradient | update_bilaplacian))
+    throw std::logic_error("evaluate_function: this space provides derivatives up to order 2 only");
+  const TensorBSplineSpace& s = space_;
+  const int pu = s.knots_u_.degree(), pv = s.knots_v_.degree();
+  const bool grads = (flags & (update_gradients | update_hessians)) != 0;
+  const bool hess = (flags & update_hessians) != 0;
+  const int nd = hess ? 2 : (grads ? 1 : 0);
+  active_1d(element, rule, nd);
+  s.element_dofs(element, geometry.dofs);
+  // C(a, b) = c of the active function a + b (pu + 1), the order of element_dofs.
+  Eigen::MatrixXd c(pu + 1, pv + 1);
+  for (int b = 0; b <= pv; ++b)
+    for (int a = 0; a <= pu; ++a) c(a, b) = coefficients(geometry.dofs[a + b * (pu + 1)]);
+  Eigen::MatrixXd cv[3];  // C tv_d
+  for (int d = 0; d <= nd; ++d) cv[d].noalias() = c * tv_[d];
+  auto reference = [&](int du, int dv) -> Eigen::MatrixXd { return tu_[du].cwiseProduct(cv[dv]).colwise().sum(); };
+  one_.value = reference(0, 0);
+  if (grads) {
+    one_.dxi = reference(1, 0);
+    one_.deta = reference(0, 1);
+  }
+  if (hess) {
+    one_.dxixi = reference(2, 0);
+    one_.dxieta = reference(1, 1);
+    one_.detaeta = reference(0, 2);
+  }
+  geometry_jets(element, rule, hess);
+  push_forward(jets_, one_, flags | update_values, single_);
+  geometry.x = single_.x;
+  geometry.jacobian = single_.jacobian;
+  if (flags & update_values) out.value = single_.value.row(0).transpose();
+  if (flags & update_gradients) {
+    out.dx = single_.dx.row(0).transpose();
+    out.dy = single_.dy.row(0).transpose();
+  }
+  if (flags & update_hessians) {
+    out.dxx = single_.dxx.row(0).transpose();
+    out.dxy = single_.dxy.row(0).transpose();
+    out.dyy = single_.dyy.row(0).transpose();
+  }
+}
+
+void TensorBSplineSpace::TensorEvaluator::geometry_jets(int element, const QuadratureRule& rule, bool hess) {
+  const TensorBSplineSpace& s = space_;
+  const int nex = s.num_elements_u();
+  const int ex = element % nex, ey = element / nex;
+  const int q = rule.size();
   // Geometry w.r.t. reference coordinates: F(lo + h .* xi) has J diag(h) and H_kl h_k h_l.
   Point2 lo, hi;
   s.element_box(element, lo, hi);
@@ -138,7 +204,6 @@ void TensorBSplineSpace::TensorEvaluator::evaluate(int element, const Quadrature
       jets_[k].hessian_x.setZero();
       jets_[k].hessian_y.setZero();
     }
-    push_forward(jets_, ref_, flags, out);
     return;
   }
   for (int k = 0; k < q; ++k) {
@@ -153,7 +218,6 @@ void TensorBSplineSpace::TensorEvaluator::evaluate(int element, const Quadrature
     }
     jets_[k] = g;
   }
-  push_forward(jets_, ref_, flags, out);
 }
 
 // ---------------------------------------------------------------------------------------------

@@ -107,18 +107,51 @@ void TMeshSpace::TMeshEvaluator::evaluate_function(int element, const Quadrature
                                                    const Eigen::VectorXd& coefficients, unsigned flags,
                                                    PointValues& geometry, FunctionValues& out) {
   const unsigned higher = flags & (update_laplacian_gradient | update_bilaplacian);
-  Space::Evaluator::evaluate_function(element, rule, coefficients, (flags & ~higher) | update_values, geometry, out);
-  if (!higher) return;
-  // u_h on the cell in its tensor Bernstein basis: b = E_cᵀ c (index i + j (n+1)).
+  // u_h on the cell in its tensor Bernstein basis first: b = E_cᵀ c (index i + j (n+1)), then
+  // ∂ξ^a ∂η^b u_h(x_k) = X_a(:, k)ᵀ B Y_b(:, k) with B = b as an (n+1) x (n+1) array, from the
+  // cached 1D tables: no table of every active function (what the error norms would otherwise pay).
+  Point2 lo, hi;
+  space_.cell_box(element, lo, hi);
+  const Point2 h = hi - lo;
+  const TCell& cell = space_.mesh().cells()[element];
+  const Tables& t = tables(rule, cell);
+  const int q = rule.size();
+  geometry.dofs = space_.extraction().dofs[element];
   const Eigen::MatrixXd& E = space_.extraction().matrix[element];
   Eigen::VectorXd c(geometry.num_functions());
   for (int a = 0; a < c.size(); ++a) c(a) = coefficients(geometry.dofs[a]);
   const Eigen::VectorXd b = E.transpose() * c;
-  const TCell& cell = space_.mesh().cells()[element];
+  {
+    const int m = space_.section().n + 1;
+    const Eigen::Map<const Eigen::MatrixXd> B(b.data(), m, m);
+    Eigen::Matrix2d J = Eigen::Matrix2d::Zero();
+    J(0, 0) = h.x();
+    J(1, 1) = h.y();
+    geometry.x.resize(2, q);
+    geometry.jacobian.assign(q, J);
+    for (int k = 0; k < q; ++k) geometry.x.col(k) = lo + h.cwiseProduct(rule.points[k]);
+    const bool grads = (flags & (update_gradients | update_hessians)) != 0, hess = (flags & update_hessians) != 0;
+    Eigen::MatrixXd by[3];  // B Y_d
+    for (int d = 0; d <= (hess ? 2 : grads ? 1 : 0); ++d) by[d].noalias() = B * t.by[d];
+    auto derivative = [&](int ax, int ay, double scale) -> Eigen::VectorXd {
+      return (t.bx[ax].cwiseProduct(by[ay]).colwise().sum().transpose()) * scale;
+    };
+    if ((flags & update_values) || higher) out.value = derivative(0, 0, 1.0);
+    if (flags & update_gradients) {
+      out.dx = derivative(1, 0, 1.0 / h.x());
+      out.dy = derivative(0, 1, 1.0 / h.y());
+    }
+    if (flags & update_hessians) {
+      out.dxx = derivative(2, 0, 1.0 / (h.x() * h.x()));
+      out.dxy = derivative(1, 1, 1.0 / (h.x() * h.y()));
+      out.dyy = derivative(0, 2, 1.0 / (h.y() * h.y()));
+    }
+  }
+  if (!higher) return;
   const SectionBernstein& bx = space_.bernstein(cell.section_s, cell.x1 - cell.x0);
   const SectionBernstein& by = space_.bernstein(cell.section_t, cell.y1 - cell.y0);
   const double hx = bx.h(), hy = by.h();
-  const int n = bx.n(), q = rule.size();
+  const int n = bx.n();
   // D(a, b) = ∂x^a ∂y^b u_h at point k (reference derivatives carry h^d, see SectionBernstein).
   auto derivative = [&](const Eigen::MatrixXd& X, const Eigen::MatrixXd& Y, int ax, int ay) {
     double sum = 0.0;

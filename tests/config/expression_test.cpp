@@ -333,5 +333,34 @@ TEST(Expression, ConcurrentEvaluation) {
   EXPECT_DOUBLE_EQ(d[1], 12.0);
 }
 
+// A batch of u and its derivatives gives what each function gives alone, at every point and from
+// several threads (one program computes their shared sines once).
+TEST(Expression, BatchMatchesSingleFunctions) {
+  const SymbolicFunction u = parse(
+      "(cos(4*pi*x)-1)*(cos(4*pi*y)-1) + sqrt(x^2+y^2+1) + atan2(y, x+2)"
+      " + exp(-x)*log(2+y) + (x^2+1)^(-3) + (y+2)^(1/3) + 1/sqrt(3+x) + tanh(x*y)");
+  const SymbolicFunction ux = u.diff_x(), uy = u.diff_y();
+  const SymbolicFunction kinks = parse("abs(x-0.2)*step(y-0.5) + csgn(x-0.3) + asinh(y)");
+  const std::vector<SymbolicFunction> fs = {u, ux, uy, ux.diff_x(), ux.diff_y(), uy.diff_y(), SymbolicFunction(), kinks};
+  const FunctionBatch batch(fs);
+  const int m = static_cast<int>(fs.size());
+  ASSERT_EQ(batch.size(), m);
+  const int q = 150;  // more than one block of points
+  Eigen::Matrix2Xd points(2, q);
+  for (int k = 0; k < q; ++k) points.col(k) << 0.37 * k / q - 0.1, 1.3 - 0.9 * k / q;
+  std::vector<Eigen::MatrixXd> values(2);
+#pragma omp parallel for num_threads(2)
+  for (int t = 0; t < 2; ++t) batch.evaluate(points, values[t]);
+  for (const Eigen::MatrixXd& v : values) {
+    ASSERT_EQ(v.rows(), m);
+    ASSERT_EQ(v.cols(), q);
+    for (int i = 0; i < m; ++i)
+      for (int k = 0; k < q; ++k) {
+        const double single = fs[i](points.col(k));
+        EXPECT_NEAR(v(i, k), single, 1e-13 * (1 + std::abs(single))) << "function " << i << ", point " << k;
+      }
+  }
+}
+
 }  // namespace
 }  // namespace iga

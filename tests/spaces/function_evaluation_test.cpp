@@ -1,8 +1,8 @@
 /// @file
-/// Space::Evaluator::evaluate_function and integrate_values: the WS4 fast paths (contract with the
-/// extraction first) agree with the default implementations (all active functions, then contract)
-/// to round-off, on a perturbed WS4 mesh and on a curved B-spline patch; Assembler::load agrees with
-/// the element-by-element load from ElementValues, on both spaces.
+/// Space::Evaluator::evaluate_function and integrate_values: the WS4, T-mesh and B-spline fast
+/// paths (contract with the extraction first) agree with the default implementations (all active
+/// functions, then contract) to round-off, on a perturbed WS4 mesh, a graded T-mesh and a curved
+/// B-spline patch; Assembler::load agrees with the element-by-element load from ElementValues.
 
 #include <gtest/gtest.h>
 
@@ -15,6 +15,7 @@
 #include "config/config_node.hpp"
 #include "spaces/bspline/bspline_from_config.hpp"
 #include "spaces/element_values.hpp"
+#include "spaces/space_factory.hpp"
 #include "spaces/ws4/ws4_space.hpp"
 
 namespace iga {
@@ -37,6 +38,16 @@ SpacePtr annulus_bspline() {
       "space: {type: bspline, degree: 3, regularity: 2, elements: [3, 2]}\n",
       "test.yaml");
   return make_bspline_space(root["domain"], root["space"], 0);
+}
+
+/// A C1 trigonometric T-mesh with cells of three sizes (hanging vertices).
+SpacePtr graded_tmesh() {
+  const ConfigNode root = ConfigNode::load_string(
+      "domain: {type: rectangle, min: [0, 0], max: [2, 1.5]}\n"
+      "space: {type: tmesh, section: trig, n: 3, regularity: 1, elements: [4, 4],\n"
+      "        refine: [[0, 0, 0.5, 0.5], [0.25, 0.25, 0.5, 0.5]]}\n",
+      "test.yaml");
+  return make_space(root["domain"], root["space"], 1);
 }
 
 Eigen::VectorXd random_vector(int n, unsigned seed) {
@@ -168,6 +179,8 @@ TEST(FunctionEvaluation, BsplinePartitionOfUnity) {
 }
 
 TEST(FunctionEvaluation, Ws4FastPathMatchesDefault) { check_function_paths(*perturbed_ws4(2), 8); }
+TEST(FunctionEvaluation, TmeshFastPathMatchesDefault) { check_function_paths(*graded_tmesh(), 10); }
+TEST(FunctionEvaluation, BsplineFastPathMatchesDefault) { check_function_paths(*annulus_bspline(), 8); }
 TEST(IntegrateValues, Ws4FastPathMatchesDefault) { check_integrate_paths(*perturbed_ws4(2), 8); }
 TEST(IntegrateValues, BsplineMatchesValueTable) { check_integrate_paths(*annulus_bspline(), 8); }
 TEST(AssemblerLoad, Ws4MatchesElementValues) { check_load(*perturbed_ws4(2), 8); }
