@@ -1,5 +1,6 @@
 #include "geometry/surface_from_config.hpp"
 
+#include <cctype>
 #include <filesystem>
 #include <sstream>
 
@@ -22,9 +23,11 @@ std::string scientific(double x) {
 }  // namespace
 
 TriangleSurfaceMesh surface_mesh_from_config(const ConfigNode& domain) {
-  domain.check_keys({"type", "mesh", "level", "file", "normals", "tuple", "method"});
+  domain.check_keys({"type", "mesh", "level", "file", "mesh_size", "normals", "tuple", "method"});
   const bool builtin = domain.has("mesh"), file = domain.has("file");
-  if (builtin == file) domain.fail("give either 'mesh' (a built-in surface) or 'file' (.obj or .off), not both");
+  if (builtin == file)
+    domain.fail("give either 'mesh' (a built-in surface) or 'file' (.obj, .off, .stl, .msh or .geo), not both");
+  if (const auto size = domain.find("mesh_size"); size && !file) size->fail("'mesh_size' applies to a .geo 'file' only");
   if (const auto level = domain.find("level"); level && (!builtin || domain["mesh"].as_string() != "icosphere"))
     level->fail("'level' applies to mesh: icosphere only");
   TriangleSurfaceMesh mesh;
@@ -52,7 +55,16 @@ TriangleSurfaceMesh surface_mesh_from_config(const ConfigNode& domain) {
     const ConfigNode node = domain["file"];
     std::filesystem::path path = node.as_string();
     if (path.is_relative()) path = std::filesystem::path(node.file()).parent_path() / path;
-    const SurfaceMeshFile read = node.guard([&] { return read_surface_mesh(path.string()); });
+    SurfaceFileOptions options;
+    options.config_folder = std::filesystem::path(node.file()).parent_path().string();
+    if (const auto size = domain.find("mesh_size")) {
+      options.mesh_size = size->as_double();
+      if (!(options.mesh_size > 0.0)) size->fail("mesh_size must be > 0");
+      std::string ext = path.extension().string();
+      for (auto& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+      if (ext != ".geo") size->fail("'mesh_size' applies to .geo files only (a mesh is used as it is)");
+    }
+    const SurfaceMeshFile read = node.guard([&] { return read_surface_mesh(path.string(), options); });
     mesh = node.guard([&] { return surface_mesh_from_file(read); });
     normals_default = read.normals.empty() ? "estimated" : "file";
     normal_choices = read.normals.empty() ? std::vector<std::string>{"estimated", "fan"}

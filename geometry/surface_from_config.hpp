@@ -6,7 +6,9 @@
 ///     type: surface
 ///     mesh: icosphere        # built-in: icosphere, octahedron, tetrahedron, perturbed_octahedron,
 ///     level: 2               #   height_field (level: icosphere only, 0..8) ...
-///     file: bunny.obj        # ... or a .obj/.off file (relative to the config file), not both
+///     file: bunny.obj        # ... or a .obj/.off/.stl/.msh/.geo file (relative to the config file),
+///                            #   not both; .stl/.msh/.geo go through the Gmsh worker
+///     mesh_size: 0.2         # .geo only: Gmsh's largest element size (default: the file's own)
 ///     normals: estimated     # file (default when the file has `vn`), estimated (angle-weighted,
 ///                            #   default otherwise), fan (area-weighted), exact (built-ins' own, default)
 ///     tuple: pi0             # pi0 (default, patch degree 8) or pi1 (degree 9)
