@@ -2,7 +2,6 @@
 
 #include <cctype>
 #include <filesystem>
-#include <sstream>
 
 #include "geometry/builtin_surface_meshes.hpp"
 
@@ -12,13 +11,6 @@ namespace {
 
 const std::vector<std::string> builtin_names = {"icosphere", "octahedron", "tetrahedron", "perturbed_octahedron",
                                                 "height_field"};
-
-std::string scientific(double x) {
-  std::ostringstream s;
-  s.precision(6);
-  s << x;
-  return s.str();
-}
 
 }  // namespace
 
@@ -93,20 +85,6 @@ rsd::RsdSurface surface_from_config(const ConfigNode& domain) {
   const TriangleSurfaceMesh mesh = surface_mesh_from_config(domain);
   const rsd::RsdOptions options = rsd_options_from_config(domain);
   return domain.guard([&] { return rsd::build_rsd_surface(mesh, options); });
-}
-
-std::vector<std::pair<std::string, std::string>> surface_report_entries(const rsd::RsdSurface& surface) {
-  const rsd::RsdReport& r = surface.report;
-  return {{"tuple", rsd::tuple_name(surface.options.tuple)},
-          {"method", rsd::method_name(surface.options.method)},
-          {"patch_degree", std::to_string(r.patch_degree)},
-          {"interior_edges", std::to_string(r.interior_edges)},
-          {"boundary_edges", std::to_string(r.boundary_edges)},
-          {"max_g1_residual", scientific(r.max_g1_residual)},
-          {"max_fold_alpha", scientific(r.max_fold_alpha)},
-          {"min_regularity", scientific(r.min_regularity)},
-          {"interpolation_residual", scientific(r.interpolation_residual)},
-          {"max_z", scientific(r.max_z)}};
 }
 
 }  // namespace iga

@@ -35,9 +35,4 @@ rsd::RsdOptions rsd_options_from_config(const ConfigNode& domain);
 /// The G1 surface that `domain` describes.
 rsd::RsdSurface surface_from_config(const ConfigNode& domain);
 
-/// The surface report as (key, value) pairs for summaries: tuple, method, patch_degree,
-/// interior/boundary edges, max_g1_residual, max_fold_alpha, min_regularity,
-/// interpolation_residual, max_z.
-std::vector<std::pair<std::string, std::string>> surface_report_entries(const rsd::RsdSurface& surface);
-
 }  // namespace iga

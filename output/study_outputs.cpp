@@ -3,13 +3,23 @@
 #include <filesystem>
 #include <vector>
 
+#include "output/surface_files.hpp"
 #include "output/vtk_writer.hpp"
 
 namespace iga {
 
 StudyResult run_study_with_vtk(const StudySettings& settings, const std::string& directory,
                                const ProgressSink& progress) {
-  if (!settings.write_vtk) return run_study(settings, progress);
+  // A surface is the same at every level: its files are written once (surface.vtu with VTK output,
+  // surface_patches.txt always).
+  const auto with_surface_files = [&](StudyResult result) {
+    if (result.surface) {
+      progress("writing the surface");
+      write_surface_files(*result.surface, directory, "surface", settings.vtk_samples, settings.write_vtk);
+    }
+    return result;
+  };
+  if (!settings.write_vtk) return with_surface_files(run_study(settings, progress));
   const std::filesystem::path dir(directory);
   const ExactSolution exact = settings.problem.exact_solution();
   std::vector<std::string> vtu_files, mesh_files;
@@ -31,7 +41,7 @@ StudyResult run_study_with_vtk(const StudySettings& settings, const std::string&
   StudyResult result = run_study(settings, progress, write_level);
   write_pvd(vtu_files, (dir / "solution.pvd").string());
   write_pvd(mesh_files, (dir / "mesh.pvd").string());
-  return result;
+  return with_surface_files(std::move(result));
 }
 
 }  // namespace iga

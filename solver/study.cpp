@@ -40,6 +40,7 @@ StudySettings parse_study(const ConfigNode& root, const std::string& config_path
   // every input error surfaces before the study starts; what it asks for is checked first.
   check_space_request(root["space"], s.limits);
   const SpacePtr coarse = make_space(root["domain"], root["space"], 0);
+  s.level0 = coarse;
   check_boundary_parts(*coarse, s.problem);
   if ((s.problem.pde == Pde::laplace_beltrami) != (coarse->ambient_dimension() == 3))
     root["problem"]["pde"].fail(s.problem.pde == Pde::laplace_beltrami
@@ -142,13 +143,18 @@ StudyResult run_study(const StudySettings& settings, const ProgressSink& progres
   const ConfigNode domain = settings.root["domain"], space_node = settings.root["space"];
   const ExactSolution exact = settings.problem.exact_solution();
   result.adaptive = settings.adaptive;
-  SpacePtr next;  // adaptive: the refined space for the next level
+  SpacePtr next;      // adaptive: the refined space for the next level
+  SpacePtr previous;  // uniform: the last level's space, whose level-independent parts the next shares
   double t_next = 0.0;
   for (int level = 0; level < settings.levels; ++level) {
     const std::string tag = "[level " + std::to_string(level) + "] ";
     progress(tag + "building space");
     auto t0 = Clock::now();
-    const SpacePtr space = next ? next : make_space(domain, space_node, settings.adaptive ? 0 : level);
+    const SpacePtr space = next                              ? next
+                           : level == 0 && settings.level0 ? settings.level0
+                                                           : make_space(domain, space_node, settings.adaptive ? 0 : level,
+                                                                        previous.get());
+    previous = space;
     const double t_space = seconds_since(t0) + t_next;
     check_size(measure(*space), settings.limits, space_node, "level " + std::to_string(level));  // before assembly
     progress(tag + "space: " + std::to_string(space->dimension()) + " dofs, " +
@@ -210,6 +216,7 @@ StudyResult run_study(const StudySettings& settings, const ProgressSink& progres
     result.refinement_steps.push_back(sol.solve.refinement_steps);
     result.space_parameters = space->parameters();
     result.space_type = space->type();
+    result.surface = space->surface_patches();
     result.expected = optimal_rates(settings.problem.pde, space->degree());
     if (settings.adaptive && !next) break;
   }

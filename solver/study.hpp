@@ -35,6 +35,7 @@ struct StudySettings {
   int vtk_samples = 8;     ///< samples per element edge
   bool write_plot = true;
   ResourceLimits limits;   ///< the limits: section (defaults when absent)
+  SpacePtr level0;         ///< the space of level 0 that parse_study built to check the config
 };
 
 /// Parse and validate the whole config (all sections) before anything is computed, so a typo
@@ -48,6 +49,8 @@ struct StudyResult {
   std::vector<LevelResult> rows;
   std::vector<std::pair<std::string, std::string>> space_parameters;  ///< of the finest level
   std::string space_type;
+  /// Spaces on a smooth surface: the surface (the same at every level), for the outputs.
+  std::shared_ptr<const SurfacePatches> surface;
   OptimalRates expected;     ///< for the space degree and PDE
   std::vector<std::string> solver_methods;  ///< per level
   std::vector<double> relative_residuals;   ///< per level
