@@ -14,7 +14,7 @@ const std::vector<std::string> builtin_names = {"icosphere", "octahedron", "tetr
 
 }  // namespace
 
-TriangleSurfaceMesh surface_mesh_from_config(const ConfigNode& domain) {
+TriangleSurfaceMesh surface_mesh_from_config(const ConfigNode& domain, int study_level) {
   domain.check_keys({"type", "mesh", "level", "file", "mesh_size", "normals", "tuple", "method"});
   const bool builtin = domain.has("mesh"), file = domain.has("file");
   if (builtin == file)
@@ -22,16 +22,25 @@ TriangleSurfaceMesh surface_mesh_from_config(const ConfigNode& domain) {
   if (const auto size = domain.find("mesh_size"); size && !file) size->fail("'mesh_size' applies to a .geo 'file' only");
   if (const auto level = domain.find("level"); level && (!builtin || domain["mesh"].as_string() != "icosphere"))
     level->fail("'level' applies to mesh: icosphere only");
+  if (study_level >= 0) {
+    if (!builtin || domain["mesh"].as_string() != "icosphere")
+      domain.fail("a geometry study refines mesh: icosphere (its levels are the study's levels)");
+    if (const auto level = domain.find("level")) level->fail("the geometry study sets the icosphere level (study.levels)");
+  }
   TriangleSurfaceMesh mesh;
   std::string normals_default;
   std::vector<std::string> normal_choices;
   if (builtin) {
     const std::string name = domain["mesh"].as_choice(builtin_names);
     if (name == "icosphere") {
-      const ConfigNode level = domain["level"];
-      const int l = level.as_int();
-      if (l < 0 || l > 8) level.fail("level must be in 0..8");
-      mesh = icosphere(l);
+      if (study_level >= 0) {
+        mesh = icosphere(study_level);
+      } else {
+        const ConfigNode level = domain["level"];
+        const int l = level.as_int();
+        if (l < 0 || l > 8) level.fail("level must be in 0..8");
+        mesh = icosphere(l);
+      }
     } else if (name == "octahedron") {
       mesh = regular_octahedron();
     } else if (name == "tetrahedron") {
@@ -81,8 +90,8 @@ rsd::RsdOptions rsd_options_from_config(const ConfigNode& domain) {
   return options;
 }
 
-rsd::RsdSurface surface_from_config(const ConfigNode& domain) {
-  const TriangleSurfaceMesh mesh = surface_mesh_from_config(domain);
+rsd::RsdSurface surface_from_config(const ConfigNode& domain, int study_level) {
+  const TriangleSurfaceMesh mesh = surface_mesh_from_config(domain, study_level);
   const rsd::RsdOptions options = rsd_options_from_config(domain);
   return domain.guard([&] { return rsd::build_rsd_surface(mesh, options); });
 }

@@ -26,13 +26,14 @@
 
 namespace iga {
 
-/// The mesh (with normals) that `domain` describes.
-TriangleSurfaceMesh surface_mesh_from_config(const ConfigNode& domain);
+/// The mesh (with normals) that `domain` describes. `study_level` >= 0: the icosphere level of a
+/// geometry study (domain.mesh must be icosphere, without its own `level`).
+TriangleSurfaceMesh surface_mesh_from_config(const ConfigNode& domain, int study_level = -1);
 
 /// tuple and method of `domain`.
 rsd::RsdOptions rsd_options_from_config(const ConfigNode& domain);
 
-/// The G1 surface that `domain` describes.
-rsd::RsdSurface surface_from_config(const ConfigNode& domain);
+/// The G1 surface that `domain` describes (`study_level` as for surface_mesh_from_config).
+rsd::RsdSurface surface_from_config(const ConfigNode& domain, int study_level = -1);
 
 }  // namespace iga

@@ -192,4 +192,6 @@ void write_summary_json(const StudySettings& settings, const StudyResult& result
   out << j.dump(2) << '\n';
 }
 
+nlohmann::json config_as_json(const ConfigNode& root) { return to_json(root.yaml()); }
+
 }  // namespace iga
