@@ -153,7 +153,9 @@ ProblemSpec parse_surface_problem(const ConfigNode& node) {
   }
   // Open surfaces: u = g on the whole boundary curve, g from boundary_value or else from exact.
   if (const auto boundary = node.find("boundary")) {
-    boundary->check_keys({"all"});
+    // Not check_keys: part names are free names elsewhere; a surface has only `all`.
+    for (const std::string& key : boundary->keys())
+      if (key != "all") (*boundary)[key].fail("a surface has one boundary part, 'all' (its whole boundary curve)");
     const ConfigNode all = (*boundary)["all"];
     if (all.as_choice({"dirichlet"}) != "dirichlet") all.fail("expected dirichlet");
     p.boundary.push_back({"all", BoundaryKind::dirichlet, all.where()});
