@@ -5,7 +5,6 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 #include <vector>
 
 #include "config/config_node.hpp"
@@ -30,12 +29,14 @@ void check_binary(const std::string& path, std::uint32_t count, const MeshLimits
   in.seekg(header_bytes);
   char facet[facet_bytes];
   for (std::uint32_t f = 0; f < count; ++f) {
-    if (!in.read(facet, facet_bytes)) throw InputError(path + ": the binary STL file ends inside triangle " + std::to_string(f + 1));
+    if (!in.read(facet, facet_bytes))
+      throw InputError(path + ": the binary STL file ends inside triangle " + std::to_string(f + 1));
     for (int k = 3; k < 12; ++k) {  // the three vertices (the stored normal is not used)
       float x;
       std::memcpy(&x, facet + 4 * k, sizeof x);
       if (!std::isfinite(x))
-        throw InputError(path + ": triangle " + std::to_string(f + 1) + " of the binary STL file has a coordinate that is not a finite number");
+        throw InputError(path + ": triangle " + std::to_string(f + 1) +
+                         " of the binary STL file has a coordinate that is not a finite number");
     }
   }
 }
@@ -49,8 +50,7 @@ void check_ascii(const std::string& path, const MeshLimits& limits) {
     if (t.size() != words.size() + numbers) reader.fail("expected '" + what + "'");
     for (std::size_t k = 0; k < words.size(); ++k)
       if (t[k] != words[k]) reader.fail("expected '" + what + "'");
-    for (std::size_t k = words.size(); k < t.size(); ++k)
-      if (!std::isfinite(reader.number(t[k]))) reader.fail("a coordinate that is not a finite number");
+    for (std::size_t k = words.size(); k < t.size(); ++k) reader.number(t[k]);  // finite numbers only
   };
   long long facets = 0;
   bool any_solid = false;
@@ -60,7 +60,9 @@ void check_ascii(const std::string& path, const MeshLimits& limits) {
     for (;;) {
       if (!reader.next(t)) reader.fail("the file ends inside a solid (no 'endsolid')");
       if (t[0] == "endsolid") break;
-      if (t.size() != 5 || t[0] != "facet" || t[1] != "normal") reader.fail("expected 'facet normal nx ny nz' or 'endsolid'");
+      if (t.size() != 5 || t[0] != "facet" || t[1] != "normal")
+        reader.fail("expected 'facet normal nx ny nz' or 'endsolid'");
+      for (int k = 2; k < 5; ++k) reader.number(t[k]);
       expect({"outer", "loop"}, 0, "outer loop");
       for (int v = 0; v < 3; ++v) expect({"vertex"}, 3, "vertex x y z");
       expect({"endloop"}, 0, "endloop");
