@@ -5,7 +5,9 @@
 #include <iostream>
 #include <new>
 
+#include "geometry/geometry_study.hpp"
 #include "output/convergence_plot.hpp"
+#include "output/geometry_study_outputs.hpp"
 #include "config/errors.hpp"
 #include "output/report.hpp"
 #include "output/staged_directory.hpp"
@@ -21,16 +23,10 @@ int fail(int code, const std::string& message) {
   return code;
 }
 
-int run_config(const std::string& config_path, const std::string& output, int levels, bool quiet) {
-  const ConfigNode root = ConfigNode::load_file(config_path);
-  const StudySettings settings = parse_study(root, config_path, levels, output);
-  const ProgressSink progress = [quiet](const std::string& msg) {
-    if (!quiet) std::cerr << "iga-run: " << msg << std::endl;
-  };
-
-  // Checked before the study, not after it, and reported where the location came from.
+/// Checked before the study, not after it, and reported where the location came from.
+void check_output_location_of(const ConfigNode& root, const std::string& output_dir, const std::string& output) {
   try {
-    check_output_location(settings.output_dir);
+    check_output_location(output_dir);
   } catch (const InputError& e) {
     std::string place = "the default output directory";
     if (!output.empty()) {
@@ -40,6 +36,30 @@ int run_config(const std::string& config_path, const std::string& output, int le
     }
     throw InputError(place + ": " + e.what());
   }
+}
+
+/// A geometry study (a `study` section): the surface itself, no PDE.
+int run_geometry_config(const ConfigNode& root, const std::string& config_path, const std::string& output, int levels,
+                        const ProgressSink& progress) {
+  const GeometryStudySettings settings = parse_geometry_study(root, config_path, levels, output);
+  check_output_location_of(root, settings.output_dir, output);
+  StagedDirectory staged(settings.output_dir);
+  const std::vector<GeometryLevel> rows = run_geometry_study_with_files(settings, staged.path(), progress);
+  staged.commit();
+  std::cout << "geometry study — " << config_path << '\n'
+            << format_geometry_table(rows) << "errors against the sphere: radial and normal (max), area and volume "
+            << "(relative)\nresults: " << settings.output_dir << '\n';
+  return 0;
+}
+
+int run_config(const std::string& config_path, const std::string& output, int levels, bool quiet) {
+  const ConfigNode root = ConfigNode::load_file(config_path);
+  const ProgressSink progress = [quiet](const std::string& msg) {
+    if (!quiet) std::cerr << "iga-run: " << msg << std::endl;
+  };
+  if (is_geometry_study(root)) return run_geometry_config(root, config_path, output, levels, progress);
+  const StudySettings settings = parse_study(root, config_path, levels, output);
+  check_output_location_of(root, settings.output_dir, output);
   StagedDirectory staged(settings.output_dir);
   const std::filesystem::path dir(staged.path());
   const StudyResult result = run_study_with_vtk(settings, staged.path(), progress);

@@ -1,7 +1,7 @@
 #include "geometry/surface_from_config.hpp"
 
+#include <cctype>
 #include <filesystem>
-#include <sstream>
 
 #include "geometry/builtin_surface_meshes.hpp"
 
@@ -12,31 +12,35 @@ namespace {
 const std::vector<std::string> builtin_names = {"icosphere", "octahedron", "tetrahedron", "perturbed_octahedron",
                                                 "height_field"};
 
-std::string scientific(double x) {
-  std::ostringstream s;
-  s.precision(6);
-  s << x;
-  return s.str();
-}
-
 }  // namespace
 
-TriangleSurfaceMesh surface_mesh_from_config(const ConfigNode& domain) {
-  domain.check_keys({"type", "mesh", "level", "file", "normals", "tuple", "method"});
+TriangleSurfaceMesh surface_mesh_from_config(const ConfigNode& domain, int study_level) {
+  domain.check_keys({"type", "mesh", "level", "file", "mesh_size", "normals", "tuple", "method"});
   const bool builtin = domain.has("mesh"), file = domain.has("file");
-  if (builtin == file) domain.fail("give either 'mesh' (a built-in surface) or 'file' (.obj or .off), not both");
+  if (builtin == file)
+    domain.fail("give either 'mesh' (a built-in surface) or 'file' (.obj, .off, .stl, .msh or .geo), not both");
+  if (const auto size = domain.find("mesh_size"); size && !file) size->fail("'mesh_size' applies to a .geo 'file' only");
   if (const auto level = domain.find("level"); level && (!builtin || domain["mesh"].as_string() != "icosphere"))
     level->fail("'level' applies to mesh: icosphere only");
+  if (study_level >= 0) {
+    if (!builtin || domain["mesh"].as_string() != "icosphere")
+      domain.fail("a geometry study refines mesh: icosphere (its levels are the study's levels)");
+    if (const auto level = domain.find("level")) level->fail("the geometry study sets the icosphere level (study.levels)");
+  }
   TriangleSurfaceMesh mesh;
   std::string normals_default;
   std::vector<std::string> normal_choices;
   if (builtin) {
     const std::string name = domain["mesh"].as_choice(builtin_names);
     if (name == "icosphere") {
-      const ConfigNode level = domain["level"];
-      const int l = level.as_int();
-      if (l < 0 || l > 8) level.fail("level must be in 0..8");
-      mesh = icosphere(l);
+      if (study_level >= 0) {
+        mesh = icosphere(study_level);
+      } else {
+        const ConfigNode level = domain["level"];
+        const int l = level.as_int();
+        if (l < 0 || l > 8) level.fail("level must be in 0..8");
+        mesh = icosphere(l);
+      }
     } else if (name == "octahedron") {
       mesh = regular_octahedron();
     } else if (name == "tetrahedron") {
@@ -52,7 +56,16 @@ TriangleSurfaceMesh surface_mesh_from_config(const ConfigNode& domain) {
     const ConfigNode node = domain["file"];
     std::filesystem::path path = node.as_string();
     if (path.is_relative()) path = std::filesystem::path(node.file()).parent_path() / path;
-    const SurfaceMeshFile read = node.guard([&] { return read_surface_mesh(path.string()); });
+    SurfaceFileOptions options;
+    options.config_folder = std::filesystem::path(node.file()).parent_path().string();
+    if (const auto size = domain.find("mesh_size")) {
+      options.mesh_size = size->as_double();
+      if (!(options.mesh_size > 0.0)) size->fail("mesh_size must be > 0");
+      std::string ext = path.extension().string();
+      for (auto& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+      if (ext != ".geo") size->fail("'mesh_size' applies to .geo files only (a mesh is used as it is)");
+    }
+    const SurfaceMeshFile read = node.guard([&] { return read_surface_mesh(path.string(), options); });
     mesh = node.guard([&] { return surface_mesh_from_file(read); });
     normals_default = read.normals.empty() ? "estimated" : "file";
     normal_choices = read.normals.empty() ? std::vector<std::string>{"estimated", "fan"}
@@ -77,24 +90,10 @@ rsd::RsdOptions rsd_options_from_config(const ConfigNode& domain) {
   return options;
 }
 
-rsd::RsdSurface surface_from_config(const ConfigNode& domain) {
-  const TriangleSurfaceMesh mesh = surface_mesh_from_config(domain);
+rsd::RsdSurface surface_from_config(const ConfigNode& domain, int study_level) {
+  const TriangleSurfaceMesh mesh = surface_mesh_from_config(domain, study_level);
   const rsd::RsdOptions options = rsd_options_from_config(domain);
   return domain.guard([&] { return rsd::build_rsd_surface(mesh, options); });
-}
-
-std::vector<std::pair<std::string, std::string>> surface_report_entries(const rsd::RsdSurface& surface) {
-  const rsd::RsdReport& r = surface.report;
-  return {{"tuple", rsd::tuple_name(surface.options.tuple)},
-          {"method", rsd::method_name(surface.options.method)},
-          {"patch_degree", std::to_string(r.patch_degree)},
-          {"interior_edges", std::to_string(r.interior_edges)},
-          {"boundary_edges", std::to_string(r.boundary_edges)},
-          {"max_g1_residual", scientific(r.max_g1_residual)},
-          {"max_fold_alpha", scientific(r.max_fold_alpha)},
-          {"min_regularity", scientific(r.min_regularity)},
-          {"interpolation_residual", scientific(r.interpolation_residual)},
-          {"max_z", scientific(r.max_z)}};
 }
 
 }  // namespace iga

@@ -29,10 +29,13 @@ std::string edge_name(const TriangleSurfaceMesh& mesh, int a, int b) {
 }  // namespace
 
 std::string TriangleSurfaceMesh::vertex_name(int v) const {
+  if (v >= 0 && v < static_cast<int>(point_origins.size())) return "vertex " + std::to_string(v) + " (" + point_origins[v] + ")";
   return "vertex " + std::to_string(v) + located(point_lines, v);
 }
 
 std::string TriangleSurfaceMesh::triangle_name(int n) const {
+  if (n >= 0 && n < static_cast<int>(triangle_origins.size()))
+    return "triangle " + std::to_string(n) + " (" + triangle_origins[n] + ")";
   return "triangle " + std::to_string(n) + located(triangle_lines, n);
 }
 
@@ -140,6 +143,8 @@ TriangleSurfaceMesh surface_mesh_from_file(const SurfaceMeshFile& file) {
   mesh.triangles = file.triangles;
   mesh.point_lines = file.point_lines;
   mesh.triangle_lines = file.triangle_lines;
+  mesh.point_origins = file.point_origins;
+  mesh.triangle_origins = file.triangle_origins;
   // Normals are checked last: estimating them needs the topology checks first.
   mesh.normals.assign(mesh.points.size(), Eigen::Vector3d::UnitZ());
   validate_surface_mesh(mesh);

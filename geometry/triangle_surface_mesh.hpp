@@ -20,10 +20,11 @@ struct TriangleSurfaceMesh {
   std::vector<Eigen::Vector3d> normals;       ///< unit, one per vertex
   std::vector<int> point_lines;               ///< file line per vertex (empty for built-ins)
   std::vector<int> triangle_lines;            ///< file line per triangle (empty for built-ins)
+  std::vector<std::string> point_origins, triangle_origins;  ///< Gmsh tags as names (Gmsh meshes only)
 
   int num_points() const { return static_cast<int>(points.size()); }
   int num_triangles() const { return static_cast<int>(triangles.size()); }
-  /// "vertex 7 (line 9)", or "vertex 7" for a built-in mesh: how messages name a vertex (the
+  /// "vertex 7 (line 9)", "vertex 7 (Gmsh node 12)", or "vertex 7" for a built-in mesh: how messages name a vertex (the
   /// messages begin with `source`).
   std::string vertex_name(int v) const;
   /// "triangle 3 (line 21)": how messages name a triangle.

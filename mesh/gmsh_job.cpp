@@ -6,6 +6,7 @@
 
 #include "config/errors.hpp"
 #include "mesh/gmsh_model_mesh.hpp"
+#include "mesh/gmsh_model_surface.hpp"
 #include "mesh/gmsh_session.hpp"
 
 namespace iga {
@@ -53,7 +54,39 @@ double surface_box_area() {
   return (hi_x - lo_x) * (hi_y - lo_y);
 }
 
+/// Surfaces in 3D: the sum of the surfaces' bounding-box surface areas (an estimate of the area
+/// to mesh that does not depend on how the surfaces sit in space; 0 without surfaces).
+double surface_box_area_3d() {
+  gmsh::vectorpair surfaces;
+  gmsh::model::getEntities(surfaces, 2);
+  double area = 0.0;
+  for (const auto& [dim, tag] : surfaces) {
+    double x0, y0, z0, x1, y1, z1;
+    gmsh::model::getBoundingBox(dim, tag, x0, y0, z0, x1, y1, z1);
+    const double a = x1 - x0, b = y1 - y0, c = z1 - z0;
+    area += 2.0 * (a * b + b * c + c * a);
+  }
+  return area;
+}
+
 }  // namespace
+
+SurfaceMeshFile run_gmsh_surface_job_here(const GmshJob& job) {
+  if (job.kind == GmshJob::mesh_polygon) throw InputError(job.source + ": a polygon is not a surface in 3D");
+  SurfaceMeshFile mesh;
+  with_gmsh(job.source, [&] {
+    gmsh::open(job.path);
+    if (job.kind == GmshJob::mesh_geo) {
+      if (job.mesh_size > 0.0) {
+        check_element_estimate(surface_box_area_3d(), job.mesh_size, job.limits, job.source);
+        gmsh::option::setNumber("Mesh.MeshSizeMax", job.mesh_size);
+      }
+      gmsh::model::mesh::generate(2);
+    }
+    mesh = surface_mesh_from_gmsh_model(job.source);
+  });
+  return mesh;
+}
 
 PlanarMesh run_gmsh_job_here(const GmshJob& job) {
   PlanarMesh mesh;

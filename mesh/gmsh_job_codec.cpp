@@ -75,6 +75,7 @@ std::string encode_job(const GmshJob& job) {
   w.put_string(job.source);
   w.put(job.mesh_size);
   w.put(job.recombine);
+  w.put(job.surface);
   put_loop(w, job.polygon.outer);
   w.put<std::uint64_t>(job.polygon.holes.size());
   for (const auto& hole : job.polygon.holes) put_loop(w, hole);
@@ -92,6 +93,7 @@ GmshJob decode_job(std::string_view bytes) {
   job.source = r.get_string();
   job.mesh_size = r.get<double>();
   job.recombine = r.get<bool>();
+  job.surface = r.get<bool>();
   job.polygon.outer = get_loop(r);
   job.polygon.holes.resize(r.count(8));
   for (auto& hole : job.polygon.holes) hole = get_loop(r);
@@ -148,6 +150,41 @@ PlanarMesh decode_mesh(std::string_view bytes, const std::string& source) {
     edges.resize(r.count(8));
     for (auto& e : edges) e = {r.get<int>(), r.get<int>()};
   }
+  if (!r.done()) throw std::runtime_error("malformed Gmsh worker message");
+  return mesh;
+}
+
+std::string encode_surface_result(const SurfaceMeshFile& mesh) {
+  Writer w;
+  w.put('S');
+  w.put<std::uint64_t>(mesh.points.size());
+  for (const auto& x : mesh.points) w.put(x.x()), w.put(x.y()), w.put(x.z());
+  w.put<std::uint64_t>(mesh.triangles.size());
+  for (const auto& t : mesh.triangles) w.put(t[0]), w.put(t[1]), w.put(t[2]);
+  w.put<std::uint64_t>(mesh.point_origins.size());
+  for (const auto& o : mesh.point_origins) w.put_string(o);
+  w.put<std::uint64_t>(mesh.triangle_origins.size());
+  for (const auto& o : mesh.triangle_origins) w.put_string(o);
+  return w.out;
+}
+
+SurfaceMeshFile decode_surface(std::string_view bytes, const std::string& source) {
+  Reader r(bytes);
+  if (r.get<char>() != 'S') throw std::runtime_error("not a surface mesh message");
+  SurfaceMeshFile mesh;
+  mesh.source = source;
+  mesh.points.resize(r.count(24));
+  for (auto& x : mesh.points) {
+    x.x() = r.get<double>();
+    x.y() = r.get<double>();
+    x.z() = r.get<double>();
+  }
+  mesh.triangles.resize(r.count(12));
+  for (auto& t : mesh.triangles) t = {r.get<int>(), r.get<int>(), r.get<int>()};
+  mesh.point_origins.resize(r.count(8));
+  for (auto& o : mesh.point_origins) o = r.get_string();
+  mesh.triangle_origins.resize(r.count(8));
+  for (auto& o : mesh.triangle_origins) o = r.get_string();
   if (!r.done()) throw std::runtime_error("malformed Gmsh worker message");
   return mesh;
 }

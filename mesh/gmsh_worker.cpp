@@ -17,6 +17,7 @@
 #include <mutex>
 #include <sstream>
 #include <stdexcept>
+#include <type_traits>
 
 #include "config/config_node.hpp"
 #include "config/errors.hpp"
@@ -100,9 +101,8 @@ std::string describe_signal(int sig, const MeshLimits& limits) {
   return std::string("crashed (signal SIG") + (name ? name : std::to_string(sig).c_str()) + ")";
 }
 
-}  // namespace
-
-PlanarMesh run_gmsh_job(const GmshJob& job) {
+/// Runs `job` in a worker and returns its result message (checked: not an error).
+std::string run_worker(const GmshJob& job) {
   const fs::path worker = worker_path();
   Channel input = make_channel(true), output = make_channel(false), errors = make_channel(false);
   posix_spawn_file_actions_t actions;
@@ -195,14 +195,23 @@ PlanarMesh run_gmsh_job(const GmshJob& job) {
                      (out.empty() && WEXITSTATUS(status) == 0 ? ": the script ended Gmsh early" : "") + ")" +
                      (said.empty() ? "" : ": " + said));
   }
+  return out;
+}
+
+template <class Mesh>
+Mesh decoded(const std::string& out, const std::string& source) {
   try {
-    return decode_mesh(out, source);
+    if constexpr (std::is_same_v<Mesh, PlanarMesh>)
+      return decode_mesh(out, source);
+    else
+      return decode_surface(out, source);
   } catch (const std::runtime_error& e) {
     throw InputError(source + ": gmsh worker sent a broken mesh (" + e.what() + ")");
   }
 }
 
-PlanarMesh run_gmsh_job_cached(const GmshJob& job, const std::vector<fs::path>& input_files) {
+template <class Mesh>
+Mesh run_cached(const GmshJob& job, const std::vector<fs::path>& input_files) {
   std::string key = encode_job(job);
   for (const auto& file : input_files) {
     std::ifstream in(file, std::ios::binary);
@@ -211,17 +220,33 @@ PlanarMesh run_gmsh_job_cached(const GmshJob& job, const std::vector<fs::path>& 
     key += '\0' + file.string() + '\0' + std::to_string(bytes.str().size()) + '\0' + bytes.str();
   }
   static std::mutex lock;
-  static std::list<std::pair<std::string, PlanarMesh>> recent;  // newest first, at most 4
+  static std::list<std::pair<std::string, Mesh>> recent;  // newest first, at most 4
   {
     const std::lock_guard<std::mutex> guard(lock);
     for (const auto& [k, mesh] : recent)
       if (k == key) return mesh;
   }
-  PlanarMesh mesh = run_gmsh_job(job);
+  Mesh mesh = decoded<Mesh>(run_worker(job), job.source);
   const std::lock_guard<std::mutex> guard(lock);
   recent.emplace_front(std::move(key), mesh);
   if (recent.size() > 4) recent.pop_back();
   return mesh;
+}
+
+}  // namespace
+
+PlanarMesh run_gmsh_job(const GmshJob& job) { return decoded<PlanarMesh>(run_worker(job), job.source); }
+
+SurfaceMeshFile run_gmsh_surface_job(const GmshJob& job) {
+  return decoded<SurfaceMeshFile>(run_worker(job), job.source);
+}
+
+PlanarMesh run_gmsh_job_cached(const GmshJob& job, const std::vector<fs::path>& input_files) {
+  return run_cached<PlanarMesh>(job, input_files);
+}
+
+SurfaceMeshFile run_gmsh_surface_job_cached(const GmshJob& job, const std::vector<fs::path>& input_files) {
+  return run_cached<SurfaceMeshFile>(job, input_files);
 }
 
 }  // namespace iga

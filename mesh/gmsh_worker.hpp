@@ -27,4 +27,9 @@ PlanarMesh run_gmsh_job(const GmshJob& job);
 /// file once. Failures are not remembered.
 PlanarMesh run_gmsh_job_cached(const GmshJob& job, const std::vector<std::filesystem::path>& input_files);
 
+/// The same for jobs with `surface` set: a triangle mesh in 3D.
+SurfaceMeshFile run_gmsh_surface_job(const GmshJob& job);
+SurfaceMeshFile run_gmsh_surface_job_cached(const GmshJob& job,
+                                            const std::vector<std::filesystem::path>& input_files);
+
 }  // namespace iga

@@ -71,7 +71,8 @@ int main() {
   }
   std::string result;
   try {
-    result = iga::encode_mesh_result(iga::run_gmsh_job_here(job));
+    result = job.surface ? iga::encode_surface_result(iga::run_gmsh_surface_job_here(job))
+                         : iga::encode_mesh_result(iga::run_gmsh_job_here(job));
   } catch (const iga::InputError& e) {
     result = iga::encode_error_result(e.what());
   } catch (const std::exception& e) {

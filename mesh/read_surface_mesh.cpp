@@ -10,6 +10,10 @@
 #include <sstream>
 
 #include "config/errors.hpp"
+#include "mesh/geo_script_check.hpp"
+#include "mesh/gmsh_worker.hpp"
+#include "mesh/msh_structure_check.hpp"
+#include "mesh/stl_structure_check.hpp"
 #include "mesh/text_line_reader.hpp"
 
 namespace iga {
@@ -18,6 +22,36 @@ namespace {
 
 std::string face_size_error(std::size_t n) {
   return "a face with " + std::to_string(n) + " vertices; surface meshes must consist of triangles";
+}
+
+/// Our own checks first, then the Gmsh worker reads (.stl, .msh) or meshes (.geo) the file.
+SurfaceMeshFile read_with_gmsh(const std::string& path, const std::string& ext, const SurfaceFileOptions& options,
+                               const MeshLimits& limits) {
+  namespace fs = std::filesystem;
+  std::vector<fs::path> roots = {fs::absolute(path).parent_path()};
+  if (!options.config_folder.empty()) roots.push_back(fs::absolute(options.config_folder));
+  std::vector<fs::path> inputs = {path};
+  GmshJob job;
+  if (ext == ".geo") {
+    inputs = check_geo_script(path, roots, limits);
+    job.kind = GmshJob::mesh_geo;
+  } else {
+    if (ext == ".msh") check_msh_structure(path, limits);
+    if (ext == ".stl") check_stl_structure(path, limits);
+    job.kind = ext == ".msh" ? GmshJob::read_msh : GmshJob::read_stl;
+    // Gmsh runs "<file>.opt" when it opens <file>, whatever the file is.
+    if (std::error_code ec; fs::exists(path + ".opt", ec)) {
+      const auto options_file = check_geo_script(path + ".opt", roots, limits);
+      inputs.insert(inputs.end(), options_file.begin(), options_file.end());
+    }
+  }
+  job.surface = true;
+  job.path = fs::absolute(path).string();
+  job.source = path;
+  job.mesh_size = options.mesh_size;
+  for (const auto& root : roots) job.readable_folders.push_back(root.string());
+  job.limits = limits;
+  return run_gmsh_surface_job_cached(job, inputs);
 }
 
 }  // namespace
@@ -120,13 +154,18 @@ SurfaceMeshFile read_off_surface(std::istream& in, const std::string& source) {
   return mesh;
 }
 
-SurfaceMeshFile read_surface_mesh(const std::string& path) {
+SurfaceMeshFile read_surface_mesh(const std::string& path, const SurfaceFileOptions& options,
+                                  const MeshLimits& limits) {
   std::string ext = std::filesystem::path(path).extension().string();
   std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
-  if (ext != ".obj" && ext != ".off")
-    throw InputError(path + ": unsupported surface mesh format '" + ext + "' (expected .obj or .off)");
+  if (ext != ".obj" && ext != ".off" && ext != ".stl" && ext != ".msh" && ext != ".geo")
+    throw InputError(path + ": unsupported surface mesh format '" + ext + "' (expected .obj, .off, .stl, .msh or .geo)");
+  if (!(options.mesh_size >= 0.0)) throw InputError(path + ": mesh size must be >= 0");
+  if (options.mesh_size > 0.0 && ext != ".geo")
+    throw InputError(path + ": a mesh size applies to .geo files only (a mesh is used as it is)");
   std::ifstream in(path);
-  if (!in) throw InputError(path + ": cannot open the surface mesh file");
+  if (!in || std::filesystem::is_directory(path)) throw InputError(path + ": cannot open the surface mesh file");
+  if (ext == ".stl" || ext == ".msh" || ext == ".geo") return read_with_gmsh(path, ext, options, limits);
   return ext == ".obj" ? read_obj_surface(in, path) : read_off_surface(in, path);
 }
 

@@ -6,6 +6,8 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "output/surface_report.hpp"
+
 namespace iga {
 
 namespace {
@@ -129,6 +131,7 @@ void write_summary_json(const StudySettings& settings, const StudyResult& result
   json space = {{"type", result.space_type}};
   for (const auto& [k, v] : result.space_parameters) space["parameters"][k] = v;
   j["space"] = space;
+  if (result.surface) j["surface"] = surface_report_json(*result.surface);
   j["problem"] = {{"pde", to_string(settings.problem.pde)},
                   {"exact", settings.problem.exact ? json(settings.problem.exact->str()) : json(nullptr)},
                   {"source", settings.problem.source.str()}};
@@ -188,5 +191,7 @@ void write_summary_json(const StudySettings& settings, const StudyResult& result
   std::ofstream out = open_for_writing(filename);
   out << j.dump(2) << '\n';
 }
+
+nlohmann::json config_as_json(const ConfigNode& root) { return to_json(root.yaml()); }
 
 }  // namespace iga

@@ -4,6 +4,7 @@
 /// level,h,dofs,l2,h1,h2,rate_l2,rate_h1,rate_h2,t_assemble,t_solve), the aligned stdout table and
 /// summary.json.
 
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
@@ -19,5 +20,8 @@ std::string format_convergence_table(const std::vector<LevelResult>& rows, bool 
 
 /// Config echo, space and parameters, rows, least-squares rates, timings.
 void write_summary_json(const StudySettings& settings, const StudyResult& result, const std::string& filename);
+
+/// The config as JSON (the `config` echo of every summary.json).
+nlohmann::json config_as_json(const ConfigNode& root);
 
 }  // namespace iga

@@ -136,7 +136,7 @@ ProblemSpec parse_problem(const ConfigNode& node) {
 }
 
 ProblemSpec parse_surface_problem(const ConfigNode& node) {
-  node.check_keys({"pde", "exact", "source", "reaction"});
+  node.check_keys({"pde", "exact", "source", "reaction", "boundary", "boundary_value"});
   ProblemSpec p;
   if (const auto c = node.find("reaction")) {
     p.reaction = c->as_double();
@@ -156,6 +156,25 @@ ProblemSpec parse_surface_problem(const ConfigNode& node) {
   if (source) {
     p.surface_source = SymbolicFunction::parse_xyz(source->as_string(), source->where());
     p.source_where = source->where();
+  }
+  // Open surfaces: u = g on the whole boundary curve, g from boundary_value or else from exact.
+  if (const auto boundary = node.find("boundary")) {
+    // Not check_keys: part names are free names elsewhere; a surface has only `all`.
+    for (const std::string& key : boundary->keys())
+      if (key != "all") (*boundary)[key].fail("a surface has one boundary part, 'all' (its whole boundary curve)");
+    const ConfigNode all = (*boundary)["all"];
+    if (all.as_choice({"dirichlet"}) != "dirichlet") all.fail("expected dirichlet");
+    p.boundary.push_back({"all", BoundaryKind::dirichlet, all.where()});
+    if (const auto value = node.find("boundary_value")) {
+      p.surface_dirichlet = SymbolicFunction::parse_xyz(value->as_string(), value->where());
+      p.data_where = value->where();
+    } else if (p.surface_exact) {
+      p.surface_dirichlet = p.surface_exact;
+    } else {
+      boundary->fail("Dirichlet data need 'boundary_value' (a function of x, y, z) or 'exact'");
+    }
+  } else if (const auto value = node.find("boundary_value")) {
+    value->fail("'boundary_value' needs 'boundary: {all: dirichlet}'");
   }
   return p;
 }

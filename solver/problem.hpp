@@ -48,6 +48,9 @@ struct ProblemSpec {
   /// laplace_beltrami only: the exact solution or the source as functions of x, y, z (the planar
   /// members exact/source then stay unset/zero).
   std::optional<SymbolicFunction> surface_exact, surface_source;
+  /// laplace_beltrami on an open surface: u on its boundary curve (boundary: {all: dirichlet};
+  /// from boundary_value, else the exact solution).
+  std::optional<SymbolicFunction> surface_dirichlet;
   /// laplace_beltrami: c in −Δ_Γu + c u = f (c = 0: the solution is fixed up to a constant).
   double reaction = 1.0;
 

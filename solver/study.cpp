@@ -84,6 +84,14 @@ StudySettings parse_study(const ConfigNode& root, const std::string& config_path
     root["problem"]["pde"].fail(s.problem.pde == Pde::laplace_beltrami
                                     ? "laplace_beltrami needs a surface in 3D (domain.type: surface, space.type: surface)"
                                     : "a surface in 3D takes pde: laplace_beltrami");
+  if (s.problem.pde == Pde::laplace_beltrami) {
+    const bool open = !coarse->boundary_edges("all").empty();
+    if (open && !s.problem.surface_dirichlet)
+      root["problem"].fail("this surface has a boundary: give Dirichlet data on it (boundary: {all: dirichlet}, with "
+                           "exact or boundary_value)");
+    if (!open && s.problem.surface_dirichlet)
+      root["problem"]["boundary"].fail("this surface is closed: it has no boundary for Dirichlet data");
+  }
   if (s.problem.pde == Pde::biharmonic && coarse->continuity() < 1)
     root["space"].fail("the biharmonic problem needs a C1 (H2-conforming) space; this " + coarse->type() +
                        " space is only C" + std::to_string(coarse->continuity()) +
@@ -156,14 +164,18 @@ StudyResult run_study(const StudySettings& settings, const ProgressSink& progres
   const ConfigNode domain = settings.root["domain"], space_node = settings.root["space"];
   const ExactSolution exact = settings.problem.exact_solution();
   result.adaptive = settings.adaptive;
-  SpacePtr next;  // adaptive: the refined space for the next level
+  SpacePtr next;      // adaptive: the refined space for the next level
+  SpacePtr previous;  // uniform: the last level's space, whose level-independent parts the next shares
   double t_next = 0.0;
   for (int level = 0; level < settings.levels; ++level) {
     const std::string tag = "[level " + std::to_string(level) + "] ";
     progress(tag + "building space");
     auto t0 = Clock::now();
     const bool reuse = !next && level == 0 && settings.level0;
-    const SpacePtr space = next ? next : reuse ? settings.level0 : make_space(domain, space_node, settings.adaptive ? 0 : level);
+    const SpacePtr space = next    ? next
+                           : reuse ? settings.level0
+                                   : make_space(domain, space_node, settings.adaptive ? 0 : level, previous.get());
+    previous = space;
     const double t_space = seconds_since(t0) + t_next + (reuse ? settings.level0_seconds : 0.0);
     check_size(measure(*space), settings.limits, space_node, "level " + std::to_string(level));  // before assembly
     progress(tag + "space: " + std::to_string(space->dimension()) + " dofs, " +
@@ -225,6 +237,7 @@ StudyResult run_study(const StudySettings& settings, const ProgressSink& progres
     result.refinement_steps.push_back(sol.solve.refinement_steps);
     result.space_parameters = space->parameters();
     result.space_type = space->type();
+    result.surface = space->surface_patches();
     result.expected = optimal_rates(settings.problem.pde, space->degree());
     if (settings.adaptive && !next) break;
   }

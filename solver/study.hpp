@@ -52,6 +52,8 @@ struct StudyResult {
   std::vector<LevelResult> rows;
   std::vector<std::pair<std::string, std::string>> space_parameters;  ///< of the finest level
   std::string space_type;
+  /// Spaces on a smooth surface: the surface (the same at every level), for the outputs.
+  std::shared_ptr<const SurfacePatches> surface;
   OptimalRates expected;     ///< for the space degree and PDE
   std::vector<std::string> solver_methods;  ///< per level
   std::vector<double> relative_residuals;   ///< per level

@@ -5,6 +5,7 @@
 
 #include "assembly/assembler.hpp"
 #include "assembly/error_norms.hpp"
+#include "assembly/surface_dirichlet.hpp"
 #include "assembly/surface_load.hpp"
 #include "config/errors.hpp"
 
@@ -58,9 +59,13 @@ DiscreteSolution solve_surface_problem(const Space& space, const ProblemSpec& pr
   };
   if (space.ambient_dimension() != 3)
     throw InputError(problem.source_where + ": laplace_beltrami needs a space on a surface in 3D");
-  if (!space.boundary_edges("all").empty())
+  const std::vector<BoundaryEdge> boundary = space.boundary_edges("all");
+  const bool open = !boundary.empty();
+  if (open && !problem.surface_dirichlet)
     throw InputError(problem.source_where +
-                     ": laplace_beltrami is implemented on closed surfaces (this surface has boundary edges)");
+                     ": this surface has a boundary: give Dirichlet data on it (problem.boundary: {all: dirichlet})");
+  if (!open && problem.surface_dirichlet)
+    throw InputError(problem.boundary.front().where + ": this surface is closed (it has no boundary for Dirichlet data)");
   DiscreteSolution out;
   LevelResult& r = out.result;
   r.h = space.mesh_size();
@@ -84,18 +89,33 @@ DiscreteSolution solve_surface_problem(const Space& space, const ProblemSpec& pr
   const Eigen::VectorXd ones = Eigen::VectorXd::Ones(space.dimension());
   const Eigen::VectorXd mass_of_one = M * ones;
   const double area = ones.dot(mass_of_one);
-  const bool pure = problem.reaction == 0;
+  const bool pure = problem.reaction == 0 && !open;
   if (pure) {
     b -= (b.sum() / area) * mass_of_one;
     A.prune([](Eigen::Index i, Eigen::Index j, double) { return i != 0 && j != 0; });
     A.coeffRef(0, 0) = 1.0;
     b(0) = 0.0;
   }
+
+  Constraints constraints;
+  if (open) {
+    const SymbolicFunction g = *problem.surface_dirichlet;
+    constraints = surface_dirichlet_constraints(
+        space, boundary, [g](const Eigen::Vector3d& x) { return g.at(x); }, qa);
+    r.free_dofs = static_cast<int>(constraints.free.size());
+  }
   r.t_assemble = seconds_since(t0);
 
   say("factorizing and solving (" + std::to_string(r.free_dofs) + " unknowns)");
   t0 = Clock::now();
-  out.coefficients = solve_linear_system(A, b, solver, out.solve);
+  if (open) {
+    SparseMatrix A_free;
+    Eigen::VectorXd b_free;
+    reduce_system(A, b, constraints, A_free, b_free);
+    out.coefficients = expand_solution(solve_linear_system(A_free, b_free, solver, out.solve), constraints);
+  } else {
+    out.coefficients = solve_linear_system(A, b, solver, out.solve);
+  }
   if (pure) {
     out.coefficients.array() -= mass_of_one.dot(out.coefficients) / area;
     // With an exact solution, compare with its own mean: ∫u = Σ_i ∫u N_i.

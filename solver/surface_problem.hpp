@@ -1,7 +1,8 @@
 #pragma once
 /// @file
-/// The Laplace–Beltrami problem −Δ_Γu + c u = f (c = `reaction`, default 1) on a closed surface Γ in 3D, solved on a space with
-/// ambient_dimension() == 3. With an exact solution u given in x, y, z, the source is computed at
+/// The Laplace–Beltrami problem −Δ_Γu + c u = f (c = `reaction`, default 1) on a surface Γ in 3D,
+/// solved on a space with ambient_dimension() == 3: closed surfaces, or open ones with u = g on
+/// the whole boundary curve (a boundary L2 projection, assembly/surface_dirichlet.hpp). With an exact solution u given in x, y, z, the source is computed at
 /// every quadrature point from the surface's own unit normal n and mean curvature H = div_Γ n:
 ///   Δ_Γu = Δu − nᵀ(∇²u)n − H ∂_n u,
 /// so the surface is the exact geometry of the problem (no geometric error). With c = 0 the solution

@@ -130,6 +130,10 @@ struct SampleCell {
 /// (m+1)(m+2)/2 points and m² sub-triangles (points along shared edges are not merged).
 void append_triangle_grid(SampleCell& cell, const Point2& a, const Point2& b, const Point2& c, int m);
 
+/// A smooth surface as triangular Bézier patches with its construction report
+/// (geometry/surface_patches.hpp); declared here so that the interface does not pull in geometry.
+struct SurfacePatches;
+
 class Space {
  public:
   virtual ~Space() = default;
@@ -167,6 +171,9 @@ class Space {
   /// of PointValues (x3, jacobian3, dz) and whose gradients are surface gradients.
   virtual int ambient_dimension() const { return 2; }
 
+  /// Spaces on a smooth surface built from a triangle mesh: that surface's patches and report,
+  /// for the outputs (surface files, summary.json). nullptr (the default) for every other space.
+  virtual std::shared_ptr<const SurfacePatches> surface_patches() const { return nullptr; }
   /// Short type name as used in configs, e.g. "bspline".
   virtual std::string type() const = 0;
   /// Parameters describing this instance (degree, regularity, elements, ...) for summaries.

@@ -7,14 +7,16 @@
 
 namespace iga::rsd {
 
-SampledSurface sample_surface(const RsdSurface& surface, int s) {
+SampledSurface sample_surface(const RsdSurface& surface, int s) { return sample_surface(surface_patches_of(surface), s); }
+
+SampledSurface sample_surface(const SurfacePatches& surface, int s) {
   if (s < 1) throw std::invalid_argument("sample_surface: subdivisions must be at least 1");
   SampledSurface out;
   // A lattice point is a mesh vertex, a point on a mesh edge (counted from its smaller vertex),
   // or interior to one patch; the key makes shared points unique.
   std::map<std::tuple<int, int, int, int>, int> index;
-  for (int n = 0; n < surface.mesh.num_triangles(); ++n) {
-    const auto& tri = surface.mesh.triangles[n];
+  for (int n = 0; n < static_cast<int>(surface.patches.size()); ++n) {
+    const auto& tri = surface.vertices[n];
     const BezierTriangle& patch = surface.patches[n];
     auto point_id = [&](int a1, int a2) {
       const int alpha[3] = {a1, a2, s - a1 - a2};

@@ -1,6 +1,6 @@
 #pragma once
 /// @file
-/// A fine triangulation of an RSD surface for drawing: every patch split into s² sub-triangles
+/// A fine triangulation of a patch surface (an RSD surface, or any SurfacePatches) for drawing: every patch split into s² sub-triangles
 /// on the uniform barycentric lattice, points shared between neighbouring patches (the edges
 /// are parametrised identically), unit normals F_ξ × F_η of the surface at every point (continuous
 /// across edges because the surface is G1).
@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "geometry/rsd/rsd_surface.hpp"
+#include "geometry/surface_patches.hpp"
 
 namespace iga::rsd {
 
@@ -20,6 +21,7 @@ struct SampledSurface {
 };
 
 /// Samples `surface` with `subdivisions` ≥ 1 segments per patch edge.
+SampledSurface sample_surface(const SurfacePatches& surface, int subdivisions);
 SampledSurface sample_surface(const RsdSurface& surface, int subdivisions);
 
 }  // namespace iga::rsd

@@ -8,7 +8,6 @@
 #include <stdexcept>
 
 #include "geometry/rsd/bezier_jet.hpp"
-#include "geometry/surface_from_config.hpp"
 #include "spaces/surface/reference_bernstein.hpp"
 #include "spaces/surface_values.hpp"
 
@@ -41,8 +40,9 @@ Key lattice_key(const std::array<int, 3>& tri, int patch, const std::array<int, 
 }  // namespace
 
 SurfaceBernsteinSpace::SurfaceBernsteinSpace(std::shared_ptr<const rsd::RsdSurface> surface, int degree,
-                                             int subdivisions)
-    : surface_(std::move(surface)), degree_(degree), subdivisions_(subdivisions) {
+                                             int subdivisions, std::shared_ptr<const SurfacePatches> patches)
+    : surface_(std::move(surface)), patches_(std::move(patches)), degree_(degree), subdivisions_(subdivisions) {
+  if (!patches_) patches_ = std::make_shared<const SurfacePatches>(surface_patches_of(*surface_));
   if (degree < 1 || degree > 8) throw std::invalid_argument("SurfaceBernsteinSpace: degree must be in 1..8");
   if (subdivisions < 1) throw std::invalid_argument("SurfaceBernsteinSpace: subdivisions must be >= 1");
   const int m = subdivisions, p = degree;
@@ -101,8 +101,7 @@ std::vector<std::pair<std::string, std::string>> SurfaceBernsteinSpace::paramete
       {"subdivisions", std::to_string(subdivisions_)},
       {"elements", std::to_string(num_elements())},
       {"surface_triangles", std::to_string(surface_->mesh.num_triangles())}};
-  for (auto& entry : surface_report_entries(*surface_)) out.push_back({"surface_" + entry.first, entry.second});
-  return out;
+  return out;  // the surface's own report: surface_patches()
 }
 
 std::vector<BoundaryEdge> SurfaceBernsteinSpace::boundary_edges(const std::string& name) const {

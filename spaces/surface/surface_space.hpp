@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "geometry/rsd/rsd_surface.hpp"
+#include "geometry/surface_patches.hpp"
 #include "spaces/gauss_rule_cache.hpp"
 #include "spaces/space.hpp"
 
@@ -22,8 +23,10 @@ namespace iga {
 
 class SurfaceBernsteinSpace : public Space {
  public:
-  /// Degree 1..8 Bernstein triangles on `subdivisions`² sub-triangles of every patch.
-  SurfaceBernsteinSpace(std::shared_ptr<const rsd::RsdSurface> surface, int degree, int subdivisions);
+  /// Degree 1..8 Bernstein triangles on `subdivisions`² sub-triangles of every patch. `patches`:
+  /// the surface's SurfacePatches when another space already made them (else made here).
+  SurfaceBernsteinSpace(std::shared_ptr<const rsd::RsdSurface> surface, int degree, int subdivisions,
+                        std::shared_ptr<const SurfacePatches> patches = nullptr);
 
   /// One element: its patch and the patch barycentrics of its three corners (counterclockwise).
   struct Element {
@@ -47,12 +50,16 @@ class SurfaceBernsteinSpace : public Space {
   std::vector<std::string> boundary_names() const override { return {}; }
   std::vector<BoundaryEdge> boundary_edges(const std::string& name) const override;
 
+  std::shared_ptr<const SurfacePatches> surface_patches() const override { return patches_; }
+
   const rsd::RsdSurface& surface() const { return *surface_; }
+  const std::shared_ptr<const rsd::RsdSurface>& shared_surface() const { return surface_; }
   int subdivisions() const { return subdivisions_; }
   const Element& element(int e) const { return elements_[e]; }
 
  private:
   std::shared_ptr<const rsd::RsdSurface> surface_;
+  std::shared_ptr<const SurfacePatches> patches_;
   int degree_, subdivisions_;
   int dimension_ = 0;
   double mesh_size_ = 0;

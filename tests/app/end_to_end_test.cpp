@@ -102,6 +102,18 @@ TEST_P(ShippedConfig, RunsAndWritesReadableOutput) {
   EXPECT_TRUE(r.err.empty()) << "--quiet still printed: " << r.err;
   EXPECT_NE(r.out.find("level"), std::string::npos);
 
+  if (fs::exists(out / "geometry.csv")) {  // a geometry study: the surface itself, no PDE
+    const nlohmann::json summary = nlohmann::json::parse(slurp(out / "summary.json"));
+    EXPECT_EQ(summary["study"], "geometry");
+    ASSERT_EQ(summary["levels"].size(), 2u);
+    for (const auto& level : summary["levels"]) {
+      EXPECT_LT(level["surface"]["max_g1_residual"].get<double>(), 1e-12) << name;
+      for (const auto& file : level["files"]) EXPECT_GT(fs::file_size(out / file.get<std::string>()), 100u) << file;
+    }
+    EXPECT_NEAR(summary["levels"][1]["rate_radial"].get<double>(), 2.0, 0.7) << name;
+    return;
+  }
+
   const std::string csv = slurp(out / "convergence.csv");
   EXPECT_EQ(csv.rfind("level,h,dofs,l2,h1,h2,rate_l2,rate_h1,rate_h2,t_assemble,t_solve", 0), 0u) << name;
   EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 3) << name;  // header + 2 levels
@@ -113,6 +125,12 @@ TEST_P(ShippedConfig, RunsAndWritesReadableOutput) {
   for (const auto& level : summary["levels"])  // the solver's iterative-refinement corrections
     EXPECT_GE(level["refinement_steps"].get<int>(), 0) << name;
 
+  if (summary.contains("surface")) {  // a PDE on a smooth surface: its files and report
+    EXPECT_GT(fs::file_size(out / "surface.vtu"), 100u) << name;
+    EXPECT_GT(fs::file_size(out / "surface_patches.txt"), 100u) << name;
+    for (const char* key : {"patch_degree", "max_g1_residual", "max_fold_alpha", "min_regularity", "interpolation_residual"})
+      EXPECT_TRUE(summary["surface"][key].is_number()) << name << ": " << key;
+  }
   EXPECT_TRUE(fs::exists(out / "solution.pvd"));
   EXPECT_TRUE(fs::exists(out / "mesh.pvd"));
   EXPECT_GT(fs::file_size(out / "convergence.svg"), 1000u);

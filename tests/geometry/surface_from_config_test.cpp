@@ -4,6 +4,7 @@
 
 #include "config/errors.hpp"
 #include "geometry/surface_from_config.hpp"
+#include "geometry/surface_patches.hpp"
 #include "tests/support/scratch_files.hpp"
 
 namespace iga {
@@ -28,9 +29,10 @@ TEST(SurfaceFromConfig, BuiltinIcosphereWithOptions) {
   EXPECT_EQ(s.mesh.num_triangles(), 80);
   EXPECT_EQ(s.report.patch_degree, 9);
   EXPECT_LT(s.report.max_g1_residual, 1e-12);
-  const auto entries = surface_report_entries(s);
-  EXPECT_EQ(entries[0], (std::pair<std::string, std::string>{"tuple", "pi1"}));
-  EXPECT_EQ(entries[2], (std::pair<std::string, std::string>{"patch_degree", "9"}));
+  const SurfacePatches patches = surface_patches_of(s);
+  EXPECT_EQ(patches.labels[1], (std::pair<std::string, std::string>{"tuple", "pi1"}));
+  EXPECT_EQ(patches.measures[0], (std::pair<std::string, double>{"patch_degree", 9.0}));
+  EXPECT_EQ(patches.patches.size(), 80u);
   EXPECT_EQ(surface_from_config(domain_of("domain: {type: surface, mesh: octahedron, method: none}")).report.patch_degree,
             5);
 }

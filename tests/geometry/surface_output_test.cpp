@@ -1,5 +1,5 @@
-// Output of RSD surfaces: the fine sampling with shared points and smooth normals, its VTK file,
-// and the text format of the Bézier control points (exact round trip).
+// Output of RSD surfaces: the fine sampling with shared points and smooth normals, and its VTK
+// file (the Bernstein text format: tests/output/bernstein_patches_test.cpp).
 #include <gtest/gtest.h>
 
 #include <vtkNew.h>
@@ -13,7 +13,6 @@
 
 #include "config/errors.hpp"
 #include "geometry/builtin_surface_meshes.hpp"
-#include "geometry/rsd/bezier_text_format.hpp"
 #include "geometry/rsd/surface_sampling.hpp"
 #include "output/surface_vtk.hpp"
 #include "tests/support/scratch_files.hpp"
@@ -54,30 +53,6 @@ TEST(SurfaceVtk, WritesPointsCellsAndNormals) {
   EXPECT_THROW(write_surface_vtu(sampled.points, sampled.normals, sampled.triangles, sampled.patch,
                                  "/nonexistent-folder/surface.vtu"),
                std::runtime_error);
-}
-
-TEST(BezierTextFormat, RoundTripIsExact) {
-  const RsdSurface s = build_rsd_surface(height_field(), {RsdTuple::pi1, RsdMethod::hermite});
-  std::stringstream file;
-  write_bezier_patches(file, bezier_patches_of(s), "height field, pi1");
-  const BezierPatchSet back = read_bezier_patches(file, "patches.txt");
-  ASSERT_EQ(back.patches.size(), s.patches.size());
-  for (std::size_t n = 0; n < s.patches.size(); ++n) {
-    EXPECT_EQ(back.patches[n].degree, 9);
-    EXPECT_EQ(back.vertices[n], s.mesh.triangles[n]);
-    for (std::size_t c = 0; c < s.patches[n].control.size(); ++c)
-      EXPECT_EQ(back.patches[n].control[c], s.patches[n].control[c]);
-  }
-}
-
-TEST(BezierTextFormat, MalformedFilesNameTheLine) {
-  std::istringstream short_file("iga-run-bezier-triangles 1\ndegree 1\npatches 1\npatch 0 0 1 2\n0 0 0\n1 0 x\n");
-  try {
-    read_bezier_patches(short_file, "p.txt");
-    FAIL() << "no InputError";
-  } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("p.txt:6: expected a control point"), std::string::npos) << e.what();
-  }
 }
 
 }  // namespace

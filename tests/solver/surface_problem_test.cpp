@@ -46,7 +46,7 @@ domain: {type: surface, mesh: icosphere, level: 0}
 space: {type: surface, degree: 2}
 )"),
                InputError);
-  // Boundary conditions are not a key of laplace_beltrami.
+  // Dirichlet data on a closed surface (it has no boundary).
   EXPECT_THROW(study(R"(
 problem: {pde: laplace_beltrami, exact: "x*y", boundary: {all: dirichlet}}
 domain: {type: surface, mesh: icosphere, level: 0}
@@ -58,7 +58,7 @@ space: {type: surface, degree: 2}
   EXPECT_EQ(test::problem_from_yaml("problem: {pde: laplace_beltrami, exact: \"x\", reaction: 0}").reaction, 0.0);
 }
 
-TEST(SurfaceProblem, OpenSurfacesAreAnInputError) {
+TEST(SurfaceProblem, OpenSurfacesNeedDirichletData) {
   const std::string yaml = R"(
 problem: {pde: laplace_beltrami, exact: "x*y"}
 domain: {type: surface, mesh: height_field}
@@ -67,6 +67,46 @@ space: {type: surface, degree: 2}
   const SpacePtr space = test::space_from_yaml(yaml);
   EXPECT_FALSE(space->boundary_edges("all").empty());
   EXPECT_THROW(solve_problem(*space, test::problem_from_yaml(yaml), SolverKind::cholmod), InputError);
+  EXPECT_THROW(parse_study(ConfigNode::load_string(yaml, "t.yaml"), "t.yaml", 0, ""), InputError);
+  EXPECT_THROW(test::problem_from_yaml("problem: {pde: laplace_beltrami, exact: \"x\", boundary_value: \"x\"}"),
+               InputError);
+  EXPECT_THROW(test::problem_from_yaml("problem: {pde: laplace_beltrami, source: \"1\", boundary: {all: dirichlet}}"),
+               InputError);
+  EXPECT_THROW(test::problem_from_yaml("problem: {pde: laplace_beltrami, exact: \"x\", boundary: {all: neumann}}"),
+               InputError);
+}
+
+// The note's open height field (18 patches of degree 8), u = g on its boundary curve: the surface
+// is the exact geometry (source through its own normal and curvature), so the rates are the
+// optimal p+1 (L2) and p (H1) of C0 elements; sub-triangles halve h exactly in the parameter.
+TEST(SurfaceProblem, OpenHeightFieldWithDirichletDataConvergesOptimally) {
+  for (int p : {2, 3}) {
+    SCOPED_TRACE("degree " + std::to_string(p));
+    const std::string yaml = R"(
+problem: {pde: laplace_beltrami, exact: "x*y + sin(z) + x", boundary: {all: dirichlet}}
+domain: {type: surface, mesh: height_field}
+space: {type: surface, degree: )" + std::to_string(p) + "}\n";
+    const ProblemSpec problem = test::problem_from_yaml(yaml);
+    std::vector<double> l2, h1;
+    for (int level = 2; level <= 4; ++level) {
+      const DiscreteSolution s = solve_problem(*test::space_from_yaml(yaml, level), problem, SolverKind::cholmod);
+      l2.push_back(*s.result.l2);
+      h1.push_back(*s.result.h1);
+    }
+    // Rates per halving of the sub-triangles (log2 of error ratios).
+    EXPECT_NEAR(std::log2(l2[1] / l2[2]), p + 1, 0.25);
+    EXPECT_NEAR(std::log2(h1[1] / h1[2]), p, 0.15);
+    EXPECT_GT(std::log2(l2[0] / l2[1]), p + 0.5);
+  }
+  // Boundary data given separately: zero data for u = z (the height) changes the solution.
+  const std::string own = R"(
+problem: {pde: laplace_beltrami, source: "1", boundary: {all: dirichlet}, boundary_value: "0"}
+domain: {type: surface, mesh: height_field}
+space: {type: surface, degree: 2}
+)";
+  const DiscreteSolution s = solve_problem(*test::space_from_yaml(own, 1), test::problem_from_yaml(own), SolverKind::cholmod);
+  EXPECT_GT(s.coefficients.maxCoeff(), 0.0);
+  EXPECT_LT(s.coefficients.minCoeff(), 1e-12);
 }
 
 }  // namespace

@@ -1,12 +1,14 @@
-#include "geometry/rsd/bezier_text_format.hpp"
+#include "output/bernstein_patches.hpp"
 
+#include <fstream>
 #include <iomanip>
 #include <limits>
 #include <sstream>
+#include <stdexcept>
 
 #include "config/errors.hpp"
 
-namespace iga::rsd {
+namespace iga {
 
 namespace {
 
@@ -43,23 +45,30 @@ struct Lines {
 
 }  // namespace
 
-BezierPatchSet bezier_patches_of(const RsdSurface& surface) {
-  return {surface.patches, surface.mesh.triangles};
-}
-
-void write_bezier_patches(std::ostream& out, const BezierPatchSet& set, const std::string& comment) {
+void write_bernstein_patches(std::ostream& out, const SurfacePatches& surface, const std::string& comment) {
   if (!comment.empty()) out << "# " << comment << "\n";
-  const int degree = set.patches.empty() ? 0 : set.patches.front().degree;
-  out << format_name << " 1\ndegree " << degree << "\npatches " << set.patches.size() << "\n";
+  const int degree = surface.patches.empty() ? 0 : surface.patches.front().degree;
+  out << format_name << " 1\ndegree " << degree << "\npatches " << surface.patches.size() << "\n";
   out << std::setprecision(std::numeric_limits<double>::max_digits10);
-  for (std::size_t n = 0; n < set.patches.size(); ++n) {
-    const auto& v = set.vertices[n];
+  for (std::size_t n = 0; n < surface.patches.size(); ++n) {
+    if (surface.patches[n].degree != degree)
+      throw std::logic_error("write_bernstein_patches: the patches must all have one degree");
+    const auto& v = surface.vertices[n];
     out << "patch " << n << " " << v[0] << " " << v[1] << " " << v[2] << "\n";
-    for (const auto& b : set.patches[n].control) out << b[0] << " " << b[1] << " " << b[2] << "\n";
+    for (const auto& b : surface.patches[n].control) out << b[0] << " " << b[1] << " " << b[2] << "\n";
   }
 }
 
-BezierPatchSet read_bezier_patches(std::istream& in, const std::string& source) {
+void write_bernstein_patches_file(const SurfacePatches& surface, const std::string& filename,
+                                  const std::string& comment) {
+  std::ofstream out(filename);
+  if (!out) throw std::runtime_error("cannot write " + filename);
+  write_bernstein_patches(out, surface, comment);
+  out.close();
+  if (!out) throw std::runtime_error("cannot write " + filename);
+}
+
+SurfacePatches read_bernstein_patches(std::istream& in, const std::string& source) {
   Lines lines{in, source};
   {
     std::istringstream s = lines.next("the header");
@@ -72,7 +81,7 @@ BezierPatchSet read_bezier_patches(std::istream& in, const std::string& source) 
   if (degree < 0 || degree > 30) lines.fail("degree must be in 0..30");
   const long count = lines.keyword_value<long>("patches");
   if (count < 0) lines.fail("negative patch count");
-  BezierPatchSet set;
+  SurfacePatches surface;
   for (long n = 0; n < count; ++n) {
     std::istringstream s = lines.next("a 'patch' line");
     std::string word;
@@ -88,10 +97,10 @@ BezierPatchSet read_bezier_patches(std::istream& in, const std::string& source) 
       if (!(p >> b[0] >> b[1] >> b[2])) lines.fail("expected a control point 'x y z'");
       patch.control.push_back(b);
     }
-    set.patches.push_back(std::move(patch));
-    set.vertices.push_back(v);
+    surface.patches.push_back(std::move(patch));
+    surface.vertices.push_back(v);
   }
-  return set;
+  return surface;
 }
 
-}  // namespace iga::rsd
+}  // namespace iga
