@@ -3,13 +3,15 @@
 #include <filesystem>
 #include <vector>
 
+#include "output/matrix_market_sink.hpp"
 #include "output/vtk_writer.hpp"
 
 namespace iga {
 
 StudyResult run_study_with_vtk(const StudySettings& settings, const std::string& directory,
                                const ProgressSink& progress) {
-  if (!settings.write_vtk) return run_study(settings, progress);
+  const LevelSink matrices = settings.write_matrices ? matrix_market_sink(settings, directory, progress) : LevelSink{};
+  if (!settings.write_vtk) return run_study(settings, progress, matrices);
   const std::filesystem::path dir(directory);
   const ExactSolution exact = settings.problem.exact_solution();
   std::vector<std::string> vtu_files, mesh_files;
@@ -28,7 +30,10 @@ StudyResult run_study_with_vtk(const StudySettings& settings, const std::string&
     write_mesh_vtu(space, settings.vtk_samples, (dir / mesh).string());
     mesh_files.push_back(mesh);
   };
-  StudyResult result = run_study(settings, progress, write_level);
+  StudyResult result = run_study(settings, progress, [&](int level, const Space& space, const DiscreteSolution& sol) {
+    write_level(level, space, sol);
+    if (matrices) matrices(level, space, sol);
+  });
   write_pvd(vtu_files, (dir / "solution.pvd").string());
   write_pvd(mesh_files, (dir / "mesh.pvd").string());
   return result;

@@ -117,7 +117,7 @@ StudySettings parse_study(const ConfigNode& root, const std::string& config_path
 
   s.output_dir = "results/" + std::filesystem::path(config_path).stem().string();
   if (auto output = root.find("output")) {
-    output->check_keys({"directory", "vtk", "plot"});
+    output->check_keys({"directory", "vtk", "plot", "matrices"});
     if (auto dir = output->find("directory")) s.output_dir = dir->as_string();
     if (auto vtk = output->find("vtk")) {
       if (vtk->is_scalar()) {
@@ -132,6 +132,11 @@ StudySettings parse_study(const ConfigNode& root, const std::string& config_path
       }
     }
     if (auto plot = output->find("plot")) s.write_plot = plot->as_bool();
+    if (auto matrices = output->find("matrices")) {
+      s.write_matrices = matrices->as_bool();
+      if (s.write_matrices && s.problem.pde == Pde::laplace_beltrami)
+        matrices->fail("matrix export is for planar problems (poisson, biharmonic), not laplace_beltrami");
+    }
   }
   if (!output_override.empty()) s.output_dir = output_override;
   return s;

@@ -34,6 +34,7 @@ struct StudySettings {
   bool write_vtk = true;
   int vtk_samples = 8;     ///< samples per element edge
   bool write_plot = true;
+  bool write_matrices = false;  ///< output.matrices: each level's reduced system in Matrix Market
   ResourceLimits limits;   ///< the limits: section (defaults when absent)
 };
 
