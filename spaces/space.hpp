@@ -130,7 +130,9 @@ struct SampleCell {
 /// (m+1)(m+2)/2 points and m² sub-triangles (points along shared edges are not merged).
 void append_triangle_grid(SampleCell& cell, const Point2& a, const Point2& b, const Point2& c, int m);
 
-class Space {
+/// Spaces are held by SpacePtr; enable_shared_from_this lets code that is handed a `const Space&`
+/// (a study's LevelSink) keep the space alive beyond the call.
+class Space : public std::enable_shared_from_this<Space> {
  public:
   virtual ~Space() = default;
 
