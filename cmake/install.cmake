@@ -18,8 +18,7 @@ foreach(layer IN LISTS IGA_LAYERS)
 endforeach()
 
 install(TARGETS ${iga_layer_targets} igarun EXPORT iga_runTargets
-        ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
-        INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/iga_run)
+        ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR})
 install(TARGETS iga-run iga-gmsh-worker RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 install(EXPORT iga_runTargets NAMESPACE iga_run:: DESTINATION ${IGA_INSTALL_CMAKEDIR})
 

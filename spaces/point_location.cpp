@@ -1,6 +1,9 @@
 #include "spaces/point_location.hpp"
 
+#include <Eigen/LU>
+
 #include <algorithm>
+#include <cmath>
 #include <deque>
 #include <map>
 #include <stdexcept>

@@ -5,6 +5,8 @@
 /// basis functions there. Written against the Space interface only; used to evaluate discrete
 /// solutions at arbitrary points (the Python module).
 
+#include <Eigen/Geometry>
+
 #include <optional>
 #include <vector>
 

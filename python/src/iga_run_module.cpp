@@ -5,6 +5,7 @@
 #include <pybind11/stl.h>
 
 #include <iostream>
+#include <limits>
 #include <memory>
 
 #include "config/config_node.hpp"

@@ -68,7 +68,8 @@ PatchGeometry read_patch_file(const ConfigNode& domain) {
                         "'; meshes of triangles or quadrilaterals: space ws4, g1, g1_4split)");
   return domain["file"].guard([&] {
     const std::string path = request.path.string();
-    const GismoPatch& p = single_gismo_patch(read_gismo_xml(path), "bspline");
+    const GismoMultiPatch file = read_gismo_xml(path);
+    const GismoPatch& p = single_gismo_patch(file, "bspline");
     try {
       return PatchGeometry(KnotVector(p.degree[0], p.knots[0]), KnotVector(p.degree[1], p.knots[1]), p.control_points,
                            p.weights,

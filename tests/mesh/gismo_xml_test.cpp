@@ -58,7 +58,7 @@ TEST(GismoXml, SinglePatchWithoutMultiPatch) {
   const std::string f = scratch_file("single.xml", "<?xml version=\"1.0\"?>\n<xml>\n" +
                                                        bilinear(5, "0 0 2 0 0 1 2 1", 2, "0 0 0 0.5 1 1 1") + "</xml>\n");
   // Degree 2 with 7 knots: 4 x 2 control points needed, 4 given.
-  EXPECT_NE(input_error([&] { read_gismo_xml(f); }).find("single.xml:7: <coefs>: the knot vectors need 4 x 2"),
+  EXPECT_NE(input_error([&] { read_gismo_xml(f); }).find("single.xml:8: <coefs>: the knot vectors need 4 x 2"),
             std::string::npos);
   const std::string g = scratch_file("single_ok.xml", "<xml>\n" +
                                                           bilinear(5, "0 0 1 0 2 0 3 0 0 1 1 1 2 1 3 1", 2, "0 0 0 0.5 1 1 1") +
@@ -96,7 +96,7 @@ TEST(GismoXml, TopologyIsCheckedAgainstTheGeometry) {
   const std::string wrong = input_error([&] {
     bilinear_patch_mesh(read_gismo_xml(scratch_file("wrong.xml", two_squares("  <interfaces>0 3 1 1 0 1 1 1</interfaces>\n"))));
   });
-  EXPECT_NE(wrong.find("wrong.xml:9: <interfaces>: patch 0 side 3 (south) and patch 1 side 1 (west) do not have the same corners"),
+  EXPECT_NE(wrong.find("wrong.xml:18: <interfaces>: patch 0 side 3 (south) and patch 1 side 1 (west) do not have the same corners"),
             std::string::npos)
       << wrong;
   const std::string interior = input_error([&] {
@@ -104,7 +104,7 @@ TEST(GismoXml, TopologyIsCheckedAgainstTheGeometry) {
   });
   EXPECT_NE(interior.find("<boundary>: patch 0 side 2 (east) is shared with another patch"), std::string::npos) << interior;
   EXPECT_NE(input_error([&] { read_gismo_xml(scratch_file("side.xml", two_squares("  <boundary>0 5</boundary>\n"))); })
-                .find("side.xml:9: <boundary>: side 5"),
+                .find("side.xml:18: <boundary>: side 5"),
             std::string::npos);
   EXPECT_NE(input_error([&] { read_gismo_xml(scratch_file("patch.xml", two_squares("  <boundary>2 1</boundary>\n"))); })
                 .find("patch index 2 (the multipatch has patches 0..1)"),
@@ -149,7 +149,7 @@ TEST(GismoXml, MalformedAndHostileFilesAreRefused) {
   std::string deep;  // nesting beyond tinyxml2's depth limit
   for (int i = 0; i < 1000; ++i) deep += "<xml>";
   const std::vector<Case> cases = {
-      {"unclosed.xml", "<xml>\n <Geometry type=\"TensorBSpline2\">\n</xml>\n", "unclosed.xml:3: not well-formed XML"},
+      {"unclosed.xml", "<xml>\n <Geometry type=\"TensorBSpline2\">\n</xml>\n", "unclosed.xml:2: not well-formed XML"},
       {"empty.xml", "", "not well-formed XML"},
       {"root.xml", "<gismo></gismo>", "root.xml:1: <gismo>: a G+Smo file has the root element <xml>"},
       {"nothing.xml", "<xml/>", "no <Geometry> and no <MultiPatch>"},
@@ -165,10 +165,10 @@ TEST(GismoXml, MalformedAndHostileFilesAreRefused) {
       {"type.xml", "<xml>\n<Geometry type=\"TensorBSpline3\" id=\"0\"/>\n</xml>",
        "type.xml:2: <Geometry>: type 'TensorBSpline3' is not supported (supported: TensorBSpline2, TensorNurbs2)"},
       {"twice.xml", "<xml>\n" + bilinear(0, "0 0 1 0 0 1 1 1") + bilinear(0, "0 0 1 0 0 1 1 1") + "</xml>",
-       "twice.xml:8: <Geometry>: a second Geometry with id 0"},
+       "twice.xml:9: <Geometry>: a second Geometry with id 0"},
       {"missing.xml",
        "<xml>\n" + bilinear(0, "0 0 1 0 0 1 1 1") + "<MultiPatch><patches type=\"id_range\">0 1</patches></MultiPatch></xml>",
-       "missing.xml:8: <patches>: no Geometry with id 1"},
+       "missing.xml:9: <patches>: no Geometry with id 1"},
       {"degree.xml", "<xml>\n" + bilinear(0, "0 0 1 0 0 1 1 1", 99, "0 1") + "</xml>", "degree.xml:4: <KnotVector>: degree 99"},
       {"knots.xml", "<xml>\n" + bilinear(0, "0 0 1 0 0 1 1 1", 1, "0 1 0.5 1") + "</xml>",
        "knots.xml:4: <KnotVector>: the knots decrease at position 2"},

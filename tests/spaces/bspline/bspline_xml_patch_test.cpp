@@ -9,13 +9,13 @@
 namespace iga {
 namespace {
 
-const std::string problem = R"(
+const std::string problem = R"yaml(
 problem:
   pde: poisson
   exact: "sin(x)*exp(y)"
   boundary: {all: dirichlet}
 space: {type: bspline, degree: 3, elements: [2, 4]}
-)";
+)yaml";
 
 TEST(BSplineXmlPatch, QuarterAnnulusMatchesTheBuiltIn) {
   const std::string builtin = problem + "domain: {type: quarter_annulus, inner: 1, outer: 2}\n";

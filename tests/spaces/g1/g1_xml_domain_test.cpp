@@ -9,12 +9,12 @@
 namespace iga {
 namespace {
 
-const std::string problem = R"(
+const std::string problem = R"yaml(
 problem:
   pde: biharmonic
   exact: "(cos(2*pi*x)-1)*(cos(2*pi*y)-1)"
   boundary: {all: clamped}
-)";
+)yaml";
 
 std::string with_domain(const std::string& domain, const std::string& space) {
   return problem + "domain: " + domain + "\nspace: " + space + "\n";
@@ -55,7 +55,7 @@ TEST(G1XmlDomain, PatchesThatAreNotBilinearAreRefusedWithTheReason) {
     ADD_FAILURE() << "no InputError";
   } catch (const InputError& e) {
     const std::string msg = e.what();
-    EXPECT_NE(msg.find("test.yaml:7:"), std::string::npos) << msg;  // the config place of domain
+    EXPECT_NE(msg.find("test.yaml:6:"), std::string::npos) << msg;  // the config place of domain
     EXPECT_NE(msg.find("curved.xml: patch 0, Geometry id 0 (line 2): degree (2, 1)"), std::string::npos) << msg;
     EXPECT_NE(msg.find("not bilinear"), std::string::npos) << msg;
   }
