@@ -215,7 +215,13 @@ std::string GismoPatch::describe() const {
 }
 
 GismoMultiPatch read_gismo_xml(const std::string& path, const GismoXmlLimits& limits) {
-  const std::string text = read_limited(path, limits);
+  return parse_gismo_xml(read_limited(path, limits), path, limits);
+}
+
+GismoMultiPatch parse_gismo_xml(const std::string& text, const std::string& path, const GismoXmlLimits& limits) {
+  if (text.size() > limits.max_bytes)
+    throw InputError(path + ": " + std::to_string(text.size()) + " bytes, more than the limit of " +
+                     std::to_string(limits.max_bytes) + " for a geometry file");
   GismoMultiPatch mp;
   mp.source = path;
   tinyxml2::XMLDocument doc(true, tinyxml2::PRESERVE_WHITESPACE);
@@ -330,9 +336,11 @@ PlanarMesh bilinear_patch_mesh(const GismoMultiPatch& mp) {
     for (int s = 1; s <= 4; ++s) sides_at[key({k, s})].push_back({k, s});
   std::set<std::pair<int, int>> listed;
   for (const GismoInterface& i : mp.interfaces) {
+    const std::string at = src + ":" + std::to_string(i.line) + ": <interfaces>: ";
     if (key(i.a) != key(i.b))
-      throw InputError(src + ":" + std::to_string(i.line) + ": <interfaces>: " + describe_side(i.a) + " and " +
-                       describe_side(i.b) + " do not have the same corners");
+      throw InputError(at + describe_side(i.a) + " and " + describe_side(i.b) + " do not have the same corners");
+    if (i.a.patch == i.b.patch && i.a.side == i.b.side)
+      throw InputError(at + describe_side(i.a) + " is joined to itself");
     listed.insert(key(i.a));
   }
   for (const auto& [k, sides] : sides_at) {

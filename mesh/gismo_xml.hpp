@@ -66,6 +66,9 @@ struct GismoXmlLimits {
 /// `<MultiPatch>` is read as those patches, without interfaces.
 GismoMultiPatch read_gismo_xml(const std::string& path, const GismoXmlLimits& limits = {});
 
+/// The same for the file's text; `source` names it in messages.
+GismoMultiPatch parse_gismo_xml(const std::string& text, const std::string& source, const GismoXmlLimits& limits = {});
+
 /// The patches as a mesh of quadrilaterals, for spaces built on bilinear patches (G1): every patch
 /// must be bilinear (degree 1 in both directions, no interior knots, equal weights if rational);
 /// the listed interfaces must be sides with the same corners, no two patches may share a side
