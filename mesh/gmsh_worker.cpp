@@ -39,9 +39,16 @@ fs::path worker_path() {
 #ifdef IGA_GMSH_WORKER_PATH
   if (fs::is_regular_file(IGA_GMSH_WORKER_PATH, ec)) return IGA_GMSH_WORKER_PATH;
 #endif
+  // Programs built against the installed package (and the Python module) run from elsewhere.
+#ifdef IGA_GMSH_WORKER_INSTALLED_PATH
+  if (fs::is_regular_file(IGA_GMSH_WORKER_INSTALLED_PATH, ec)) return IGA_GMSH_WORKER_INSTALLED_PATH;
+#endif
   throw std::runtime_error(std::string("cannot find the Gmsh worker '") + worker_name + "' next to the executable" +
 #ifdef IGA_GMSH_WORKER_PATH
                            " or at " IGA_GMSH_WORKER_PATH
+#endif
+#ifdef IGA_GMSH_WORKER_INSTALLED_PATH
+                           " or " IGA_GMSH_WORKER_INSTALLED_PATH
 #endif
                            "");
 }

@@ -7,6 +7,7 @@
 #include "config/config_node.hpp"
 #include "config/errors.hpp"
 #include "mesh/geo_script_check.hpp"
+#include "mesh/gismo_xml.hpp"
 #include "mesh/gmsh_worker.hpp"
 #include "mesh/msh_structure_check.hpp"
 #include "mesh/read_text_meshes.hpp"
@@ -61,7 +62,8 @@ PlanarMesh read_mesh_file(const std::string& path, const MeshFileOptions& option
   if (extension == ".geo") return read_with_gmsh(path, options, true);
   if (extension == ".obj") return read_obj_mesh(in, path);
   if (extension == ".off") return read_off_mesh(in, path);
-  throw InputError(path + ": unknown mesh file extension '" + extension + "' (supported: .msh, .geo, .obj, .off)");
+  if (extension == ".xml") return bilinear_patch_mesh(read_gismo_xml(path));
+  throw InputError(path + ": unknown mesh file extension '" + extension + "' (supported: .msh, .geo, .obj, .off, .xml)");
 }
 
 }  // namespace iga

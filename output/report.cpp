@@ -122,7 +122,7 @@ std::string format_convergence_table(const std::vector<LevelResult>& rows, bool 
   return s.str();
 }
 
-void write_summary_json(const StudySettings& settings, const StudyResult& result, const std::string& filename) {
+std::string summary_json(const StudySettings& settings, const StudyResult& result) {
   using nlohmann::json;
   json j;
   j["iga_run_version"] = IGA_RUN_VERSION;
@@ -188,8 +188,12 @@ void write_summary_json(const StudySettings& settings, const StudyResult& result
   double total = 0;
   for (const LevelResult& r : result.rows) total += r.t_space + r.t_assemble + r.t_solve + r.t_errors;
   j["total_seconds"] = total;
+  return j.dump(2);
+}
+
+void write_summary_json(const StudySettings& settings, const StudyResult& result, const std::string& filename) {
   std::ofstream out = open_for_writing(filename);
-  out << j.dump(2) << '\n';
+  out << summary_json(settings, result) << '\n';
 }
 
 nlohmann::json config_as_json(const ConfigNode& root) { return to_json(root.yaml()); }

@@ -18,7 +18,10 @@ void write_convergence_csv(const std::vector<LevelResult>& rows, const std::stri
 /// With `rates_against_dofs` (adaptive studies) the rate columns are log(e_prev/e)/log(N/N_prev).
 std::string format_convergence_table(const std::vector<LevelResult>& rows, bool rates_against_dofs = false);
 
-/// Config echo, space and parameters, rows, least-squares rates, timings.
+/// summary.json's text: config echo, space and parameters, rows, least-squares rates, timings.
+std::string summary_json(const StudySettings& settings, const StudyResult& result);
+
+/// Writes summary_json() to `filename`.
 void write_summary_json(const StudySettings& settings, const StudyResult& result, const std::string& filename);
 
 /// The config as JSON (the `config` echo of every summary.json).

@@ -5,12 +5,14 @@
 
 #include "output/surface_geometry_vtk.hpp"
 #include "output/surface_files.hpp"
+#include "output/matrix_market_sink.hpp"
 #include "output/vtk_writer.hpp"
 
 namespace iga {
 
 StudyResult run_study_with_vtk(const StudySettings& settings, const std::string& directory,
                                const ProgressSink& progress) {
+  const LevelSink matrices = settings.write_matrices ? matrix_market_sink(settings, directory, progress) : LevelSink{};
   // A surface is the same at every level: its files are written once (surface.vtu with VTK output,
   // surface_patches.txt always).
   const auto with_surface_files = [&](StudyResult result) {
@@ -20,7 +22,7 @@ StudyResult run_study_with_vtk(const StudySettings& settings, const std::string&
     }
     return result;
   };
-  if (!settings.write_vtk) return with_surface_files(run_study(settings, progress));
+  if (!settings.write_vtk) return with_surface_files(run_study(settings, progress, matrices));
   const std::filesystem::path dir(directory);
   const ExactSolution exact = settings.problem.exact_solution();
   std::vector<std::string> vtu_files, mesh_files, surface_files;
@@ -46,7 +48,10 @@ StudyResult run_study_with_vtk(const StudySettings& settings, const std::string&
       surface_files.push_back(surface);
     }
   };
-  StudyResult result = run_study(settings, progress, write_level);
+  StudyResult result = run_study(settings, progress, [&](int level, const Space& space, const DiscreteSolution& sol) {
+    write_level(level, space, sol);
+    if (matrices) matrices(level, space, sol);
+  });
   write_pvd(vtu_files, (dir / "solution.pvd").string());
   write_pvd(mesh_files, (dir / "mesh.pvd").string());
   if (!surface_files.empty()) write_pvd(surface_files, (dir / "surface.pvd").string());

@@ -11,6 +11,9 @@ packages=(
   libcli11-dev nlohmann-json3-dev libgtest-dev libbenchmark-dev
   libgmsh-dev            # Gmsh SDK: reading .msh, meshing .geo domains and polygons (mesh/)
   libseccomp-dev         # system-call filter of the Gmsh worker process (mesh/worker_sandbox.cpp)
+  libtinyxml2-dev        # G+Smo XML geometry files (mesh/gismo_xml.cpp)
+  pybind11-dev python3-dev python3-numpy   # the Python module iga_run (python/), for Debian's /usr/bin/python3
+  python3-scipy python3-matplotlib          # its tests (Matrix Market read-back) and python/examples/
   libopenblas0-pthread   # optimized BLAS/LAPACK for CHOLMOD's supernodal factorization (reference BLAS is ~5x slower)
   clang libclang-rt-14-dev libomp-14-dev   # scripts/fuzz.sh: libFuzzer and the sanitizers for clang, OpenMP for clang
 )

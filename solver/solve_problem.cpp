@@ -40,20 +40,11 @@ void check_boundary_parts(const Space& space, const ProblemSpec& problem) {
   }
 }
 
-DiscreteSolution solve_problem(const Space& space, const ProblemSpec& problem, SolverKind solver,
-                               const ProgressSink& progress) {
+LinearSystem assemble_linear_system(const Space& space, const ProblemSpec& problem, const ProgressSink& progress) {
   const auto say = [&](const std::string& msg) {
     if (progress) progress(msg);
   };
-  if (problem.pde == Pde::laplace_beltrami) return solve_surface_problem(space, problem, solver, progress);
-  check_boundary_parts(space, problem);
-  DiscreteSolution out;
-  LevelResult& r = out.result;
-  r.h = space.mesh_size();
-  r.dofs = space.dimension();
-  r.elements = space.num_elements();
   const int qa = assembly_quadrature_degree(space);
-
   EssentialBoundary essential;
   std::vector<BoundaryEdge> neumann_edges, simply_supported_edges;
   for (const auto& [e, kind] : boundary_edge_kinds(space, problem)) {
@@ -66,13 +57,14 @@ DiscreteSolution solve_problem(const Space& space, const ProblemSpec& problem, S
     throw InputError("problem.boundary: a pure Neumann problem has no unique solution; make at least one part dirichlet");
 
   say("assembling");
-  auto t0 = Clock::now();
+  LinearSystem sys;
   const Assembler assembler(space);
   // Extended precision: the residuals below must see A's entries beyond their double rounding.
-  const SplitMatrix A = assembler.matrix_extended(problem.form, qa);
+  sys.A = assembler.matrix_extended(problem.form, qa);
   const FunctionBatch source_batch({problem.source});
-  Eigen::VectorXd b = assembler.load(
+  sys.b = assembler.load(
       [&source_batch](const Eigen::Matrix2Xd& x, Eigen::MatrixXd& values) { source_batch.evaluate(x, values); }, qa);
+  Eigen::VectorXd& b = sys.b;
   const BoundaryField dudn = problem.normal_derivative_field();
   // Natural conditions: Neumann flux ∫ g_N v, and for simply supported plates ∫ Δu ∂v/∂n
   // (from ∫ Δ²u v = ∫ Δu Δv − ∫_Γ Δu ∂v/∂n when v = 0 on Γ).
@@ -86,13 +78,33 @@ DiscreteSolution solve_problem(const Space& space, const ProblemSpec& problem, S
     throw InputError(problem.source_where +
                      ": the source term or boundary flux is not finite at some point of the domain "
                      "(a pole, or a log or root of a negative number?)");
-  const Constraints constraints =
-      impose_essential(space, essential, boundary_field(problem.value), dudn, qa);
-  if (!constraints.values.allFinite())
+  sys.constraints = impose_essential(space, essential, boundary_field(problem.value), dudn, qa);
+  if (!sys.constraints.values.allFinite())
     throw InputError(problem.data_where + ": the boundary data (u or du/dn) are not finite at some boundary point");
-  SparseMatrix A_free;
-  Eigen::VectorXd b_free;
-  reduce_system(A, b, constraints, A_free, b_free);
+  reduce_system(sys.A, sys.b, sys.constraints, sys.A_free, sys.b_free);
+  return sys;
+}
+
+DiscreteSolution solve_problem(const Space& space, const ProblemSpec& problem, SolverKind solver,
+                               const ProgressSink& progress) {
+  const auto say = [&](const std::string& msg) {
+    if (progress) progress(msg);
+  };
+  if (problem.pde == Pde::laplace_beltrami) return solve_surface_problem(space, problem, solver, progress);
+  check_boundary_parts(space, problem);
+  DiscreteSolution out;
+  LevelResult& r = out.result;
+  r.h = space.mesh_size();
+  r.dofs = space.dimension();
+  r.elements = space.num_elements();
+
+  auto t0 = Clock::now();
+  const LinearSystem sys = assemble_linear_system(space, problem, progress);
+  const SplitMatrix& A = sys.A;
+  const Eigen::VectorXd& b = sys.b;
+  const Constraints& constraints = sys.constraints;
+  const SparseMatrix& A_free = sys.A_free;
+  const Eigen::VectorXd& b_free = sys.b_free;
   r.t_assemble = seconds_since(t0);
   r.free_dofs = static_cast<int>(constraints.free.size());
   out.boundary_constrained = static_cast<int>(constraints.constrained.size());

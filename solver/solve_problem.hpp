@@ -7,12 +7,17 @@
 #include <functional>
 #include <string>
 
+#include "assembly/boundary_conditions.hpp"
 #include "assembly/error_norms.hpp"
+#include "assembly/split_matrix.hpp"
 #include "solver/level_result.hpp"
 #include "solver/linear_solver.hpp"
 #include "solver/problem.hpp"
 
 namespace iga {
+
+/// Progress messages for long phases (the CLI prints them to stderr unless --quiet).
+using ProgressSink = std::function<void(const std::string&)>;
 
 struct DiscreteSolution {
   Eigen::VectorXd coefficients;  ///< one per global basis function
@@ -28,8 +33,21 @@ int assembly_quadrature_degree(const Space& space);
 /// Validate the problem's boundary part names against the space; throws InputError.
 void check_boundary_parts(const Space& space, const ProblemSpec& problem);
 
-/// Progress messages for long phases (the CLI prints them to stderr unless --quiet).
-using ProgressSink = std::function<void(const std::string&)>;
+
+/// The linear system of one problem on one space: the full matrix (extended precision) and load,
+/// the essential boundary conditions, and the reduced system of the free functions.
+struct LinearSystem {
+  SplitMatrix A;
+  Eigen::VectorXd b;
+  Constraints constraints;
+  SparseMatrix A_free;     ///< rows and columns: constraints.free, in that order
+  Eigen::VectorXd b_free;
+};
+
+/// Assemble the matrix and load, impose the essential conditions and reduce (planar problems;
+/// what solve_problem solves). Throws InputError for bad data (non-finite load or boundary values,
+/// pure Neumann problems).
+LinearSystem assemble_linear_system(const Space& space, const ProblemSpec& problem, const ProgressSink& progress = {});
 
 /// `progress`, when given, is told when each phase starts (assemble, factorize and solve, errors).
 DiscreteSolution solve_problem(const Space& space, const ProblemSpec& problem, SolverKind solver,

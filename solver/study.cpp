@@ -48,7 +48,7 @@ StudySettings parse_study(const ConfigNode& root, const std::string& config_path
   s.output_dir = "results/" + std::filesystem::path(config_path).stem().string();
   std::string output_place = "the default output directory";
   if (auto output = root.find("output")) {
-    output->check_keys({"directory", "vtk", "plot"});
+    output->check_keys({"directory", "vtk", "plot", "matrices"});
     if (auto dir = output->find("directory")) {
       s.output_dir = dir->as_string();
       output_place = dir->where();
@@ -66,6 +66,11 @@ StudySettings parse_study(const ConfigNode& root, const std::string& config_path
       }
     }
     if (auto plot = output->find("plot")) s.write_plot = plot->as_bool();
+    if (auto matrices = output->find("matrices")) {
+      s.write_matrices = matrices->as_bool();
+      if (s.write_matrices && s.problem.pde == Pde::laplace_beltrami)
+        matrices->fail("matrix export is for planar problems (poisson, biharmonic), not laplace_beltrami");
+    }
   }
   if (!output_override.empty()) {
     s.output_dir = output_override;

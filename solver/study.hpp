@@ -34,6 +34,7 @@ struct StudySettings {
   bool write_vtk = true;
   int vtk_samples = 8;     ///< samples per element edge
   bool write_plot = true;
+  bool write_matrices = false;  ///< output.matrices: each level's reduced system in Matrix Market
   ResourceLimits limits;   ///< the limits: section (defaults when absent)
   /// Level 0 as parse_study built it to validate the config, and its build time: run_study starts
   /// from it instead of building it again (a one-level study of a large space built it twice).

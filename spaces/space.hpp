@@ -134,7 +134,9 @@ void append_triangle_grid(SampleCell& cell, const Point2& a, const Point2& b, co
 /// (geometry/surface_patches.hpp); declared here so that the interface does not pull in geometry.
 struct SurfacePatches;
 
-class Space {
+/// Spaces are held by SpacePtr; enable_shared_from_this lets code that is handed a `const Space&`
+/// (a study's LevelSink) keep the space alive beyond the call.
+class Space : public std::enable_shared_from_this<Space> {
  public:
   virtual ~Space() = default;
 

@@ -4,6 +4,8 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "mesh/gismo_xml.hpp"
+#include "mesh/mesh_file_from_config.hpp"
 #include "spaces/bspline/knot_vector.hpp"
 #include "spaces/bspline/tensor_bspline_space.hpp"
 
@@ -55,6 +57,32 @@ PatchGeometry read_patch(const ConfigNode& domain) {
   }
 }
 
+/// `domain: {type: mesh_file, file: patch.xml}`: the one patch of a G+Smo XML file.
+PatchGeometry read_patch_file(const ConfigNode& domain) {
+  domain.check_keys({"type", "file"});
+  const MeshFileRequest request = mesh_file_request(domain);
+  std::string extension = request.path.extension().string();
+  for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  if (extension != ".xml")
+    domain["file"].fail("the bspline space reads one patch from a G+Smo .xml file (got '" + request.path.filename().string() +
+                        "'; meshes of triangles or quadrilaterals: space ws4, g1, g1_4split)");
+  return domain["file"].guard([&] {
+    const std::string path = request.path.string();
+    const GismoMultiPatch file = read_gismo_xml(path);
+    const GismoPatch& p = single_gismo_patch(file, "bspline");
+    try {
+      return PatchGeometry(KnotVector(p.degree[0], p.knots[0]), KnotVector(p.degree[1], p.knots[1]), p.control_points,
+                           p.weights,
+                           std::string(p.weights.empty() ? "B-spline" : "NURBS") + " patch from " +
+                               request.path.filename().string());
+    } catch (const std::invalid_argument& e) {
+      throw InputError(path + ": " + p.describe() + ": " + e.what());
+    } catch (const InputError& e) {
+      throw InputError(path + ": " + p.describe() + ": " + e.what());
+    }
+  });
+}
+
 /// Breakpoints that split each span of `geometry` into `per_span` equal parts.
 std::vector<double> subdivide(const KnotVector& geometry, int per_span) {
   const std::vector<double> g = geometry.breakpoints();
@@ -69,7 +97,7 @@ std::vector<double> subdivide(const KnotVector& geometry, int per_span) {
 }  // namespace
 
 std::shared_ptr<const PatchGeometry> make_patch_geometry(const ConfigNode& domain) {
-  const std::string type = domain["type"].as_choice({"rectangle", "quarter_annulus", "patch"});
+  const std::string type = domain["type"].as_choice({"rectangle", "quarter_annulus", "patch", "mesh_file"});
   std::shared_ptr<const PatchGeometry> g;
   if (type == "rectangle") {
     domain.check_keys({"type", "min", "max"});
@@ -86,6 +114,8 @@ std::shared_ptr<const PatchGeometry> make_patch_geometry(const ConfigNode& domai
       domain["outer"].fail("the outer radius must be greater than the inner one (got inner = " + format_number(r0) +
                            ", outer = " + format_number(r1) + ")");
     g = std::make_shared<const PatchGeometry>(PatchGeometry::quarter_annulus(r0, r1));
+  } else if (type == "mesh_file") {
+    g = std::make_shared<const PatchGeometry>(read_patch_file(domain));
   } else {
     g = std::make_shared<const PatchGeometry>(read_patch(domain));
   }

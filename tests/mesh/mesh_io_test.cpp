@@ -236,7 +236,7 @@ TEST(MeshIo, FileErrorsNameTheFileAndLine) {
       {"hexagon.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n6 0 1 2 0 1 2\n", "hexagon.off:6: a face with 6 vertices"},
       {"range.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 3\n",
        "range.off:6: face vertex 3 does not exist (3 vertices; OFF indices are 0-based)"},
-      {"mesh.stl", "solid\n", "mesh.stl: unknown mesh file extension '.stl' (supported: .msh, .geo, .obj, .off)"},
+      {"mesh.stl", "solid\n", "mesh.stl: unknown mesh file extension '.stl' (supported: .msh, .geo, .obj, .off, .xml)"},
       {"syntax.geo", "Point(1) = {0, 0, 0, 1};\nLine(1) = {1, 7};\n", "syntax.geo: gmsh: Unknown control point 7"},
       {"curve.geo", "Point(1) = {0, 0, 0, 1};\nPoint(2) = {1, 0, 0, 1};\nLine(1) = {1, 2};\n",
        "curve.geo: the mesh has no triangles or quadrilaterals"},

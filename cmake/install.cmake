@@ -1,0 +1,31 @@
+# `cmake --install build [--prefix P]` installs:
+#   bin/iga-run, bin/iga-gmsh-worker
+#   lib/libiga_<layer>.a                      the layer libraries (static)
+#   include/iga_run/<layer>/...               every header of the layers, paths as in the source tree
+#   lib/cmake/iga_run/iga_runConfig.cmake     find_package(iga_run) -> target iga_run::iga_run
+# A project links iga_run::iga_run and includes e.g. "solver/study.hpp" (docs/library.md).
+include(CMakePackageConfigHelpers)
+
+set(IGA_INSTALL_CMAKEDIR ${CMAKE_INSTALL_LIBDIR}/cmake/iga_run)
+set(iga_layer_targets "")
+foreach(layer IN LISTS IGA_LAYERS)
+  list(APPEND iga_layer_targets iga_${layer})
+  file(GLOB_RECURSE layer_headers RELATIVE ${CMAKE_CURRENT_SOURCE_DIR} ${CMAKE_CURRENT_SOURCE_DIR}/${layer}/*.hpp)
+  foreach(header IN LISTS layer_headers)
+    get_filename_component(folder ${header} DIRECTORY)
+    install(FILES ${header} DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/iga_run/${folder})
+  endforeach()
+endforeach()
+
+install(TARGETS ${iga_layer_targets} igarun EXPORT iga_runTargets
+        ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR})
+install(TARGETS iga-run iga-gmsh-worker RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+install(EXPORT iga_runTargets NAMESPACE iga_run:: DESTINATION ${IGA_INSTALL_CMAKEDIR})
+
+configure_package_config_file(${CMAKE_CURRENT_SOURCE_DIR}/cmake/iga_runConfig.cmake.in
+                              ${CMAKE_CURRENT_BINARY_DIR}/iga_runConfig.cmake
+                              INSTALL_DESTINATION ${IGA_INSTALL_CMAKEDIR})
+write_basic_package_version_file(${CMAKE_CURRENT_BINARY_DIR}/iga_runConfigVersion.cmake
+                                 VERSION ${PROJECT_VERSION} COMPATIBILITY SameMinorVersion)
+install(FILES ${CMAKE_CURRENT_BINARY_DIR}/iga_runConfig.cmake ${CMAKE_CURRENT_BINARY_DIR}/iga_runConfigVersion.cmake
+        DESTINATION ${IGA_INSTALL_CMAKEDIR})
