@@ -1,6 +1,7 @@
 #include "app/cli.hpp"
 
 #include <CLI/CLI.hpp>
+#include <chrono>
 #include <filesystem>
 #include <iostream>
 #include <new>
@@ -22,6 +23,7 @@ int fail(int code, const std::string& message) {
 }
 
 int run_config(const std::string& config_path, const std::string& output, int levels, bool quiet) {
+  const auto t_start = std::chrono::steady_clock::now();
   const ConfigNode root = ConfigNode::load_file(config_path);
   const StudySettings settings = parse_study(root, config_path, levels, output);
   const ProgressSink progress = [quiet](const std::string& msg) {
@@ -42,14 +44,15 @@ int run_config(const std::string& config_path, const std::string& output, int le
   }
   StagedDirectory staged(settings.output_dir);
   const std::filesystem::path dir(staged.path());
-  const StudyResult result = run_study_with_vtk(settings, staged.path(), progress);
+  StudyResult result = run_study_with_vtk(settings, staged.path(), progress);
   progress("writing tables and plot");
   write_convergence_csv(result.rows, (dir / "convergence.csv").string());
-  write_summary_json(settings, result, (dir / "summary.json").string());
   if (settings.write_plot) {
     const std::string title = result.space_type + " " + to_string(settings.problem.pde);
     plot_convergence(result.rows, result.expected, title, (dir / "convergence.svg").string());
   }
+  result.total_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t_start).count();
+  write_summary_json(settings, result, (dir / "summary.json").string());
   staged.commit();
 
   std::cout << result.space_type << " / " << to_string(settings.problem.pde) << " — " << config_path << '\n'

@@ -123,8 +123,10 @@ StudySettings parse_study(const ConfigNode& root, const std::string& config_path
       if (vtk->is_scalar()) {
         s.write_vtk = vtk->as_bool();
       } else {
-        vtk->check_keys({"enabled", "samples"});
+        vtk->check_keys({"enabled", "samples", "levels", "cells"});
         s.write_vtk = vtk->get_bool("enabled", true);
+        if (auto levels = vtk->find("levels")) s.vtk_last_level_only = levels->as_choice({"all", "last"}) == "last";
+        if (auto cells = vtk->find("cells")) s.vtk_lagrange = cells->as_choice({"lagrange", "linear"}) == "lagrange";
         if (auto samples = vtk->find("samples")) {
           s.vtk_samples = samples->as_int();
           if (s.vtk_samples < 1 || s.vtk_samples > 64) samples->fail("samples must be between 1 and 64");
@@ -163,7 +165,6 @@ StudyResult run_study(const StudySettings& settings, const ProgressSink& progres
     progress(tag + "done: assembled in " + format_seconds(sol.result.t_assemble) + ", solved (" + sol.solve.method + ") in " +
              format_seconds(sol.result.t_solve) + ", errors in " + format_seconds(sol.result.t_errors));
 
-    if (on_level) on_level(level, *space, sol);
     std::optional<double> estimator;
     next.reset();
     if (settings.adaptive) {
@@ -177,12 +178,14 @@ StudyResult run_study(const StudySettings& settings, const ProgressSink& progres
                     boundary_edges_of_kind(*space, settings.problem, BoundaryKind::simply_supported),
                     [g = settings.problem.laplacian](const Point2& x, const Point2&) { return g(x); });
       estimator = total_indicator(eta);
+      sol.indicators = eta;
       if (settings.tolerance > 0.0 && *estimator <= settings.tolerance) {
         progress(tag + "estimator " + std::to_string(*estimator) + " <= tolerance: stopping");
         result.stop_reason = "tolerance";
       } else if (level + 1 < settings.levels) {
         auto t1 = Clock::now();
         const std::vector<int> marked = dorfler_marking(eta, settings.marking);
+        sol.marked = marked;
         progress(tag + "estimator " + std::to_string(*estimator) + ", refining " + std::to_string(marked.size()) +
                  " of " + std::to_string(space->num_elements()) + " elements");
         SpacePtr refined;
@@ -203,6 +206,7 @@ StudyResult run_study(const StudySettings& settings, const ProgressSink& progres
           next = std::move(refined);
       }
     }
+    if (on_level) on_level(level, *space, sol);  // after marking: the outputs show η_K and the marked elements
     result.estimators.push_back(estimator);
     result.rows.push_back(sol.result);
     result.solver_methods.push_back(sol.solve.method);

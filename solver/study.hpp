@@ -32,7 +32,9 @@ struct StudySettings {
   SolverKind solver = SolverKind::cholmod;
   std::string output_dir;  ///< final destination of the results
   bool write_vtk = true;
-  int vtk_samples = 8;     ///< samples per element edge
+  int vtk_samples = 8;     ///< samples per element edge of linear sub-cells (output.vtk.samples)
+  bool vtk_last_level_only = false;  ///< output.vtk.levels: last (default all)
+  bool vtk_lagrange = true;          ///< output.vtk.cells: lagrange (default) or linear
   bool write_plot = true;
   ResourceLimits limits;   ///< the limits: section (defaults when absent)
 };
@@ -57,6 +59,8 @@ struct StudyResult {
   bool adaptive = false;
   /// Adaptive runs that ended before refinement.levels: "max_dofs", "tolerance" or why refinement failed.
   std::string stop_reason;
+  double t_vtk = 0;          ///< seconds spent writing VTK files (all levels)
+  double total_seconds = 0;  ///< wall time of the whole run, set by the caller that measures it
 };
 
 /// Called once a level is solved, before the next level is built: how the outputs (VTK files) see
