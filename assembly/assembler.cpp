@@ -1,5 +1,6 @@
 #include "assembly/parallel.hpp"
 #include "assembly/assembler.hpp"
+#include "config/progress.hpp"
 
 #include <memory>
 
@@ -24,7 +25,7 @@ void Assembler::for_each_element(unsigned flags, Work&& work) const {
     for (const std::vector<int>& group : colours_) {
       const int m = static_cast<int>(group.size());
 #pragma omp for schedule(dynamic, 16)
-      for (int k = 0; k < m; ++k) work(group[k], ev, scratch);
+      for (int k = 0; k < m; ++k) work(group[k], ev, scratch), progress_tick();
     }
   }
 }
@@ -78,6 +79,7 @@ Eigen::VectorXd Assembler::load(const ScalarField& f, int quad_degree) const {
 #pragma omp for schedule(dynamic, 16)
       for (int k = 0; k < m; ++k) {
         const int e = group[k];
+        progress_tick();
         const RulePtr rule_ptr = space_.quadrature(e, quad_degree);  // keeps the rule alive
         const QuadratureRule& rule = *rule_ptr;
         evaluator->evaluate_geometry(e, rule, geometry);

@@ -1,5 +1,6 @@
 #include "assembly/parallel.hpp"
 #include "assembly/error_norms.hpp"
+#include "config/progress.hpp"
 
 #include <cmath>
 
@@ -25,6 +26,7 @@ ErrorNorms error_norms(const Space& space, const Eigen::VectorXd& coefficients, 
     Eigen::VectorXd jxw;
 #pragma omp for schedule(dynamic, 16)
     for (int e = 0; e < ne; ++e) {
+      progress_tick();
       const RulePtr rule_ptr = space.quadrature(e, quad_degree);  // keeps the rule alive
       const QuadratureRule& rule = *rule_ptr;
       evaluator->evaluate_function(e, rule, coefficients, flags, geometry, uh);

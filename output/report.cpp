@@ -79,6 +79,10 @@ std::string form_as_configured(const ProblemSpec& problem) {
 
 }  // namespace
 
+bool has_errors(const std::vector<LevelResult>& rows) {
+  return std::any_of(rows.begin(), rows.end(), [](const LevelResult& r) { return r.l2 || r.h1 || r.h2; });
+}
+
 void write_convergence_csv(const std::vector<LevelResult>& rows, const std::string& filename) {
   std::ofstream out = open_for_writing(filename);
   out << "level,h,dofs,l2,h1,h2,rate_l2,rate_h1,rate_h2,t_assemble,t_solve,free_dofs,t_space,t_errors,g1_jump,rate_dofs_l2,rate_dofs_h1,rate_dofs_h2\n";
@@ -102,17 +106,18 @@ std::string format_convergence_table(const std::vector<LevelResult>& rows, bool 
   char line[256];
   // Against DOFs, "rate" is log(e_prev/e)/log(N/N_prev): h^k corresponds to N^(k/2) in 2D.
   const char* rate_label = rates_against_dofs ? "rate/N" : "rate";
-  std::snprintf(line, sizeof line, "%5s %10s %8s %11s %6s %11s %6s %11s %6s %9s %9s", "level", "h", "dofs", "L2",
-                rate_label, "H1-semi", rate_label, "H2-semi", rate_label, "assemble", "solve");
+  std::snprintf(line, sizeof line, "%5s %10s %8s %11s %6s %11s %6s %11s %6s %9s %9s %9s %9s", "level", "h", "dofs",
+                "L2", rate_label, "H1-semi", rate_label, "H2-semi", rate_label, "t_space", "assemble", "solve",
+                "t_errors");
   s << line << (jumps ? "   g1_jump\n" : "\n");
   for (std::size_t i = 0; i < rows.size(); ++i) {
     const LevelResult& r = rows[i];
     const Rates q = rates_against_dofs ? dof_rates_at(rows, i) : rates_at(rows, i);
     auto e = [](std::optional<double> v) { return v ? number(v, "%.3e") : std::string("-"); };
     auto k = [](std::optional<double> v) { return v ? number(v, "%.2f") : std::string(""); };
-    std::snprintf(line, sizeof line, "%5d %10.4e %8d %11s %6s %11s %6s %11s %6s %8.3fs %8.3fs", r.level, r.h, r.dofs,
-                  e(r.l2).c_str(), k(q.l2).c_str(), e(r.h1).c_str(), k(q.h1).c_str(), e(r.h2).c_str(),
-                  k(q.h2).c_str(), r.t_assemble, r.t_solve);
+    std::snprintf(line, sizeof line, "%5d %10.4e %8d %11s %6s %11s %6s %11s %6s %8.3fs %8.3fs %8.3fs %8.3fs", r.level,
+                  r.h, r.dofs, e(r.l2).c_str(), k(q.l2).c_str(), e(r.h1).c_str(), k(q.h1).c_str(), e(r.h2).c_str(),
+                  k(q.h2).c_str(), r.t_space, r.t_assemble, r.t_solve, r.t_errors);
     s << line;
     if (jumps) s << "  " << e(r.g1_jump);
     s << '\n';

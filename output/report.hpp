@@ -11,6 +11,9 @@
 
 namespace iga {
 
+/// True when some level has an error against an exact solution.
+bool has_errors(const std::vector<LevelResult>& rows);
+
 void write_convergence_csv(const std::vector<LevelResult>& rows, const std::string& filename);
 
 /// The convergence table as aligned text, one row per level, rates from consecutive levels.

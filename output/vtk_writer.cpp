@@ -30,6 +30,7 @@
 #include <memory>
 #include <stdexcept>
 
+#include "config/progress.hpp"
 #include "output/lagrange_cells.hpp"
 #include "output/point_merger.hpp"
 #include "spaces/space.hpp"
@@ -144,6 +145,8 @@ bool write_solution_vtu(const Space& space, const Eigen::VectorXd& coefficients,
   }
   const std::int64_t unmerged = layout.offset[num_elements];
 
+  // Ticks: one per element in each of the two evaluation passes.
+  const ProgressPhase phase("writing VTK", 2 * static_cast<std::int64_t>(num_elements));
   // Pass 2 (parallel): the physical points, not yet merged.
   std::vector<double> xyz(3 * unmerged);
   std::exception_ptr failure;
@@ -164,6 +167,7 @@ bool write_solution_vtu(const Space& space, const Eigen::VectorXd& coefficients,
     for (int e = 0; e < num_elements; ++e) {
       if (!evaluator) continue;
       try {
+        progress_tick();
         evaluator->evaluate_geometry(e, *layout.drawing[e].rule, geometry);
         const std::int64_t first = layout.offset[e];
         const int q = static_cast<int>(layout.offset[e + 1] - first);
@@ -242,6 +246,7 @@ bool write_solution_vtu(const Space& space, const Eigen::VectorXd& coefficients,
     for (int e = 0; e < num_elements; ++e) {
       if (!evaluator) continue;
       try {
+        progress_tick();
         evaluator->evaluate_function(e, *layout.drawing[e].rule, coefficients, flags, geometry, uh);
         const std::int64_t first = layout.offset[e];
         const int q = static_cast<int>(layout.offset[e + 1] - first);

@@ -10,6 +10,7 @@
 #include "solver/dorfler_marking.hpp"
 #include "solver/resource_checks.hpp"
 #include "config/errors.hpp"
+#include "config/progress.hpp"
 #include "solver/solve_problem.hpp"
 #include "spaces/space_factory.hpp"
 
@@ -32,21 +33,26 @@ OptimalRates optimal_rates(Pde pde, int degree) {
 }
 
 StudySettings parse_study(const ConfigNode& root, const std::string& config_path, int levels_override,
-                          const std::string& output_override) {
-  root.check_keys({"problem", "domain", "space", "refinement", "solver", "output", "limits"});
-  StudySettings s(root, parse_problem(root["problem"]));
+                          const std::string& output_override, const ConfigNode* space_block,
+                          const ConfigNode* domain_block) {
+  root.check_keys({"problem", "domain", "space", "spaces", "refinement", "solver", "output", "limits"});
+  if (!space_block && root.has("spaces") && !root.has("space"))
+    root["spaces"].fail("a config with spaces: is a comparison; run it with iga-run (each space block is one study)");
+  const ConfigNode space_node = space_block ? *space_block : root["space"];
+  const ConfigNode domain_node = domain_block ? *domain_block : root["domain"];
+  StudySettings s(root, parse_problem(root["problem"]), space_node, domain_node);
   s.limits = parse_limits(root.find("limits"));
   // Domain, space and boundary part names are validated on the coarsest space (cheap), so that
   // every input error surfaces before the study starts; what it asks for is checked first.
-  check_space_request(root["space"], s.limits);
-  const SpacePtr coarse = make_space(root["domain"], root["space"], 0);
+  check_space_request(space_node, s.limits);
+  const SpacePtr coarse = make_space(domain_node, space_node, 0);
   check_boundary_parts(*coarse, s.problem);
   if ((s.problem.pde == Pde::laplace_beltrami) != (coarse->ambient_dimension() == 3))
     root["problem"]["pde"].fail(s.problem.pde == Pde::laplace_beltrami
                                     ? "laplace_beltrami needs a surface in 3D (domain.type: surface, space.type: surface)"
                                     : "a surface in 3D takes pde: laplace_beltrami");
   if (s.problem.pde == Pde::biharmonic && coarse->continuity() < 1)
-    root["space"].fail("the biharmonic problem needs a C1 (H2-conforming) space; this " + coarse->type() +
+    space_node.fail("the biharmonic problem needs a C1 (H2-conforming) space; this " + coarse->type() +
                        " space is only C" + std::to_string(coarse->continuity()) +
                        " (raise space.degree/space.regularity)");
 
@@ -96,14 +102,14 @@ StudySettings parse_study(const ConfigNode& root, const std::string& config_path
 
   // Every level's size before the study starts: level 0 as built, the others estimated from it.
   if (coarse->degree() > s.limits.max_degree)  // spaces whose degree is not the key `degree`
-    root["space"].fail("the " + coarse->type() + " space has degree " + std::to_string(coarse->degree()) +
+    space_node.fail("the " + coarse->type() + " space has degree " + std::to_string(coarse->degree()) +
                        ", more than limits.max_degree = " + std::to_string(s.limits.max_degree) +
                        how_to_raise("max_degree"));
   const SpaceSize level0 = measure(*coarse);
-  check_size(level0, s.limits, root["space"], "level 0");
+  check_size(level0, s.limits, space_node, "level 0");
   if (!s.adaptive) {
     const auto levels_node = root.find("refinement") ? root["refinement"].find("levels") : std::nullopt;
-    const ConfigNode& blame = levels_node && levels_override <= 0 ? *levels_node : root["space"];
+    const ConfigNode& blame = levels_node && levels_override <= 0 ? *levels_node : space_node;
     for (int level = 1; level < s.levels; ++level)
       check_size(uniform_estimate(level0, level), s.limits, blame,
                  "level " + std::to_string(level) + " (estimated from level 0)");
@@ -136,12 +142,37 @@ StudySettings parse_study(const ConfigNode& root, const std::string& config_path
     if (auto plot = output->find("plot")) s.write_plot = plot->as_bool();
   }
   if (!output_override.empty()) s.output_dir = output_override;
+  s.space_label = coarse->type() + "-p" + std::to_string(coarse->degree());
   return s;
+}
+
+std::vector<StudySettings> parse_studies(const ConfigNode& root, const std::string& config_path, int levels_override,
+                                         const std::string& output_override) {
+  const auto spaces = root.find("spaces");
+  if (!spaces) return {parse_study(root, config_path, levels_override, output_override)};
+  if (root.has("space")) root["space"].fail("give either space: (one study) or spaces: (a comparison), not both");
+  if (!spaces->is_sequence() || spaces->items().empty())
+    spaces->fail("spaces: must be a list of space blocks, e.g. [{type: bspline, degree: 3}, {type: ws4}]");
+  std::vector<StudySettings> studies;
+  for (const ConfigNode& item : spaces->items()) {
+    // An item is a space block, or {space: ..., domain: ...} for a space that needs its own
+    // description of the domain (e.g. a multi-patch layout of the same square).
+    if (item.is_map() && item.has("space")) {
+      item.check_keys({"space", "domain"});
+      const ConfigNode block = item["space"];
+      const std::optional<ConfigNode> domain = item.find("domain");
+      studies.push_back(parse_study(root, config_path, levels_override, output_override, &block,
+                                    domain ? &*domain : nullptr));
+    } else {
+      studies.push_back(parse_study(root, config_path, levels_override, output_override, &item));
+    }
+  }
+  return studies;
 }
 
 StudyResult run_study(const StudySettings& settings, const ProgressSink& progress, const LevelSink& on_level) {
   StudyResult result;
-  const ConfigNode domain = settings.root["domain"], space_node = settings.root["space"];
+  const ConfigNode domain = settings.domain, space_node = settings.space;
   const ExactSolution exact = settings.problem.exact_solution();
   result.adaptive = settings.adaptive;
   SpacePtr next;  // adaptive: the refined space for the next level
@@ -150,7 +181,10 @@ StudyResult run_study(const StudySettings& settings, const ProgressSink& progres
     const std::string tag = "[level " + std::to_string(level) + "] ";
     progress(tag + "building space");
     auto t0 = Clock::now();
-    const SpacePtr space = next ? next : make_space(domain, space_node, settings.adaptive ? 0 : level);
+    const SpacePtr space = next ? next : [&] {
+      const ProgressPhase phase("building space", 0);
+      return make_space(domain, space_node, settings.adaptive ? 0 : level);
+    }();
     const double t_space = seconds_since(t0) + t_next;
     check_size(measure(*space), settings.limits, space_node, "level " + std::to_string(level));  // before assembly
     progress(tag + "space: " + std::to_string(space->dimension()) + " dofs, " +

@@ -18,10 +18,16 @@ namespace iga {
 
 /// Everything a study needs, validated from the config (and command-line overrides).
 struct StudySettings {
-  StudySettings(ConfigNode root_node, ProblemSpec problem_spec)
-      : root(std::move(root_node)), problem(std::move(problem_spec)) {}
+  StudySettings(ConfigNode root_node, ProblemSpec problem_spec, ConfigNode space_node, ConfigNode domain_node)
+      : root(std::move(root_node)),
+        problem(std::move(problem_spec)),
+        space(std::move(space_node)),
+        domain(std::move(domain_node)) {}
   ConfigNode root;
   ProblemSpec problem;
+  ConfigNode space;         ///< the space block: root["space"], or one item of root["spaces"]
+  ConfigNode domain;        ///< the domain block: root["domain"], or the item's own in a spaces: list
+  std::string space_label;  ///< "<type>-p<degree>", names the space in comparisons
   int levels = 4;          ///< number of levels solved: 0 .. levels-1
   /// refinement.type: uniform (level l = make_space(..., l)) or adaptive (level l+1 = the space of
   /// level l refined where Dörfler marking of the residual indicator says; Poisson and plates).
@@ -42,8 +48,15 @@ struct StudySettings {
 /// Parse and validate the whole config (all sections) before anything is computed, so a typo
 /// deep in the file fails before a long study starts. `levels_override` <= 0 means none.
 /// `config_path` gives the default output directory results/<config name>.
+/// `space_block` (default root["space"]) is the space to study, e.g. one item of root["spaces"].
 StudySettings parse_study(const ConfigNode& root, const std::string& config_path, int levels_override,
-                          const std::string& output_override);
+                          const std::string& output_override, const ConfigNode* space_block = nullptr,
+                          const ConfigNode* domain_block = nullptr);
+
+/// One study per space: the config's `space:` block, or each block of its `spaces:` list (a
+/// comparison of spaces on one problem). All are validated before any is run.
+std::vector<StudySettings> parse_studies(const ConfigNode& root, const std::string& config_path, int levels_override,
+                                         const std::string& output_override);
 
 
 struct StudyResult {
