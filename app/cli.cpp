@@ -67,9 +67,9 @@ StudyResult run_into(const StudySettings& settings, const std::string& config_pa
   const std::filesystem::path dir(directory);
   StudyResult result = run_study_with_vtk(settings, directory, progress);
   progress("writing tables and plot");
-  write_convergence_csv(result.rows, (dir / "convergence.csv").string());
+  write_convergence_csv(result.rows, (dir / "convergence.csv").string(), result.adaptive);
   if (settings.write_plot) plot_convergence(result.rows, result.expected, plot_title(settings, result),
-                                            (dir / "convergence.svg").string());
+                                            (dir / "convergence.svg").string(), result.adaptive);
   result.total_seconds = std::chrono::duration<double>(Clock::now() - t_start).count();
   write_summary_json(settings, result, (dir / "summary.json").string());
 

@@ -1,6 +1,7 @@
 #include "output/report.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -79,13 +80,30 @@ std::string form_as_configured(const ProblemSpec& problem) {
 
 }  // namespace
 
+bool RoundOffFloor::any() const {
+  for (const auto* v : {&l2, &h1, &h2})
+    if (std::find(v->begin(), v->end(), true) != v->end()) return true;
+  return false;
+}
+
+RoundOffFloor round_off_levels(const std::vector<LevelResult>& rows, bool adaptive) {
+  std::vector<double> x;
+  std::vector<std::optional<double>> l2, h1, h2;
+  for (const LevelResult& r : rows) {
+    x.push_back(adaptive ? 1.0 / std::sqrt(std::max(1, r.dofs)) : r.h);
+    l2.push_back(r.l2), h1.push_back(r.h1), h2.push_back(r.h2);
+  }
+  return {round_off_floor(x, l2), round_off_floor(x, h1), round_off_floor(x, h2)};
+}
+
 bool has_errors(const std::vector<LevelResult>& rows) {
   return std::any_of(rows.begin(), rows.end(), [](const LevelResult& r) { return r.l2 || r.h1 || r.h2; });
 }
 
-void write_convergence_csv(const std::vector<LevelResult>& rows, const std::string& filename) {
+void write_convergence_csv(const std::vector<LevelResult>& rows, const std::string& filename, bool adaptive) {
   std::ofstream out = open_for_writing(filename);
-  out << "level,h,dofs,l2,h1,h2,rate_l2,rate_h1,rate_h2,t_assemble,t_solve,free_dofs,t_space,t_errors,g1_jump,rate_dofs_l2,rate_dofs_h1,rate_dofs_h2\n";
+  const RoundOffFloor floor = round_off_levels(rows, adaptive);
+  out << "level,h,dofs,l2,h1,h2,rate_l2,rate_h1,rate_h2,t_assemble,t_solve,free_dofs,t_space,t_errors,g1_jump,rate_dofs_l2,rate_dofs_h1,rate_dofs_h2,floor_l2,floor_h1,floor_h2\n";
   for (std::size_t i = 0; i < rows.size(); ++i) {
     const LevelResult& r = rows[i];
     const Rates q = rates_at(rows, i);
@@ -95,13 +113,15 @@ void write_convergence_csv(const std::vector<LevelResult>& rows, const std::stri
         << number(r.t_solve, "%.6f") << ',' << r.free_dofs << ',' << number(r.t_space, "%.6f") << ','
         << number(r.t_errors, "%.6f") << ',' << number(r.g1_jump, "%.3e");
     const Rates d = dof_rates_at(rows, i);
-    out << ',' << number(d.l2, "%.4f") << ',' << number(d.h1, "%.4f") << ',' << number(d.h2, "%.4f") << '\n';
+    out << ',' << number(d.l2, "%.4f") << ',' << number(d.h1, "%.4f") << ',' << number(d.h2, "%.4f") << ','
+        << floor.l2[i] << ',' << floor.h1[i] << ',' << floor.h2[i] << '\n';
   }
 }
 
 std::string format_convergence_table(const std::vector<LevelResult>& rows, bool rates_against_dofs) {
   // The gradient-jump column appears only for spaces that compute it.
   const bool jumps = std::any_of(rows.begin(), rows.end(), [](const LevelResult& r) { return r.g1_jump.has_value(); });
+  const RoundOffFloor floor = round_off_levels(rows, rates_against_dofs);
   std::ostringstream s;
   char line[256];
   // Against DOFs, "rate" is log(e_prev/e)/log(N/N_prev): h^k corresponds to N^(k/2) in 2D.
@@ -114,14 +134,17 @@ std::string format_convergence_table(const std::vector<LevelResult>& rows, bool 
     const LevelResult& r = rows[i];
     const Rates q = rates_against_dofs ? dof_rates_at(rows, i) : rates_at(rows, i);
     auto e = [](std::optional<double> v) { return v ? number(v, "%.3e") : std::string("-"); };
-    auto k = [](std::optional<double> v) { return v ? number(v, "%.2f") : std::string(""); };
+    auto k = [&](std::optional<double> v, const std::vector<bool>& at_floor) {
+      return v ? number(v, "%.2f") + (at_floor[i] ? "*" : "") : std::string("");
+    };
     std::snprintf(line, sizeof line, "%5d %10.4e %8d %11s %6s %11s %6s %11s %6s %8.3fs %8.3fs %8.3fs %8.3fs", r.level,
-                  r.h, r.dofs, e(r.l2).c_str(), k(q.l2).c_str(), e(r.h1).c_str(), k(q.h1).c_str(), e(r.h2).c_str(),
-                  k(q.h2).c_str(), r.t_space, r.t_assemble, r.t_solve, r.t_errors);
+                  r.h, r.dofs, e(r.l2).c_str(), k(q.l2, floor.l2).c_str(), e(r.h1).c_str(), k(q.h1, floor.h1).c_str(),
+                  e(r.h2).c_str(), k(q.h2, floor.h2).c_str(), r.t_space, r.t_assemble, r.t_solve, r.t_errors);
     s << line;
     if (jumps) s << "  " << e(r.g1_jump);
     s << '\n';
   }
+  if (floor.any()) s << "* round-off floor: the error stopped decreasing; left out of the least-squares rates\n";
   return s.str();
 }
 
@@ -177,13 +200,25 @@ void write_summary_json(const StudySettings& settings, const StudyResult& result
     h2.push_back(r.h2);
   }
   j["levels"] = levels;
-  j["least_squares_rates"] = {{"l2", optional_json(least_squares_rate(h, l2))},
-                              {"h1", optional_json(least_squares_rate(h, h1))},
-                              {"h2", optional_json(least_squares_rate(h, h2))}};
+  const RoundOffFloor floor = round_off_levels(result.rows, result.adaptive);
+  j["least_squares_rates"] = {{"l2", optional_json(least_squares_rate(h, l2, floor.l2))},
+                              {"h1", optional_json(least_squares_rate(h, h1, floor.h1))},
+                              {"h2", optional_json(least_squares_rate(h, h2, floor.h2))}};
+  // Levels at the round-off floor, per norm: left out of both least-squares fits.
+  auto floor_levels = [&](const std::vector<bool>& f) {
+    json levels_at_floor = json::array();
+    for (std::size_t i = 0; i < f.size(); ++i)
+      if (f[i]) levels_at_floor.push_back(result.rows[i].level);
+    return levels_at_floor;
+  };
+  j["round_off_floor"] = {{"l2", floor_levels(floor.l2)},
+                          {"h1", floor_levels(floor.h1)},
+                          {"h2", floor_levels(floor.h2)},
+                          {"excluded_from_least_squares", true}};
   // e ~ N^(-rate): the slope against 1/N.
-  j["least_squares_rates_dofs"] = {{"l2", optional_json(least_squares_rate(inverse_dofs, l2))},
-                                   {"h1", optional_json(least_squares_rate(inverse_dofs, h1))},
-                                   {"h2", optional_json(least_squares_rate(inverse_dofs, h2))}};
+  j["least_squares_rates_dofs"] = {{"l2", optional_json(least_squares_rate(inverse_dofs, l2, floor.l2))},
+                                   {"h1", optional_json(least_squares_rate(inverse_dofs, h1, floor.h1))},
+                                   {"h2", optional_json(least_squares_rate(inverse_dofs, h2, floor.h2))}};
   j["refinement"] = result.adaptive ? "adaptive" : "uniform";
   if (!result.stop_reason.empty()) j["adaptive_stop_reason"] = result.stop_reason;
   j["expected_rates"] = {{"l2", result.expected.l2}, {"h1", result.expected.h1}, {"h2", result.expected.h2}};

@@ -11,13 +11,23 @@
 
 namespace iga {
 
+/// Levels at the round-off floor of each norm (solver/level_result.hpp: round_off_floor), measured
+/// against h, or against N^(-1/2) in adaptive studies.
+struct RoundOffFloor {
+  std::vector<bool> l2, h1, h2;
+  bool any() const;
+};
+RoundOffFloor round_off_levels(const std::vector<LevelResult>& rows, bool adaptive);
+
 /// True when some level has an error against an exact solution.
 bool has_errors(const std::vector<LevelResult>& rows);
 
-void write_convergence_csv(const std::vector<LevelResult>& rows, const std::string& filename);
+/// Columns floor_l2, floor_h1, floor_h2 (1 at the round-off floor) follow the documented ones.
+void write_convergence_csv(const std::vector<LevelResult>& rows, const std::string& filename, bool adaptive = false);
 
 /// The convergence table as aligned text, one row per level, rates from consecutive levels.
 /// With `rates_against_dofs` (adaptive studies) the rate columns are log(e_prev/e)/log(N/N_prev).
+/// Rates of levels at the round-off floor carry a '*', explained below the table.
 std::string format_convergence_table(const std::vector<LevelResult>& rows, bool rates_against_dofs = false);
 
 /// Config echo, space and parameters, rows, least-squares rates, timings.

@@ -30,7 +30,15 @@ struct OptimalRates {
 /// Rate between two rows: log(e_prev / e) / log(h_prev / h); nullopt if either error is missing.
 std::optional<double> rate(std::optional<double> e_prev, std::optional<double> e, double h_prev, double h);
 
-/// Least-squares slope of log(e) against log(h) over all rows with an error.
-std::optional<double> least_squares_rate(const std::vector<double>& h, const std::vector<std::optional<double>>& e);
+/// Least-squares slope of log(e) against log(h) over all rows with an error (rows whose `skip`
+/// entry is true are left out; `skip` may be empty).
+std::optional<double> least_squares_rate(const std::vector<double>& h, const std::vector<std::optional<double>>& e,
+                                         const std::vector<bool>& skip = {});
+
+/// Levels at the round-off floor: from the first level whose error stops decreasing (its rate
+/// below half the previous one and below 1) after a clean rate (>= 1) and far below the coarsest
+/// error (1e-4 of it), to the last level. Such levels measure round-off, not discretization.
+/// `x` is h (or 1/N for rates against DOFs); one flag per row.
+std::vector<bool> round_off_floor(const std::vector<double>& x, const std::vector<std::optional<double>>& e);
 
 }  // namespace iga
