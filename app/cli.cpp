@@ -67,14 +67,15 @@ StudyResult run_into(const StudySettings& settings, const std::string& config_pa
   const std::filesystem::path dir(directory);
   StudyResult result = run_study_with_vtk(settings, directory, progress);
   progress("writing tables and plot");
-  write_convergence_csv(result.rows, (dir / "convergence.csv").string(), result.adaptive);
+  write_convergence_csv(result.rows, (dir / "convergence.csv").string(), result.adaptive,
+                        functional_names(settings));
   if (settings.write_plot) plot_convergence(result.rows, result.expected, plot_title(settings, result),
                                             (dir / "convergence.svg").string(), result.adaptive);
   result.total_seconds = std::chrono::duration<double>(Clock::now() - t_start).count();
   write_summary_json(settings, result, (dir / "summary.json").string());
 
   std::cout << result.space_type << " / " << to_string(settings.problem.pde) << " — " << config_path << '\n'
-            << format_convergence_table(result.rows, result.adaptive);
+            << format_convergence_table(result.rows, result.adaptive, functional_names(settings));
   if (!has_errors(result.rows)) {
     // Nothing to compare with: no claim about rates (the functionals and differences show convergence).
   } else if (result.adaptive) {  // optimal order k in h is k/2 in the number of DOFs N (2D)

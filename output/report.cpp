@@ -100,10 +100,72 @@ bool has_errors(const std::vector<LevelResult>& rows) {
   return std::any_of(rows.begin(), rows.end(), [](const LevelResult& r) { return r.l2 || r.h1 || r.h2; });
 }
 
-void write_convergence_csv(const std::vector<LevelResult>& rows, const std::string& filename, bool adaptive) {
+std::vector<std::string> functional_names(const StudySettings& settings) {
+  std::vector<std::string> names;
+  for (const FunctionalSpec& f : settings.functionals) names.push_back(f.name);
+  return names;
+}
+
+namespace {
+
+std::vector<double> mesh_sizes(const std::vector<LevelResult>& rows) {
+  std::vector<double> h;
+  for (const LevelResult& r : rows) h.push_back(r.h);
+  return h;
+}
+
+/// Values of functional k over the rows.
+std::vector<double> functional_values(const std::vector<LevelResult>& rows, std::size_t k) {
+  std::vector<double> v;
+  for (const LevelResult& r : rows) v.push_back(k < r.functionals.size() ? r.functionals[k] : NAN);
+  return v;
+}
+
+/// The table of a study without exact solution.
+std::string format_difference_table(const std::vector<LevelResult>& rows, const std::vector<std::string>& names) {
+  std::ostringstream s;
+  char line[256];
+  std::snprintf(line, sizeof line, "%5s %10s %8s %14s %14s %6s", "level", "h", "dofs", "energy", "|u_l-u_l-1|_a",
+                "rate");
+  s << line;
+  for (const std::string& n : names) {
+    std::snprintf(line, sizeof line, " %16s %6s", n.substr(0, 16).c_str(), "order");
+    s << line;
+  }
+  s << "   t_space  assemble     solve\n";
+  const std::vector<double> h = mesh_sizes(rows);
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    const LevelResult& r = rows[i];
+    const auto q = i > 0 ? rate(rows[i - 1].energy_difference, r.energy_difference, rows[i - 1].h, r.h) : std::nullopt;
+    std::snprintf(line, sizeof line, "%5d %10.4e %8d %14s %14s %6s", r.level, r.h, r.dofs,
+                  r.energy ? number(r.energy, "%.8e").c_str() : "-",
+                  r.energy_difference ? number(r.energy_difference, "%.3e").c_str() : "-",
+                  q ? number(q, "%.2f").c_str() : "");
+    s << line;
+    for (std::size_t k = 0; k < names.size(); ++k) {
+      const std::vector<double> v = functional_values(rows, k);
+      const auto order = richardson_order(v, h, i);
+      std::snprintf(line, sizeof line, " %16.9e %6s", v[i], order ? number(order, "%.2f").c_str() : "");
+      s << line;
+    }
+    std::snprintf(line, sizeof line, " %8.3fs %8.3fs %8.3fs\n", r.t_space, r.t_assemble, r.t_solve);
+    s << line;
+  }
+  s << "no exact solution: |u_l-u_l-1|_a = |E_l - E_l-1|^1/2 (energy E = a(u_h,u_h); exact for nested spaces with "
+       "homogeneous essential data); orders of functionals from three levels (Richardson)\n";
+  return s.str();
+}
+
+}  // namespace
+
+void write_convergence_csv(const std::vector<LevelResult>& rows, const std::string& filename, bool adaptive,
+                           const std::vector<std::string>& functional_names) {
   std::ofstream out = open_for_writing(filename);
   const RoundOffFloor floor = round_off_levels(rows, adaptive);
-  out << "level,h,dofs,l2,h1,h2,rate_l2,rate_h1,rate_h2,t_assemble,t_solve,free_dofs,t_space,t_errors,g1_jump,rate_dofs_l2,rate_dofs_h1,rate_dofs_h2,floor_l2,floor_h1,floor_h2\n";
+  out << "level,h,dofs,l2,h1,h2,rate_l2,rate_h1,rate_h2,t_assemble,t_solve,free_dofs,t_space,t_errors,g1_jump,rate_dofs_l2,rate_dofs_h1,rate_dofs_h2,floor_l2,floor_h1,floor_h2,energy,energy_difference,rate_energy_difference";
+  for (const std::string& n : functional_names) out << ',' << n << ",order_" << n;
+  out << '\n';
+  const std::vector<double> h = mesh_sizes(rows);
   for (std::size_t i = 0; i < rows.size(); ++i) {
     const LevelResult& r = rows[i];
     const Rates q = rates_at(rows, i);
@@ -114,11 +176,21 @@ void write_convergence_csv(const std::vector<LevelResult>& rows, const std::stri
         << number(r.t_errors, "%.6f") << ',' << number(r.g1_jump, "%.3e");
     const Rates d = dof_rates_at(rows, i);
     out << ',' << number(d.l2, "%.4f") << ',' << number(d.h1, "%.4f") << ',' << number(d.h2, "%.4f") << ','
-        << floor.l2[i] << ',' << floor.h1[i] << ',' << floor.h2[i] << '\n';
+        << floor.l2[i] << ',' << floor.h1[i] << ',' << floor.h2[i] << ',' << number(r.energy, "%.15e") << ','
+        << number(r.energy_difference, "%.10e") << ','
+        << number(i > 0 ? rate(rows[i - 1].energy_difference, r.energy_difference, rows[i - 1].h, r.h) : std::nullopt,
+                  "%.4f");
+    for (std::size_t k = 0; k < functional_names.size(); ++k) {
+      const std::vector<double> v = functional_values(rows, k);
+      out << ',' << number(v[i], "%.15e") << ',' << number(richardson_order(v, h, i), "%.4f");
+    }
+    out << '\n';
   }
 }
 
-std::string format_convergence_table(const std::vector<LevelResult>& rows, bool rates_against_dofs) {
+std::string format_convergence_table(const std::vector<LevelResult>& rows, bool rates_against_dofs,
+                                     const std::vector<std::string>& functional_names) {
+  if (!has_errors(rows) && !rows.empty()) return format_difference_table(rows, functional_names);
   // The gradient-jump column appears only for spaces that compute it.
   const bool jumps = std::any_of(rows.begin(), rows.end(), [](const LevelResult& r) { return r.g1_jump.has_value(); });
   const RoundOffFloor floor = round_off_levels(rows, rates_against_dofs);
@@ -191,6 +263,8 @@ void write_summary_json(const StudySettings& settings, const StudyResult& result
                       {"rate_dofs_h1", optional_json(d.h1)},
                       {"rate_dofs_h2", optional_json(d.h2)},
                       {"estimator", i < result.estimators.size() ? optional_json(result.estimators[i]) : json(nullptr)},
+                      {"energy", optional_json(r.energy)},
+                      {"energy_difference", optional_json(r.energy_difference)},
                       {"timings", {{"space", r.t_space}, {"assemble", r.t_assemble}, {"solve", r.t_solve},
                                    {"errors", r.t_errors}}}});
     h.push_back(r.h);
@@ -198,6 +272,14 @@ void write_summary_json(const StudySettings& settings, const StudyResult& result
     l2.push_back(r.l2);
     h1.push_back(r.h1);
     h2.push_back(r.h2);
+  }
+  // Functionals per level with their Richardson orders.
+  const std::vector<double> hs = mesh_sizes(result.rows);
+  for (std::size_t k = 0; k < settings.functionals.size(); ++k) {
+    const std::vector<double> v = functional_values(result.rows, k);
+    for (std::size_t i = 0; i < levels.size(); ++i)
+      levels[i]["functionals"][settings.functionals[k].name] = {{"value", v[i]},
+                                                               {"order", optional_json(richardson_order(v, hs, i))}};
   }
   j["levels"] = levels;
   const RoundOffFloor floor = round_off_levels(result.rows, result.adaptive);
@@ -221,7 +303,11 @@ void write_summary_json(const StudySettings& settings, const StudyResult& result
                                    {"h2", optional_json(least_squares_rate(inverse_dofs, h2, floor.h2))}};
   j["refinement"] = result.adaptive ? "adaptive" : "uniform";
   if (!result.stop_reason.empty()) j["adaptive_stop_reason"] = result.stop_reason;
-  j["expected_rates"] = {{"l2", result.expected.l2}, {"h1", result.expected.h1}, {"h2", result.expected.h2}};
+  // Rates are expected of errors against an exact solution; without one there is no such claim.
+  if (has_errors(result.rows))
+    j["expected_rates"] = {{"l2", result.expected.l2}, {"h1", result.expected.h1}, {"h2", result.expected.h2}};
+  else
+    j["expected_rates"] = nullptr;
   double total = result.t_vtk;
   for (const LevelResult& r : result.rows) total += r.t_space + r.t_assemble + r.t_solve + r.t_errors;
   j["t_vtk"] = result.t_vtk;

@@ -20,6 +20,13 @@ struct LevelResult {
   /// Largest gradient jump of the discrete solution across interior element edges
   /// (Space::max_gradient_jump; absent when the space does not compute it).
   std::optional<double> g1_jump;
+  /// Energy a(u_h, u_h) of the discrete solution (planar problems).
+  std::optional<double> energy;
+  /// |u_l − u_{l−1}|_a = |a(u_l, u_l) − a(u_{l−1}, u_{l−1})|^½: the energy norm of the change from
+  /// the previous level, exact for nested spaces with homogeneous essential data (Galerkin orthogonality).
+  std::optional<double> energy_difference;
+  /// Values of the study's functionals (output.functionals), in their order.
+  std::vector<double> functionals;
 };
 
 /// Expected convergence orders of the L2 error and the H1, H2 seminorm errors.

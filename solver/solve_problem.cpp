@@ -109,6 +109,7 @@ DiscreteSolution solve_problem(const Space& space, const ProblemSpec& problem, S
         return reduced_residual(A, b, constraints, x);
       });
   out.coefficients = expand_solution(u_free, constraints);
+  r.energy = out.coefficients.dot(A.high * out.coefficients);  // a(u_h, u_h), for studies without an exact solution
   phase.reset();
   r.t_solve = seconds_since(t0);
 

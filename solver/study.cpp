@@ -1,6 +1,7 @@
 #include "solver/study.hpp"
 
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 
@@ -123,7 +124,8 @@ StudySettings parse_study(const ConfigNode& root, const std::string& config_path
 
   s.output_dir = "results/" + std::filesystem::path(config_path).stem().string();
   if (auto output = root.find("output")) {
-    output->check_keys({"directory", "vtk", "plot"});
+    output->check_keys({"directory", "vtk", "plot", "functionals"});
+    if (auto functionals = output->find("functionals")) s.functionals = parse_functionals(*functionals, *coarse);
     if (auto dir = output->find("directory")) s.output_dir = dir->as_string();
     if (auto vtk = output->find("vtk")) {
       if (vtk->is_scalar()) {
@@ -196,6 +198,9 @@ StudyResult run_study(const StudySettings& settings, const ProgressSink& progres
                                          [&](const std::string& msg) { progress(tag + msg); });
     sol.result.level = level;
     sol.result.t_space = t_space;
+    if (!result.rows.empty() && result.rows.back().energy && sol.result.energy)
+      sol.result.energy_difference = std::sqrt(std::abs(*sol.result.energy - *result.rows.back().energy));
+    sol.result.functionals = evaluate_functionals(settings.functionals, *space, sol.coefficients);
     progress(tag + "done: assembled in " + format_seconds(sol.result.t_assemble) + ", solved (" + sol.solve.method + ") in " +
              format_seconds(sol.result.t_solve) + ", errors in " + format_seconds(sol.result.t_errors));
 

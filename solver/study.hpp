@@ -13,6 +13,7 @@
 #include "solver/linear_solver.hpp"
 #include "solver/problem.hpp"
 #include "solver/solve_problem.hpp"
+#include "solver/study_functionals.hpp"
 
 namespace iga {
 
@@ -43,6 +44,7 @@ struct StudySettings {
   bool vtk_lagrange = true;          ///< output.vtk.cells: lagrange (default) or linear
   bool write_plot = true;
   ResourceLimits limits;   ///< the limits: section (defaults when absent)
+  std::vector<FunctionalSpec> functionals;  ///< output.functionals, evaluated at every level
 };
 
 /// Parse and validate the whole config (all sections) before anything is computed, so a typo
