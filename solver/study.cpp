@@ -37,8 +37,9 @@ StudySettings parse_study(const ConfigNode& root, const std::string& config_path
                           const std::string& output_override, const ConfigNode* space_block,
                           const ConfigNode* domain_block) {
   root.check_keys({"problem", "domain", "space", "spaces", "refinement", "solver", "output", "limits"});
+  // A comparison (spaces:) asked for as one study: every space is validated, the first one returned.
   if (!space_block && root.has("spaces") && !root.has("space"))
-    root["spaces"].fail("a config with spaces: is a comparison; run it with iga-run (each space block is one study)");
+    return parse_studies(root, config_path, levels_override, output_override).front();
   const ConfigNode space_node = space_block ? *space_block : root["space"];
   const ConfigNode domain_node = domain_block ? *domain_block : root["domain"];
   StudySettings s(root, parse_problem(root["problem"]), space_node, domain_node);

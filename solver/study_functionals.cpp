@@ -70,16 +70,19 @@ std::vector<FunctionalSpec> parse_functionals(const ConfigNode& node, const Spac
   if (coarse.ambient_dimension() != 2) node.fail("functionals are available for planar problems only");
   for (const std::string& name : node.keys()) {
     const ConfigNode f = node[name];
-    f.check_keys({"point", "integral"});
+    // The entries are named by the user, so their keys are checked here rather than declared.
+    if (!f.is_map() || f.keys().size() != 1 || (!f.has("point") && !f.has("integral")))
+      f.fail("a functional is {point: [x, y]} or {integral: u}");
     FunctionalSpec spec;
     spec.name = name;
-    if (f.has("point") == f.has("integral")) f.fail("give one of point: [x, y] or integral: u");
+    if (name.empty() || name.find_first_of(",\" \t") != std::string::npos)
+      f.fail("a functional's name becomes a CSV column: no commas, quotes or spaces");
     if (f.has("point")) {
       spec.kind = FunctionalSpec::Kind::point;
       spec.point = f["point"].as_point();
       if (!locate_point(coarse, spec.point)) f["point"].fail("the point is not in the domain");
     } else {
-      f["integral"].as_choice({"u"});
+      if (f["integral"].as_string() != "u") f["integral"].fail("the integral functional is integral: u");
     }
     out.push_back(spec);
   }
