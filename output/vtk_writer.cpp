@@ -216,13 +216,34 @@ bool write_solution_vtu(const Space& space, const Eigen::VectorXd& coefficients,
   for (std::int64_t p = 0; p < unmerged; ++p)
     if (owner[p]) coordinates->SetTypedTuple(merged_id[p], std::array<float, 3>{float(xyz[3 * p]), float(xyz[3 * p + 1]),
                                                                                  float(xyz[3 * p + 2])}.data());
-  std::vector<double>().swap(xyz);
 
-  // Pass 4 (parallel): the fields. Every merged point is written by its owner alone.
+  // Pass 4 (parallel): the exact solution (and its derivatives, for the element errors) once per
+  // distinct point, not once per element sharing it: these expressions are the costly part.
   const bool surface = space.ambient_dimension() == 3;
   const bool has_exact = surface ? static_cast<bool>(options.exact3) : static_cast<bool>(options.exact.u);
   const bool has_gradient = !surface && has_exact && options.exact.has_gradient();
   const bool has_hessian = has_gradient && options.exact.has_hessian();
+  const int stride = (has_exact ? 1 : 0) + (has_gradient ? 2 : 0) + (has_hessian ? 3 : 0);
+  std::vector<double> exact_at(static_cast<std::size_t>(stride) * num_points);
+  if (has_exact) {
+#pragma omp parallel for schedule(static)
+    for (std::int64_t p = 0; p < unmerged; ++p) {
+      if (!owner[p]) continue;
+      try {
+        double* v = &exact_at[static_cast<std::size_t>(stride) * merged_id[p]];
+        const Point2 x(xyz[3 * p], xyz[3 * p + 1]);
+        v[0] = surface ? options.exact3(Eigen::Vector3d(xyz[3 * p], xyz[3 * p + 1], xyz[3 * p + 2])) : options.exact.u(x);
+        if (has_gradient) v[1] = options.exact.ux(x), v[2] = options.exact.uy(x);
+        if (has_hessian) v[3] = options.exact.uxx(x), v[4] = options.exact.uxy(x), v[5] = options.exact.uyy(x);
+      } catch (...) {
+        keep_failure();
+      }
+    }
+    if (failure) std::rethrow_exception(failure);
+  }
+  std::vector<double>().swap(xyz);
+
+  // Pass 5 (parallel): the fields. Every merged point is written by its owner alone.
   auto u = make_field("u", 1, num_points);
   auto grad_u = make_field("grad_u", 3, num_points);
   auto normals = make_field(surface ? "Normals" : "warp_normal", 3, num_points);
@@ -275,19 +296,17 @@ bool write_solution_vtu(const Space& space, const Eigen::VectorXd& coefficients,
             if (laplace_u) laplace_u->SetValue(p, static_cast<float>(uh.dxx(k) + uh.dyy(k)));
           }
           if (!has_exact) continue;
-          const Point2 x(geometry.x(0, k), geometry.x(1, k));
-          const double exact = ambient ? options.exact3(geometry.x3.col(k)) : options.exact.u(x);
+          const double* v = &exact_at[static_cast<std::size_t>(stride) * p];
+          const double exact = v[0];
           const double difference = uh.value(k) - exact;
           if (write) {
             u_exact->SetValue(p, static_cast<float>(exact));
             error->SetValue(p, static_cast<float>(difference));
           }
           sum_l2 += difference * difference;
-          if (has_gradient)
-            sum_h1 += std::pow(uh.dx(k) - options.exact.ux(x), 2) + std::pow(uh.dy(k) - options.exact.uy(x), 2);
+          if (has_gradient) sum_h1 += std::pow(uh.dx(k) - v[1], 2) + std::pow(uh.dy(k) - v[2], 2);
           if (has_hessian)
-            sum_h2 += std::pow(uh.dxx(k) - options.exact.uxx(x), 2) + 2 * std::pow(uh.dxy(k) - options.exact.uxy(x), 2) +
-                      std::pow(uh.dyy(k) - options.exact.uyy(x), 2);
+            sum_h2 += std::pow(uh.dxx(k) - v[3], 2) + 2 * std::pow(uh.dxy(k) - v[4], 2) + std::pow(uh.dyy(k) - v[5], 2);
         }
         if (q > 0) {
           // Mean |det J| times the reference area.
