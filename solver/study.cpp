@@ -40,13 +40,16 @@ StudySettings parse_study(const ConfigNode& root, const std::string& config_path
   // A comparison (spaces:) asked for as one study: every space is validated, the first one returned.
   if (!space_block && root.has("spaces") && !root.has("space"))
     return parse_studies(root, config_path, levels_override, output_override).front();
+  // In this order, so that of several mistakes the first section's is reported.
+  ProblemSpec problem = parse_problem(root["problem"]);
+  const ResourceLimits limits = parse_limits(root.find("limits"));
   const ConfigNode space_node = space_block ? *space_block : root["space"];
-  const ConfigNode domain_node = domain_block ? *domain_block : root["domain"];
-  StudySettings s(root, parse_problem(root["problem"]), space_node, domain_node);
-  s.limits = parse_limits(root.find("limits"));
   // Domain, space and boundary part names are validated on the coarsest space (cheap), so that
   // every input error surfaces before the study starts; what it asks for is checked first.
-  check_space_request(space_node, s.limits);
+  check_space_request(space_node, limits);
+  const ConfigNode domain_node = domain_block ? *domain_block : root["domain"];
+  StudySettings s(root, std::move(problem), space_node, domain_node);
+  s.limits = limits;
   const SpacePtr coarse = make_space(domain_node, space_node, 0);
   check_boundary_parts(*coarse, s.problem);
   if ((s.problem.pde == Pde::laplace_beltrami) != (coarse->ambient_dimension() == 3))

@@ -4,6 +4,7 @@
 #include <sys/wait.h>
 #include <vtkCellType.h>
 #include <vtkDataArray.h>
+#include <vtkCellData.h>
 #include <vtkPointData.h>
 #include <vtkSmartPointer.h>
 #include <vtkUnstructuredGrid.h>
@@ -132,6 +133,13 @@ void check_study(const fs::path& out, const std::string& name) {
     EXPECT_EQ(mesh->GetCellType(0), VTK_POLY_LINE);
     EXPECT_EQ(mesh->GetNumberOfCells(), summary["levels"][level]["elements"].get<int>()) << name;
     if (biharmonic) EXPECT_NE(pd->GetArray("laplace_u"), nullptr);
+    // Per-element errors, and for adaptive runs the indicator and the marked elements (of every
+    // level but possibly the last, where refinement may have stopped).
+    EXPECT_NE(grid->GetCellData()->GetArray("error_l2"), nullptr) << name;
+    if (summary["refinement"] == "adaptive" && level == 0) {
+      EXPECT_NE(grid->GetCellData()->GetArray("estimator"), nullptr) << name;
+      EXPECT_NE(grid->GetCellData()->GetArray("marked"), nullptr) << name;
+    }
     // The error field is small against the solution (the exact solutions are resolved).
     double range_u[2], range_e[2];
     pd->GetArray("u_exact")->GetRange(range_u);
