@@ -1,5 +1,6 @@
 #include "assembly/parallel.hpp"
 #include "assembly/assembler.hpp"
+#include "config/progress.hpp"
 
 #include <omp.h>
 
@@ -82,6 +83,7 @@ void Assembler::assemble(BilinearForm form, int quad_degree, Value* values) cons
       const int last = std::min(ne, first + block);
 #pragma omp for schedule(dynamic, 8)
       for (int e = first; e < last; ++e) {
+        progress_tick();
         Local& local = slots[e - first];
         std::vector<int>& dofs = slot_dofs[e - first];
         if (closed_form(space_, e, form, local)) {
@@ -136,6 +138,7 @@ Eigen::VectorXd Assembler::load(const BatchField& f, int quad_degree) const {
     Eigen::MatrixXd fx;
 #pragma omp for schedule(dynamic, 16)
     for (int e = 0; e < ne; ++e) {
+      progress_tick();
       const RulePtr rule_ptr = space_.quadrature(e, quad_degree);  // keeps the rule alive
       const QuadratureRule& rule = *rule_ptr;
       evaluator->evaluate_geometry(e, rule, geometry);

@@ -1,4 +1,5 @@
 #include "assembly/error_norms.hpp"
+#include "config/progress.hpp"
 
 #include <Eigen/Geometry>  // cross
 
@@ -31,6 +32,7 @@ std::array<double, N> sum_over_elements(const Space& space, const Eigen::VectorX
     std::array<double, N> sums{};
 #pragma omp for schedule(dynamic, 16) nowait
     for (int e = 0; e < ne; ++e) {
+      progress_tick();
       const RulePtr rule_ptr = space.quadrature(e, quad_degree);  // keeps the rule alive
       const QuadratureRule& rule = *rule_ptr;
       evaluator->evaluate_function(e, rule, coefficients, flags, geometry, uh);

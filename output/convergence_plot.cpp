@@ -9,6 +9,8 @@
 #include <optional>
 #include <stdexcept>
 
+#include "output/report.hpp"
+
 namespace iga {
 
 namespace {
@@ -25,7 +27,8 @@ struct Series {
   int colour;
   const char* symbol;
   int expected_rate;
-  std::vector<PLFLT> log_h, log_dofs, log_e;
+  std::vector<PLFLT> log_time, log_dofs, log_e;
+  std::vector<bool> at_floor;  ///< per point: at the round-off floor (drawn apart, not fitted)
 };
 
 /// Min and max of `values`, widened so PLplot gets a non-degenerate window with a margin.
@@ -40,11 +43,11 @@ std::pair<PLFLT, PLFLT> padded_range(const std::vector<PLFLT>& values, double ma
 /// Exponent text for PLplot: "3", "3/2".
 std::string half_power(int k) { return k % 2 == 0 ? std::to_string(k / 2) : std::to_string(k) + "/2"; }
 
-/// One panel: the series against x (log10 h or log10 DOFs) with reference lines
-/// e ~ x^(slope_sign * scale * expected_rate) drawn a factor 2 below the finest point of each series.
+/// One panel: the series against x (log10 DOFs or log10 seconds). Against DOFs, a dashed
+/// reference slope DOF^(-rate/2) per series starts just below the data at its finest clean level
+/// and runs back over the last levels, so it reads against the points it should match.
 void draw_panel(plstream& pls, const std::vector<Series>& series, bool against_dofs, const std::string& title) {
-  const double slope_scale = against_dofs ? -0.5 : 1.0;
-  auto xs_of = [&](const Series& s) -> const std::vector<PLFLT>& { return against_dofs ? s.log_dofs : s.log_h; };
+  auto xs_of = [&](const Series& s) -> const std::vector<PLFLT>& { return against_dofs ? s.log_dofs : s.log_time; };
 
   struct Line {
     std::vector<PLFLT> x, y;
@@ -56,12 +59,16 @@ void draw_panel(plstream& pls, const std::vector<Series>& series, bool against_d
     const auto& xs = xs_of(s);
     all_x.insert(all_x.end(), xs.begin(), xs.end());
     all_y.insert(all_y.end(), s.log_e.begin(), s.log_e.end());
-    if (xs.size() < 2 || s.expected_rate <= 0) continue;  // a slope needs two levels
-    // The finest level is the last row (smallest h, most DOFs).
-    const PLFLT x0 = xs.back(), y0 = s.log_e.back() - std::log10(2.0);
-    const double slope = slope_scale * s.expected_rate;
+    if (!against_dofs || s.expected_rate <= 0) continue;
+    // The finest level that is not at the round-off floor, and up to two levels before it.
+    int last = static_cast<int>(xs.size()) - 1;
+    while (last >= 0 && s.at_floor[last]) --last;
+    if (last < 1) continue;  // a slope needs two levels
+    const int first = std::max(0, last - 2);
+    const double slope = -0.5 * s.expected_rate;
+    const PLFLT x0 = xs[last], y0 = s.log_e[last] - 0.15;
     Line line;
-    for (PLFLT x : {*std::min_element(xs.begin(), xs.end()), *std::max_element(xs.begin(), xs.end())}) {
+    for (PLFLT x : {xs[first], x0}) {
       line.x.push_back(x);
       line.y.push_back(y0 + slope * (x - x0));
     }
@@ -70,13 +77,14 @@ void draw_panel(plstream& pls, const std::vector<Series>& series, bool against_d
   }
   auto [xmin, xmax] = padded_range(all_x, 0.08);
   auto [ymin, ymax] = padded_range(all_y, 0.05);
-  ymax += 0.5 * (ymax - ymin);  // headroom for the legend above the data
+  ymax += 0.3 * (ymax - ymin);  // headroom for the legend above the data
 
   pls.col0(kBlack);
   pls.lsty(1);
   pls.width(1.0);
   pls.env(xmin, xmax, ymin, ymax, 0, 30);  // 30: logarithmic x and y axes
-  pls.lab(against_dofs ? "degrees of freedom" : "mesh size h", "error", title.c_str());
+  pls.lab(against_dofs ? "degrees of freedom" : "time to solution: space + assembly + solve (s)", "error",
+          title.c_str());
 
   std::vector<std::string> texts;
   std::vector<PLINT> opts, text_colours, line_colours, line_styles, symbol_colours, symbol_numbers;
@@ -104,9 +112,16 @@ void draw_panel(plstream& pls, const std::vector<Series>& series, bool against_d
     pls.lsty(1);
     pls.line(n, xs.data(), s.log_e.data());
     pls.schr(0, kSymbolScale * kTextScale);
-    pls.string(n, xs.data(), s.log_e.data(), s.symbol);
+    std::vector<PLFLT> clean_x, clean_y, floor_x, floor_y;
+    for (std::size_t k = 0; k < xs.size(); ++k) {
+      (s.at_floor[k] ? floor_x : clean_x).push_back(xs[k]);
+      (s.at_floor[k] ? floor_y : clean_y).push_back(s.log_e[k]);
+    }
+    pls.string(static_cast<PLINT>(clean_x.size()), clean_x.data(), clean_y.data(), s.symbol);
+    if (!floor_x.empty()) pls.string(static_cast<PLINT>(floor_x.size()), floor_x.data(), floor_y.data(), "○");
     pls.schr(0, kTextScale);
     add_entry(s.label, PL_LEGEND_LINE | PL_LEGEND_SYMBOL, s.colour, 1, s.symbol);
+    if (!floor_x.empty()) add_entry(std::string(s.label) + ": round-off floor", PL_LEGEND_SYMBOL, s.colour, 1, "○");
   }
   for (std::size_t i = 0; i < series.size(); ++i) {
     if (!reference[i]) continue;
@@ -115,8 +130,7 @@ void draw_panel(plstream& pls, const std::vector<Series>& series, bool against_d
     pls.width(1.5);
     pls.lsty(2);  // dashed
     pls.line(2, reference[i]->x.data(), reference[i]->y.data());
-    const std::string text = against_dofs ? "DOF#u-" + half_power(s.expected_rate) + "#d"
-                                          : "h#u" + std::to_string(s.expected_rate) + "#d";
+    const std::string text = "DOF#u-" + half_power(s.expected_rate) + "#d  (h#u" + std::to_string(s.expected_rate) + "#d)";
     add_entry(text, PL_LEGEND_LINE, s.colour, 2, "");
   }
   pls.lsty(1);
@@ -137,24 +151,44 @@ void draw_panel(plstream& pls, const std::vector<Series>& series, bool against_d
 }  // namespace
 
 void plot_convergence(const std::vector<LevelResult>& rows, const OptimalRates& expected, const std::string& title,
-                      const std::string& filename) {
+                      const std::string& filename, bool adaptive) {
   std::vector<Series> series = {
-      {"L2 error", &LevelResult::l2, 2, "●", expected.l2, {}, {}, {}},
-      {"H1 error", &LevelResult::h1, 3, "■", expected.h1, {}, {}, {}},
-      {"H2 error", &LevelResult::h2, 4, "▲", expected.h2, {}, {}, {}},
+      {"||e||#dL2#u", &LevelResult::l2, 2, "●", expected.l2, {}, {}, {}, {}},
+      {"|e|#dH1#u", &LevelResult::h1, 3, "■", expected.h1, {}, {}, {}, {}},
+      {"|e|#dH2#u", &LevelResult::h2, 4, "▲", expected.h2, {}, {}, {}, {}},
   };
+  const RoundOffFloor floor = round_off_levels(rows, adaptive);
+  const std::vector<bool>* floors[] = {&floor.l2, &floor.h1, &floor.h2};
   bool any = false;
-  for (Series& s : series)
-    for (const LevelResult& row : rows) {
+  for (std::size_t n = 0; n < series.size(); ++n) {
+    Series& s = series[n];
+    for (std::size_t i = 0; i < rows.size(); ++i) {
+      const LevelResult& row = rows[i];
       const std::optional<double>& e = row.*s.error;
-      // Log axes: a zero error (exact reproduction) or a missing h has no place on them.
-      if (!e || !(*e > 0) || !std::isfinite(*e) || !(row.h > 0) || row.dofs <= 0) continue;
-      s.log_h.push_back(std::log10(row.h));
+      // Log axes: a zero error (exact reproduction) has no place on them.
+      if (!e || !(*e > 0) || !std::isfinite(*e) || row.dofs <= 0) continue;
       s.log_dofs.push_back(std::log10(static_cast<double>(row.dofs)));
+      // Levels faster than 0.1 ms sit at the axis floor.
+      s.log_time.push_back(std::log10(std::max(1e-4, row.t_space + row.t_assemble + row.t_solve)));
       s.log_e.push_back(std::log10(*e));
+      s.at_floor.push_back((*floors[n])[i]);
       any = true;
     }
-  if (!any) return;
+  }
+  if (!any) {
+    // No exact solution: the energy-norm change between levels shows the convergence instead.
+    Series d{"|u#dl#u-u#dl-1#u|#da#u", &LevelResult::energy_difference, 2, "●", 0, {}, {}, {}, {}};
+    for (const LevelResult& row : rows) {
+      const std::optional<double>& e = row.energy_difference;
+      if (!e || !(*e > 0) || !std::isfinite(*e) || row.dofs <= 0) continue;
+      d.log_dofs.push_back(std::log10(static_cast<double>(row.dofs)));
+      d.log_time.push_back(std::log10(std::max(1e-4, row.t_space + row.t_assemble + row.t_solve)));
+      d.log_e.push_back(std::log10(*e));
+      d.at_floor.push_back(false);
+    }
+    if (d.log_e.empty()) return;
+    series = {d};
+  }
 
   // PLplot exits the process when it cannot open its output file, so find out first.
   if (!std::ofstream(filename)) throw std::runtime_error("cannot write convergence plot '" + filename + "'");
@@ -175,8 +209,8 @@ void plot_convergence(const std::vector<LevelResult>& rows, const OptimalRates& 
     pls.scol0(4, 44, 160, 44);    // green
     pls.init();
     pls.schr(0, kTextScale);
-    draw_panel(pls, series, false, title);
     draw_panel(pls, series, true, title);
+    draw_panel(pls, series, false, title);
   }  // ~plstream ends the stream and closes the file
   if (error_code != 0) {
     if (std::filesystem::is_regular_file(filename)) std::filesystem::remove(filename);  // no half-written output

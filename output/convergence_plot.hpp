@@ -10,10 +10,12 @@
 
 namespace iga {
 
-/// Draw L2, H1 and H2 errors of `rows` against h (left panel) and DOFs (right panel), with dashed
-/// reference slopes h^{expected.l2}, h^{expected.h1}, h^{expected.h2}. Does nothing when no row
-/// has an error. Throws std::runtime_error if the file cannot be written.
+/// Draw the L2 error and the H1, H2 seminorm errors of `rows` against DOFs (left panel, with
+/// dashed reference slopes DOF^(-expected/2) = h^expected starting at the data) and against the
+/// time to solution (right panel); the y-range fits the data, levels at the round-off floor are
+/// drawn as open circles. Does nothing when no row has an error. Throws std::runtime_error if the
+/// file cannot be written.
 void plot_convergence(const std::vector<LevelResult>& rows, const OptimalRates& expected, const std::string& title,
-                      const std::string& filename);
+                      const std::string& filename, bool adaptive = false);
 
 }  // namespace iga

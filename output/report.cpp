@@ -1,6 +1,7 @@
 #include "output/report.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -81,9 +82,92 @@ std::string form_as_configured(const ProblemSpec& problem) {
 
 }  // namespace
 
-void write_convergence_csv(const std::vector<LevelResult>& rows, const std::string& filename) {
+bool RoundOffFloor::any() const {
+  for (const auto* v : {&l2, &h1, &h2})
+    if (std::find(v->begin(), v->end(), true) != v->end()) return true;
+  return false;
+}
+
+RoundOffFloor round_off_levels(const std::vector<LevelResult>& rows, bool adaptive) {
+  std::vector<double> x;
+  std::vector<std::optional<double>> l2, h1, h2;
+  for (const LevelResult& r : rows) {
+    x.push_back(adaptive ? 1.0 / std::sqrt(std::max(1, r.dofs)) : r.h);
+    l2.push_back(r.l2), h1.push_back(r.h1), h2.push_back(r.h2);
+  }
+  return {round_off_floor(x, l2), round_off_floor(x, h1), round_off_floor(x, h2)};
+}
+
+bool has_errors(const std::vector<LevelResult>& rows) {
+  return std::any_of(rows.begin(), rows.end(), [](const LevelResult& r) { return r.l2 || r.h1 || r.h2; });
+}
+
+std::vector<std::string> functional_names(const StudySettings& settings) {
+  std::vector<std::string> names;
+  for (const FunctionalSpec& f : settings.functionals) names.push_back(f.name);
+  return names;
+}
+
+namespace {
+
+std::vector<double> mesh_sizes(const std::vector<LevelResult>& rows) {
+  std::vector<double> h;
+  for (const LevelResult& r : rows) h.push_back(r.h);
+  return h;
+}
+
+/// Values of functional k over the rows.
+std::vector<double> functional_values(const std::vector<LevelResult>& rows, std::size_t k) {
+  std::vector<double> v;
+  for (const LevelResult& r : rows) v.push_back(k < r.functionals.size() ? r.functionals[k] : NAN);
+  return v;
+}
+
+/// The table of a study without exact solution.
+std::string format_difference_table(const std::vector<LevelResult>& rows, const std::vector<std::string>& names) {
+  std::ostringstream s;
+  char line[256];
+  std::snprintf(line, sizeof line, "%5s %10s %8s %14s %14s %6s", "level", "h", "dofs", "energy", "|u_l-u_l-1|_a",
+                "rate");
+  s << line;
+  for (const std::string& n : names) {
+    std::snprintf(line, sizeof line, " %16s %6s", n.substr(0, 16).c_str(), "order");
+    s << line;
+  }
+  s << "   t_space  assemble     solve\n";
+  const std::vector<double> h = mesh_sizes(rows);
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    const LevelResult& r = rows[i];
+    const auto q = i > 0 ? rate(rows[i - 1].energy_difference, r.energy_difference, rows[i - 1].h, r.h) : std::nullopt;
+    std::snprintf(line, sizeof line, "%5d %10.4e %8d %14s %14s %6s", r.level, r.h, r.dofs,
+                  r.energy ? number(r.energy, "%.8e").c_str() : "-",
+                  r.energy_difference ? number(r.energy_difference, "%.3e").c_str() : "-",
+                  q ? number(q, "%.2f").c_str() : "");
+    s << line;
+    for (std::size_t k = 0; k < names.size(); ++k) {
+      const std::vector<double> v = functional_values(rows, k);
+      const auto order = richardson_order(v, h, i);
+      std::snprintf(line, sizeof line, " %16.9e %6s", v[i], order ? number(order, "%.2f").c_str() : "");
+      s << line;
+    }
+    std::snprintf(line, sizeof line, " %8.3fs %8.3fs %8.3fs\n", r.t_space, r.t_assemble, r.t_solve);
+    s << line;
+  }
+  s << "no exact solution: |u_l-u_l-1|_a = |E_l - E_l-1|^1/2 (energy E = a(u_h,u_h); exact for nested spaces with "
+       "homogeneous essential data); orders of functionals from three levels (Richardson)\n";
+  return s.str();
+}
+
+}  // namespace
+
+void write_convergence_csv(const std::vector<LevelResult>& rows, const std::string& filename, bool adaptive,
+                           const std::vector<std::string>& functional_names) {
   std::ofstream out = open_for_writing(filename);
-  out << "level,h,dofs,l2,h1,h2,rate_l2,rate_h1,rate_h2,t_assemble,t_solve,free_dofs,t_space,t_errors,g1_jump,rate_dofs_l2,rate_dofs_h1,rate_dofs_h2\n";
+  const RoundOffFloor floor = round_off_levels(rows, adaptive);
+  out << "level,h,dofs,l2,h1,h2,rate_l2,rate_h1,rate_h2,t_assemble,t_solve,free_dofs,t_space,t_errors,g1_jump,rate_dofs_l2,rate_dofs_h1,rate_dofs_h2,floor_l2,floor_h1,floor_h2,energy,energy_difference,rate_energy_difference";
+  for (const std::string& n : functional_names) out << ',' << n << ",order_" << n;
+  out << '\n';
+  const std::vector<double> h = mesh_sizes(rows);
   for (std::size_t i = 0; i < rows.size(); ++i) {
     const LevelResult& r = rows[i];
     const Rates q = rates_at(rows, i);
@@ -93,32 +177,48 @@ void write_convergence_csv(const std::vector<LevelResult>& rows, const std::stri
         << number(r.t_solve, "%.6f") << ',' << r.free_dofs << ',' << number(r.t_space, "%.6f") << ','
         << number(r.t_errors, "%.6f") << ',' << number(r.g1_jump, "%.3e");
     const Rates d = dof_rates_at(rows, i);
-    out << ',' << number(d.l2, "%.4f") << ',' << number(d.h1, "%.4f") << ',' << number(d.h2, "%.4f") << '\n';
+    out << ',' << number(d.l2, "%.4f") << ',' << number(d.h1, "%.4f") << ',' << number(d.h2, "%.4f") << ','
+        << floor.l2[i] << ',' << floor.h1[i] << ',' << floor.h2[i] << ',' << number(r.energy, "%.15e") << ','
+        << number(r.energy_difference, "%.10e") << ','
+        << number(i > 0 ? rate(rows[i - 1].energy_difference, r.energy_difference, rows[i - 1].h, r.h) : std::nullopt,
+                  "%.4f");
+    for (std::size_t k = 0; k < functional_names.size(); ++k) {
+      const std::vector<double> v = functional_values(rows, k);
+      out << ',' << number(v[i], "%.15e") << ',' << number(richardson_order(v, h, i), "%.4f");
+    }
+    out << '\n';
   }
 }
 
-std::string format_convergence_table(const std::vector<LevelResult>& rows, bool rates_against_dofs) {
+std::string format_convergence_table(const std::vector<LevelResult>& rows, bool rates_against_dofs,
+                                     const std::vector<std::string>& functional_names) {
+  if (!has_errors(rows) && !rows.empty()) return format_difference_table(rows, functional_names);
   // The gradient-jump column appears only for spaces that compute it.
   const bool jumps = std::any_of(rows.begin(), rows.end(), [](const LevelResult& r) { return r.g1_jump.has_value(); });
+  const RoundOffFloor floor = round_off_levels(rows, rates_against_dofs);
   std::ostringstream s;
   char line[256];
   // Against DOFs, "rate" is log(e_prev/e)/log(N/N_prev): h^k corresponds to N^(k/2) in 2D.
   const char* rate_label = rates_against_dofs ? "rate/N" : "rate";
-  std::snprintf(line, sizeof line, "%5s %10s %8s %11s %6s %11s %6s %11s %6s %9s %9s", "level", "h", "dofs", "L2",
-                rate_label, "H1-semi", rate_label, "H2-semi", rate_label, "assemble", "solve");
+  std::snprintf(line, sizeof line, "%5s %10s %8s %11s %6s %11s %6s %11s %6s %9s %9s %9s %9s", "level", "h", "dofs",
+                "L2", rate_label, "H1-semi", rate_label, "H2-semi", rate_label, "t_space", "assemble", "solve",
+                "t_errors");
   s << line << (jumps ? "   g1_jump\n" : "\n");
   for (std::size_t i = 0; i < rows.size(); ++i) {
     const LevelResult& r = rows[i];
     const Rates q = rates_against_dofs ? dof_rates_at(rows, i) : rates_at(rows, i);
     auto e = [](std::optional<double> v) { return v ? number(v, "%.3e") : std::string("-"); };
-    auto k = [](std::optional<double> v) { return v ? number(v, "%.2f") : std::string(""); };
-    std::snprintf(line, sizeof line, "%5d %10.4e %8d %11s %6s %11s %6s %11s %6s %8.3fs %8.3fs", r.level, r.h, r.dofs,
-                  e(r.l2).c_str(), k(q.l2).c_str(), e(r.h1).c_str(), k(q.h1).c_str(), e(r.h2).c_str(),
-                  k(q.h2).c_str(), r.t_assemble, r.t_solve);
+    auto k = [&](std::optional<double> v, const std::vector<bool>& at_floor) {
+      return v ? number(v, "%.2f") + (at_floor[i] ? "*" : "") : std::string("");
+    };
+    std::snprintf(line, sizeof line, "%5d %10.4e %8d %11s %6s %11s %6s %11s %6s %8.3fs %8.3fs %8.3fs %8.3fs", r.level,
+                  r.h, r.dofs, e(r.l2).c_str(), k(q.l2, floor.l2).c_str(), e(r.h1).c_str(), k(q.h1, floor.h1).c_str(),
+                  e(r.h2).c_str(), k(q.h2, floor.h2).c_str(), r.t_space, r.t_assemble, r.t_solve, r.t_errors);
     s << line;
     if (jumps) s << "  " << e(r.g1_jump);
     s << '\n';
   }
+  if (floor.any()) s << "* round-off floor: the error stopped decreasing; left out of the least-squares rates\n";
   return s.str();
 }
 
@@ -166,6 +266,8 @@ std::string summary_json(const StudySettings& settings, const StudyResult& resul
                       {"rate_dofs_h1", optional_json(d.h1)},
                       {"rate_dofs_h2", optional_json(d.h2)},
                       {"estimator", i < result.estimators.size() ? optional_json(result.estimators[i]) : json(nullptr)},
+                      {"energy", optional_json(r.energy)},
+                      {"energy_difference", optional_json(r.energy_difference)},
                       {"timings", {{"space", r.t_space}, {"assemble", r.t_assemble}, {"solve", r.t_solve},
                                    {"errors", r.t_errors}}}});
     h.push_back(r.h);
@@ -174,20 +276,46 @@ std::string summary_json(const StudySettings& settings, const StudyResult& resul
     h1.push_back(r.h1);
     h2.push_back(r.h2);
   }
+  // Functionals per level with their Richardson orders.
+  const std::vector<double> hs = mesh_sizes(result.rows);
+  for (std::size_t k = 0; k < settings.functionals.size(); ++k) {
+    const std::vector<double> v = functional_values(result.rows, k);
+    for (std::size_t i = 0; i < levels.size(); ++i)
+      levels[i]["functionals"][settings.functionals[k].name] = {{"value", v[i]},
+                                                               {"order", optional_json(richardson_order(v, hs, i))}};
+  }
   j["levels"] = levels;
-  j["least_squares_rates"] = {{"l2", optional_json(least_squares_rate(h, l2))},
-                              {"h1", optional_json(least_squares_rate(h, h1))},
-                              {"h2", optional_json(least_squares_rate(h, h2))}};
+  const RoundOffFloor floor = round_off_levels(result.rows, result.adaptive);
+  j["least_squares_rates"] = {{"l2", optional_json(least_squares_rate(h, l2, floor.l2))},
+                              {"h1", optional_json(least_squares_rate(h, h1, floor.h1))},
+                              {"h2", optional_json(least_squares_rate(h, h2, floor.h2))}};
+  // Levels at the round-off floor, per norm: left out of both least-squares fits.
+  auto floor_levels = [&](const std::vector<bool>& f) {
+    json levels_at_floor = json::array();
+    for (std::size_t i = 0; i < f.size(); ++i)
+      if (f[i]) levels_at_floor.push_back(result.rows[i].level);
+    return levels_at_floor;
+  };
+  j["round_off_floor"] = {{"l2", floor_levels(floor.l2)},
+                          {"h1", floor_levels(floor.h1)},
+                          {"h2", floor_levels(floor.h2)},
+                          {"excluded_from_least_squares", true}};
   // e ~ N^(-rate): the slope against 1/N.
-  j["least_squares_rates_dofs"] = {{"l2", optional_json(least_squares_rate(inverse_dofs, l2))},
-                                   {"h1", optional_json(least_squares_rate(inverse_dofs, h1))},
-                                   {"h2", optional_json(least_squares_rate(inverse_dofs, h2))}};
+  j["least_squares_rates_dofs"] = {{"l2", optional_json(least_squares_rate(inverse_dofs, l2, floor.l2))},
+                                   {"h1", optional_json(least_squares_rate(inverse_dofs, h1, floor.h1))},
+                                   {"h2", optional_json(least_squares_rate(inverse_dofs, h2, floor.h2))}};
   j["refinement"] = result.adaptive ? "adaptive" : "uniform";
   if (!result.stop_reason.empty()) j["adaptive_stop_reason"] = result.stop_reason;
-  j["expected_rates"] = {{"l2", result.expected.l2}, {"h1", result.expected.h1}, {"h2", result.expected.h2}};
-  double total = 0;
+  // Rates are expected of errors against an exact solution; without one there is no such claim.
+  if (has_errors(result.rows))
+    j["expected_rates"] = {{"l2", result.expected.l2}, {"h1", result.expected.h1}, {"h2", result.expected.h2}};
+  else
+    j["expected_rates"] = nullptr;
+  double total = result.t_vtk;
   for (const LevelResult& r : result.rows) total += r.t_space + r.t_assemble + r.t_solve + r.t_errors;
-  j["total_seconds"] = total;
+  j["t_vtk"] = result.t_vtk;
+  // The whole run as its caller measured it (reading the config to the last file), else the phases' sum.
+  j["total_seconds"] = result.total_seconds > 0 ? result.total_seconds : total;
   return j.dump(2);
 }
 

@@ -1,5 +1,6 @@
 #include "output/study_outputs.hpp"
 
+#include <chrono>
 #include <filesystem>
 #include <vector>
 
@@ -26,19 +27,41 @@ StudyResult run_study_with_vtk(const StudySettings& settings, const std::string&
   const std::filesystem::path dir(directory);
   const ExactSolution exact = settings.problem.exact_solution();
   std::vector<std::string> vtu_files, mesh_files, surface_files;
+  double t_vtk = 0;
   const LevelSink write_level = [&](int level, const Space& space, const DiscreteSolution& sol) {
+    // output.vtk.levels: last. A uniform study knows its last level; an adaptive one may stop at
+    // any level, so each level replaces the files of the one before.
+    const bool last_only = settings.vtk_last_level_only;
+    if (last_only && !settings.adaptive && level + 1 < settings.levels) return;
+    const auto t0 = std::chrono::steady_clock::now();
     progress("[level " + std::to_string(level) + "] writing VTK");
+    if (last_only && !vtu_files.empty()) {
+      std::filesystem::remove(dir / vtu_files.back());
+      std::filesystem::remove(dir / mesh_files.back());
+      vtu_files.clear();
+      mesh_files.clear();
+      if (!surface_files.empty()) std::filesystem::remove(dir / surface_files.back());
+      surface_files.clear();
+    }
     VtkFieldOptions opt;
     opt.samples = settings.vtk_samples;
-    opt.exact = exact.u;
+    opt.lagrange = settings.vtk_lagrange;
+    opt.exact = exact;
     if (settings.problem.surface_exact)
       opt.exact3 = [u = *settings.problem.surface_exact](const Eigen::Vector3d& x) { return u.at(x); };
     opt.laplacian = settings.problem.pde == Pde::biharmonic;
+    if (!sol.indicators.empty()) {
+      opt.element_fields.emplace_back("estimator", sol.indicators);
+      std::vector<double> marked(space.num_elements(), 0.0);
+      for (int e : sol.marked) marked.at(e) = 1.0;
+      opt.element_fields.emplace_back("marked", std::move(marked));
+    }
     const std::string name = "solution_" + std::to_string(level) + ".vtu";
-    write_solution_vtu(space, sol.coefficients, opt, (dir / name).string());
+    const bool lagrange = write_solution_vtu(space, sol.coefficients, opt, (dir / name).string());
     vtu_files.push_back(name);
     const std::string mesh = "mesh_" + std::to_string(level) + ".vtu";
-    write_mesh_vtu(space, settings.vtk_samples, (dir / mesh).string());
+    // Outlines as fine as the solution's drawing: Lagrange cells of degree p have p + 1 nodes per edge.
+    write_mesh_vtu(space, lagrange ? space.degree() : settings.vtk_samples, (dir / mesh).string());
     mesh_files.push_back(mesh);
     // The surface itself, shaded by its own normals, level by level unless the space carries one
     // fixed surface (written once, below).
@@ -47,6 +70,7 @@ StudyResult run_study_with_vtk(const StudySettings& settings, const std::string&
       write_surface_geometry_vtu(space, settings.vtk_samples, (dir / surface).string());
       surface_files.push_back(surface);
     }
+    t_vtk += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   };
   StudyResult result = run_study(settings, progress, [&](int level, const Space& space, const DiscreteSolution& sol) {
     write_level(level, space, sol);
@@ -55,6 +79,7 @@ StudyResult run_study_with_vtk(const StudySettings& settings, const std::string&
   write_pvd(vtu_files, (dir / "solution.pvd").string());
   write_pvd(mesh_files, (dir / "mesh.pvd").string());
   if (!surface_files.empty()) write_pvd(surface_files, (dir / "surface.pvd").string());
+  result.t_vtk = t_vtk;
   return with_surface_files(std::move(result));
 }
 

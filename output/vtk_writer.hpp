@@ -1,34 +1,49 @@
 #pragma once
 /// @file
-/// ParaView output through VTK's XML writers: one .vtu per level (the solution sampled on every
-/// element through ElementValues, so every space is drawn the same way) and a .pvd collection.
+/// ParaView output through VTK's XML writers: one .vtu per level and a .pvd collection.
+///
+/// Elements whose functions are single polynomials of the space's degree (lagrange_cells.hpp)
+/// become one VTK Lagrange triangle / quadrilateral of that degree each, sampled at its nodes; the
+/// others (macro-elements, polynomial only piece by piece, and non-polynomial bases) are drawn by
+/// linear sub-cells of Space::sample_cell. Points shared between elements are written once. Values
+/// are computed in double precision and stored in single precision (7 digits, far below what a
+/// picture resolves; the error field is stored itself, not left to a difference of two rounded fields).
 
 #include <Eigen/Core>
 #include <functional>
-#include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
+#include "assembly/fields.hpp"
 #include "spaces/space.hpp"
 
 namespace iga {
 
 struct VtkFieldOptions {
-  int samples = 8;  ///< samples per element edge (Space::sample_cell resolution)
-  /// Exact solution, if known: adds point fields `u_exact` and `error` (u - u_exact).
-  /// Called from several threads at once, so it must be thread-safe (as every ScalarField).
-  std::function<double(const Point2&)> exact;
+  int samples = 8;  ///< samples per element edge where linear sub-cells are drawn (Space::sample_cell)
+  /// Draw single-polynomial elements as Lagrange cells (false: always linear sub-cells).
+  bool lagrange = true;
+  /// Exact solution, if known: adds point fields `u_exact` and `error` (u - u_exact), and with its
+  /// derivatives the cell fields `error_l2`, `error_h1`, `error_h2`. Called from several threads
+  /// at once, so it must be thread-safe (as every ScalarField).
+  ExactSolution exact;
   /// The same on a surface in 3D (spaces with ambient_dimension() == 3), used instead of `exact`.
   std::function<double(const Eigen::Vector3d&)> exact3;
   /// Adds the point field `laplace_u` (for biharmonic problems).
   bool laplacian = false;
+  /// Further cell fields, one value per element (e.g. the estimator η_K, marked elements).
+  std::vector<std::pair<std::string, std::vector<double>>> element_fields;
 };
 
 /// Write the discrete function sum_i coefficients(i) N_i as an unstructured grid with point fields
 /// `u`, `grad_u` (3 components, z = 0 in the plane; on a surface in 3D the points are the surface's
-/// and grad_u its surface gradient) and the optional ones of `options`.
+/// and grad_u its surface gradient), normals (`Normals`, the active normals, on a surface in 3D;
+/// `warp_normal`, the unit normal of the graph z = u for Warp By Scalar with factor 1, in the plane),
+/// the cell field `element` and the optional fields of `options`.
+/// Returns true when the elements were drawn as Lagrange cells of the space's degree.
 /// Throws std::runtime_error if the file cannot be written.
-void write_solution_vtu(const Space& space, const Eigen::VectorXd& coefficients, const VtkFieldOptions& options,
+bool write_solution_vtu(const Space& space, const Eigen::VectorXd& coefficients, const VtkFieldOptions& options,
                         const std::string& filename);
 
 /// Write the outline of every element (its boundary through the element map, `samples` points per

@@ -20,6 +20,13 @@ struct LevelResult {
   /// Largest gradient jump of the discrete solution across interior element edges
   /// (Space::max_gradient_jump; absent when the space does not compute it).
   std::optional<double> g1_jump;
+  /// Energy a(u_h, u_h) of the discrete solution (planar problems).
+  std::optional<double> energy;
+  /// |u_l − u_{l−1}|_a = |a(u_l, u_l) − a(u_{l−1}, u_{l−1})|^½: the energy norm of the change from
+  /// the previous level, exact for nested spaces with homogeneous essential data (Galerkin orthogonality).
+  std::optional<double> energy_difference;
+  /// Values of the study's functionals (output.functionals), in their order.
+  std::vector<double> functionals;
 };
 
 /// Expected convergence orders of the L2 error and the H1, H2 seminorm errors.
@@ -30,7 +37,15 @@ struct OptimalRates {
 /// Rate between two rows: log(e_prev / e) / log(h_prev / h); nullopt if either error is missing.
 std::optional<double> rate(std::optional<double> e_prev, std::optional<double> e, double h_prev, double h);
 
-/// Least-squares slope of log(e) against log(h) over all rows with an error.
-std::optional<double> least_squares_rate(const std::vector<double>& h, const std::vector<std::optional<double>>& e);
+/// Least-squares slope of log(e) against log(h) over all rows with an error (rows whose `skip`
+/// entry is true are left out; `skip` may be empty).
+std::optional<double> least_squares_rate(const std::vector<double>& h, const std::vector<std::optional<double>>& e,
+                                         const std::vector<bool>& skip = {});
+
+/// Levels at the round-off floor: from the first level whose error stops decreasing (its rate
+/// below half the previous one and below 1) after a clean rate (>= 1) and far below the coarsest
+/// error (1e-4 of it), to the last level. Such levels measure round-off, not discretization.
+/// `x` is h (or 1/N for rates against DOFs); one flag per row.
+std::vector<bool> round_off_floor(const std::vector<double>& x, const std::vector<std::optional<double>>& e);
 
 }  // namespace iga

@@ -2,9 +2,11 @@
 
 #include <algorithm>
 #include <chrono>
+#include <optional>
 #include <cmath>
 
 #include "assembly/assembler.hpp"
+#include "config/progress.hpp"
 #include "assembly/boundary_conditions.hpp"
 #include "solver/boundary_edge_kinds.hpp"
 #include "solver/surface_problem.hpp"
@@ -58,6 +60,8 @@ LinearSystem assemble_linear_system(const Space& space, const ProblemSpec& probl
 
   say("assembling");
   LinearSystem sys;
+  // Ticks: one per element of the matrix loop and of the load loop.
+  std::optional<ProgressPhase> phase(std::in_place, "assembling", 2 * static_cast<std::int64_t>(space.num_elements()));
   const Assembler assembler(space);
   // Extended precision: the residuals below must see A's entries beyond their double rounding.
   sys.A = assembler.matrix_extended(problem.form, qa);
@@ -82,6 +86,7 @@ LinearSystem assemble_linear_system(const Space& space, const ProblemSpec& probl
   if (!sys.constraints.values.allFinite())
     throw InputError(problem.data_where + ": the boundary data (u or du/dn) are not finite at some boundary point");
   reduce_system(sys.A, sys.b, sys.constraints, sys.A_free, sys.b_free);
+  phase.reset();
   return sys;
 }
 
@@ -111,23 +116,28 @@ DiscreteSolution solve_problem(const Space& space, const ProblemSpec& problem, S
 
   say("factorizing and solving (" + std::to_string(r.free_dofs) + " unknowns)");
   t0 = Clock::now();
+  phase.emplace("factorizing", 0);
   const Eigen::VectorXd u_free =
       solve_linear_system(A_free, b_free, solver, out.solve, [&](const Eigen::VectorXd& x) {
         return reduced_residual(A, b, constraints, x);
       });
   out.coefficients = expand_solution(u_free, constraints);
+  r.energy = out.coefficients.dot(A.high * out.coefficients);  // a(u_h, u_h), for studies without an exact solution
+  phase.reset();
   r.t_solve = seconds_since(t0);
 
   r.g1_jump = space.max_gradient_jump(out.coefficients);
   if (problem.exact) {
     say("computing errors");
     t0 = Clock::now();
+    phase.emplace("error norms", space.num_elements());
     const ErrorNorms e = error_norms(space, out.coefficients, problem.exact_solution(), space.error_quadrature_degree());
     if (!std::isfinite(e.l2) || !std::isfinite(e.h1.value_or(0)) || !std::isfinite(e.h2.value_or(0)))
       throw InputError(problem.data_where + ": the exact solution or its derivatives are not finite somewhere in the domain");
     r.l2 = e.l2;
     r.h1 = e.h1;
     r.h2 = e.h2;
+    phase.reset();
     r.t_errors = seconds_since(t0);
   }
   return out;

@@ -6,6 +6,7 @@
 #include <Eigen/Core>
 #include <functional>
 #include <string>
+#include <vector>
 
 #include "assembly/boundary_conditions.hpp"
 #include "assembly/error_norms.hpp"
@@ -24,6 +25,9 @@ struct DiscreteSolution {
   LevelResult result;            ///< h, dofs, errors, timings (level and t_space left to the caller)
   SolveReport solve;
   int boundary_constrained = 0;  ///< coefficients fixed by essential data
+  /// Adaptive studies: the residual indicator η_K per element and the elements marked for refinement.
+  std::vector<double> indicators;
+  std::vector<int> marked;
 };
 
 /// Quadrature degree used for assembly with a space of local degree p (documented in docs/problems.md;

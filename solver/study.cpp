@@ -1,6 +1,7 @@
 #include "solver/study.hpp"
 
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 
@@ -11,6 +12,7 @@
 #include "solver/output_location.hpp"
 #include "solver/resource_checks.hpp"
 #include "config/errors.hpp"
+#include "config/progress.hpp"
 #include "solver/solve_problem.hpp"
 #include "spaces/space_factory.hpp"
 
@@ -33,10 +35,19 @@ OptimalRates optimal_rates(Pde pde, int degree) {
 }
 
 StudySettings parse_study(const ConfigNode& root, const std::string& config_path, int levels_override,
-                          const std::string& output_override) {
-  root.check_keys({"problem", "domain", "space", "refinement", "solver", "output", "limits"});
-  StudySettings s(root, parse_problem(root["problem"]));
-  s.limits = parse_limits(root.find("limits"));
+                          const std::string& output_override, const ConfigNode* space_block,
+                          const ConfigNode* domain_block) {
+  root.check_keys({"problem", "domain", "space", "spaces", "refinement", "solver", "output", "limits"});
+  // A comparison (spaces:) asked for as one study: every space is validated, the first one returned.
+  if (!space_block && root.has("spaces") && !root.has("space"))
+    return parse_studies(root, config_path, levels_override, output_override).front();
+  // In this order, so that of several mistakes the first section's is reported.
+  ProblemSpec problem = parse_problem(root["problem"]);
+  const ResourceLimits limits = parse_limits(root.find("limits"));
+  const ConfigNode space_node = space_block ? *space_block : root["space"];
+  const ConfigNode domain_node = domain_block ? *domain_block : root["domain"];
+  StudySettings s(root, std::move(problem), space_node, domain_node);
+  s.limits = limits;
 
   // The output location and the solver first: they cost nothing to check, and building level 0
   // below may take a while (a .geo meshed by Gmsh, a large first level).
@@ -48,7 +59,7 @@ StudySettings parse_study(const ConfigNode& root, const std::string& config_path
   s.output_dir = "results/" + std::filesystem::path(config_path).stem().string();
   std::string output_place = "the default output directory";
   if (auto output = root.find("output")) {
-    output->check_keys({"directory", "vtk", "plot", "matrices"});
+    output->check_keys({"directory", "vtk", "plot", "matrices", "functionals"});
     if (auto dir = output->find("directory")) {
       s.output_dir = dir->as_string();
       output_place = dir->where();
@@ -57,8 +68,10 @@ StudySettings parse_study(const ConfigNode& root, const std::string& config_path
       if (vtk->is_scalar()) {
         s.write_vtk = vtk->as_bool();
       } else {
-        vtk->check_keys({"enabled", "samples"});
+        vtk->check_keys({"enabled", "samples", "levels", "cells"});
         s.write_vtk = vtk->get_bool("enabled", true);
+        if (auto levels = vtk->find("levels")) s.vtk_last_level_only = levels->as_choice({"all", "last"}) == "last";
+        if (auto cells = vtk->find("cells")) s.vtk_lagrange = cells->as_choice({"lagrange", "linear"}) == "lagrange";
         if (auto samples = vtk->find("samples")) {
           s.vtk_samples = samples->as_int();
           if (s.vtk_samples < 1 || s.vtk_samples > 64) samples->fail("samples must be between 1 and 64");
@@ -79,9 +92,9 @@ StudySettings parse_study(const ConfigNode& root, const std::string& config_path
   check_output_directory(s.output_dir, output_place);
   // Domain, space and boundary part names are validated on the coarsest space (cheap), so that
   // every input error surfaces before the study starts; what it asks for is checked first.
-  check_space_request(root["space"], s.limits);
+  check_space_request(space_node, s.limits);
   const auto t_coarse = Clock::now();
-  const SpacePtr coarse = make_space(root["domain"], root["space"], 0);
+  const SpacePtr coarse = make_space(domain_node, space_node, 0);
   s.level0 = coarse;
   s.level0_seconds = seconds_since(t_coarse);
   check_boundary_parts(*coarse, s.problem);
@@ -98,7 +111,7 @@ StudySettings parse_study(const ConfigNode& root, const std::string& config_path
       root["problem"]["boundary"].fail("this surface is closed: it has no boundary for Dirichlet data");
   }
   if (s.problem.pde == Pde::biharmonic && coarse->continuity() < 1)
-    root["space"].fail("the biharmonic problem needs a C1 (H2-conforming) space; this " + coarse->type() +
+    space_node.fail("the biharmonic problem needs a C1 (H2-conforming) space; this " + coarse->type() +
                        " space is only C" + std::to_string(coarse->continuity()) +
                        " (raise space.degree/space.regularity)");
 
@@ -148,25 +161,52 @@ StudySettings parse_study(const ConfigNode& root, const std::string& config_path
 
   // Every level's size before the study starts: level 0 as built, the others estimated from it.
   if (coarse->degree() > s.limits.max_degree)  // spaces whose degree is not the key `degree`
-    root["space"].fail("the " + coarse->type() + " space has degree " + std::to_string(coarse->degree()) +
+    space_node.fail("the " + coarse->type() + " space has degree " + std::to_string(coarse->degree()) +
                        ", more than limits.max_degree = " + std::to_string(s.limits.max_degree) +
                        how_to_raise("max_degree"));
   const SpaceSize level0 = measure(*coarse);
-  check_size(level0, s.limits, root["space"], "level 0");
+  check_size(level0, s.limits, space_node, "level 0");
   if (!s.adaptive) {
     const auto levels_node = root.find("refinement") ? root["refinement"].find("levels") : std::nullopt;
-    const ConfigNode& blame = levels_node && levels_override <= 0 ? *levels_node : root["space"];
+    const ConfigNode& blame = levels_node && levels_override <= 0 ? *levels_node : space_node;
     for (int level = 1; level < s.levels; ++level)
       check_size(uniform_estimate(level0, level), s.limits, blame,
                  "level " + std::to_string(level) + " (estimated from level 0)");
   }
 
+  if (auto output = root.find("output"))  // they name points and boundary parts of the space
+    if (auto functionals = output->find("functionals")) s.functionals = parse_functionals(*functionals, *coarse);
+  s.space_label = coarse->type() + "-p" + std::to_string(coarse->degree());
   return s;
+}
+
+std::vector<StudySettings> parse_studies(const ConfigNode& root, const std::string& config_path, int levels_override,
+                                         const std::string& output_override) {
+  const auto spaces = root.find("spaces");
+  if (!spaces) return {parse_study(root, config_path, levels_override, output_override)};
+  if (root.has("space")) root["space"].fail("give either space: (one study) or spaces: (a comparison), not both");
+  if (!spaces->is_sequence() || spaces->items().empty())
+    spaces->fail("spaces: must be a list of space blocks, e.g. [{type: bspline, degree: 3}, {type: ws4}]");
+  std::vector<StudySettings> studies;
+  for (const ConfigNode& item : spaces->items()) {
+    // An item is a space block, or {space: ..., domain: ...} for a space that needs its own
+    // description of the domain (e.g. a multi-patch layout of the same square).
+    if (item.is_map() && item.has("space")) {
+      item.check_keys({"space", "domain"});
+      const ConfigNode block = item["space"];
+      const std::optional<ConfigNode> domain = item.find("domain");
+      studies.push_back(parse_study(root, config_path, levels_override, output_override, &block,
+                                    domain ? &*domain : nullptr));
+    } else {
+      studies.push_back(parse_study(root, config_path, levels_override, output_override, &item));
+    }
+  }
+  return studies;
 }
 
 StudyResult run_study(const StudySettings& settings, const ProgressSink& progress, const LevelSink& on_level) {
   StudyResult result;
-  const ConfigNode domain = settings.root["domain"], space_node = settings.root["space"];
+  const ConfigNode domain = settings.domain, space_node = settings.space;
   const ExactSolution exact = settings.problem.exact_solution();
   result.adaptive = settings.adaptive;
   SpacePtr next;      // adaptive: the refined space for the next level
@@ -179,7 +219,11 @@ StudyResult run_study(const StudySettings& settings, const ProgressSink& progres
     const bool reuse = !next && level == 0 && settings.level0;
     const SpacePtr space = next    ? next
                            : reuse ? settings.level0
-                                   : make_space(domain, space_node, settings.adaptive ? 0 : level, previous.get());
+                                   : [&] {
+                                       const ProgressPhase phase("building space", 0);
+                                       return make_space(domain, space_node, settings.adaptive ? 0 : level,
+                                                         previous.get());
+                                     }();
     previous = space;
     const double t_space = seconds_since(t0) + t_next + (reuse ? settings.level0_seconds : 0.0);
     check_size(measure(*space), settings.limits, space_node, "level " + std::to_string(level));  // before assembly
@@ -192,10 +236,12 @@ StudyResult run_study(const StudySettings& settings, const ProgressSink& progres
                                          [&](const std::string& msg) { progress(tag + msg); });
     sol.result.level = level;
     sol.result.t_space = t_space;
+    if (!result.rows.empty() && result.rows.back().energy && sol.result.energy)
+      sol.result.energy_difference = std::sqrt(std::abs(*sol.result.energy - *result.rows.back().energy));
+    sol.result.functionals = evaluate_functionals(settings.functionals, *space, sol.coefficients);
     progress(tag + "done: assembled in " + format_seconds(sol.result.t_assemble) + ", solved (" + sol.solve.method + ") in " +
              format_seconds(sol.result.t_solve) + ", errors in " + format_seconds(sol.result.t_errors));
 
-    if (on_level) on_level(level, *space, sol);
     std::optional<double> estimator;
     next.reset();
     if (settings.adaptive) {
@@ -209,12 +255,14 @@ StudyResult run_study(const StudySettings& settings, const ProgressSink& progres
                     boundary_edges_of_kind(*space, settings.problem, BoundaryKind::simply_supported),
                     [g = settings.problem.laplacian](const Point2& x, const Point2&) { return g(x); });
       estimator = total_indicator(eta);
+      sol.indicators = eta;
       if (settings.tolerance > 0.0 && *estimator <= settings.tolerance) {
         progress(tag + "estimator " + std::to_string(*estimator) + " <= tolerance: stopping");
         result.stop_reason = "tolerance";
       } else if (level + 1 < settings.levels) {
         auto t1 = Clock::now();
         const std::vector<int> marked = dorfler_marking(eta, settings.marking);
+        sol.marked = marked;
         progress(tag + "estimator " + std::to_string(*estimator) + ", refining " + std::to_string(marked.size()) +
                  " of " + std::to_string(space->num_elements()) + " elements");
         SpacePtr refined;
@@ -235,6 +283,7 @@ StudyResult run_study(const StudySettings& settings, const ProgressSink& progres
           next = std::move(refined);
       }
     }
+    if (on_level) on_level(level, *space, sol);  // after marking: the outputs show η_K and the marked elements
     result.estimators.push_back(estimator);
     result.rows.push_back(sol.result);
     result.solver_methods.push_back(sol.solve.method);

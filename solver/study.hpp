@@ -13,15 +13,22 @@
 #include "solver/linear_solver.hpp"
 #include "solver/problem.hpp"
 #include "solver/solve_problem.hpp"
+#include "solver/study_functionals.hpp"
 
 namespace iga {
 
 /// Everything a study needs, validated from the config (and command-line overrides).
 struct StudySettings {
-  StudySettings(ConfigNode root_node, ProblemSpec problem_spec)
-      : root(std::move(root_node)), problem(std::move(problem_spec)) {}
+  StudySettings(ConfigNode root_node, ProblemSpec problem_spec, ConfigNode space_node, ConfigNode domain_node)
+      : root(std::move(root_node)),
+        problem(std::move(problem_spec)),
+        space(std::move(space_node)),
+        domain(std::move(domain_node)) {}
   ConfigNode root;
   ProblemSpec problem;
+  ConfigNode space;         ///< the space block: root["space"], or one item of root["spaces"]
+  ConfigNode domain;        ///< the domain block: root["domain"], or the item's own in a spaces: list
+  std::string space_label;  ///< "<type>-p<degree>", names the space in comparisons
   int levels = 4;          ///< number of levels solved: 0 .. levels-1
   /// refinement.type: uniform (level l = make_space(..., l)) or adaptive (level l+1 = the space of
   /// level l refined where Dörfler marking of the residual indicator says; Poisson and plates).
@@ -32,7 +39,9 @@ struct StudySettings {
   SolverKind solver = SolverKind::cholmod;
   std::string output_dir;  ///< final destination of the results
   bool write_vtk = true;
-  int vtk_samples = 8;     ///< samples per element edge
+  int vtk_samples = 8;     ///< samples per element edge of linear sub-cells (output.vtk.samples)
+  bool vtk_last_level_only = false;  ///< output.vtk.levels: last (default all)
+  bool vtk_lagrange = true;          ///< output.vtk.cells: lagrange (default) or linear
   bool write_plot = true;
   bool write_matrices = false;  ///< output.matrices: each level's reduced system in Matrix Market
   ResourceLimits limits;   ///< the limits: section (defaults when absent)
@@ -40,13 +49,21 @@ struct StudySettings {
   /// from it instead of building it again (a one-level study of a large space built it twice).
   SpacePtr level0;
   double level0_seconds = 0.0;
+  std::vector<FunctionalSpec> functionals;  ///< output.functionals, evaluated at every level
 };
 
 /// Parse and validate the whole config (all sections) before anything is computed, so a typo
 /// deep in the file fails before a long study starts. `levels_override` <= 0 means none.
 /// `config_path` gives the default output directory results/<config name>.
+/// `space_block` (default root["space"]) is the space to study, e.g. one item of root["spaces"].
 StudySettings parse_study(const ConfigNode& root, const std::string& config_path, int levels_override,
-                          const std::string& output_override);
+                          const std::string& output_override, const ConfigNode* space_block = nullptr,
+                          const ConfigNode* domain_block = nullptr);
+
+/// One study per space: the config's `space:` block, or each block of its `spaces:` list (a
+/// comparison of spaces on one problem). All are validated before any is run.
+std::vector<StudySettings> parse_studies(const ConfigNode& root, const std::string& config_path, int levels_override,
+                                         const std::string& output_override);
 
 
 struct StudyResult {
@@ -64,6 +81,8 @@ struct StudyResult {
   bool adaptive = false;
   /// Adaptive runs that ended before refinement.levels: "max_dofs", "tolerance" or why refinement failed.
   std::string stop_reason;
+  double t_vtk = 0;          ///< seconds spent writing VTK files (all levels)
+  double total_seconds = 0;  ///< wall time of the whole run, set by the caller that measures it
 };
 
 /// Called once a level is solved, before the next level is built: how the outputs (VTK files) see

@@ -4,6 +4,7 @@
 #include <sys/wait.h>
 #include <vtkCellType.h>
 #include <vtkDataArray.h>
+#include <vtkCellData.h>
 #include <vtkPointData.h>
 #include <vtkSmartPointer.h>
 #include <vtkUnstructuredGrid.h>
@@ -89,31 +90,8 @@ std::vector<std::string> shipped_configs() {
   return names;
 }
 
-class ShippedConfig : public ::testing::TestWithParam<std::string> {};
-
-TEST_P(ShippedConfig, RunsAndWritesReadableOutput) {
-  const std::string name = GetParam();
-  const fs::path config = fs::path(IGA_SOURCE_DIR) / "configs" / (name + ".yaml");
-  const fs::path out = scratch_dir() / ("out-" + name);
-  // A shipped config is a documented one: README.md or a page under docs/ names it.
-  EXPECT_TRUE(documented(name + ".yaml")) << name << ".yaml is named neither in README.md nor in docs/";
-  const RunResult r = run_iga(config.string() + " --levels 2 --quiet --output " + out.string());
-  ASSERT_EQ(r.exit_code, 0) << name << ": " << r.err;
-  EXPECT_TRUE(r.err.empty()) << "--quiet still printed: " << r.err;
-  EXPECT_NE(r.out.find("level"), std::string::npos);
-
-  if (fs::exists(out / "geometry.csv")) {  // a geometry study: the surface itself, no PDE
-    const nlohmann::json summary = nlohmann::json::parse(slurp(out / "summary.json"));
-    EXPECT_EQ(summary["study"], "geometry");
-    ASSERT_EQ(summary["levels"].size(), 2u);
-    for (const auto& level : summary["levels"]) {
-      EXPECT_LT(level["surface"]["max_g1_residual"].get<double>(), 1e-12) << name;
-      for (const auto& file : level["files"]) EXPECT_GT(fs::file_size(out / file.get<std::string>()), 100u) << file;
-    }
-    EXPECT_NEAR(summary["levels"][1]["rate_radial"].get<double>(), 2.0, 0.7) << name;
-    return;
-  }
-
+/// The files of one study in `out`, run with --levels 2.
+void check_study(const fs::path& out, const std::string& name) {
   const std::string csv = slurp(out / "convergence.csv");
   EXPECT_EQ(csv.rfind("level,h,dofs,l2,h1,h2,rate_l2,rate_h1,rate_h2,t_assemble,t_solve", 0), 0u) << name;
   EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 3) << name;  // header + 2 levels
@@ -141,6 +119,8 @@ TEST_P(ShippedConfig, RunsAndWritesReadableOutput) {
   else
     EXPECT_FALSE(summary["problem"].contains("form")) << name;
   for (int level = 0; level < 2; ++level) {
+    // output.vtk.levels: last writes the last level only.
+    if (level == 0 && !fs::exists(out / "solution_0.vtu")) continue;
     auto reader = vtkSmartPointer<vtkXMLUnstructuredGridReader>::New();
     reader->SetFileName((out / ("solution_" + std::to_string(level) + ".vtu")).c_str());
     reader->Update();
@@ -159,6 +139,13 @@ TEST_P(ShippedConfig, RunsAndWritesReadableOutput) {
     EXPECT_EQ(mesh->GetCellType(0), VTK_POLY_LINE);
     EXPECT_EQ(mesh->GetNumberOfCells(), summary["levels"][level]["elements"].get<int>()) << name;
     if (biharmonic) EXPECT_NE(pd->GetArray("laplace_u"), nullptr);
+    // Per-element errors, and for adaptive runs the indicator and the marked elements (of every
+    // level but possibly the last, where refinement may have stopped).
+    EXPECT_NE(grid->GetCellData()->GetArray("error_l2"), nullptr) << name;
+    if (summary["refinement"] == "adaptive" && level == 0) {
+      EXPECT_NE(grid->GetCellData()->GetArray("estimator"), nullptr) << name;
+      EXPECT_NE(grid->GetCellData()->GetArray("marked"), nullptr) << name;
+    }
     // The error field is small against the solution (the exact solutions are resolved).
     double range_u[2], range_e[2];
     pd->GetArray("u_exact")->GetRange(range_u);
@@ -166,6 +153,46 @@ TEST_P(ShippedConfig, RunsAndWritesReadableOutput) {
     const double scale = std::max(std::abs(range_u[0]), std::abs(range_u[1]));
     EXPECT_LT(std::max(std::abs(range_e[0]), std::abs(range_e[1])), 0.2 * scale) << name;
   }
+}
+
+class ShippedConfig : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(ShippedConfig, RunsAndWritesReadableOutput) {
+  const std::string name = GetParam();
+  const fs::path config = fs::path(IGA_SOURCE_DIR) / "configs" / (name + ".yaml");
+  const fs::path out = scratch_dir() / ("out-" + name);
+  // A shipped config is a documented one: README.md or a page under docs/ names it.
+  EXPECT_TRUE(documented(name + ".yaml")) << name << ".yaml is named neither in README.md nor in docs/";
+  const RunResult r = run_iga(config.string() + " --levels 2 --quiet --output " + out.string());
+  ASSERT_EQ(r.exit_code, 0) << name << ": " << r.err;
+  EXPECT_TRUE(r.err.empty()) << "--quiet still printed: " << r.err;
+  EXPECT_NE(r.out.find("level"), std::string::npos);
+
+  if (fs::exists(out / "geometry.csv")) {  // a geometry study: the surface itself, no PDE
+    const nlohmann::json summary = nlohmann::json::parse(slurp(out / "summary.json"));
+    EXPECT_EQ(summary["study"], "geometry");
+    ASSERT_EQ(summary["levels"].size(), 2u);
+    for (const auto& level : summary["levels"]) {
+      EXPECT_LT(level["surface"]["max_g1_residual"].get<double>(), 1e-12) << name;
+      for (const auto& file : level["files"]) EXPECT_GT(fs::file_size(out / file.get<std::string>()), 100u) << file;
+    }
+    EXPECT_NEAR(summary["levels"][1]["rate_radial"].get<double>(), 2.0, 0.7) << name;
+    return;
+  }
+
+  if (fs::exists(out / "comparison.csv")) {  // spaces: one study per subfolder, and the comparison
+    const std::string comparison = slurp(out / "comparison.csv");
+    EXPECT_EQ(comparison.rfind("space,level,h,dofs,l2,h1,h2,t_solution,t_errors", 0), 0u);
+    EXPECT_GT(fs::file_size(out / "comparison.svg"), 1000u);
+    EXPECT_TRUE(fs::exists(out / "comparison.txt"));
+    int studies = 0;
+    for (const auto& entry : fs::directory_iterator(out))
+      if (entry.is_directory()) ++studies, check_study(entry.path(), name + "/" + entry.path().filename().string());
+    EXPECT_GE(studies, 2) << name;
+    EXPECT_EQ(std::count(comparison.begin(), comparison.end(), '\n'), 1 + 2 * studies) << name;
+    return;
+  }
+  check_study(out, name);
 }
 
 // Test names may hold only letters, digits and underscores.

@@ -98,12 +98,14 @@ TEST_F(ConvergencePlotTest, WritesSvgWithLegendAndTitleSilently) {
   EXPECT_NE(svg.find("<svg"), std::string::npos);
   EXPECT_NE(svg.find("</svg>"), std::string::npos);  // the stream was closed
   const std::string text = decode_character_references(svg);
-  for (const char* label : {"L2 error", "H1 error", "H2 error", "Poisson Q2 & friends", "mesh size h",
-                            "degrees of freedom"})
+  // Labels: ||e||_L2 and the seminorms |e|_H1, |e|_H2 (PLplot writes the subscript as its own span).
+  for (const char* label : {"||e||", "|e|", ">L2<", ">H1<", ">H2<", "Poisson Q2 & friends",
+                            "degrees of freedom", "time to solution"})
     EXPECT_NE(text.find(label), std::string::npos) << label;
-  // Both panels carry the three series and three reference lines in their legends.
+  EXPECT_EQ(text.find("H1 error"), std::string::npos);  // no seminorm labelled as if it were the norm
+  // Both panels carry the L2 series in their legends.
   std::size_t count = 0;
-  for (std::size_t at = text.find("L2 error"); at != std::string::npos; at = text.find("L2 error", at + 1)) ++count;
+  for (std::size_t at = text.find("||e||"); at != std::string::npos; at = text.find("||e||", at + 1)) ++count;
   EXPECT_EQ(count, 2u);
 }
 
@@ -111,9 +113,9 @@ TEST_F(ConvergencePlotTest, OnlyTheSeriesThatHaveErrorsAreDrawn) {
   const std::string file = path("l2_only.svg");
   plot_convergence(synthetic_rows(false), OptimalRates{2, 1, 0}, "L2 only", file);
   const std::string text = decode_character_references(read_file(file));
-  EXPECT_NE(text.find("L2 error"), std::string::npos);
-  EXPECT_EQ(text.find("H1 error"), std::string::npos);
-  EXPECT_EQ(text.find("H2 error"), std::string::npos);
+  EXPECT_NE(text.find(">L2<"), std::string::npos);
+  EXPECT_EQ(text.find(">H1<"), std::string::npos);
+  EXPECT_EQ(text.find(">H2<"), std::string::npos);
 }
 
 TEST_F(ConvergencePlotTest, SingleLevelStillPlots) {

@@ -1,0 +1,41 @@
+#pragma once
+/// @file
+/// User-named functionals of the discrete solution, evaluated at every level of a study
+/// (`output.functionals`): the value at a point, or the integral of u over the domain. With no
+/// exact solution they show convergence through their observed (Richardson) orders.
+
+#include <Eigen/Core>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "config/config_node.hpp"
+#include "spaces/space.hpp"
+
+namespace iga {
+
+struct FunctionalSpec {
+  enum class Kind { point, integral };
+  std::string name;
+  Kind kind = Kind::integral;
+  Point2 point = Point2::Zero();  ///< Kind::point
+};
+
+/// Parse `output.functionals`: a map name -> {point: [x, y]} or {integral: u}. Points are located
+/// on `coarse` (InputError at the config place when the point is outside the domain).
+std::vector<FunctionalSpec> parse_functionals(const ConfigNode& node, const Space& coarse);
+
+/// The element and reference coordinates of the physical point x, or nullopt when x is not in
+/// the domain. Newton's method on the element maps of the elements whose sampled bounding box holds x.
+std::optional<std::pair<int, Point2>> locate_point(const Space& space, const Point2& x);
+
+/// Value of each functional for u_h = Σ c_i N_i on `space`.
+std::vector<double> evaluate_functionals(const std::vector<FunctionalSpec>& functionals, const Space& space,
+                                         const Eigen::VectorXd& coefficients);
+
+/// Observed order of a sequence F_0, F_1, ... on meshes h_0, h_1, ... from three consecutive
+/// values (Richardson): log(|F_{l-1} − F_{l-2}| / |F_l − F_{l-1}|) / log(h_{l-1} / h_l); nullopt
+/// for l < 2 or when a difference vanishes.
+std::optional<double> richardson_order(const std::vector<double>& values, const std::vector<double>& h, std::size_t l);
+
+}  // namespace iga

@@ -1,0 +1,130 @@
+/// @file
+/// The command line beyond running one config: --list, check, --threads, --help, the error prefix
+/// of command-line mistakes, and several configs compared in one run.
+
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include "spaces/space_factory.hpp"
+#include "tests/support/scratch_files.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct RunResult {
+  int exit_code;
+  std::string out, err;
+};
+
+std::string slurp(const fs::path& p) {
+  std::ifstream in(p);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+RunResult run_iga(const std::string& args) {
+  const fs::path out = iga::test::scratch_folder() / "stdout.txt", err = iga::test::scratch_folder() / "stderr.txt";
+  const std::string cmd = std::string(IGA_RUN_BINARY) + " " + args + " > " + out.string() + " 2> " + err.string();
+  const int status = std::system(cmd.c_str());
+  return {WEXITSTATUS(status), slurp(out), slurp(err)};
+}
+
+fs::path write_config(const std::string& name, const std::string& text) {
+  const fs::path p = iga::test::scratch_folder() / name;
+  std::ofstream(p) << text;
+  return p;
+}
+
+const char* kGood = R"yaml(problem:
+  pde: poisson
+  exact: "x*y + sin(x)"
+  boundary: {all: dirichlet}
+domain: {type: rectangle, min: [0, 0], max: [1, 1]}
+space: {type: bspline, degree: 2, elements: [2, 2]}
+refinement: {levels: 2}
+)yaml";
+
+TEST(CommandLine, ListNamesEverySpaceType) {
+  const RunResult r = run_iga("--list");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  for (const std::string& type : iga::space_types()) EXPECT_NE(r.out.find("  " + type + " "), std::string::npos) << type;
+  for (const char* word : {"domain types", "built-in meshes", "3p_square", "icosphere", "unit_square"})
+    EXPECT_NE(r.out.find(word), std::string::npos) << word;
+  EXPECT_EQ(r.out.find("(no description)"), std::string::npos);
+}
+
+TEST(CommandLine, HelpShowsTheCommands) {
+  const RunResult r = run_iga("--help");
+  ASSERT_EQ(r.exit_code, 0);
+  for (const char* word : {"check", "--list", "--threads", "--levels", "--quiet"})
+    EXPECT_NE(r.out.find(word), std::string::npos) << word;
+}
+
+TEST(CommandLine, CheckValidatesWithoutWriting) {
+  const fs::path out = iga::test::scratch_folder() / "check-out";
+  const fs::path good = write_config("check-good.yaml", std::string(kGood) + "output: {directory: " + out.string() + "}\n");
+  RunResult r = run_iga("check " + good.string());
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find(": ok (bspline-p2; poisson, 2 levels)"), std::string::npos) << r.out;
+  EXPECT_FALSE(fs::exists(out));
+  const fs::path bad = write_config("check-bad.yaml", std::string(kGood) + "outptu: {}\n");
+  r = run_iga("check " + bad.string());
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(r.err.rfind("iga-run: error: ", 0), 0u) << r.err;
+  EXPECT_NE(r.err.find("did you mean 'output'"), std::string::npos) << r.err;
+}
+
+TEST(CommandLine, MistakesCarryTheErrorPrefix) {
+  const fs::path cfg = write_config("prefix.yaml", kGood);
+  RunResult r = run_iga(cfg.string() + " --levels abc");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(r.err, "iga-run: error: --levels: 'abc' is not a number\n");
+  r = run_iga(cfg.string() + " --levels 13");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("--levels: must be between 1 and 12"), std::string::npos) << r.err;
+  r = run_iga(cfg.string() + " --threads 0");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(r.err.rfind("iga-run: error: --threads", 0), 0u) << r.err;
+  r = run_iga("--bogus " + cfg.string());
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(r.err.rfind("iga-run: error: ", 0), 0u) << r.err;
+  r = run_iga("");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(r.err.rfind("iga-run: error: a config file is required", 0), 0u) << r.err;
+}
+
+TEST(CommandLine, ThreadsAndQuiet) {
+  const fs::path out = iga::test::scratch_folder() / "threads-out";
+  const fs::path cfg = write_config("threads.yaml", kGood);
+  const RunResult r = run_iga(cfg.string() + " --threads 1 --quiet --output " + out.string());
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(r.err, "");
+  EXPECT_TRUE(fs::exists(out / "convergence.csv"));
+  EXPECT_NE(r.out.find("t_space"), std::string::npos);
+  EXPECT_NE(r.out.find("t_errors"), std::string::npos);
+}
+
+TEST(CommandLine, SeveralConfigsAreOneComparison) {
+  const fs::path out = iga::test::scratch_folder() / "compare-out";
+  const fs::path a = write_config("a.yaml", kGood);
+  const fs::path b = write_config("b.yaml", std::string(kGood).replace(std::string(kGood).find("degree: 2"), 9, "degree: 3"));
+  const RunResult r = run_iga(a.string() + " " + b.string() + " --quiet --output " + out.string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_TRUE(fs::exists(out / "bspline-p2" / "convergence.csv"));
+  EXPECT_TRUE(fs::exists(out / "bspline-p3" / "convergence.csv"));
+  const std::string csv = slurp(out / "comparison.csv");
+  EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 1 + 2 * 2) << csv;
+  EXPECT_NE(csv.find("\nbspline-p3,1,"), std::string::npos) << csv;
+  EXPECT_NE(r.out.find("DOFs and time"), std::string::npos) << r.out;
+  EXPECT_GT(fs::file_size(out / "comparison.svg"), 1000u);
+}
+
+}  // namespace
