@@ -116,7 +116,7 @@ DiscreteSolution solve_problem(const Space& space, const ProblemSpec& problem, S
 
   say("factorizing and solving (" + std::to_string(r.free_dofs) + " unknowns)");
   t0 = Clock::now();
-  phase.emplace("factorizing", 0);
+  std::optional<ProgressPhase> phase(std::in_place, "factorizing", 0);
   const Eigen::VectorXd u_free =
       solve_linear_system(A_free, b_free, solver, out.solve, [&](const Eigen::VectorXd& x) {
         return reduced_residual(A, b, constraints, x);
