@@ -10,6 +10,7 @@
 #include "output/report.hpp"
 #include "output/staged_directory.hpp"
 #include "output/study_outputs.hpp"
+#include "solver/petsc_session.hpp"
 #include "solver/study.hpp"
 
 namespace iga {
@@ -17,7 +18,7 @@ namespace iga {
 namespace {
 
 int fail(int code, const std::string& message) {
-  std::cerr << "iga-run: error: " << message << '\n';
+  if (is_root_rank()) std::cerr << "iga-run: error: " << message << '\n';  // all ranks agree on errors
   return code;
 }
 
@@ -25,20 +26,28 @@ int run_config(const std::string& config_path, const std::string& output, int le
   const ConfigNode root = ConfigNode::load_file(config_path);
   const StudySettings settings = parse_study(root, config_path, levels, output);
   const ProgressSink progress = [quiet](const std::string& msg) {
-    if (!quiet) std::cerr << "iga-run: " << msg << std::endl;
+    if (!quiet && is_root_rank()) std::cerr << "iga-run: " << msg << std::endl;
   };
 
-  // Checked before the study, not after it, and reported where the location came from.
-  try {
-    check_output_location(settings.output_dir);
-  } catch (const InputError& e) {
-    std::string place = "the default output directory";
-    if (!output.empty()) {
-      place = "--output";
-    } else if (const auto out = root.find("output")) {
-      if (const auto dir = out->find("directory")) place = dir->where();
+  // Checked before the study, not after it, and reported where the location came from. Under
+  // mpirun only rank 0 writes; the other ranks hear of its error (solver/petsc_session.hpp).
+  on_every_rank([&] {
+    if (!is_root_rank()) return;
+    try {
+      check_output_location(settings.output_dir);
+    } catch (const InputError& e) {
+      std::string place = "the default output directory";
+      if (!output.empty()) {
+        place = "--output";
+      } else if (const auto out = root.find("output")) {
+        if (const auto dir = out->find("directory")) place = dir->where();
+      }
+      throw InputError(place + ": " + e.what());
     }
-    throw InputError(place + ": " + e.what());
+  });
+  if (!is_root_rank()) {  // takes part in the distributed solves, writes nothing
+    run_study(settings, progress);
+    return 0;
   }
   StagedDirectory staged(settings.output_dir);
   const std::filesystem::path dir(staged.path());

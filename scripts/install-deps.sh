@@ -11,6 +11,7 @@ packages=(
   libcli11-dev nlohmann-json3-dev libgtest-dev libbenchmark-dev
   libgmsh-dev            # Gmsh SDK: reading .msh, meshing .geo domains and polygons (mesh/)
   libseccomp-dev         # system-call filter of the Gmsh worker process (mesh/worker_sandbox.cpp)
+  petsc-dev              # PETSc with OpenMPI, MUMPS and hypre: solver.type petsc, mpirun -np N (solver/petsc_*)
   libopenblas0-pthread   # optimized BLAS/LAPACK for CHOLMOD's supernodal factorization (reference BLAS is ~5x slower)
   clang libclang-rt-14-dev libomp-14-dev   # scripts/fuzz.sh: libFuzzer and the sanitizers for clang, OpenMP for clang
 )

@@ -7,6 +7,7 @@
 #include "assembly/assembler.hpp"
 #include "assembly/boundary_conditions.hpp"
 #include "solver/boundary_edge_kinds.hpp"
+#include "solver/petsc_solve_problem.hpp"
 #include "solver/surface_problem.hpp"
 #include "config/errors.hpp"
 
@@ -41,7 +42,8 @@ void check_boundary_parts(const Space& space, const ProblemSpec& problem) {
 }
 
 DiscreteSolution solve_problem(const Space& space, const ProblemSpec& problem, SolverKind solver,
-                               const ProgressSink& progress) {
+                               const ProgressSink& progress, const PetscSettings& petsc) {
+  if (solver == SolverKind::petsc) return solve_problem_petsc(space, problem, petsc, progress);
   const auto say = [&](const std::string& msg) {
     if (progress) progress(msg);
   };

@@ -10,6 +10,7 @@
 #include "assembly/error_norms.hpp"
 #include "solver/level_result.hpp"
 #include "solver/linear_solver.hpp"
+#include "solver/petsc_settings.hpp"
 #include "solver/problem.hpp"
 
 namespace iga {
@@ -32,7 +33,8 @@ void check_boundary_parts(const Space& space, const ProblemSpec& problem);
 using ProgressSink = std::function<void(const std::string&)>;
 
 /// `progress`, when given, is told when each phase starts (assemble, factorize and solve, errors).
+/// SolverKind::petsc solves with PETSc as `petsc` says (solve_problem_petsc).
 DiscreteSolution solve_problem(const Space& space, const ProblemSpec& problem, SolverKind solver,
-                               const ProgressSink& progress = {});
+                               const ProgressSink& progress = {}, const PetscSettings& petsc = {});
 
 }  // namespace iga

@@ -109,11 +109,7 @@ StudySettings parse_study(const ConfigNode& root, const std::string& config_path
                  "level " + std::to_string(level) + " (estimated from level 0)");
   }
 
-  if (auto solver = root.find("solver")) {
-    solver->check_keys({"type"});
-    if (auto type = solver->find("type"))
-      s.solver = type->as_choice({"cholmod", "umfpack"}) == "cholmod" ? SolverKind::cholmod : SolverKind::umfpack;
-  }
+  if (auto solver = root.find("solver")) parse_solver_settings(*solver, s.problem.pde, s.solver, s.petsc);
 
   s.output_dir = "results/" + std::filesystem::path(config_path).stem().string();
   if (auto output = root.find("output")) {
@@ -157,7 +153,7 @@ StudyResult run_study(const StudySettings& settings, const ProgressSink& progres
     check_data_finite(*space, settings.problem);
 
     DiscreteSolution sol = solve_problem(*space, settings.problem, settings.solver,
-                                         [&](const std::string& msg) { progress(tag + msg); });
+                                         [&](const std::string& msg) { progress(tag + msg); }, settings.petsc);
     sol.result.level = level;
     sol.result.t_space = t_space;
     progress(tag + "done: assembled in " + format_seconds(sol.result.t_assemble) + ", solved (" + sol.solve.method + ") in " +
