@@ -6,6 +6,7 @@
 
 #include "assembly/integrators.hpp"
 #include "assembly/parallel.hpp"
+#include "assembly/split_matrix.hpp"
 #include "spaces/element_values.hpp"
 
 namespace iga {
@@ -19,6 +20,7 @@ struct ElementSystem {
   std::vector<int> dofs;
   Eigen::MatrixXd matrix;
   Eigen::VectorXd load;
+  MatrixXld extended;
 };
 }  // namespace
 
@@ -28,9 +30,12 @@ void for_each_element_system(const Space& space, const std::vector<int>& element
   std::vector<ElementSystem> batch(std::min(n, batch_size));
 #pragma omp parallel if (worth_threads(n))
   {
-    ElementValues ev(space, flags_for(form) | update_values);
+    // As in Assembler: a space's closed-form element matrix when it has one (no tabulation of the
+    // basis), and the load by the transposed evaluation Σ_q f(x_q) JxW_q N_i(x_q).
+    ElementValues ev(space, flags_for(form));
+    const std::unique_ptr<Space::Evaluator> evaluator = space.make_evaluator();
     PointValues geometry;
-    Eigen::VectorXd fw;
+    Eigen::VectorXd jxw, fw;
     for (int first = 0; first < n; first += batch_size) {
       const int m = std::min(batch_size, n - first);
 #pragma omp for schedule(dynamic, 8)
@@ -38,14 +43,20 @@ void for_each_element_system(const Space& space, const std::vector<int>& element
         const int e = elements[first + k];
         ElementSystem& s = batch[k];
         const RulePtr rule = space.quadrature(e, quad_degree);  // keeps the rule alive
-        ev.reinit(e, *rule);
-        s.dofs = ev.dofs();
-        // The closed form, where a space has one, in the order of element_dofs (= ev.dofs()).
-        if (!space.closed_form_element_matrix(e, form, s.matrix)) element_matrix(form, ev, s.matrix);
-        const PointValues& v = ev.values();
-        fw.resize(ev.num_points());
-        for (int q = 0; q < ev.num_points(); ++q) fw(q) = f(v.x.col(q)) * ev.jxw()(q);
-        s.load = v.value * fw;
+        evaluator->evaluate_geometry(e, *rule, geometry);
+        integration_weights(*rule, geometry, jxw);
+        fw.resize(rule->size());
+        for (int q = 0; q < rule->size(); ++q) fw(q) = f(geometry.x.col(q)) * jxw(q);
+        evaluator->integrate_values(e, *rule, geometry, fw, s.load);
+        s.dofs = geometry.dofs;
+        // The extended closed form, rounded once: the one Assembler::matrix_extended uses (the
+        // double one of some spaces runs Eigen's threaded products per element, slow here).
+        if (space.closed_form_element_matrix_extended(e, form, s.extended)) {
+          s.matrix = s.extended.cast<double>();
+        } else {
+          ev.reinit(e, *rule);
+          element_matrix(form, ev, s.matrix);
+        }
       }
 #pragma omp single
       for (int k = 0; k < m; ++k) sink(elements[first + k], batch[k].dofs, batch[k].matrix, batch[k].load);

@@ -284,8 +284,10 @@ DiscreteSolution solve_problem_petsc(const Space& space, const ProblemSpec& prob
           if (local.empty()) return;
           g.resize(static_cast<int>(dofs.size()));
           for (int i = 0; i < g.size(); ++i) g(i) = constraints.values(dofs[i]);
-          K = T.transpose() * A_e * T;
-          rhs = T.transpose() * (b_e - A_e * g);
+          // Coefficient-wise products: Eigen's blocked ones would start a thread team per element.
+          const Eigen::MatrixXd AT = A_e.lazyProduct(T);
+          K = T.transpose().lazyProduct(AT);
+          rhs = T.transpose().lazyProduct(b_e - A_e.lazyProduct(g));
           finite = finite && rhs.allFinite();
           rows.resize(local.size());
           for (std::size_t i = 0; i < local.size(); ++i) rows[i] = layout.global[local[i]];
