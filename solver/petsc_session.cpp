@@ -93,6 +93,8 @@ PetscSession::PetscSession(int& argc, char** argv) {
     std::exit(1);
   }
   initialised_ = true;
+  // PETSc's signal handlers would turn a closed pipe (iga-run ... | head) into a crash report.
+  PetscPopSignalHandler();
   // iga-run's own arguments back into argv (they are a subsequence of it, so they fit).
   static std::vector<std::string> own_words;
   own_words = own;
@@ -141,14 +143,14 @@ void on_every_rank(const std::function<void()>& work) {
     code = 3, message = e.what();
   }
   const int rank = mpi_rank(), size = mpi_size();
-  int first[2] = {code ? rank : size, 0};
-  MPI_Allreduce(MPI_IN_PLACE, first, 1, MPI_INT, MPI_MIN, PETSC_COMM_WORLD);
-  if (first[0] == size) return;
+  int first = code ? rank : size;
+  MPI_Allreduce(MPI_IN_PLACE, &first, 1, MPI_INT, MPI_MIN, PETSC_COMM_WORLD);
+  if (first == size) return;
   // The lowest failing rank tells the others what happened.
   int header[2] = {code, static_cast<int>(message.size())};
-  MPI_Bcast(header, 2, MPI_INT, first[0], PETSC_COMM_WORLD);
+  MPI_Bcast(header, 2, MPI_INT, first, PETSC_COMM_WORLD);
   message.resize(header[1]);
-  MPI_Bcast(message.data(), header[1], MPI_CHAR, first[0], PETSC_COMM_WORLD);
+  MPI_Bcast(message.data(), header[1], MPI_CHAR, first, PETSC_COMM_WORLD);
   if (header[0] == 2) throw InputError(message);
   if (header[0] == 1) throw NumericalError(message);
   throw std::runtime_error(message);
@@ -159,6 +161,7 @@ void ensure_petsc_initialised() {
   PetscInitialized(&up);
   if (up) return;
   if (PetscInitializeNoArguments() != 0) throw std::runtime_error("PETSc failed to initialise");
+  PetscPopSignalHandler();
   std::atexit([] { PetscFinalize(); });
 }
 
