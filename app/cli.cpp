@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <iostream>
 #include <new>
+#include <optional>
 
 #include "output/convergence_plot.hpp"
 #include "config/errors.hpp"
@@ -18,13 +19,20 @@ namespace iga {
 namespace {
 
 int fail(int code, const std::string& message) {
-  if (is_root_rank()) std::cerr << "iga-run: error: " << message << '\n';  // all ranks agree on errors
-  return code;
+  // Under mpirun an error all ranks share is printed once; one rank's own error ends every rank.
+  if (is_root_rank() || !failure_shared_by_all_ranks()) std::cerr << "iga-run: error: " << message << '\n';
+  return end_ranks_after_failure(code);
 }
 
 int run_config(const std::string& config_path, const std::string& output, int levels, bool quiet) {
-  const ConfigNode root = ConfigNode::load_file(config_path);
-  const StudySettings settings = parse_study(root, config_path, levels, output);
+  std::optional<ConfigNode> root_node;
+  std::optional<StudySettings> parsed;
+  on_every_rank([&] {  // under mpirun: every rank leaves together on bad input
+    root_node.emplace(ConfigNode::load_file(config_path));
+    parsed.emplace(parse_study(*root_node, config_path, levels, output));
+  });
+  const ConfigNode& root = *root_node;
+  const StudySettings& settings = *parsed;
   const ProgressSink progress = [quiet](const std::string& msg) {
     if (!quiet && is_root_rank()) std::cerr << "iga-run: " << msg << std::endl;
   };

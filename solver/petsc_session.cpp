@@ -14,6 +14,8 @@
 namespace iga {
 
 namespace {
+bool shared_failure = false;
+
 bool is_petsc_option(const std::string& word) {
   if (word == "-info") return true;
   if (word.size() < 3 || word[0] != '-' || !std::isalpha(static_cast<unsigned char>(word[1]))) return false;
@@ -151,9 +153,17 @@ void on_every_rank(const std::function<void()>& work) {
   MPI_Bcast(header, 2, MPI_INT, first, PETSC_COMM_WORLD);
   message.resize(header[1]);
   MPI_Bcast(message.data(), header[1], MPI_CHAR, first, PETSC_COMM_WORLD);
+  shared_failure = true;
   if (header[0] == 2) throw InputError(message);
   if (header[0] == 1) throw NumericalError(message);
   throw std::runtime_error(message);
+}
+
+bool failure_shared_by_all_ranks() { return shared_failure; }
+
+int end_ranks_after_failure(int code) {
+  if (mpi_size() > 1 && !shared_failure) MPI_Abort(PETSC_COMM_WORLD, code);
+  return code;
 }
 
 void ensure_petsc_initialised() {
@@ -172,6 +182,8 @@ PetscSession::~PetscSession() = default;
 int mpi_rank() { return 0; }
 int mpi_size() { return 1; }
 void on_every_rank(const std::function<void()>& work) { work(); }
+bool failure_shared_by_all_ranks() { return false; }
+int end_ranks_after_failure(int code) { return code; }
 void ensure_petsc_initialised() {}
 
 #endif

@@ -43,6 +43,14 @@ inline bool is_root_rank() { return mpi_rank() == 0; }
 /// std::runtime_error), so that no rank waits in a collective operation for one that has left.
 void on_every_rank(const std::function<void()>& work);
 
+/// True once on_every_rank has thrown: every rank has the same error and leaves together.
+bool failure_shared_by_all_ranks();
+
+/// After a failure: returns `code` when it was shared by all ranks (or there is one rank);
+/// otherwise the other ranks may be waiting for this one in a collective call, so every rank is
+/// ended with `code` (MPI_Abort, mpirun's exit code).
+int end_ranks_after_failure(int code);
+
 /// Make sure PETSc is initialised (without options) for programs that did not create a session,
 /// such as tests calling the library; it is then finalised at exit.
 void ensure_petsc_initialised();

@@ -9,6 +9,8 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
+#include <iterator>
 #include <sstream>
 #include <unordered_map>
 
@@ -42,7 +44,6 @@ class ReducedBasis {
     for (int k = 0; k < static_cast<int>(c.free.size()); ++k) free_of_[c.free[k]] = k;
     for (const auto& t : c.basis_change) change_[t.row()].emplace_back(t.col(), t.value());
   }
-  int size() const { return static_cast<int>(std::count_if(free_of_.begin(), free_of_.end(), [](int k) { return k >= 0; })); }
 
   /// The unknowns an element with functions `dofs` couples (sorted, unique), and T with
   /// u|element = values|element + T u_unknowns (rows: dofs, columns: unknowns).
@@ -254,9 +255,12 @@ DiscreteSolution solve_problem_petsc(const Space& space, const ProblemSpec& prob
   const PetscInt n_local = layout.first_row[rank + 1] - layout.first_row[rank];
   long long totals[2] = {cut, couplings};
   MPI_Allreduce(MPI_IN_PLACE, totals, 2, MPI_LONG_LONG, MPI_SUM, comm);
-  if (ranks > 1)
+  if (ranks > 1) {
+    char share[32];
+    std::snprintf(share, sizeof share, "%.3g %%", 100.0 * static_cast<double>(totals[0]) / std::max(1LL, totals[1]));
     say("matrix couplings between ranks: " + std::to_string(totals[0]) + " of " + std::to_string(totals[1]) + " (" +
-        std::to_string(100.0 * static_cast<double>(totals[0]) / std::max(1LL, totals[1])).substr(0, 5) + " %)");
+        share + ")");
+  }
 
   PetscObjects p;
   check(MatCreate(comm, &p.A), "MatCreate");
