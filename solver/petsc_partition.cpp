@@ -72,4 +72,40 @@ UnknownLayout layout_unknowns(const std::vector<int>& element_offsets, const std
   return layout;
 }
 
+RowCouplings row_couplings(const std::vector<int>& element_offsets, const std::vector<int>& element_unknowns,
+                           const UnknownLayout& layout, int rank) {
+  const int first = layout.first_row[rank], last = layout.first_row[rank + 1];
+  const int ne = static_cast<int>(element_offsets.size()) - 1;
+  // Row -> elements it lives on (CSR), for this rank's rows only.
+  std::vector<int> start(last - first + 1, 0);
+  for (int e = 0; e < ne; ++e)
+    for (int k = element_offsets[e]; k < element_offsets[e + 1]; ++k)
+      if (layout.owner[element_unknowns[k]] == rank) ++start[layout.global[element_unknowns[k]] - first + 1];
+  for (std::size_t i = 1; i < start.size(); ++i) start[i] += start[i - 1];
+  std::vector<int> elements_of(start.back());
+  std::vector<int> fill(start.begin(), start.end() - 1);
+  for (int e = 0; e < ne; ++e)
+    for (int k = element_offsets[e]; k < element_offsets[e + 1]; ++k)
+      if (layout.owner[element_unknowns[k]] == rank) elements_of[fill[layout.global[element_unknowns[k]] - first]++] = e;
+
+  RowCouplings out;
+  out.on_rank_columns.assign(last - first, 0);
+  out.off_rank_columns.assign(last - first, 0);
+  std::vector<int> columns;
+  for (int row = 0; row < last - first; ++row) {
+    columns.clear();
+    for (int i = start[row]; i < start[row + 1]; ++i) {
+      const int e = elements_of[i];
+      for (int k = element_offsets[e]; k < element_offsets[e + 1]; ++k)
+        columns.push_back(layout.global[element_unknowns[k]]);
+    }
+    std::sort(columns.begin(), columns.end());
+    columns.erase(std::unique(columns.begin(), columns.end()), columns.end());
+    for (int c : columns) ++(c >= first && c < last ? out.on_rank_columns[row] : out.off_rank_columns[row]);
+    out.off_rank += out.off_rank_columns[row];
+    out.total += static_cast<long long>(columns.size());
+  }
+  return out;
+}
+
 }  // namespace iga

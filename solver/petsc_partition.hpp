@@ -32,4 +32,17 @@ struct UnknownLayout {
 UnknownLayout layout_unknowns(const std::vector<int>& element_offsets, const std::vector<int>& element_unknowns,
                               const std::vector<int>& element_owner, int num_unknowns, int parts);
 
+/// Nonzeros of the rows a rank owns, for preallocating its part of the distributed matrix: row r
+/// couples the unknowns of every element r lives on.
+struct RowCouplings {
+  std::vector<int> on_rank_columns;   ///< per owned row: columns owned by the same rank
+  std::vector<int> off_rank_columns;  ///< per owned row: columns owned by other ranks
+  long long off_rank = 0;             ///< Σ off_rank_columns (couplings that cross ranks)
+  long long total = 0;                ///< Σ of both
+};
+
+/// The couplings of `rank`'s rows (element -> unknowns in CSR as for layout_unknowns).
+RowCouplings row_couplings(const std::vector<int>& element_offsets, const std::vector<int>& element_unknowns,
+                           const UnknownLayout& layout, int rank);
+
 }  // namespace iga

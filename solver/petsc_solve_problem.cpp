@@ -182,8 +182,7 @@ DiscreteSolution solve_problem_petsc(const Space& space, const ProblemSpec& prob
   std::vector<int> my_elements, unknown_offsets{0}, unknowns;
   std::vector<BoundaryEdge> neumann_mine, supported_mine;
   UnknownLayout layout;
-  std::vector<PetscInt> d_nnz, o_nnz;
-  long long cut = 0, couplings = 0;
+  RowCouplings couplings;
   std::unique_ptr<ReducedBasis> basis;
   on_every_rank([&] {
     check_boundary_parts(space, problem);
@@ -221,39 +220,13 @@ DiscreteSolution solve_problem_petsc(const Space& space, const ProblemSpec& prob
     for (const BoundaryEdge& be : supported_edges)
       if (owner[be.element] == rank) supported_mine.push_back(be);
 
-    // Preallocation of this rank's rows: the union of the unknowns of the elements each row meets.
-    const int first = layout.first_row[rank], last = layout.first_row[rank + 1];
-    std::vector<int> count(last - first + 1, 0), elements_of;
-    for (int e = 0; e < table.num_elements(); ++e)
-      for (int k = unknown_offsets[e]; k < unknown_offsets[e + 1]; ++k)
-        if (layout.owner[unknowns[k]] == rank) ++count[layout.global[unknowns[k]] - first + 1];
-    for (std::size_t i = 1; i < count.size(); ++i) count[i] += count[i - 1];
-    elements_of.resize(count.back());
-    std::vector<int> fill(count.begin(), count.end() - 1);
-    for (int e = 0; e < table.num_elements(); ++e)
-      for (int k = unknown_offsets[e]; k < unknown_offsets[e + 1]; ++k)
-        if (layout.owner[unknowns[k]] == rank) elements_of[fill[layout.global[unknowns[k]] - first]++] = e;
-    d_nnz.assign(last - first, 0);
-    o_nnz.assign(last - first, 0);
-    std::vector<int> columns;
-    for (int row = 0; row < last - first; ++row) {
-      columns.clear();
-      for (int i = count[row]; i < count[row + 1]; ++i) {
-        const int e = elements_of[i];
-        for (int k = unknown_offsets[e]; k < unknown_offsets[e + 1]; ++k) columns.push_back(layout.global[unknowns[k]]);
-      }
-      std::sort(columns.begin(), columns.end());
-      columns.erase(std::unique(columns.begin(), columns.end()), columns.end());
-      for (int c : columns) ++((c >= first && c < last) ? d_nnz[row] : o_nnz[row]);
-      cut += o_nnz[row];
-      couplings += static_cast<long long>(columns.size());
-    }
+    couplings = row_couplings(unknown_offsets, unknowns, layout, rank);
   });
   r.free_dofs = static_cast<int>(constraints.free.size());
   out.boundary_constrained = static_cast<int>(constraints.constrained.size());
   const PetscInt n_global = r.free_dofs;
   const PetscInt n_local = layout.first_row[rank + 1] - layout.first_row[rank];
-  long long totals[2] = {cut, couplings};
+  long long totals[2] = {couplings.off_rank, couplings.total};
   MPI_Allreduce(MPI_IN_PLACE, totals, 2, MPI_LONG_LONG, MPI_SUM, comm);
   if (ranks > 1) {
     char share[32];
@@ -266,6 +239,8 @@ DiscreteSolution solve_problem_petsc(const Space& space, const ProblemSpec& prob
   check(MatCreate(comm, &p.A), "MatCreate");
   check(MatSetSizes(p.A, n_local, n_local, n_global, n_global), "MatSetSizes");
   check(MatSetType(p.A, MATAIJ), "MatSetType");
+  const std::vector<PetscInt> d_nnz(couplings.on_rank_columns.begin(), couplings.on_rank_columns.end());
+  const std::vector<PetscInt> o_nnz(couplings.off_rank_columns.begin(), couplings.off_rank_columns.end());
   check(MatSeqAIJSetPreallocation(p.A, 0, d_nnz.data()), "MatSeqAIJSetPreallocation");
   check(MatMPIAIJSetPreallocation(p.A, 0, d_nnz.data(), 0, o_nnz.data()), "MatMPIAIJSetPreallocation");
   check(MatSetOption(p.A, MAT_SYMMETRIC, PETSC_TRUE), "MatSetOption");
