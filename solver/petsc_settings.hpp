@@ -17,7 +17,7 @@ namespace iga {
 struct PetscSettings {
   std::string ksp = "cg";      ///< cg | gmres | preonly
   std::string pc = "gamg";     ///< gamg | hypre | mumps | cholesky | ilu
-  double rtol = 1e-12;         ///< relative tolerance of the Krylov method (unpreconditioned: see docs)
+  double rtol = 1e-12;         ///< relative residual decrease, in the KSP's default norm (preconditioned for CG)
   int max_iterations = 10000;  ///< a KSP still unconverged after this many is a numerical failure
   std::string options;         ///< "-name value ..." added to the PETSc options (the command line wins)
 };
