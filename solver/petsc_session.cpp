@@ -80,23 +80,54 @@ std::pair<std::vector<std::string>, std::vector<std::string>> split_petsc_argume
 
 #ifdef IGA_WITH_PETSC
 
-PetscSession::PetscSession(int& argc, char** argv) {
-  const auto [own, petsc] = split_petsc_arguments(std::vector<std::string>(argv, argv + argc));
-  // PETSc keeps pointers into its argv: these strings live as long as the program.
-  static std::vector<std::string> petsc_words;
-  static std::vector<char*> petsc_argv;
-  petsc_words = petsc;
-  for (std::string& w : petsc_words) petsc_argv.push_back(w.data());
-  petsc_argv.push_back(nullptr);
-  int petsc_argc = static_cast<int>(petsc_words.size());
-  char** pargv = petsc_argv.data();
-  if (PetscInitialize(&petsc_argc, &pargv, nullptr, nullptr) != 0) {
-    std::cerr << "iga-run: error: PETSc failed to initialise\n";
-    std::exit(1);
-  }
-  initialised_ = true;
+namespace {
+/// The PETSc part of the command line, kept for a later initialisation: PETSc keeps pointers into
+/// its argv, so these live as long as the program.
+struct PendingArguments {
+  std::vector<std::string> words{"iga-run"};
+  std::vector<char*> argv;
+  bool session = false;  ///< a PetscSession exists and will finalise
+} pending;
+
+/// Launched by mpirun/mpiexec (Open MPI, MPICH, PMIx): every rank needs MPI from the start.
+bool launched_by_mpi() {
+  for (const char* name : {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE", "PMIX_RANK"})
+    if (std::getenv(name)) return true;
+  return false;
+}
+
+bool petsc_up() {
+  PetscBool up = PETSC_FALSE;
+  PetscInitialized(&up);
+  return up == PETSC_TRUE;
+}
+
+void initialise_with_pending_arguments() {
+  pending.argv.clear();
+  for (std::string& w : pending.words) pending.argv.push_back(w.data());
+  pending.argv.push_back(nullptr);
+  int argc = static_cast<int>(pending.words.size());
+  char** argv = pending.argv.data();
+  if (PetscInitialize(&argc, &argv, nullptr, nullptr) != 0) throw std::runtime_error("PETSc failed to initialise");
   // PETSc's signal handlers would turn a closed pipe (iga-run ... | head) into a crash report.
   PetscPopSignalHandler();
+}
+}  // namespace
+
+PetscSession::PetscSession(int& argc, char** argv) {
+  const auto [own, petsc] = split_petsc_arguments(std::vector<std::string>(argv, argv + argc));
+  pending.words = petsc;
+  pending.session = true;
+  // A serial run starts MPI only when a solve asks for PETSc (ensure_petsc_initialised): a run
+  // with CHOLMOD then never touches MPI (no start-up cost, no session files in TMPDIR).
+  if (launched_by_mpi()) {
+    try {
+      initialise_with_pending_arguments();
+    } catch (const std::exception& e) {
+      std::cerr << "iga-run: error: " << e.what() << '\n';
+      std::exit(1);
+    }
+  }
   // iga-run's own arguments back into argv (they are a subsequence of it, so they fit).
   static std::vector<std::string> own_words;
   own_words = own;
@@ -106,7 +137,11 @@ PetscSession::PetscSession(int& argc, char** argv) {
 }
 
 PetscSession::~PetscSession() {
-  if (!initialised_) return;
+  if (!petsc_up()) {
+    if (pending.words.size() > 1)
+      std::cerr << "iga-run: warning: PETSc options given but not used: the solver is not solver.type: petsc\n";
+    return;
+  }
   report_unused_options();
   PetscFinalize();
 }
@@ -167,12 +202,9 @@ int end_ranks_after_failure(int code) {
 }
 
 void ensure_petsc_initialised() {
-  PetscBool up = PETSC_FALSE;
-  PetscInitialized(&up);
-  if (up) return;
-  if (PetscInitializeNoArguments() != 0) throw std::runtime_error("PETSc failed to initialise");
-  PetscPopSignalHandler();
-  std::atexit([] { PetscFinalize(); });
+  if (petsc_up()) return;
+  initialise_with_pending_arguments();
+  if (!pending.session) std::atexit([] { PetscFinalize(); });  // a program without a session (tests)
 }
 
 #else  // without PETSc: one rank, nothing to initialise

@@ -10,19 +10,17 @@
 
 namespace iga {
 
-/// Initialises PETSc (and MPI) with the PETSc options of the command line and PETSC_OPTIONS, and
-/// finalises it on destruction, first reporting (on rank 0) every option that nothing used: a
-/// misspelt option is otherwise silently ignored. The PETSc options are taken out of argv, leaving
-/// iga-run's own arguments for the command-line parser (split_petsc_arguments).
+/// Takes the PETSc options out of argv, leaving iga-run's own arguments for the command-line parser
+/// (split_petsc_arguments), and initialises PETSc (and MPI) with them and PETSC_OPTIONS: at once
+/// when launched by mpirun, else when the first PETSc solve asks (ensure_petsc_initialised), so a
+/// serial run with another solver never starts MPI. On destruction, finalises PETSc, first
+/// reporting (on rank 0) every option that nothing used: PETSc ignores a misspelt option silently.
 class PetscSession {
  public:
   PetscSession(int& argc, char** argv);
   ~PetscSession();
   PetscSession(const PetscSession&) = delete;
   PetscSession& operator=(const PetscSession&) = delete;
-
- private:
-  bool initialised_ = false;
 };
 
 /// argv split into iga-run's arguments (first, with argv[0]) and PETSc's (second, with argv[0]).
@@ -51,8 +49,8 @@ bool failure_shared_by_all_ranks();
 /// ended with `code` (MPI_Abort, mpirun's exit code).
 int end_ranks_after_failure(int code);
 
-/// Make sure PETSc is initialised (without options) for programs that did not create a session,
-/// such as tests calling the library; it is then finalised at exit.
+/// Make sure PETSc is initialised: with the session's PETSc options, or without options in programs
+/// that created no session (tests calling the library; finalised at exit then).
 void ensure_petsc_initialised();
 
 }  // namespace iga
