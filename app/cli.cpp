@@ -11,6 +11,7 @@
 #include <fstream>
 #include <iostream>
 #include <new>
+#include <optional>
 
 #include "app/catalogue.hpp"
 #include "app/progress_bar.hpp"
@@ -22,6 +23,7 @@
 #include "output/report.hpp"
 #include "output/staged_directory.hpp"
 #include "output/study_outputs.hpp"
+#include "solver/petsc_session.hpp"
 #include "solver/study.hpp"
 
 namespace iga {
@@ -29,15 +31,16 @@ namespace iga {
 namespace {
 
 int fail(int code, const std::string& message) {
-  std::cerr << "iga-run: error: " << message << '\n';
-  return code;
+  // Under mpirun an error all ranks share is printed once; one rank's own error ends every rank.
+  if (is_root_rank() || !failure_shared_by_all_ranks()) std::cerr << "iga-run: error: " << message << '\n';
+  return end_ranks_after_failure(code);
 }
 
 using Clock = std::chrono::steady_clock;
 
 ProgressSink progress_sink(bool quiet) {
   return [quiet](const std::string& msg) {
-    if (!quiet) std::cerr << "iga-run: " << msg << std::endl;
+    if (!quiet && is_root_rank()) std::cerr << "iga-run: " << msg << std::endl;
   };
 }
 
@@ -52,7 +55,10 @@ void check_output(const std::string& directory, const std::string& output, const
     } else if (const auto out = root ? root->find("output") : std::nullopt) {
       if (const auto dir = out->find("directory")) place = dir->where();
     }
-    throw InputError(place + ": " + e.what());
+  });
+  if (!is_root_rank()) {  // takes part in the distributed solves, writes nothing
+    run_study(settings, progress);
+    return 0;
   }
 }
 
@@ -117,18 +123,39 @@ std::vector<std::pair<std::string, StudySettings>> parse_all(const std::vector<s
 
 int run_configs(const std::vector<std::string>& paths, const std::string& output, int levels, bool quiet) {
   const auto t_start = Clock::now();
-  for (const std::string& path : paths) {
-    const ConfigNode root = ConfigNode::load_file(path);
-    if (!is_geometry_study(root)) continue;
-    if (paths.size() > 1)
-      throw InputError(path + ": a geometry study (study: {type: geometry}) runs alone, not in a comparison");
-    return run_geometry_config(root, path, output, levels, progress_sink(quiet));
-  }
-  const auto studies = parse_all(paths, output, levels);
+  std::optional<ConfigNode> geometry;  // a geometry study runs alone
+  std::string geometry_path;
+  std::vector<std::pair<std::string, StudySettings>> studies;
+  on_every_rank([&] {  // under mpirun: every rank leaves together on bad input
+    for (const std::string& path : paths) {
+      ConfigNode root = ConfigNode::load_file(path);
+      if (!is_geometry_study(root)) continue;
+      if (paths.size() > 1)
+        throw InputError(path + ": a geometry study (study: {type: geometry}) runs alone, not in a comparison");
+      geometry.emplace(std::move(root));
+      geometry_path = path;
+      return;
+    }
+    studies = parse_all(paths, output, levels);
+  });
   const ProgressSink progress = progress_sink(quiet);
-  if (studies.size() == 1) {
+  if (geometry) return is_root_rank() ? run_geometry_config(*geometry, geometry_path, output, levels, progress) : 0;
+
+  // One study goes where its config says; a comparison (one config's spaces:) too, several
+  // configs to results/comparison. Checked before the study, not after it; under mpirun only
+  // rank 0 writes and the other ranks hear of its error (solver/petsc_session.hpp).
+  const bool single = studies.size() == 1;
+  const std::string directory = single || !output.empty() || paths.size() == 1 ? studies.front().second.output_dir
+                                                                               : "results/comparison";
+  on_every_rank([&] {
+    if (is_root_rank()) check_output(directory, output, paths.size() == 1 ? &studies.front().second.root : nullptr);
+  });
+  if (!is_root_rank()) {  // takes part in the distributed solves, writes nothing
+    for (const auto& study : studies) run_study(study.second, progress);
+    return 0;
+  }
+  if (single) {
     const StudySettings& settings = studies.front().second;
-    check_output(settings.output_dir, output, &settings.root);
     StagedDirectory staged(settings.output_dir);
     run_into(settings, paths.front(), staged.path(), progress, t_start);
     staged.commit();
@@ -137,10 +164,6 @@ int run_configs(const std::vector<std::string>& paths, const std::string& output
   }
 
   // A comparison: each study in a subfolder named after its space, then the combined report.
-  // One config's spaces: go where that config says; several configs to results/comparison.
-  const std::string directory =
-      !output.empty() ? output : paths.size() == 1 ? studies.front().second.output_dir : "results/comparison";
-  check_output(directory, output, paths.size() == 1 ? &studies.front().second.root : nullptr);
   StagedDirectory staged(directory);
   std::vector<ComparedStudy> compared;
   for (const auto& [path, settings] : studies) {

@@ -14,6 +14,7 @@ packages=(
   libtinyxml2-dev        # G+Smo XML geometry files (mesh/gismo_xml.cpp)
   pybind11-dev python3-dev python3-numpy   # the Python module iga_run (python/), for Debian's /usr/bin/python3
   python3-scipy python3-matplotlib          # its tests (Matrix Market read-back) and python/examples/
+  petsc-dev              # PETSc with OpenMPI, MUMPS and hypre: solver.type petsc, mpirun -np N (solver/petsc_*)
   libopenblas0-pthread   # optimized BLAS/LAPACK for CHOLMOD's supernodal factorization (reference BLAS is ~5x slower)
   clang libclang-rt-14-dev libomp-14-dev   # scripts/fuzz.sh: libFuzzer and the sanitizers for clang, OpenMP for clang
 )

@@ -14,7 +14,8 @@
 
 namespace iga {
 
-enum class SolverKind { cholmod, umfpack };
+/// petsc: the distributed PETSc path (solver/petsc_solve_problem.hpp), chosen before this function.
+enum class SolverKind { cholmod, umfpack, petsc };
 
 struct SolveReport {
   std::string method;           ///< what actually solved the system ("cholmod", "umfpack")

@@ -9,6 +9,7 @@
 #include "config/progress.hpp"
 #include "assembly/boundary_conditions.hpp"
 #include "solver/boundary_edge_kinds.hpp"
+#include "solver/petsc_solve_problem.hpp"
 #include "solver/surface_problem.hpp"
 #include "config/errors.hpp"
 
@@ -91,7 +92,8 @@ LinearSystem assemble_linear_system(const Space& space, const ProblemSpec& probl
 }
 
 DiscreteSolution solve_problem(const Space& space, const ProblemSpec& problem, SolverKind solver,
-                               const ProgressSink& progress) {
+                               const ProgressSink& progress, const PetscSettings& petsc) {
+  if (solver == SolverKind::petsc) return solve_problem_petsc(space, problem, petsc, progress);
   const auto say = [&](const std::string& msg) {
     if (progress) progress(msg);
   };

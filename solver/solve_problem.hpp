@@ -13,6 +13,7 @@
 #include "assembly/split_matrix.hpp"
 #include "solver/level_result.hpp"
 #include "solver/linear_solver.hpp"
+#include "solver/petsc_settings.hpp"
 #include "solver/problem.hpp"
 
 namespace iga {
@@ -54,7 +55,8 @@ struct LinearSystem {
 LinearSystem assemble_linear_system(const Space& space, const ProblemSpec& problem, const ProgressSink& progress = {});
 
 /// `progress`, when given, is told when each phase starts (assemble, factorize and solve, errors).
+/// SolverKind::petsc solves with PETSc as `petsc` says (solve_problem_petsc).
 DiscreteSolution solve_problem(const Space& space, const ProblemSpec& problem, SolverKind solver,
-                               const ProgressSink& progress = {});
+                               const ProgressSink& progress = {}, const PetscSettings& petsc = {});
 
 }  // namespace iga

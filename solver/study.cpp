@@ -51,11 +51,7 @@ StudySettings parse_study(const ConfigNode& root, const std::string& config_path
 
   // The output location and the solver first: they cost nothing to check, and building level 0
   // below may take a while (a .geo meshed by Gmsh, a large first level).
-  if (auto solver = root.find("solver")) {
-    solver->check_keys({"type"});
-    if (auto type = solver->find("type"))
-      s.solver = type->as_choice({"cholmod", "umfpack"}) == "cholmod" ? SolverKind::cholmod : SolverKind::umfpack;
-  }
+  if (auto solver = root.find("solver")) parse_solver_settings(*solver, s.problem.pde, s.solver, s.petsc);
   s.output_dir = "results/" + std::filesystem::path(config_path).stem().string();
   std::string output_place = "the default output directory";
   if (auto output = root.find("output")) {
@@ -233,7 +229,7 @@ StudyResult run_study(const StudySettings& settings, const ProgressSink& progres
     check_data_finite(*space, settings.problem);
 
     DiscreteSolution sol = solve_problem(*space, settings.problem, settings.solver,
-                                         [&](const std::string& msg) { progress(tag + msg); });
+                                         [&](const std::string& msg) { progress(tag + msg); }, settings.petsc);
     sol.result.level = level;
     sol.result.t_space = t_space;
     if (!result.rows.empty() && result.rows.back().energy && sol.result.energy)

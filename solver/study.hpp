@@ -11,6 +11,7 @@
 #include "config/resource_limits.hpp"
 #include "solver/level_result.hpp"
 #include "solver/linear_solver.hpp"
+#include "solver/petsc_settings.hpp"
 #include "solver/problem.hpp"
 #include "solver/solve_problem.hpp"
 #include "solver/study_functionals.hpp"
@@ -37,6 +38,7 @@ struct StudySettings {
   int max_dofs = 0;        ///< adaptive: stop before a level would exceed this many DOFs (0: no limit)
   double tolerance = 0.0;  ///< adaptive: stop once the estimator (Σ η_K²)^½ is <= this (0: no tolerance)
   SolverKind solver = SolverKind::cholmod;
+  PetscSettings petsc;     ///< solver.type: petsc only
   std::string output_dir;  ///< final destination of the results
   bool write_vtk = true;
   int vtk_samples = 8;     ///< samples per element edge of linear sub-cells (output.vtk.samples)

@@ -1,0 +1,56 @@
+#pragma once
+/// @file
+/// PETSc and MPI for the life of the program, and what the rest of the program needs to know about
+/// the ranks (which one writes files, how an error on one rank reaches all). Free of PETSc types:
+/// without PETSc (IGA_WITH_PETSC off) there is one rank and every function is trivial.
+
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace iga {
+
+/// Takes the PETSc options out of argv, leaving iga-run's own arguments for the command-line parser
+/// (split_petsc_arguments), and initialises PETSc (and MPI) with them and PETSC_OPTIONS: at once
+/// when launched by mpirun, else when the first PETSc solve asks (ensure_petsc_initialised), so a
+/// serial run with another solver never starts MPI. On destruction, finalises PETSc, first
+/// reporting (on rank 0) every option that nothing used: PETSc ignores a misspelt option silently.
+class PetscSession {
+ public:
+  PetscSession(int& argc, char** argv);
+  ~PetscSession();
+  PetscSession(const PetscSession&) = delete;
+  PetscSession& operator=(const PetscSession&) = delete;
+};
+
+/// argv split into iga-run's arguments (first, with argv[0]) and PETSc's (second, with argv[0]).
+/// A PETSc option is a word "-name" with an underscore in the name (-ksp_monitor, -log_view,
+/// -pc_gamg_threshold) or -info; the next word is its value unless it starts with '-' (and is not a
+/// negative number) or, before the config file has been seen, names a .yaml/.yml file.
+std::pair<std::vector<std::string>, std::vector<std::string>> split_petsc_arguments(
+    const std::vector<std::string>& args);
+
+/// This process's rank and the number of ranks (0 and 1 when PETSc is not running).
+int mpi_rank();
+int mpi_size();
+/// Rank 0: the one that prints and writes files.
+inline bool is_root_rank() { return mpi_rank() == 0; }
+
+/// Collective (every rank must call it at the same point): run `work`; when it throws on any rank,
+/// every rank throws the error of the lowest failing rank (InputError, NumericalError, else
+/// std::runtime_error), so that no rank waits in a collective operation for one that has left.
+void on_every_rank(const std::function<void()>& work);
+
+/// True once on_every_rank has thrown: every rank has the same error and leaves together.
+bool failure_shared_by_all_ranks();
+
+/// After a failure: returns `code` when it was shared by all ranks (or there is one rank);
+/// otherwise the other ranks may be waiting for this one in a collective call, so every rank is
+/// ended with `code` (MPI_Abort, mpirun's exit code).
+int end_ranks_after_failure(int code);
+
+/// Make sure PETSc is initialised: with the session's PETSc options, or without options in programs
+/// that created no session (tests calling the library; finalised at exit then).
+void ensure_petsc_initialised();
+
+}  // namespace iga

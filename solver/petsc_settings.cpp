@@ -1,0 +1,75 @@
+#include "solver/petsc_settings.hpp"
+
+#include <algorithm>
+#include <cctype>
+
+namespace iga {
+
+bool petsc_available() {
+#ifdef IGA_WITH_PETSC
+  return true;
+#else
+  return false;
+#endif
+}
+
+PetscSettings default_petsc_settings(Pde pde) {
+  PetscSettings s;
+  if (pde == Pde::biharmonic) {
+    s.ksp = "preonly";
+    s.pc = "mumps";
+  }
+  return s;
+}
+
+void parse_solver_settings(const ConfigNode& node, Pde pde, SolverKind& kind, PetscSettings& petsc) {
+  node.check_keys({"type", "ksp", "pc", "rtol", "max_iterations", "options"});
+  if (auto type = node.find("type")) {
+    const std::string t = type->as_choice({"cholmod", "umfpack", "petsc"});
+    kind = t == "cholmod" ? SolverKind::cholmod : t == "umfpack" ? SolverKind::umfpack : SolverKind::petsc;
+    if (kind == SolverKind::petsc && !petsc_available())
+      type->fail("this iga-run was built without PETSc (install petsc-dev and rebuild with -DIGA_WITH_PETSC=ON)");
+  }
+  if (kind != SolverKind::petsc) {
+    for (const char* key : {"ksp", "pc", "rtol", "max_iterations", "options"})
+      if (auto k = node.find(key)) k->fail(std::string(key) + " is only used with solver.type: petsc");
+    return;
+  }
+  if (pde == Pde::laplace_beltrami)
+    node["type"].fail("solver.type: petsc is not yet available for laplace_beltrami (use cholmod)");
+  petsc = default_petsc_settings(pde);
+  if (auto ksp = node.find("ksp")) petsc.ksp = ksp->as_choice({"cg", "gmres", "preonly"});
+  if (auto pc = node.find("pc")) petsc.pc = pc->as_choice({"gamg", "hypre", "mumps", "cholesky", "ilu"});
+  const bool direct = petsc.pc == "mumps" || petsc.pc == "cholesky";
+  if (petsc.ksp == "preonly" && !direct)
+    (node.find("ksp") ? node["ksp"] : node["pc"])
+        .fail("ksp: preonly applies the preconditioner once; it needs a direct one (pc: mumps or cholesky), not " +
+              petsc.pc);
+  if (auto rtol = node.find("rtol")) {
+    petsc.rtol = rtol->as_double();
+    if (!(petsc.rtol > 0.0 && petsc.rtol < 1.0)) rtol->fail("rtol must be in (0, 1) (got " + format_number(petsc.rtol) + ")");
+  }
+  if (auto it = node.find("max_iterations")) {
+    petsc.max_iterations = it->as_int();
+    if (petsc.max_iterations < 1) it->fail("max_iterations must be positive");
+  }
+  if (auto options = node.find("options")) {
+    petsc.options = options->as_string();
+    // Each word that is not a value must name an option: PETSc would silently take "ksp_monitor".
+    bool after_name = false;  // a word after a name may be its value
+    std::size_t pos = 0;
+    while (pos < petsc.options.size()) {
+      const std::size_t start = petsc.options.find_first_not_of(" \t\n", pos);
+      if (start == std::string::npos) break;
+      const std::size_t end = std::min(petsc.options.find_first_of(" \t\n", start), petsc.options.size());
+      const std::string word = petsc.options.substr(start, end - start);
+      const bool is_name = word.size() > 1 && word[0] == '-' && std::isalpha(static_cast<unsigned char>(word[1]));
+      if (!is_name && !after_name)
+        options->fail("'" + word + "' is not a PETSc option name (options are written -name [value], e.g. \"-ksp_monitor\")");
+      after_name = is_name;
+      pos = end;
+    }
+  }
+}
+
+}  // namespace iga

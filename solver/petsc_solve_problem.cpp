@@ -1,0 +1,382 @@
+#include "solver/petsc_solve_problem.hpp"
+
+#include "config/errors.hpp"
+
+#ifdef IGA_WITH_PETSC
+
+#include <petscksp.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <iterator>
+#include <sstream>
+#include <unordered_map>
+
+#include "assembly/boundary_conditions.hpp"
+#include "assembly/element_subset_assembly.hpp"
+#include "assembly/sparsity.hpp"
+#include "solver/boundary_edge_kinds.hpp"
+#include "solver/petsc_partition.hpp"
+#include "solver/petsc_session.hpp"
+
+namespace iga {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
+
+void check(PetscErrorCode code, const char* what) {
+  if (code != 0) throw std::runtime_error(std::string("PETSc failed in ") + what + " (error " + std::to_string(code) + ")");
+}
+
+BoundaryField boundary_field(const SymbolicFunction& f) {
+  return [f](const Point2& x, const Point2&) { return f(x); };
+}
+
+/// The unknowns of the reduced system: free function k is unknown k (its position in
+/// Constraints::free); a constrained function contributes to the unknowns of its basis change.
+class ReducedBasis {
+ public:
+  explicit ReducedBasis(const Constraints& c, int dimension) : free_of_(dimension, -1) {
+    for (int k = 0; k < static_cast<int>(c.free.size()); ++k) free_of_[c.free[k]] = k;
+    for (const auto& t : c.basis_change) change_[t.row()].emplace_back(t.col(), t.value());
+  }
+
+  /// The unknowns an element with functions `dofs` couples (sorted, unique), and T with
+  /// u|element = values|element + T u_unknowns (rows: dofs, columns: unknowns).
+  void element(const std::vector<int>& dofs, std::vector<int>& unknowns, Eigen::MatrixXd* T = nullptr) const {
+    unknowns.clear();
+    for (int d : dofs) {
+      if (free_of_[d] >= 0) unknowns.push_back(free_of_[d]);
+      else if (auto it = change_.find(d); it != change_.end())
+        for (const auto& [k, a] : it->second) unknowns.push_back(k);
+    }
+    std::sort(unknowns.begin(), unknowns.end());
+    unknowns.erase(std::unique(unknowns.begin(), unknowns.end()), unknowns.end());
+    if (!T) return;
+    T->setZero(static_cast<int>(dofs.size()), static_cast<int>(unknowns.size()));
+    const auto column = [&](int k) { return static_cast<int>(std::lower_bound(unknowns.begin(), unknowns.end(), k) - unknowns.begin()); };
+    for (int i = 0; i < static_cast<int>(dofs.size()); ++i) {
+      if (free_of_[dofs[i]] >= 0) (*T)(i, column(free_of_[dofs[i]])) = 1.0;
+      else if (auto it = change_.find(dofs[i]); it != change_.end())
+        for (const auto& [k, a] : it->second) (*T)(i, column(k)) += a;
+    }
+  }
+
+ private:
+  std::vector<int> free_of_;
+  std::unordered_map<int, std::vector<std::pair<int, double>>> change_;
+};
+
+/// PETSc objects destroyed on every path out (PETSc's destroy functions accept null handles).
+struct PetscObjects {
+  Mat A = nullptr;
+  Vec b = nullptr, x = nullptr, all = nullptr;
+  KSP ksp = nullptr;
+  VecScatter to_all = nullptr;
+  ~PetscObjects() {
+    VecScatterDestroy(&to_all);
+    KSPDestroy(&ksp);
+    VecDestroy(&all);
+    VecDestroy(&x);
+    VecDestroy(&b);
+    MatDestroy(&A);
+  }
+};
+
+/// The config's extra options, each unless the command line or PETSC_OPTIONS already set it.
+void insert_config_options(const std::string& options) {
+  std::istringstream in(options);
+  std::vector<std::string> words{std::istream_iterator<std::string>(in), std::istream_iterator<std::string>()};
+  for (std::size_t i = 0; i < words.size(); ++i) {
+    const std::string name = words[i];
+    std::string value;
+    if (i + 1 < words.size() && !(words[i + 1][0] == '-' && std::isalpha(static_cast<unsigned char>(words[i + 1][1]))))
+      value = words[++i];
+    PetscBool set = PETSC_FALSE;
+    check(PetscOptionsHasName(nullptr, nullptr, name.c_str(), &set), "PetscOptionsHasName");
+    if (!set) check(PetscOptionsSetValue(nullptr, name.c_str(), value.empty() ? nullptr : value.c_str()), "PetscOptionsSetValue");
+  }
+}
+
+void configure_ksp(KSP ksp, const PetscSettings& s, int ranks) {
+  check(KSPSetType(ksp, s.ksp == "cg" ? KSPCG : s.ksp == "gmres" ? KSPGMRES : KSPPREONLY), "KSPSetType");
+  PC pc;
+  check(KSPGetPC(ksp, &pc), "KSPGetPC");
+  if (s.pc == "gamg") {
+    check(PCSetType(pc, PCGAMG), "PCSetType");
+  } else if (s.pc == "hypre") {
+    check(PCSetType(pc, PCHYPRE), "PCSetType");
+    check(PCHYPRESetType(pc, "boomeramg"), "PCHYPRESetType");
+  } else if (s.pc == "mumps" || (s.pc == "cholesky" && ranks > 1)) {
+    // PETSc's own Cholesky is sequential; across ranks the factorization is MUMPS's.
+    check(PCSetType(pc, PCCHOLESKY), "PCSetType");
+    check(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS), "PCFactorSetMatSolverType");
+  } else if (s.pc == "cholesky") {
+    check(PCSetType(pc, PCCHOLESKY), "PCSetType");
+  } else if (s.pc == "ilu") {
+    check(PCSetType(pc, ranks > 1 ? PCBJACOBI : PCILU), "PCSetType");  // ILU(0) of each rank's block
+  }
+  check(KSPSetTolerances(ksp, s.rtol, PETSC_DEFAULT, PETSC_DEFAULT, s.max_iterations), "KSPSetTolerances");
+  check(KSPSetResidualHistory(ksp, nullptr, PETSC_DECIDE, PETSC_TRUE), "KSPSetResidualHistory");
+  insert_config_options(s.options);
+  check(KSPSetFromOptions(ksp), "KSPSetFromOptions");  // the command line and PETSC_OPTIONS win
+}
+
+std::string describe(KSP ksp) {
+  KSPType kt;
+  PC pc;
+  PCType pt;
+  KSPGetType(ksp, &kt);
+  KSPGetPC(ksp, &pc);
+  PCGetType(pc, &pt);
+  std::string text = std::string(kt) + " + " + pt;
+  MatSolverType solver = nullptr;
+  if (PCFactorGetMatSolverType(pc, &solver) == 0 && solver) text += " (" + std::string(solver) + ")";
+  return text;
+}
+
+/// "DIVERGED_ITS after 50 iterations; last residual norms 1.2e-3, 1.1e-3, 1.0e-3 (‖b‖ = 2.5)".
+std::string failure_text(KSP ksp, KSPConvergedReason reason, double bnorm) {
+  PetscInt its = 0, n = 0;
+  const PetscReal* history = nullptr;
+  KSPGetIterationNumber(ksp, &its);
+  KSPGetResidualHistory(ksp, &history, &n);
+  std::ostringstream out;
+  out.precision(3);
+  out << KSPConvergedReasons[reason] << " after " << its << " iterations";
+  if (n > 0) {
+    out << "; last residual norms";
+    for (PetscInt i = std::max<PetscInt>(0, n - 3); i < n; ++i) out << (i > std::max<PetscInt>(0, n - 3) ? ", " : " ") << history[i];
+  }
+  out << " (right-hand side norm " << bnorm << ")";
+  return out.str();
+}
+
+}  // namespace
+
+DiscreteSolution solve_problem_petsc(const Space& space, const ProblemSpec& problem, const PetscSettings& settings,
+                                     const ProgressSink& progress) {
+  if (problem.pde == Pde::laplace_beltrami)
+    throw InputError("solver.type: petsc is not yet available for laplace_beltrami (use cholmod)");
+  ensure_petsc_initialised();
+  const MPI_Comm comm = PETSC_COMM_WORLD;
+  const int rank = mpi_rank(), ranks = mpi_size();
+  const auto say = [&](const std::string& msg) {
+    if (progress && rank == 0) progress(msg);
+  };
+  DiscreteSolution out;
+  LevelResult& r = out.result;
+  r.h = space.mesh_size();
+  r.dofs = space.dimension();
+  r.elements = space.num_elements();
+  const int qa = assembly_quadrature_degree(space);
+  auto t0 = Clock::now();
+
+  // Local work first (every rank the same, apart from its elements): an input error found here
+  // is raised on all ranks together before any collective call.
+  Constraints constraints;
+  std::vector<int> my_elements, unknown_offsets{0}, unknowns;
+  std::vector<BoundaryEdge> neumann_mine, supported_mine;
+  UnknownLayout layout;
+  RowCouplings couplings;
+  std::unique_ptr<ReducedBasis> basis;
+  on_every_rank([&] {
+    check_boundary_parts(space, problem);
+    EssentialBoundary essential;
+    std::vector<BoundaryEdge> neumann_edges, supported_edges;
+    for (const auto& [e, kind] : boundary_edge_kinds(space, problem)) {
+      if (kind != BoundaryKind::neumann) essential.value_edges.push_back(e);
+      if (kind == BoundaryKind::clamped) essential.normal_edges.push_back(e);
+      if (kind == BoundaryKind::neumann) neumann_edges.push_back(e);
+      if (kind == BoundaryKind::simply_supported) supported_edges.push_back(e);
+    }
+    if (essential.value_edges.empty())
+      throw InputError("problem.boundary: a pure Neumann problem has no unique solution; make at least one part dirichlet");
+    say("boundary constraints");
+    constraints = impose_essential(space, essential, boundary_field(problem.value), problem.normal_derivative_field(), qa);
+    if (!constraints.values.allFinite())
+      throw InputError(problem.data_where + ": the boundary data (u or du/dn) are not finite at some boundary point");
+    basis = std::make_unique<ReducedBasis>(constraints, space.dimension());
+
+    say("partitioning " + std::to_string(space.num_elements()) + " elements over " + std::to_string(ranks) + " rank(s)");
+    const std::vector<int> owner = partition_elements(element_centres(space), ranks);
+    const ElementDofTable table = collect_element_dofs(space);
+    std::vector<int> dofs, local;
+    for (int e = 0; e < table.num_elements(); ++e) {
+      dofs.assign(table.begin(e), table.begin(e + 1));
+      basis->element(dofs, local);
+      unknowns.insert(unknowns.end(), local.begin(), local.end());
+      unknown_offsets.push_back(static_cast<int>(unknowns.size()));
+      if (owner[e] == rank) my_elements.push_back(e);
+    }
+    const int n = static_cast<int>(constraints.free.size());
+    layout = layout_unknowns(unknown_offsets, unknowns, owner, n, ranks);
+    for (const BoundaryEdge& be : neumann_edges)
+      if (owner[be.element] == rank) neumann_mine.push_back(be);
+    for (const BoundaryEdge& be : supported_edges)
+      if (owner[be.element] == rank) supported_mine.push_back(be);
+
+    couplings = row_couplings(unknown_offsets, unknowns, layout, rank);
+  });
+  r.free_dofs = static_cast<int>(constraints.free.size());
+  out.boundary_constrained = static_cast<int>(constraints.constrained.size());
+  const PetscInt n_global = r.free_dofs;
+  const PetscInt n_local = layout.first_row[rank + 1] - layout.first_row[rank];
+  long long totals[2] = {couplings.off_rank, couplings.total};
+  MPI_Allreduce(MPI_IN_PLACE, totals, 2, MPI_LONG_LONG, MPI_SUM, comm);
+  if (ranks > 1) {
+    char share[32];
+    std::snprintf(share, sizeof share, "%.3g %%", 100.0 * static_cast<double>(totals[0]) / std::max(1LL, totals[1]));
+    say("matrix couplings between ranks: " + std::to_string(totals[0]) + " of " + std::to_string(totals[1]) + " (" +
+        share + ")");
+  }
+
+  PetscObjects p;
+  check(MatCreate(comm, &p.A), "MatCreate");
+  check(MatSetSizes(p.A, n_local, n_local, n_global, n_global), "MatSetSizes");
+  check(MatSetType(p.A, MATAIJ), "MatSetType");
+  const std::vector<PetscInt> d_nnz(couplings.on_rank_columns.begin(), couplings.on_rank_columns.end());
+  const std::vector<PetscInt> o_nnz(couplings.off_rank_columns.begin(), couplings.off_rank_columns.end());
+  check(MatSeqAIJSetPreallocation(p.A, 0, d_nnz.data()), "MatSeqAIJSetPreallocation");
+  check(MatMPIAIJSetPreallocation(p.A, 0, d_nnz.data(), 0, o_nnz.data()), "MatMPIAIJSetPreallocation");
+  check(MatSetOption(p.A, MAT_SYMMETRIC, PETSC_TRUE), "MatSetOption");
+  check(MatSetOption(p.A, MAT_SPD, PETSC_TRUE), "MatSetOption");
+  check(MatCreateVecs(p.A, &p.x, &p.b), "MatCreateVecs");
+
+  say("assembling (" + std::to_string(r.free_dofs) + " unknowns)");
+  on_every_rank([&] {
+    const SymbolicFunction source = problem.source;
+    std::vector<int> local;
+    std::vector<PetscInt> rows;
+    Eigen::MatrixXd T;
+    Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> K;
+    Eigen::VectorXd g, rhs;
+    bool finite = true;
+    for_each_element_system(
+        space, my_elements, problem.form, [source](const Point2& x) { return source(x); }, qa,
+        [&](int, const std::vector<int>& dofs, const Eigen::MatrixXd& A_e, const Eigen::VectorXd& b_e) {
+          basis->element(dofs, local, &T);
+          if (local.empty()) return;
+          g.resize(static_cast<int>(dofs.size()));
+          for (int i = 0; i < g.size(); ++i) g(i) = constraints.values(dofs[i]);
+          // Coefficient-wise products: Eigen's blocked ones would start a thread team per element.
+          const Eigen::MatrixXd AT = A_e.lazyProduct(T);
+          K = T.transpose().lazyProduct(AT);
+          rhs = T.transpose().lazyProduct(b_e - A_e.lazyProduct(g));
+          finite = finite && rhs.allFinite();
+          rows.resize(local.size());
+          for (std::size_t i = 0; i < local.size(); ++i) rows[i] = layout.global[local[i]];
+          const PetscInt m = static_cast<PetscInt>(rows.size());
+          check(MatSetValues(p.A, m, rows.data(), m, rows.data(), K.data(), ADD_VALUES), "MatSetValues");
+          check(VecSetValues(p.b, m, rows.data(), rhs.data(), ADD_VALUES), "VecSetValues");
+        });
+    // Natural conditions on this rank's boundary edges: Neumann flux ∫ g_N v, and ∫ Δu ∂v/∂n on
+    // simply supported plate edges.
+    Eigen::VectorXd edges = Eigen::VectorXd::Zero(space.dimension());
+    if (!neumann_mine.empty()) edges += edge_load(space, neumann_mine, problem.normal_derivative_field(), false, qa);
+    if (!supported_mine.empty()) edges += edge_load(space, supported_mine, boundary_field(problem.laplacian), true, qa);
+    std::vector<int> one(1);
+    for (int d = 0; d < edges.size(); ++d) {
+      if (edges(d) == 0.0) continue;
+      one[0] = d;
+      basis->element(one, local, &T);
+      for (std::size_t i = 0; i < local.size(); ++i) {
+        const PetscInt row = layout.global[local[i]];
+        const PetscScalar v = T(0, static_cast<int>(i)) * edges(d);
+        check(VecSetValues(p.b, 1, &row, &v, ADD_VALUES), "VecSetValues");
+      }
+    }
+    finite = finite && edges.allFinite();
+    if (!finite)
+      throw InputError(problem.source_where +
+                       ": the source term or boundary flux is not finite at some point of the domain "
+                       "(a pole, or a log or root of a negative number?)");
+  });
+  check(MatAssemblyBegin(p.A, MAT_FINAL_ASSEMBLY), "MatAssemblyBegin");
+  check(MatAssemblyEnd(p.A, MAT_FINAL_ASSEMBLY), "MatAssemblyEnd");
+  check(VecAssemblyBegin(p.b), "VecAssemblyBegin");
+  check(VecAssemblyEnd(p.b), "VecAssemblyEnd");
+  r.t_assemble = seconds_since(t0);
+
+  t0 = Clock::now();
+  check(KSPCreate(comm, &p.ksp), "KSPCreate");
+  check(KSPSetOperators(p.ksp, p.A, p.A), "KSPSetOperators");
+  configure_ksp(p.ksp, settings, ranks);
+  const std::string method = describe(p.ksp);
+  say("solving with PETSc " + method);
+  check(KSPSetUp(p.ksp), "KSPSetUp");
+  out.solve.t_factorize = seconds_since(t0);
+  const auto t1 = Clock::now();
+  check(KSPSolve(p.ksp, p.b, p.x), "KSPSolve");
+  out.solve.t_solve = seconds_since(t1);
+  KSPConvergedReason reason;
+  PetscInt its = 0;
+  check(KSPGetConvergedReason(p.ksp, &reason), "KSPGetConvergedReason");
+  check(KSPGetIterationNumber(p.ksp, &its), "KSPGetIterationNumber");
+  PetscReal bnorm = 0, rnorm = 0;
+  check(VecNorm(p.b, NORM_2, &bnorm), "VecNorm");
+  if (reason < 0)
+    throw NumericalError("PETSc " + method + " did not converge: " + failure_text(p.ksp, reason, bnorm) +
+                         " (raise solver.rtol or solver.max_iterations, or choose another solver.pc)");
+  // The true residual ‖b − A x‖ / ‖b‖, whatever norm the KSP tested.
+  Vec residual;
+  check(VecDuplicate(p.b, &residual), "VecDuplicate");
+  check(MatMult(p.A, p.x, residual), "MatMult");
+  check(VecAYPX(residual, -1.0, p.b), "VecAYPX");
+  check(VecNorm(residual, NORM_2, &rnorm), "VecNorm");
+  VecDestroy(&residual);
+  out.solve.relative_residual = bnorm > 0 ? rnorm / bnorm : rnorm;
+  out.solve.method = "petsc " + method + ", " + std::to_string(its) + " iterations" +
+                     (ranks > 1 ? ", " + std::to_string(ranks) + " ranks" : "");
+
+  // Every rank gets the whole solution (the space, the outputs and the error integrals need it).
+  check(VecScatterCreateToAll(p.x, &p.to_all, &p.all), "VecScatterCreateToAll");
+  check(VecScatterBegin(p.to_all, p.x, p.all, INSERT_VALUES, SCATTER_FORWARD), "VecScatterBegin");
+  check(VecScatterEnd(p.to_all, p.x, p.all, INSERT_VALUES, SCATTER_FORWARD), "VecScatterEnd");
+  const PetscScalar* all = nullptr;
+  check(VecGetArrayRead(p.all, &all), "VecGetArrayRead");
+  Eigen::VectorXd u_free(n_global);
+  for (PetscInt k = 0; k < n_global; ++k) u_free(k) = all[layout.global[k]];
+  check(VecRestoreArrayRead(p.all, &all), "VecRestoreArrayRead");
+  out.coefficients = expand_solution(u_free, constraints);
+  r.t_solve = seconds_since(t0);
+
+  r.g1_jump = space.max_gradient_jump(out.coefficients);
+  if (problem.exact) {
+    say("computing errors");
+    t0 = Clock::now();
+    const ExactSolution exact = problem.exact_solution();
+    SquaredErrors mine;
+    on_every_rank([&] {
+      mine = squared_errors_on_elements(space, my_elements, out.coefficients, exact, space.error_quadrature_degree());
+    });
+    double sums[3] = {mine.l2, mine.h1, mine.h2};
+    MPI_Allreduce(MPI_IN_PLACE, sums, 3, MPI_DOUBLE, MPI_SUM, comm);
+    const ErrorNorms e = error_norms_from_squares({sums[0], sums[1], sums[2]}, exact);
+    if (!std::isfinite(e.l2) || !std::isfinite(e.h1.value_or(0)) || !std::isfinite(e.h2.value_or(0)))
+      throw InputError(problem.data_where + ": the exact solution or its derivatives are not finite somewhere in the domain");
+    r.l2 = e.l2;
+    r.h1 = e.h1;
+    r.h2 = e.h2;
+    r.t_errors = seconds_since(t0);
+  }
+  return out;
+}
+
+}  // namespace iga
+
+#else  // built without PETSc
+
+namespace iga {
+
+DiscreteSolution solve_problem_petsc(const Space&, const ProblemSpec&, const PetscSettings&, const ProgressSink&) {
+  throw InputError("solver.type: petsc: this iga-run was built without PETSc");
+}
+
+}  // namespace iga
+
+#endif

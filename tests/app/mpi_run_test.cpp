@@ -1,0 +1,142 @@
+// `mpirun -np 2 iga-run config.yaml` as a user runs it: one shipped config per space solved with
+// PETSc on two ranks writes the convergence table of the serial CHOLMOD run, and a failure on the
+// ranks ends every rank with the right exit code (no hang).
+
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "solver/petsc_settings.hpp"
+#include "tests/support/scratch_files.hpp"
+
+namespace fs = std::filesystem;
+
+namespace {
+
+struct RunResult {
+  int exit_code;
+  std::string err;
+};
+
+std::string slurp(const fs::path& p) {
+  std::ifstream in(p);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+/// Run iga-run with `args`, under `mpirun -np ranks` when ranks > 0 (as root too: CI runs as root;
+/// oversubscribed: CI machines may have one core).
+RunResult run(int ranks, const std::string& args) {
+  const fs::path err = iga::test::scratch_folder() / "stderr.txt";
+  std::string launcher;
+  if (ranks > 0) launcher = std::string(IGA_MPIEXEC) + " --allow-run-as-root --oversubscribe -np " + std::to_string(ranks) + " ";
+  const std::string cmd = launcher + IGA_RUN_BINARY + " " + args + " >/dev/null 2>" + err.string();
+  const int status = std::system(cmd.c_str());
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(err)};
+}
+
+/// The shipped config with its solver: section replaced (and no VTK or plot: not compared here).
+fs::path config_with_solver(const std::string& config, const std::string& solver, const std::string& name) {
+  std::ifstream in(std::string(IGA_SOURCE_DIR) + "/configs/" + config + ".yaml");
+  std::string line, text;
+  while (std::getline(in, line))
+    if (line.rfind("solver:", 0) != 0 && line.rfind("output:", 0) != 0) text += line + "\n";
+  text += "solver: " + solver + "\noutput: {vtk: false, plot: false}\n";
+  return iga::test::scratch_file(name + ".yaml", text);
+}
+
+/// Columns of convergence.csv: rows of (dofs, l2, h1, h2).
+std::vector<std::vector<double>> error_rows(const fs::path& csv) {
+  std::ifstream in(csv);
+  std::string line;
+  std::getline(in, line);  // header: level,h,dofs,l2,h1,h2,...
+  std::vector<std::vector<double>> rows;
+  while (std::getline(in, line)) {
+    std::stringstream s(line);
+    std::vector<std::string> cells;
+    for (std::string cell; std::getline(s, cell, ',');) cells.push_back(cell);
+    rows.push_back({std::stod(cells[2]), std::stod(cells[3]), std::stod(cells[4]), cells[5].empty() ? 0.0 : std::stod(cells[5])});
+  }
+  return rows;
+}
+
+struct Case {
+  const char* config;
+  int levels;
+  double tolerance;  ///< relative: 1e-8 for CG (rtol 1e-12), 1e-10 for MUMPS (round-off, h⁻⁴ amplified)
+};
+
+class TwoRanks : public ::testing::TestWithParam<Case> {};
+
+TEST_P(TwoRanks, WriteTheErrorsOfTheSerialCholmodRun) {
+  if (!iga::petsc_available()) GTEST_SKIP() << "built without PETSc";
+  const Case c = GetParam();
+  const fs::path dir = iga::test::scratch_folder() / c.config;
+  const std::string levels = " --quiet --levels " + std::to_string(c.levels) + " --output ";
+  ASSERT_EQ(run(0, config_with_solver(c.config, "{type: cholmod}", std::string(c.config) + "-serial").string() + levels +
+                       (dir / "serial").string()).exit_code, 0);
+  const RunResult parallel =
+      run(2, config_with_solver(c.config, "{type: petsc}", std::string(c.config) + "-petsc").string() + levels +
+                 (dir / "np2").string());
+  ASSERT_EQ(parallel.exit_code, 0) << parallel.err;
+  const auto serial_rows = error_rows(dir / "serial" / "convergence.csv");
+  const auto parallel_rows = error_rows(dir / "np2" / "convergence.csv");
+  ASSERT_EQ(serial_rows.size(), static_cast<std::size_t>(c.levels));
+  ASSERT_EQ(parallel_rows.size(), serial_rows.size());
+  for (std::size_t l = 0; l < serial_rows.size(); ++l) {
+    EXPECT_EQ(parallel_rows[l][0], serial_rows[l][0]) << "dofs of level " << l;
+    for (int k = 1; k <= 3; ++k) {
+      const double a = parallel_rows[l][k], b = serial_rows[l][k];
+      // Where the exact solution lies in the space the errors are round-off (1e-18 .. 1e-15 for
+      // these O(1) solutions): compared absolutely there.
+      EXPECT_LE(std::abs(a - b), c.tolerance * std::abs(b) + 1e-13) << c.config << " level " << l << " column " << k;
+    }
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(EverySpace, TwoRanks,
+                         ::testing::Values(Case{"bspline-poisson", 4, 1e-8}, Case{"ws4-biharmonic", 2, 1e-10},
+                                           Case{"tmesh-poisson-trig", 3, 1e-8}, Case{"g1-biharmonic-3patch", 3, 1e-10}),
+                         [](const ::testing::TestParamInfo<Case>& info) {
+                           std::string name = info.param.config;
+                           for (char& ch : name)
+                             if (ch == '-') ch = '_';
+                           return name;
+                         });
+
+TEST(TwoRanksFailures, AnUnconvergedSolveIsExitOneOnEveryRankWithTheReason) {
+  if (!iga::petsc_available()) GTEST_SKIP() << "built without PETSc";
+  const fs::path cfg = config_with_solver("bspline-poisson", "{type: petsc, pc: ilu, max_iterations: 2}", "diverging");
+  const RunResult r = run(2, cfg.string() + " --quiet --levels 3 --output " + (iga::test::scratch_folder() / "d").string());
+  EXPECT_EQ(r.exit_code, 1) << r.err;
+  EXPECT_NE(r.err.find("DIVERGED_ITS after 2 iterations"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(iga::test::scratch_folder() / "d"));
+}
+
+TEST(TwoRanksFailures, AnOutputErrorOfRankZeroReachesTheOtherRank) {
+  if (!iga::petsc_available()) GTEST_SKIP() << "built without PETSc";
+  const fs::path cfg = config_with_solver("bspline-poisson", "{type: petsc}", "bad-output");
+  const RunResult r = run(2, cfg.string() + " --quiet --levels 2 --output /proc/iga-run-test-output");
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_NE(r.err.find("--output"), std::string::npos) << r.err;
+}
+
+TEST(TwoRanksFailures, AnUnusedPetscOptionIsReported) {
+  if (!iga::petsc_available()) GTEST_SKIP() << "built without PETSc";
+  const fs::path cfg = config_with_solver("bspline-poisson", "{type: petsc, options: \"-ksp_monitr\"}", "unused");
+  const RunResult r = run(2, cfg.string() + " --quiet --levels 1 -pc_gamg_thresold 0.1 --output " +
+                                 (iga::test::scratch_folder() / "u").string());
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.err.find("PETSc option -ksp_monitr was not used"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("PETSc option -pc_gamg_thresold 0.1 was not used"), std::string::npos) << r.err;
+}
+
+}  // namespace
