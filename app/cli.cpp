@@ -55,10 +55,7 @@ void check_output(const std::string& directory, const std::string& output, const
     } else if (const auto out = root ? root->find("output") : std::nullopt) {
       if (const auto dir = out->find("directory")) place = dir->where();
     }
-  });
-  if (!is_root_rank()) {  // takes part in the distributed solves, writes nothing
-    run_study(settings, progress);
-    return 0;
+    throw InputError(place + ": " + e.what());
   }
 }
 
