@@ -6,6 +6,7 @@
 #include <map>
 
 #include "config/errors.hpp"
+#include "mesh/gmsh_model_nodes.hpp"
 #include "mesh/planar_coordinates.hpp"
 
 namespace iga {
@@ -13,14 +14,6 @@ namespace iga {
 namespace {
 
 constexpr int gmsh_line2 = 1, gmsh_triangle3 = 2, gmsh_quad4 = 3;
-
-std::string element_type_name(int type) {
-  std::string name;
-  int dim = 0, order = 0, nodes = 0, primary = 0;
-  std::vector<double> local;
-  gmsh::model::mesh::getElementProperties(type, name, dim, order, nodes, local, primary);
-  return "'" + name + "' (Gmsh type " + std::to_string(type) + ")";
-}
 
 /// Physical curve groups: name -> node tag pairs of their line elements.
 std::map<std::string, std::vector<std::array<std::size_t, 2>>> physical_curves(const std::string& source) {
@@ -41,7 +34,7 @@ std::map<std::string, std::vector<std::array<std::size_t, 2>>> physical_curves(c
       for (std::size_t t = 0; t < types.size(); ++t) {
         if (types[t] != gmsh_line2)
           throw InputError(source + ": physical curve '" + name + "' has elements of type " +
-                           element_type_name(types[t]) + "; only 2-node lines are supported (Mesh.ElementOrder 1)");
+                           gmsh_element_type_name(types[t]) + "; only 2-node lines are supported (Mesh.ElementOrder 1)");
         for (std::size_t k = 0; k + 1 < node_tags[t].size(); k += 2)
           edges.push_back({node_tags[t][k], node_tags[t][k + 1]});
       }
@@ -61,7 +54,7 @@ PlanarMesh planar_mesh_from_gmsh_model(const std::string& source) {
   std::vector<std::vector<std::size_t>> cells;  // as node tags
   for (std::size_t t = 0; t < types.size(); ++t) {
     if (types[t] != gmsh_triangle3 && types[t] != gmsh_quad4)
-      throw InputError(source + ": 2D elements of type " + element_type_name(types[t]) +
+      throw InputError(source + ": 2D elements of type " + gmsh_element_type_name(types[t]) +
                        " are not supported; only 3-node triangles and 4-node quadrilaterals (Mesh.ElementOrder 1)");
     const std::size_t n = types[t] == gmsh_triangle3 ? 3 : 4;
     for (std::size_t e = 0; e < element_tags[t].size(); ++e) {
@@ -75,26 +68,11 @@ PlanarMesh planar_mesh_from_gmsh_model(const std::string& source) {
                      "Plane Surface, a .msh its 2D elements)");
 
   // Only nodes used by cells become vertices, numbered by node tag.
-  std::map<std::size_t, int> vertex_of;
-  for (const auto& cell : cells)
-    for (std::size_t node : cell) vertex_of.emplace(node, 0);
-  std::vector<std::size_t> all_tags;
-  std::vector<double> coords, parametric;
-  gmsh::model::mesh::getNodes(all_tags, coords, parametric, -1, -1, false, false);
-  std::map<std::size_t, Eigen::Vector3d> position;
-  for (std::size_t k = 0; k < all_tags.size(); ++k)
-    if (vertex_of.count(all_tags[k])) position[all_tags[k]] = {coords[3 * k], coords[3 * k + 1], coords[3 * k + 2]};
-  std::vector<Eigen::Vector3d> points;
-  std::vector<std::string> origins;
-  for (auto& [node, id] : vertex_of) {
-    const auto it = position.find(node);
-    if (it == position.end())
-      throw InputError(source + ": a cell uses node " + std::to_string(node) + ", which has no coordinates");
-    id = static_cast<int>(points.size());
-    points.push_back(it->second);
-    origins.push_back("Gmsh node " + std::to_string(node));
-  }
-  mesh.vertices = planar_coordinates(points, origins, source);
+  std::vector<std::size_t> used;
+  for (const auto& cell : cells) used.insert(used.end(), cell.begin(), cell.end());
+  const GmshUsedNodes nodes = gmsh_used_nodes(used, source, "cell");
+  const std::map<std::size_t, int>& vertex_of = nodes.vertex_of;
+  mesh.vertices = planar_coordinates(nodes.points, nodes.origins, source);
   for (const auto& cell : cells) {
     std::vector<int> ids;
     for (std::size_t node : cell) ids.push_back(vertex_of.at(node));

@@ -7,20 +7,13 @@
 #include <map>
 
 #include "config/errors.hpp"
+#include "mesh/gmsh_model_nodes.hpp"
 
 namespace iga {
 
 namespace {
 
 constexpr int gmsh_triangle3 = 2;
-
-std::string element_type_name(int type) {
-  std::string name;
-  int dim = 0, order = 0, nodes = 0, primary = 0;
-  std::vector<double> local;
-  gmsh::model::mesh::getElementProperties(type, name, dim, order, nodes, local, primary);
-  return "'" + name + "' (Gmsh type " + std::to_string(type) + ")";
-}
 
 /// Reverses whole entities so that neighbouring entities traverse their shared edges in opposite
 /// directions (breadth first from the first entity of each connected group).
@@ -77,7 +70,7 @@ SurfaceMeshFile surface_mesh_from_gmsh_model(const std::string& source) {
     gmsh::model::mesh::getElements(types, element_tags, node_tags, 2, surfaces[s].second);
     for (std::size_t t = 0; t < types.size(); ++t) {
       if (types[t] != gmsh_triangle3)
-        throw InputError(source + ": 2D elements of type " + element_type_name(types[t]) +
+        throw InputError(source + ": 2D elements of type " + gmsh_element_type_name(types[t]) +
                          " are not supported on surfaces; only 3-node triangles (no recombination, "
                          "Mesh.ElementOrder 1)");
       for (std::size_t e = 0; e < element_tags[t].size(); ++e) {
@@ -91,23 +84,12 @@ SurfaceMeshFile surface_mesh_from_gmsh_model(const std::string& source) {
     throw InputError(source + ": the mesh has no triangles (no meshed surface: a .geo needs surfaces, a .msh "
                               "or .stl its triangles)");
 
-  std::map<std::size_t, int> vertex_of;
-  for (const auto& cell : cells)
-    for (std::size_t node : cell) vertex_of.emplace(node, 0);
-  std::vector<std::size_t> all_tags;
-  std::vector<double> coords, parametric;
-  gmsh::model::mesh::getNodes(all_tags, coords, parametric, -1, -1, false, false);
-  std::map<std::size_t, Eigen::Vector3d> position;
-  for (std::size_t k = 0; k < all_tags.size(); ++k)
-    if (vertex_of.count(all_tags[k])) position[all_tags[k]] = {coords[3 * k], coords[3 * k + 1], coords[3 * k + 2]};
-  for (auto& [node, id] : vertex_of) {
-    const auto it = position.find(node);
-    if (it == position.end())
-      throw InputError(source + ": a triangle uses node " + std::to_string(node) + ", which has no coordinates");
-    id = static_cast<int>(mesh.points.size());
-    mesh.points.push_back(it->second);
-    mesh.point_origins.push_back("Gmsh node " + std::to_string(node));
-  }
+  std::vector<std::size_t> used;
+  for (const auto& cell : cells) used.insert(used.end(), cell.begin(), cell.end());
+  GmshUsedNodes nodes = gmsh_used_nodes(used, source, "triangle");
+  const std::map<std::size_t, int>& vertex_of = nodes.vertex_of;
+  mesh.points = std::move(nodes.points);
+  mesh.point_origins = std::move(nodes.origins);
   for (const auto& cell : cells)
     mesh.triangles.push_back({vertex_of.at(cell[0]), vertex_of.at(cell[1]), vertex_of.at(cell[2])});
   orient_entities(mesh.triangles, entity_of, static_cast<int>(surfaces.size()));

@@ -14,6 +14,7 @@
 #include "mesh/gmsh_worker.hpp"
 #include "mesh/msh_structure_check.hpp"
 #include "mesh/stl_structure_check.hpp"
+#include "mesh/off_records.hpp"
 #include "mesh/text_line_reader.hpp"
 
 namespace iga {
@@ -117,40 +118,16 @@ SurfaceMeshFile read_obj_surface(std::istream& in, const std::string& source) {
 
 SurfaceMeshFile read_off_surface(std::istream& in, const std::string& source) {
   TextLineReader reader{in, source};
-  std::vector<std::string> t;
-  if (!reader.next(t) || t[0] != "OFF") reader.fail("expected the header 'OFF'");
-  std::vector<std::string> counts(t.begin() + 1, t.end());
-  if (counts.empty() && !reader.next(counts)) reader.fail("expected 'vertices faces edges' counts");
-  if (counts.size() < 2 || counts.size() > 3) reader.fail("expected 'vertices faces edges' counts");
-  const long nv = reader.integer(counts[0]), nf = reader.integer(counts[1]);
-  if (nv < 0 || nf < 0) reader.fail("negative counts");
+  const OffRecords off = read_off_records(
+      reader, [](long n) { return n == 3 ? std::string() : face_size_error(static_cast<std::size_t>(std::max(n, 0L))); });
   SurfaceMeshFile mesh;
   mesh.source = source;
-  for (long v = 0; v < nv; ++v) {
-    if (!reader.next(t))
-      reader.fail("the file ends after " + std::to_string(v) + " of " + std::to_string(nv) + " vertices");
-    if (t.size() != 3) reader.fail("a vertex needs 'x y z'");
-    mesh.points.emplace_back(reader.number(t[0]), reader.number(t[1]), reader.number(t[2]));
-    mesh.point_lines.push_back(reader.line);
+  mesh.points = off.points;
+  mesh.point_lines = off.point_lines;
+  for (std::size_t f = 0; f < off.faces.size(); ++f) {
+    mesh.triangles.push_back({off.faces[f][0], off.faces[f][1], off.faces[f][2]});
+    mesh.triangle_lines.push_back(off.face_lines[f]);
   }
-  for (long f = 0; f < nf; ++f) {
-    if (!reader.next(t))
-      reader.fail("the file ends after " + std::to_string(f) + " of " + std::to_string(nf) + " faces");
-    const long n = reader.integer(t[0]);
-    if (n != 3) reader.fail(face_size_error(static_cast<std::size_t>(std::max(n, 0L))));
-    if (t.size() < 4) reader.fail("a face lists fewer vertices than its count 3");
-    std::array<int, 3> tri{};
-    for (int k = 0; k < 3; ++k) {  // tokens after the indices are colour values
-      const long id = reader.integer(t[k + 1]);
-      if (id < 0 || id >= nv)
-        reader.fail("face vertex " + std::to_string(id) + " does not exist (" + std::to_string(nv) +
-                    " vertices; OFF indices are 0-based)");
-      tri[k] = static_cast<int>(id);
-    }
-    mesh.triangles.push_back(tri);
-    mesh.triangle_lines.push_back(reader.line);
-  }
-  if (reader.next(t)) reader.fail("unexpected data after the " + std::to_string(nf) + " faces");
   return mesh;
 }
 
