@@ -2,6 +2,8 @@
 
 #include <map>
 
+#include "config/errors.hpp"
+
 namespace iga {
 
 std::vector<std::pair<BoundaryEdge, BoundaryKind>> boundary_edge_kinds(const Space& space, const ProblemSpec& problem) {
@@ -18,6 +20,19 @@ std::vector<BoundaryEdge> boundary_edges_of_kind(const Space& space, const Probl
   for (const auto& [edge, k] : boundary_edge_kinds(space, problem))
     if (k == kind) out.push_back(edge);
   return out;
+}
+
+BoundarySplit split_boundary(const Space& space, const ProblemSpec& problem) {
+  BoundarySplit split;
+  for (const auto& [e, kind] : boundary_edge_kinds(space, problem)) {
+    if (kind != BoundaryKind::neumann) split.essential.value_edges.push_back(e);
+    if (kind == BoundaryKind::clamped) split.essential.normal_edges.push_back(e);
+    if (kind == BoundaryKind::neumann) split.neumann.push_back(e);
+    if (kind == BoundaryKind::simply_supported) split.simply_supported.push_back(e);
+  }
+  if (split.essential.value_edges.empty())
+    throw InputError("problem.boundary: a pure Neumann problem has no unique solution; make at least one part dirichlet");
+  return split;
 }
 
 }  // namespace iga

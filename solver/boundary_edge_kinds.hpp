@@ -6,6 +6,7 @@
 #include <utility>
 #include <vector>
 
+#include "assembly/boundary_conditions.hpp"
 #include "solver/problem.hpp"
 #include "spaces/space.hpp"
 
@@ -16,5 +17,16 @@ std::vector<std::pair<BoundaryEdge, BoundaryKind>> boundary_edge_kinds(const Spa
 
 /// The boundary edges where `kind` holds, in the order above.
 std::vector<BoundaryEdge> boundary_edges_of_kind(const Space& space, const ProblemSpec& problem, BoundaryKind kind);
+
+/// The boundary edges sorted by what the problem does with them: essential data (u on dirichlet,
+/// clamped and simply supported edges; ∂u/∂n on clamped ones), the Neumann flux, and the natural
+/// term ∫ Δu ∂v/∂n of simply supported plates.
+struct BoundarySplit {
+  EssentialBoundary essential;
+  std::vector<BoundaryEdge> neumann, simply_supported;
+};
+
+/// The split above; InputError for a pure Neumann problem (no unique solution).
+BoundarySplit split_boundary(const Space& space, const ProblemSpec& problem);
 
 }  // namespace iga

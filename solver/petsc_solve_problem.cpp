@@ -186,16 +186,10 @@ DiscreteSolution solve_problem_petsc(const Space& space, const ProblemSpec& prob
   std::unique_ptr<ReducedBasis> basis;
   on_every_rank([&] {
     check_boundary_parts(space, problem);
-    EssentialBoundary essential;
-    std::vector<BoundaryEdge> neumann_edges, supported_edges;
-    for (const auto& [e, kind] : boundary_edge_kinds(space, problem)) {
-      if (kind != BoundaryKind::neumann) essential.value_edges.push_back(e);
-      if (kind == BoundaryKind::clamped) essential.normal_edges.push_back(e);
-      if (kind == BoundaryKind::neumann) neumann_edges.push_back(e);
-      if (kind == BoundaryKind::simply_supported) supported_edges.push_back(e);
-    }
-    if (essential.value_edges.empty())
-      throw InputError("problem.boundary: a pure Neumann problem has no unique solution; make at least one part dirichlet");
+    const BoundarySplit boundary = split_boundary(space, problem);
+    const EssentialBoundary& essential = boundary.essential;
+    const std::vector<BoundaryEdge>& neumann_edges = boundary.neumann;
+    const std::vector<BoundaryEdge>& supported_edges = boundary.simply_supported;
     say("boundary constraints");
     constraints = impose_essential(space, essential, boundary_field(problem.value), problem.normal_derivative_field(), qa);
     if (!constraints.values.allFinite())

@@ -48,16 +48,10 @@ LinearSystem assemble_linear_system(const Space& space, const ProblemSpec& probl
     if (progress) progress(msg);
   };
   const int qa = assembly_quadrature_degree(space);
-  EssentialBoundary essential;
-  std::vector<BoundaryEdge> neumann_edges, simply_supported_edges;
-  for (const auto& [e, kind] : boundary_edge_kinds(space, problem)) {
-    if (kind != BoundaryKind::neumann) essential.value_edges.push_back(e);
-    if (kind == BoundaryKind::clamped) essential.normal_edges.push_back(e);
-    if (kind == BoundaryKind::neumann) neumann_edges.push_back(e);
-    if (kind == BoundaryKind::simply_supported) simply_supported_edges.push_back(e);
-  }
-  if (essential.value_edges.empty())
-    throw InputError("problem.boundary: a pure Neumann problem has no unique solution; make at least one part dirichlet");
+  const BoundarySplit boundary = split_boundary(space, problem);
+  const EssentialBoundary& essential = boundary.essential;
+  const std::vector<BoundaryEdge>& neumann_edges = boundary.neumann;
+  const std::vector<BoundaryEdge>& simply_supported_edges = boundary.simply_supported;
 
   say("assembling");
   LinearSystem sys;
