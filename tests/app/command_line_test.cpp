@@ -12,45 +12,19 @@
 #include <string>
 
 #include "spaces/space_factory.hpp"
+#include "tests/support/run_iga.hpp"
 #include "tests/support/scratch_files.hpp"
 
 namespace {
 
+using iga::test::RunResult;
+using iga::test::run_iga;
+using iga::test::slurp;
+using iga::test::write_config;
+
 namespace fs = std::filesystem;
 
-struct RunResult {
-  int exit_code;
-  std::string out, err;
-};
-
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
-
-RunResult run_iga(const std::string& args) {
-  const fs::path out = iga::test::scratch_folder() / "stdout.txt", err = iga::test::scratch_folder() / "stderr.txt";
-  const std::string cmd = std::string(IGA_RUN_BINARY) + " " + args + " > " + out.string() + " 2> " + err.string();
-  const int status = std::system(cmd.c_str());
-  return {WEXITSTATUS(status), slurp(out), slurp(err)};
-}
-
-fs::path write_config(const std::string& name, const std::string& text) {
-  const fs::path p = iga::test::scratch_folder() / name;
-  std::ofstream(p) << text;
-  return p;
-}
-
-const char* kGood = R"yaml(problem:
-  pde: poisson
-  exact: "x*y + sin(x)"
-  boundary: {all: dirichlet}
-domain: {type: rectangle, min: [0, 0], max: [1, 1]}
-space: {type: bspline, degree: 2, elements: [2, 2]}
-refinement: {levels: 2}
-)yaml";
+const char* const kGood = iga::test::kSmallPoissonConfig;
 
 TEST(CommandLine, ListNamesEverySpaceType) {
   const RunResult r = run_iga("--list");

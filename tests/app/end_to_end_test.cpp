@@ -19,47 +19,21 @@
 #include <vector>
 
 #include "tests/support/documentation_pages.hpp"
+#include "tests/support/run_iga.hpp"
 #include "tests/support/scratch_files.hpp"
 
 namespace fs = std::filesystem;
 
 namespace {
 
-struct RunResult {
-  int exit_code;
-  std::string out, err;
-};
-
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using iga::test::RunResult;
+using iga::test::run_iga;
+using iga::test::slurp;
+using iga::test::write_config;
 
 fs::path scratch_dir() { return iga::test::scratch_folder(); }  // removed when the program ends
 
-RunResult run_iga(const std::string& args) {
-  const fs::path out = scratch_dir() / "stdout.txt", err = scratch_dir() / "stderr.txt";
-  const std::string cmd = std::string(IGA_RUN_BINARY) + " " + args + " >" + out.string() + " 2>" + err.string();
-  const int status = std::system(cmd.c_str());
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(out), slurp(err)};
-}
-
-fs::path write_config(const std::string& name, const std::string& text) {
-  const fs::path p = scratch_dir() / name;
-  std::ofstream(p) << text;
-  return p;
-}
-
-const char* kGood = R"yaml(problem:
-  pde: poisson
-  exact: "x*y + sin(x)"
-  boundary: {all: dirichlet}
-domain: {type: rectangle, min: [0, 0], max: [1, 1]}
-space: {type: bspline, degree: 2, elements: [2, 2]}
-refinement: {levels: 2}
-)yaml";
+const char* const kGood = iga::test::kSmallPoissonConfig;
 
 /// `text` with the first `from` replaced by `to`.
 std::string replaced(std::string text, const std::string& from, const std::string& to) {
