@@ -145,8 +145,9 @@ void Ws4PieceEvaluation::evaluate_function(int element, const QuadratureRule& ru
   run_values_.resize(6, q);
   for (const auto& [s, first, count] : t.runs) {
     physical_derivatives(region_coefficients_.col(s).data(), g, rows, derivatives_);
+    // A few dozen points per run: the coefficient-based product beats a blocked GEMM's packing.
     run_values_.block(0, first, rows, count).noalias() =
-        derivatives_.topRows(rows) * t.monomials.middleCols(first, count);
+        derivatives_.topRows(rows).lazyProduct(t.monomials.middleCols(first, count));
   }
   if (flags & update_values) out.value = run_values_.row(0).transpose();
   if (flags & update_gradients) {
