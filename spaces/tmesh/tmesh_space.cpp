@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <span>
 #include <sstream>
 #include <stdexcept>
 
@@ -221,15 +222,19 @@ bool TMeshSpace::closed_form_element_matrix_extended(int element, BilinearForm f
     int a, b, a2, b2;
     long double c;
   };
-  std::vector<Term> terms;
+  static constexpr Term mass[] = {{0, 0, 0, 0, 1}}, laplace[] = {{1, 0, 1, 0, 1}, {0, 1, 0, 1, 1}},
+                        bilaplace[] = {{2, 0, 2, 0, 1}, {2, 0, 0, 2, 1}, {0, 2, 2, 0, 1}, {0, 2, 0, 2, 1}},
+                        hessian[] = {{2, 0, 2, 0, 1}, {1, 1, 1, 1, 2}, {0, 2, 0, 2, 1}};
+  std::span<const Term> terms;
   switch (form) {
-    case BilinearForm::mass: terms = {{0, 0, 0, 0, 1}}; break;
-    case BilinearForm::laplace: terms = {{1, 0, 1, 0, 1}, {0, 1, 0, 1, 1}}; break;
-    case BilinearForm::bilaplace: terms = {{2, 0, 2, 0, 1}, {2, 0, 0, 2, 1}, {0, 2, 2, 0, 1}, {0, 2, 0, 2, 1}}; break;
-    case BilinearForm::hessian: terms = {{2, 0, 2, 0, 1}, {1, 1, 1, 1, 2}, {0, 2, 0, 2, 1}}; break;
+    case BilinearForm::mass: terms = mass; break;
+    case BilinearForm::laplace: terms = laplace; break;
+    case BilinearForm::bilaplace: terms = bilaplace; break;
+    case BilinearForm::hessian: terms = hessian; break;
   }
   const int nx = static_cast<int>(sx.m[0].rows()), ny = static_cast<int>(sy.m[0].rows());
-  MatrixL k = MatrixL::Zero(nx * ny, nx * ny);  // local index i + nx j (x fastest, as the evaluator)
+  thread_local MatrixL k, e, ek;  // scratch: no allocation per element
+  k.setZero(nx * ny, nx * ny);    // local index i + nx j (x fastest, as the evaluator)
   for (const Term& t : terms) {
     const long double scale = t.c * hx * hy / (std::pow(hx, t.a + t.a2) * std::pow(hy, t.b + t.b2));
     const MatrixL& X = sx.m[3 * t.a + t.a2];
@@ -241,10 +246,14 @@ bool TMeshSpace::closed_form_element_matrix_extended(int element, BilinearForm f
           for (int i = 0; i < nx; ++i) k(i + nx * j, i2 + nx * j2) += X(i, i2) * yv;
         }
   }
-  const MatrixL e = extraction_.matrix[element].cast<long double>();
-  // Small products: coefficient-based, no GEMM packing (which dominated at these sizes).
-  const MatrixL ek = e.lazyProduct(k);
-  local = ek.lazyProduct(e.transpose());
+  e = extraction_.matrix[element].cast<long double>();
+  // Small products: coefficient-based, no GEMM packing (which dominated at these sizes); the
+  // result is symmetric, so the second product fills the upper triangle and mirrors it.
+  ek = e.lazyProduct(k);
+  const Eigen::Index na = e.rows();
+  local.resize(na, na);
+  for (Eigen::Index j = 0; j < na; ++j)
+    for (Eigen::Index i = 0; i <= j; ++i) local(i, j) = local(j, i) = ek.row(i).dot(e.row(j));
   return true;
 }
 
