@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <span>
 #include <sstream>
 #include <stdexcept>
 
@@ -191,6 +192,76 @@ TMeshSpace::TMeshSpace(TMesh mesh, int regularity, bool rectangular, std::string
     if (!bernstein_.count(ky)) bernstein_.emplace(ky, SectionBernstein(mesh_.sections()[ky.first], mesh_.height(c)));
   }
   for (int c = 0; c < mesh_.num_cells(); ++c) mesh_size_ = std::max(mesh_size_, std::hypot(mesh_.width(c), mesh_.height(c)));
+  // Side integrals with the 1D Gauss rule the assembly's tensor rule is made of.
+  const int n = section().n;
+  const QuadratureRule gauss = gauss_legendre_for_degree(2 * n + 1 + extra_points());
+  for (const auto& [key, b] : bernstein_) {
+    SideIntegrals& s = side_integrals_[key];
+    for (auto& m : s.m) m.setZero(b.n() + 1, b.n() + 1);
+    for (int k = 0; k < gauss.size(); ++k) {
+      const Eigen::MatrixXd d = b.derivatives(gauss.points[k].x(), 2);
+      const long double w = gauss.weights[k];
+      for (int a = 0; a < 3; ++a)
+        for (int c = 0; c < 3; ++c)
+          for (int j = 0; j <= b.n(); ++j)
+            for (int i = 0; i <= b.n(); ++i)
+              s.m[3 * a + c](i, j) += w * static_cast<long double>(d(a, i)) * static_cast<long double>(d(c, j));
+    }
+  }
+}
+
+bool TMeshSpace::closed_form_element_matrix_extended(int element, BilinearForm form,
+                                                     Eigen::Matrix<long double, Eigen::Dynamic, Eigen::Dynamic>& local) const {
+  using MatrixL = Eigen::Matrix<long double, Eigen::Dynamic, Eigen::Dynamic>;
+  const TCell& cell = mesh_.cells()[element];
+  const SideIntegrals& sx = side_integrals_.at({cell.section_s, cell.x1 - cell.x0});
+  const SideIntegrals& sy = side_integrals_.at({cell.section_t, cell.y1 - cell.y0});
+  const long double hx = mesh_.width(element), hy = mesh_.height(element);
+  // Terms c ∫ ∂x^a ∂y^b u ∂x^a' ∂y^b' v = c hx hy hx^-(a+a') hy^-(b+b') X(a, a') ⊗ Y(b, b').
+  struct Term {
+    int a, b, a2, b2;
+    long double c;
+  };
+  static constexpr Term mass[] = {{0, 0, 0, 0, 1}}, laplace[] = {{1, 0, 1, 0, 1}, {0, 1, 0, 1, 1}},
+                        bilaplace[] = {{2, 0, 2, 0, 1}, {2, 0, 0, 2, 1}, {0, 2, 2, 0, 1}, {0, 2, 0, 2, 1}},
+                        hessian[] = {{2, 0, 2, 0, 1}, {1, 1, 1, 1, 2}, {0, 2, 0, 2, 1}};
+  std::span<const Term> terms;
+  switch (form) {
+    case BilinearForm::mass: terms = mass; break;
+    case BilinearForm::laplace: terms = laplace; break;
+    case BilinearForm::bilaplace: terms = bilaplace; break;
+    case BilinearForm::hessian: terms = hessian; break;
+  }
+  const int nx = static_cast<int>(sx.m[0].rows()), ny = static_cast<int>(sy.m[0].rows());
+  thread_local MatrixL k, e, ek;  // scratch: no allocation per element
+  k.setZero(nx * ny, nx * ny);    // local index i + nx j (x fastest, as the evaluator)
+  for (const Term& t : terms) {
+    const long double scale = t.c * hx * hy / (std::pow(hx, t.a + t.a2) * std::pow(hy, t.b + t.b2));
+    const MatrixL& X = sx.m[3 * t.a + t.a2];
+    const MatrixL& Y = sy.m[3 * t.b + t.b2];
+    for (int j2 = 0; j2 < ny; ++j2)
+      for (int i2 = 0; i2 < nx; ++i2)
+        for (int j = 0; j < ny; ++j) {
+          const long double yv = scale * Y(j, j2);
+          for (int i = 0; i < nx; ++i) k(i + nx * j, i2 + nx * j2) += X(i, i2) * yv;
+        }
+  }
+  e = extraction_.matrix[element].cast<long double>();
+  // Small products: coefficient-based, no GEMM packing (which dominated at these sizes); the
+  // result is symmetric, so the second product fills the upper triangle and mirrors it.
+  ek = e.lazyProduct(k);
+  const Eigen::Index na = e.rows();
+  local.resize(na, na);
+  for (Eigen::Index j = 0; j < na; ++j)
+    for (Eigen::Index i = 0; i <= j; ++i) local(i, j) = local(j, i) = ek.row(i).dot(e.row(j));
+  return true;
+}
+
+bool TMeshSpace::closed_form_element_matrix(int element, BilinearForm form, Eigen::MatrixXd& local) const {
+  Eigen::Matrix<long double, Eigen::Dynamic, Eigen::Dynamic> extended;
+  closed_form_element_matrix_extended(element, form, extended);
+  local = extended.cast<double>();
+  return true;
 }
 
 void TMeshSpace::normalize_basis() {

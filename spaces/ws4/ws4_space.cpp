@@ -8,6 +8,7 @@
 #include "spaces/push_forward.hpp"
 #include "spaces/ws4/ws4_basis.hpp"
 #include "spaces/ws4/ws4_dof_layout.hpp"
+#include "spaces/ws4/ws4_evaluator.hpp"
 #include "spaces/ws4/ws4_hermite_transform.hpp"
 #include "spaces/ws4/ws4_reference_matrices.hpp"
 
@@ -34,29 +35,11 @@ double directional_from_jet(const std::array<double, 10>& d, const std::vector<P
   return sum;
 }
 
-/// Per row, the runs (first column, count) that hold its nonzeros; zero gaps shorter than 16
-/// columns (one fan triangle's points at low degree) stay inside a run, so runs are few and long.
-template <class Matrix>
-std::vector<std::vector<std::pair<int, int>>> nonzero_runs(const Matrix& m) {
-  constexpr int min_gap = 16;
-  std::vector<std::vector<std::pair<int, int>>> runs(m.rows());
-  for (int i = 0; i < m.rows(); ++i) {
-    int last = -min_gap - 1;  // last nonzero column
-    for (int k = 0; k < m.cols(); ++k) {
-      if (m(i, k) == 0.0) continue;
-      if (k - last > min_gap) runs[i].push_back({k, 0});
-      runs[i].back().second = k + 1 - runs[i].back().first;
-      last = k;
-    }
-  }
-  return runs;
-}
-
 }  // namespace
 
 // ---------------------------------------------------------------------------------------------
-// Evaluator: reference tables per rule (51 x q), then per element C_Kᵀ times them and the affine
-// push-forward.
+// Evaluator: all active functions from reference tables per rule (51 x q), C_Kᵀ times them and the
+// affine push-forward; one discrete function and load vectors piece by piece (ws4_evaluator.hpp).
 
 class Ws4Space::Ws4Evaluator final : public Space::Evaluator {
  public:
@@ -82,61 +65,21 @@ class Ws4Space::Ws4Evaluator final : public Space::Evaluator {
     push_forward(jets_, ref_, flags, out);
   }
 
-  /// b = C_K c_K (coefficients of u_h in the reference basis), then one table product per array.
+  /// Piece by piece (ws4_evaluator.hpp): no 51 x q tables.
   void evaluate_function(int element, const QuadratureRule& rule, const Eigen::VectorXd& coefficients, unsigned flags,
                          PointValues& geometry, FunctionValues& out) override {
-    const Tables& t = tables(rule);
-    space_.element_dofs(element, geometry.dofs);
-    Eigen::Matrix<double, Ws4Space::dofs_per_element, 1> c;
-    for (int i = 0; i < Ws4Space::dofs_per_element; ++i) c(i) = coefficients(geometry.dofs[i]);
-    b_.noalias() = space_.extraction(element) * c;
-    const bool grads = (flags & (update_gradients | update_hessians)) != 0;
-    const bool hess = (flags & update_hessians) != 0;
-    if (flags & update_values) one_.value.noalias() = b_.transpose() * t.ref.value;
-    if (grads) {
-      one_.dxi.noalias() = b_.transpose() * t.ref.dxi;
-      one_.deta.noalias() = b_.transpose() * t.ref.deta;
-    }
-    if (hess) {
-      one_.dxixi.noalias() = b_.transpose() * t.ref.dxixi;
-      one_.dxieta.noalias() = b_.transpose() * t.ref.dxieta;
-      one_.detaeta.noalias() = b_.transpose() * t.ref.detaeta;
-    }
-    fill_jets(element, rule);
-    push_forward(jets_, one_, flags, single_);
-    geometry.x = single_.x;
-    geometry.jacobian = single_.jacobian;
-    if (flags & update_values) out.value = single_.value.row(0).transpose();
-    if (flags & update_gradients) {
-      out.dx = single_.dx.row(0).transpose();
-      out.dy = single_.dy.row(0).transpose();
-    }
-    if (flags & update_hessians) {
-      out.dxx = single_.dxx.row(0).transpose();
-      out.dxy = single_.dxy.row(0).transpose();
-      out.dyy = single_.dyy.row(0).transpose();
-    }
+    pieces_.evaluate_function(element, rule, coefficients, flags, geometry, out);
   }
 
-  /// Geometry only (no table product); integrate_values works from the cached tables.
+  /// Geometry only; integrate_values works from the monomial tables of the rule.
   void evaluate_geometry(int element, const QuadratureRule& rule, PointValues& out) override {
-    evaluate(element, rule, 0u, out);
+    pieces_.evaluate_geometry(element, rule, out);
   }
 
-  /// local = C_Kᵀ (B g): one table product with the weights, then the extraction. (B g)_i runs
-  /// over the support of B_i only: most simplex splines vanish on most of the split, and skipping
-  /// exact zeros changes no term of the sum (a non-finite g still reaches every B_i nonzero there).
+  /// local = C_Kᵀ Σ_r (pieces of region r)ᵀ (weighted monomial moments of r) (ws4_evaluator.hpp).
   void integrate_values(int element, const QuadratureRule& rule, const PointValues& /*geometry*/,
                         const Eigen::VectorXd& weights, Eigen::VectorXd& local) override {
-    const Tables& t = tables(rule);
-    b_.resize(Ws4Basis::size);
-    for (int i = 0; i < Ws4Basis::size; ++i) {
-      double sum = 0.0;
-      for (const auto& [begin, length] : t.support[i])
-        sum += t.value_rows.row(i).segment(begin, length).dot(weights.segment(begin, length));
-      b_(i) = sum;
-    }
-    local.noalias() = space_.extraction(element).transpose() * b_;
+    pieces_.integrate_values(element, rule, weights, local);
   }
 
  private:
@@ -153,10 +96,6 @@ class Ws4Space::Ws4Evaluator final : public Space::Evaluator {
   struct Tables {
     std::vector<Point2> points;  // copy, to detect a different rule at a reused address
     ReferenceDerivatives ref;
-    // The value table row by row, and per B_i the runs (first point, count) where its row is
-    // nonzero (integrate_values).
-    Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> value_rows;
-    std::vector<std::vector<std::pair<int, int>>> support;
   };
   const Tables& tables(const QuadratureRule& rule) {
     auto it = cache_.find(&rule);
@@ -165,18 +104,14 @@ class Ws4Space::Ws4Evaluator final : public Space::Evaluator {
     Tables& t = cache_[&rule];
     t.points = rule.points;
     Ws4Basis::reference().tabulate(rule.points, t.ref);
-    t.value_rows = t.ref.value;
-    t.support = nonzero_runs(t.value_rows);
     return t;
   }
 
   const Ws4Space& space_;
+  Ws4PieceEvaluation pieces_{space_};
   std::map<const QuadratureRule*, Tables> cache_;
   ReferenceDerivatives ref_;
   std::vector<GeometryJet> jets_;
-  Eigen::VectorXd b_;            // C_K c_K or B g (51)
-  ReferenceDerivatives one_;     // u_h in reference derivatives (1 x q)
-  PointValues single_;           // u_h pushed forward (1 x q)
 };
 
 // ---------------------------------------------------------------------------------------------

@@ -55,10 +55,12 @@ class Ws4Space final : public Space {
   int degree() const override { return 4; }
   int continuity() const override { return 3; }  // C3 across macro-edges (note §2.3)
   bool affine_elements() const override { return true; }
-  /// The error rule is composite over the 342 fan sub-triangles, each about 1/18 of the element's
-  /// diameter, so 2p + 2 resolves the smooth data as well as 2p + 8 does on a whole element: the
-  /// errors of ws4-biharmonic agree to 8 digits (levels 0-3) at 40 % of the points.
-  int error_quadrature_degree() const override { return 2 * degree() + 2; }
+  /// The error rule is one rule per polynomial piece (the 342 fan sub-triangles of the split, each
+  /// about 1/18 of the element's diameter) of degree 2p: exact for u_h² on every piece, and on
+  /// pieces that small it resolves the smooth data too. Against the composite rule of degree 2p + 2
+  /// (25 points per piece instead of 16), the errors of a sine on the unit square move by < 1e-4
+  /// (L2), 2e-6 (H1) and 1e-9 (H2) relative, at 32 x 32 squares.
+  int error_quadrature_degree() const override { return 2 * degree(); }
 
   /// triangle_rule(degree) on each of the 342 fan triangles of the WS4 split (shared by all elements).
   RulePtr quadrature(int element, int degree) const override;

@@ -1,0 +1,182 @@
+#include "spaces/ws4/ws4_evaluator.hpp"
+
+#include <Eigen/LU>
+#include <cmath>
+#include <stdexcept>
+
+#include "spaces/ws4/ws4_basis.hpp"
+#include "spaces/ws4/ws4_space.hpp"
+
+namespace iga::ws4 {
+
+namespace {
+
+constexpr int kMonomials = Poly4::size;
+
+/// Per region of the split, the reference functions whose piece there is not zero and their
+/// monomial coefficients as columns (15 x active): most simplex splines vanish on most regions.
+struct RegionPieces {
+  std::vector<int> active;
+  Eigen::Matrix<double, kMonomials, Eigen::Dynamic> coefficients;
+};
+
+const std::vector<RegionPieces>& region_pieces() {
+  static const std::vector<RegionPieces> pieces = [] {
+    const Ws4Basis& basis = Ws4Basis::reference();
+    const int nr = static_cast<int>(basis.split().regions().size());
+    std::vector<RegionPieces> out(nr);
+    for (int r = 0; r < nr; ++r) {
+      for (int i = 0; i < Ws4Basis::size; ++i)
+        if (!basis.piece(r, i).is_zero()) out[r].active.push_back(i);
+      out[r].coefficients.resize(kMonomials, static_cast<Eigen::Index>(out[r].active.size()));
+      for (size_t m = 0; m < out[r].active.size(); ++m)
+        for (int a = 0; a <= Poly4::max_degree; ++a)
+          for (int b = 0; a + b <= Poly4::max_degree; ++b)
+            out[r].coefficients(Poly4::index(a, b), static_cast<Eigen::Index>(m)) =
+                basis.piece(r, out[r].active[m]).coefficient(a, b);
+    }
+    return out;
+  }();
+  return pieces;
+}
+
+/// Rows value, dx, dy, dxx, dxy, dyy of the physical derivatives of the reference polynomial p
+/// (15 monomial coefficients) under ξ = G (x - p0): ∂x_j = Σ_k G(k, j) ∂ξ_k.
+void physical_derivatives(const double* p, const Eigen::Matrix2d& g, int rows, Eigen::Matrix<double, 6, 15>& d) {
+  d.topRows(rows).setZero();
+  double pxi[kMonomials] = {}, peta[kMonomials] = {}, pxx[kMonomials] = {}, pxe[kMonomials] = {},
+         pee[kMonomials] = {};
+  for (int a = 0; a <= Poly4::max_degree; ++a)
+    for (int b = 0; a + b <= Poly4::max_degree; ++b) {
+      const double v = p[Poly4::index(a, b)];
+      d(0, Poly4::index(a, b)) = v;
+      if (rows == 1) continue;
+      if (a > 0) pxi[Poly4::index(a - 1, b)] = a * v;
+      if (b > 0) peta[Poly4::index(a, b - 1)] = b * v;
+      if (a > 1) pxx[Poly4::index(a - 2, b)] = a * (a - 1) * v;
+      if (a > 0 && b > 0) pxe[Poly4::index(a - 1, b - 1)] = a * b * v;
+      if (b > 1) pee[Poly4::index(a, b - 2)] = b * (b - 1) * v;
+    }
+  if (rows == 1) return;
+  for (int k = 0; k < 10; ++k) {  // first derivatives have degree <= 3: the first 10 monomials
+    d(1, k) = g(0, 0) * pxi[k] + g(1, 0) * peta[k];
+    d(2, k) = g(0, 1) * pxi[k] + g(1, 1) * peta[k];
+  }
+  if (rows == 3) return;
+  for (int k = 0; k < 6; ++k) {  // second derivatives: degree <= 2
+    d(3, k) = g(0, 0) * g(0, 0) * pxx[k] + 2 * g(0, 0) * g(1, 0) * pxe[k] + g(1, 0) * g(1, 0) * pee[k];
+    d(4, k) = g(0, 0) * g(0, 1) * pxx[k] + (g(0, 0) * g(1, 1) + g(1, 0) * g(0, 1)) * pxe[k] + g(1, 0) * g(1, 1) * pee[k];
+    d(5, k) = g(0, 1) * g(0, 1) * pxx[k] + 2 * g(0, 1) * g(1, 1) * pxe[k] + g(1, 1) * g(1, 1) * pee[k];
+  }
+}
+
+}  // namespace
+
+const Ws4PieceEvaluation::RuleTables& Ws4PieceEvaluation::tables(const QuadratureRule& rule) {
+  auto it = cache_.find(&rule);
+  if (it != cache_.end() && it->second.points == rule.points) return it->second;
+  if (it == cache_.end() && cache_.size() >= 64) cache_.clear();  // bound temporary rules
+  RuleTables& t = cache_[&rule];
+  const Ws4Basis& basis = Ws4Basis::reference();
+  const int q = rule.size();
+  t.points = rule.points;
+  t.reference.resize(2, q);
+  t.monomials.resize(kMonomials, q);
+  t.regions.clear();
+  t.runs.clear();
+  std::vector<int> slot(basis.split().regions().size(), -1);
+  for (int k = 0; k < q; ++k) {
+    t.reference.col(k) = rule.points[k];
+    const int r = basis.split().locate(rule.points[k]);
+    if (slot[r] < 0) {
+      slot[r] = static_cast<int>(t.regions.size());
+      t.regions.push_back(r);
+    }
+    if (!t.runs.empty() && t.runs.back()[0] == slot[r])
+      ++t.runs.back()[2];
+    else
+      t.runs.push_back({slot[r], k, 1});
+    const Point2 x = rule.points[k] - basis.center(r);
+    for (int a = 0; a <= Poly4::max_degree; ++a)
+      for (int b = 0; a + b <= Poly4::max_degree; ++b)
+        t.monomials(Poly4::index(a, b), k) = std::pow(x.x(), a) * std::pow(x.y(), b);
+  }
+  return t;
+}
+
+void Ws4PieceEvaluation::fill_geometry(int element, const RuleTables& t, PointValues& out) const {
+  space_.element_dofs(element, out.dofs);
+  const Eigen::Matrix2d j = space_.jacobian(element);
+  const Point2 p0 = space_.mesh().vertices()[space_.mesh().triangle(element)[0]];
+  out.x.noalias() = j * t.reference;
+  out.x.colwise() += p0;
+  out.jacobian.assign(t.points.size(), j);
+}
+
+void Ws4PieceEvaluation::evaluate_geometry(int element, const QuadratureRule& rule, PointValues& out) {
+  fill_geometry(element, tables(rule), out);
+}
+
+void Ws4PieceEvaluation::evaluate_function(int element, const QuadratureRule& rule, const Eigen::VectorXd& coefficients,
+                                           unsigned flags, PointValues& geometry, FunctionValues& out) {
+  if (flags & (update_laplacian_gradient | update_bilaplacian))
+    throw std::logic_error("evaluate_function: this space provides derivatives up to order 2 only");
+  const RuleTables& t = tables(rule);
+  fill_geometry(element, t, geometry);
+  for (int i = 0; i < Ws4Basis::size; ++i) c_(i) = coefficients(geometry.dofs[i]);
+  b_.noalias() = space_.extraction(element) * c_;
+
+  // u_h on each region holding points: 15 monomial coefficients in that region's coordinates.
+  const auto& pieces = region_pieces();
+  region_coefficients_.resize(kMonomials, static_cast<Eigen::Index>(t.regions.size()));
+  for (size_t s = 0; s < t.regions.size(); ++s) {
+    const RegionPieces& rp = pieces[t.regions[s]];
+    auto column = region_coefficients_.col(static_cast<Eigen::Index>(s));
+    column.setZero();
+    for (size_t m = 0; m < rp.active.size(); ++m)
+      column += b_(rp.active[m]) * rp.coefficients.col(static_cast<Eigen::Index>(m));
+  }
+
+  const bool hess = (flags & update_hessians) != 0;
+  const bool grads = hess || (flags & update_gradients) != 0;
+  const int rows = hess ? 6 : grads ? 3 : 1;
+  const Eigen::Matrix2d g = space_.jacobian(element).inverse();
+  const int q = rule.size();
+  run_values_.resize(6, q);
+  for (const auto& [s, first, count] : t.runs) {
+    physical_derivatives(region_coefficients_.col(s).data(), g, rows, derivatives_);
+    // A few dozen points per run: the coefficient-based product beats a blocked GEMM's packing.
+    run_values_.block(0, first, rows, count).noalias() =
+        derivatives_.topRows(rows).lazyProduct(t.monomials.middleCols(first, count));
+  }
+  if (flags & update_values) out.value = run_values_.row(0).transpose();
+  if (flags & update_gradients) {
+    out.dx = run_values_.row(1).transpose();
+    out.dy = run_values_.row(2).transpose();
+  }
+  if (hess) {
+    out.dxx = run_values_.row(3).transpose();
+    out.dxy = run_values_.row(4).transpose();
+    out.dyy = run_values_.row(5).transpose();
+  }
+}
+
+void Ws4PieceEvaluation::integrate_values(int element, const QuadratureRule& rule, const Eigen::VectorXd& weights,
+                                          Eigen::VectorXd& local) {
+  const RuleTables& t = tables(rule);
+  // Weighted monomial moments per region, then Σ_r (pieces of r)ᵀ moments.
+  region_coefficients_.setZero(kMonomials, static_cast<Eigen::Index>(t.regions.size()));
+  for (const auto& [s, first, count] : t.runs)
+    region_coefficients_.col(s).noalias() += t.monomials.middleCols(first, count) * weights.segment(first, count);
+  const auto& pieces = region_pieces();
+  b_.setZero();
+  for (size_t s = 0; s < t.regions.size(); ++s) {
+    const RegionPieces& rp = pieces[t.regions[s]];
+    const auto moments = region_coefficients_.col(static_cast<Eigen::Index>(s));
+    for (size_t m = 0; m < rp.active.size(); ++m)
+      b_(rp.active[m]) += rp.coefficients.col(static_cast<Eigen::Index>(m)).dot(moments);
+  }
+  local.noalias() = space_.extraction(element).transpose() * b_;
+}
+
+}  // namespace iga::ws4

@@ -1,0 +1,63 @@
+#pragma once
+/// @file
+/// Ws4PieceEvaluation: one discrete WS4 function (and the transposed evaluation of load vectors)
+/// evaluated piece by piece, without the 51 x q tables of the reference basis.
+///
+/// On region r of the split, u_h = Σ_i b_i B_i with b = C_K c_K is one quartic: its 15 monomial
+/// coefficients Σ_i b_i piece(r, i) cost a few hundred operations per region, and then each point
+/// costs a 15-term sum per array instead of a 51-term one, read from a 15 x q monomial table that
+/// fits in cache (the 51 x q tables of six arrays do not, and streaming them dominated the error
+/// norms). The element map is affine, so the physical derivatives are taken on the coefficients,
+/// once per region, rather than pushed forward point by point.
+
+#include <Eigen/Core>
+#include <map>
+#include <vector>
+
+#include "spaces/space.hpp"
+
+namespace iga::ws4 {
+
+class Ws4Space;
+
+/// Per-thread evaluation state of a Ws4Space (holds per-rule tables; not thread-safe).
+class Ws4PieceEvaluation {
+ public:
+  explicit Ws4PieceEvaluation(const Ws4Space& space) : space_(space) {}
+
+  /// Space::Evaluator::evaluate_function for WS4: value, gradient and Hessian of Σ c_i N_i at the
+  /// points of `rule`; geometry receives dofs, x and jacobian.
+  void evaluate_function(int element, const QuadratureRule& rule, const Eigen::VectorXd& coefficients,
+                         unsigned flags, PointValues& geometry, FunctionValues& out);
+
+  /// dofs, x and jacobian of `element` at the points of `rule` (no basis values).
+  void evaluate_geometry(int element, const QuadratureRule& rule, PointValues& out);
+
+  /// local(m) = Σ_q weights(q) N_m(x_q) (Space::Evaluator::integrate_values): per region the
+  /// weighted monomial moments, then the pieces and the extraction.
+  void integrate_values(int element, const QuadratureRule& rule, const Eigen::VectorXd& weights,
+                        Eigen::VectorXd& local);
+
+ private:
+  /// The points of one rule grouped by split region.
+  struct RuleTables {
+    std::vector<Point2> points;  ///< copy, to detect a different rule at a reused address
+    Eigen::Matrix2Xd reference;  ///< the points as a 2 x q matrix
+    /// Monomials (x - center(r))^a (y - center(r))^b at each point, in Poly4 index order.
+    Eigen::Matrix<double, 15, Eigen::Dynamic> monomials;
+    std::vector<int> regions;  ///< distinct regions holding points, in order of first appearance
+    /// Maximal runs of consecutive points in one region: (slot in `regions`, first point, count).
+    std::vector<std::array<int, 3>> runs;
+  };
+  const RuleTables& tables(const QuadratureRule& rule);
+  void fill_geometry(int element, const RuleTables& t, PointValues& out) const;
+
+  const Ws4Space& space_;
+  std::map<const QuadratureRule*, RuleTables> cache_;
+  Eigen::Matrix<double, 51, 1> c_, b_;
+  Eigen::Matrix<double, 15, Eigen::Dynamic> region_coefficients_;  ///< u_h per used region
+  Eigen::Matrix<double, 6, 15> derivatives_;  ///< value, dx, dy, dxx, dxy, dyy per monomial
+  Eigen::Matrix<double, 6, Eigen::Dynamic> run_values_;
+};
+
+}  // namespace iga::ws4

@@ -1,0 +1,53 @@
+// TMeshSpace's element matrices as Kronecker products of side integrals against the quadrature
+// path (tensor Gauss rule of the assembly, ElementValues and the extended integrator).
+#include <gtest/gtest.h>
+
+#include <iostream>
+
+#include "assembly/integrators.hpp"
+#include "spaces/element_values.hpp"
+#include "spaces/tmesh/tmesh_space.hpp"
+#include "tests/support/test_support.hpp"
+
+using namespace iga;
+
+namespace {
+
+/// A dyadic hierarchical T-mesh (T-junctions, three cell sizes) on a non-square rectangle.
+std::string yaml(const std::string& section, int n, int r) {
+  return "domain: {type: rectangle, min: [0, 0], max: [3.0, 2.0]}\n"
+         "space: {type: tmesh, section: " + section + ", n: " + std::to_string(n) + ", regularity: " + std::to_string(r) +
+         ", frequency: 1, elements: [3, 2], refine: [[0, 0, 1.5, 1.0], [0.75, 0.5, 1.5, 1.0]]}\n";
+}
+
+TEST(TMeshClosedForm, MatchesTheQuadratureMatrices) {
+  for (const auto& [section, n, r] : {std::tuple{"trig", 3, 1}, std::tuple{"poly", 4, 1}, std::tuple{"hyperbolic", 5, 2}}) {
+    const SpacePtr s = test::space_from_yaml(yaml(section, n, r));
+    const auto& space = dynamic_cast<const TMeshSpace&>(*s);
+    ASSERT_GT(space.num_elements(), 6);
+    for (BilinearForm form : {BilinearForm::mass, BilinearForm::laplace, BilinearForm::bilaplace, BilinearForm::hessian}) {
+      ElementValues ev(space, update_values | update_gradients | update_hessians);
+      double worst = 0.0;
+      for (int e = 0; e < space.num_elements(); ++e) {
+        ev.reinit(e, *space.quadrature(e, 2 * space.degree() + 1));
+        MatrixXld quadrature, closed;
+        element_matrix_extended(form, ev, quadrature);
+        ASSERT_TRUE(space.closed_form_element_matrix_extended(e, form, closed));
+        ASSERT_EQ(closed.rows(), quadrature.rows());
+        ASSERT_EQ(closed.cols(), quadrature.cols());
+        const long double scale = quadrature.cwiseAbs().maxCoeff();
+        worst = std::max(worst, static_cast<double>((closed - quadrature).cwiseAbs().maxCoeff() / scale));
+        Eigen::MatrixXd closed_double;
+        ASSERT_TRUE(space.closed_form_element_matrix(e, form, closed_double));
+        EXPECT_LT((closed_double - closed.cast<double>()).cwiseAbs().maxCoeff(), 1e-15 * static_cast<double>(scale));
+      }
+      std::cout << section << " n=" << n << " form " << static_cast<int>(form) << ": max relative difference " << worst
+                << "\n";
+      // The same sums in another order (separated, accumulated in long double), from the same
+      // double tables: round-off of double products.
+      EXPECT_LT(worst, 1e-13);
+    }
+  }
+}
+
+}  // namespace

@@ -1,0 +1,141 @@
+// The piece-by-piece evaluation of one WS4 function and of load vectors (ws4_evaluator.hpp)
+// against the tabulated path: all active functions from Evaluator::evaluate, contracted after.
+
+#include "spaces/ws4/ws4_space.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <iostream>
+#include <random>
+
+#include "spaces/ws4/ws4_split.hpp"
+#include "tests/support/test_support.hpp"
+
+namespace iga::ws4 {
+namespace {
+
+/// The N x N unit-square mesh with interior vertices moved by up to ±15% of h (fixed seed).
+Triangulation perturbed_square(int n, unsigned seed) {
+  Triangulation mesh = Triangulation::rectangle(n, n, Point2(0, 0), Point2(1, 1));
+  std::mt19937 gen(seed);
+  std::uniform_real_distribution<double> u(-0.15 / n, 0.15 / n);
+  for (int v = 0; v < mesh.num_vertices(); ++v) {
+    const Point2 x = mesh.vertices()[v];
+    if (x.x() > 0 && x.x() < 1 && x.y() > 0 && x.y() < 1) mesh.move_vertex(v, x + Point2(u(gen), u(gen)));
+  }
+  return mesh;
+}
+
+Eigen::VectorXd random_coefficients(int n, unsigned seed) {
+  std::mt19937 gen(seed);
+  std::uniform_real_distribution<double> u(-1, 1);
+  Eigen::VectorXd c(n);
+  for (int i = 0; i < n; ++i) c(i) = u(gen);
+  return c;
+}
+
+/// A rule whose points lie on split lines, vertices and element edges as well as inside regions
+/// (the one-sided pieces of Ws4Split::locate), in no particular order.
+QuadratureRule scattered_points() {
+  QuadratureRule r;
+  const Ws4Split& split = Ws4Split::reference();
+  for (int v = 0; v < static_cast<int>(split.vertices().size()); v += 7) r.points.push_back(split.vertex_point(v));
+  std::mt19937 gen(5);
+  std::uniform_real_distribution<double> u(0, 1);
+  for (int k = 0; k < 40; ++k) {
+    const double a = u(gen), b = u(gen) * (1 - a);
+    r.points.emplace_back(a, b);
+  }
+  r.points.emplace_back(0.5, 0.0);
+  r.points.emplace_back(0.25, 0.75);
+  r.weights.assign(r.points.size(), 0.01);
+  return r;
+}
+
+/// max |a - b| / max |b|.
+double relative_difference(const Eigen::VectorXd& a, const Eigen::VectorXd& b) {
+  return (a - b).cwiseAbs().maxCoeff() / b.cwiseAbs().maxCoeff();
+}
+
+TEST(Ws4Evaluator, FunctionValuesMatchTheTabulatedBasis) {
+  const Ws4Space space(perturbed_square(3, 17));
+  const Eigen::VectorXd coef = random_coefficients(space.dimension(), 3);
+  const auto evaluator = space.make_evaluator();
+  const unsigned flags = update_values | update_gradients | update_hessians;
+  const QuadratureRule scattered = scattered_points();
+  double worst[6] = {};
+  for (const QuadratureRule* rule : {space.quadrature(0, 6).get(), &scattered}) {
+    for (int e = 0; e < space.num_elements(); ++e) {
+      PointValues all, geometry;
+      FunctionValues uh;
+      evaluator->evaluate(e, *rule, flags, all);
+      evaluator->evaluate_function(e, *rule, coef, flags, geometry, uh);
+      ASSERT_EQ(geometry.dofs, all.dofs);
+      ASSERT_EQ(geometry.jacobian.size(), all.jacobian.size());
+      EXPECT_LT((geometry.x - all.x).cwiseAbs().maxCoeff(), 1e-15);
+      EXPECT_LT((geometry.jacobian[0] - all.jacobian[0]).cwiseAbs().maxCoeff(), 1e-15);
+      Eigen::VectorXd c(all.num_functions());
+      for (int i = 0; i < c.size(); ++i) c(i) = coef(all.dofs[i]);
+      const Eigen::MatrixXd* tables[6] = {&all.value, &all.dx, &all.dy, &all.dxx, &all.dxy, &all.dyy};
+      const Eigen::VectorXd* got[6] = {&uh.value, &uh.dx, &uh.dy, &uh.dxx, &uh.dxy, &uh.dyy};
+      for (int a = 0; a < 6; ++a) {
+        const Eigen::VectorXd want = tables[a]->transpose() * c;
+        ASSERT_EQ(got[a]->size(), want.size());
+        worst[a] = std::max(worst[a], relative_difference(*got[a], want));
+      }
+    }
+  }
+  // Both routes sum the same pieces in another order: round-off relative to the function's size
+  // (derivatives scale with 1/h^k, the pieces' coefficients with up to 1e3 on the smallest regions).
+  std::cout << "piecewise vs tabulated, relative differences:";
+  for (double w : worst) std::cout << " " << w;
+  std::cout << "\n";
+  for (int a = 0; a < 6; ++a) EXPECT_LT(worst[a], 1e-12) << "array " << a;
+}
+
+TEST(Ws4Evaluator, LoadVectorMatchesTheTabulatedBasis) {
+  const Ws4Space space(perturbed_square(3, 29));
+  const auto evaluator = space.make_evaluator();
+  const QuadratureRule scattered = scattered_points();
+  for (const QuadratureRule* rule : {space.quadrature(0, 9).get(), &scattered}) {
+    const Eigen::VectorXd w = random_coefficients(rule->size(), 11);
+    for (int e = 0; e < space.num_elements(); ++e) {
+      PointValues all, geometry;
+      evaluator->evaluate(e, *rule, update_values, all);
+      evaluator->evaluate_geometry(e, *rule, geometry);
+      EXPECT_EQ(geometry.dofs, all.dofs);
+      Eigen::VectorXd local;
+      evaluator->integrate_values(e, *rule, geometry, w, local);
+      const Eigen::VectorXd want = all.value * w;
+      ASSERT_EQ(local.size(), want.size());
+      EXPECT_LT(relative_difference(local, want), 1e-12) << "element " << e;
+    }
+  }
+}
+
+TEST(Ws4Evaluator, NonFiniteDataReachTheLoadVector) {
+  const Ws4Space space(perturbed_square(2, 31));
+  const auto evaluator = space.make_evaluator();
+  const RulePtr rule = space.quadrature(0, 4);
+  Eigen::VectorXd w = Eigen::VectorXd::Ones(rule->size());
+  w(rule->size() / 2) = std::nan("");
+  PointValues geometry;
+  evaluator->evaluate_geometry(0, *rule, geometry);
+  Eigen::VectorXd local;
+  evaluator->integrate_values(0, *rule, geometry, w, local);
+  EXPECT_FALSE(local.allFinite());
+}
+
+TEST(Ws4Evaluator, HigherDerivativesAreRefused) {
+  const Ws4Space space(perturbed_square(1, 1));
+  const auto evaluator = space.make_evaluator();
+  PointValues geometry;
+  FunctionValues uh;
+  EXPECT_THROW(evaluator->evaluate_function(0, *space.quadrature(0, 2), Eigen::VectorXd::Zero(space.dimension()),
+                                            update_bilaplacian, geometry, uh),
+               std::logic_error);
+}
+
+}  // namespace
+}  // namespace iga::ws4
