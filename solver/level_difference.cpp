@@ -1,5 +1,6 @@
 #include "solver/level_difference.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <map>
@@ -8,6 +9,7 @@
 
 #include "assembly/parallel.hpp"
 #include "config/progress.hpp"
+#include "quadrature/quadrature_rule.hpp"
 
 namespace iga {
 
@@ -63,6 +65,42 @@ void resize_values(FunctionValues& v, int q, bool hessians) {
 
 ErrorNorms level_difference(const Space& fine, const Eigen::VectorXd& fine_coefficients, const PointLocator& coarse,
                             const Eigen::VectorXd& coarse_coefficients, bool hessians, int quad_degree) {
+  return level_difference(fine, fine_coefficients, coarse, coarse_coefficients, hessians,
+                          [&fine, quad_degree](int e) { return fine.quadrature(e, quad_degree); });
+}
+
+std::function<RulePtr(int)> difference_rule(const Space& fine) {
+  const int degree = fine.affine_elements() ? std::min(fine.error_quadrature_degree(), 2 * fine.degree())
+                                            : fine.error_quadrature_degree();
+  const QuadratureRule plain_triangle = triangle_rule(degree), plain_square = tensor_gauss(degree);
+  const RulePtr own = fine.num_elements() > 0 ? fine.quadrature(0, degree) : nullptr;
+  const std::size_t plain = fine.num_elements() > 0 && fine.cell_shape(0) == CellShape::triangle
+                                ? plain_triangle.points.size()
+                                : plain_square.points.size();
+  if (!own || own->points.size() <= 32 * plain)
+    return [&fine, degree](int e) { return fine.quadrature(e, degree); };
+  // 16 equal sub-cells: the uniform 4 x 4 grid of squares, or of triangles.
+  constexpr int m = 4;
+  std::vector<QuadratureRule> triangles, squares;
+  for (int j = 0; j < m; ++j)
+    for (int i = 0; i < m; ++i) {
+      const Point2 o(static_cast<double>(i) / m, static_cast<double>(j) / m);
+      const double d = 1.0 / m;
+      squares.push_back(map_to_box(plain_square, o, o + Point2(d, d)));
+      if (i + j < m) triangles.push_back(map_to_triangle(plain_triangle, o, o + Point2(d, 0), o + Point2(0, d)));
+      if (i + j + 1 < m)
+        triangles.push_back(map_to_triangle(plain_triangle, o + Point2(d, d), o + Point2(0, d), o + Point2(d, 0)));
+    }
+  const auto triangle = std::make_shared<const QuadratureRule>(concatenate(triangles));
+  const auto square = std::make_shared<const QuadratureRule>(concatenate(squares));
+  return [&fine, triangle, square](int e) -> RulePtr {
+    return fine.cell_shape(e) == CellShape::triangle ? triangle : square;
+  };
+}
+
+ErrorNorms level_difference(const Space& fine, const Eigen::VectorXd& fine_coefficients, const PointLocator& coarse,
+                            const Eigen::VectorXd& coarse_coefficients, bool hessians,
+                            const std::function<RulePtr(int)>& rule_of) {
   keep_eigen_serial();
   const Space& coarse_space = coarse.space();
   const unsigned flags = update_values | update_gradients | (hessians ? update_hessians : 0u);
@@ -89,7 +127,7 @@ ErrorNorms level_difference(const Space& fine, const Eigen::VectorXd& fine_coeff
 #pragma omp for schedule(dynamic, 16) nowait
     for (int e = 0; e < ne; ++e) {
       progress_tick();
-      const RulePtr rule = fine.quadrature(e, quad_degree);
+      const RulePtr rule = rule_of(e);
       fine_eval->evaluate_function(e, *rule, fine_coefficients, flags, geometry, uf);
       integration_weights(*rule, geometry, jxw);
       const int q = static_cast<int>(jxw.size());

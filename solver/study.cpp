@@ -250,14 +250,8 @@ StudyResult run_study(const StudySettings& settings, const ProgressSink& progres
       const auto t_diff = Clock::now();
       progress(tag + "differences to the previous level");
       const ProgressPhase phase("differences", space->num_elements());
-      // On nested meshes with affine elements (u_l − u_{l−1})² is a polynomial of degree 2p on each
-      // fine element (piece): a rule of degree 2p + 2 integrates it exactly, with room for
-      // non-polynomial sections; curved elements take the error rule.
-      const int degree = space->affine_elements()
-                             ? std::min(space->error_quadrature_degree(), 2 * space->degree() + 2)
-                             : space->error_quadrature_degree();
       const ErrorNorms d = level_difference(*space, sol.coefficients, *previous_locator, previous_coefficients,
-                                            space->continuity() >= 1, degree);
+                                            space->continuity() >= 1, difference_rule(*space));
       sol.result.difference_l2 = d.l2;
       sol.result.difference_h1 = d.h1;
       sol.result.difference_h2 = d.h2;
