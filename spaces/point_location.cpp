@@ -32,20 +32,23 @@ Point2 clamp_to_cell(CellShape shape, Point2 r) {
 
 PointLocator::PointLocator(SpacePtr space) : space_(std::move(space)) {
   if (space_->ambient_dimension() != 2) throw std::invalid_argument("points can be located in planar spaces only");
-  // Evaluators cache tables by the rule's address: every rule handed to one evaluator stays alive
-  // (and so distinct) while it is used.
   const auto evaluator = space_->make_evaluator();
-  std::deque<QuadratureRule> rules;
+  // A 5 x 5 sample of each element (its triangle part for triangles): two rules for all elements.
+  QuadratureRule square, triangle;
+  for (int j = 0; j <= 4; ++j)
+    for (int i = 0; i <= 4; ++i) {
+      square.points.emplace_back(i / 4.0, j / 4.0);
+      if (i + j <= 4) triangle.points.emplace_back(i / 4.0, j / 4.0);
+    }
+  square.weights.assign(square.points.size(), 0.0);
+  triangle.weights.assign(triangle.points.size(), 0.0);
   PointValues pv;
   for (int e = 0; e < space_->num_elements(); ++e) {
-    QuadratureRule& rule = rules.emplace_back();
-    rule.points = space_->sample_cell(e, 4).points;
-    rule.weights.assign(rule.points.size(), 0.0);
-    evaluator->evaluate_geometry(e, rule, pv);
+    evaluator->evaluate_geometry(e, space_->cell_shape(e) == CellShape::quadrilateral ? square : triangle, pv);
     Eigen::AlignedBox2d box;
     for (int q = 0; q < pv.num_points(); ++q) box.extend(Point2(pv.x.col(q)));
     // Curved element sides may bulge between the samples.
-    const double margin = 0.1 * box.diagonal().norm();
+    const double margin = 0.15 * box.diagonal().norm();
     box.min().array() -= margin;
     box.max().array() += margin;
     boxes_.push_back(box);
