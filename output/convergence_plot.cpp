@@ -175,19 +175,33 @@ void plot_convergence(const std::vector<LevelResult>& rows, const OptimalRates& 
       any = true;
     }
   }
-  if (!any) {
-    // No exact solution: the energy-norm change between levels shows the convergence instead.
-    Series d{"|u#dl#u-u#dl-1#u|#da#u", &LevelResult::energy_difference, 2, "●", 0, {}, {}, {}, {}};
+  const auto collect = [&](Series& d) {
     for (const LevelResult& row : rows) {
-      const std::optional<double>& e = row.energy_difference;
+      const std::optional<double>& e = row.*d.error;
       if (!e || !(*e > 0) || !std::isfinite(*e) || row.dofs <= 0) continue;
       d.log_dofs.push_back(std::log10(static_cast<double>(row.dofs)));
       d.log_time.push_back(std::log10(std::max(1e-4, row.t_space + row.t_assemble + row.t_solve)));
       d.log_e.push_back(std::log10(*e));
       d.at_floor.push_back(false);
     }
-    if (d.log_e.empty()) return;
-    series = {d};
+    return !d.log_e.empty();
+  };
+  if (!any) {
+    // No exact solution: the differences between successive levels show the convergence (no
+    // reference slopes: nothing is claimed), else the energy-norm change.
+    std::vector<Series> differences = {
+        {"||u#dl#u-u#dl-1#u||#dL2#u", &LevelResult::difference_l2, 2, "●", 0, {}, {}, {}, {}},
+        {"|u#dl#u-u#dl-1#u|#dH1#u", &LevelResult::difference_h1, 3, "■", 0, {}, {}, {}, {}},
+        {"|u#dl#u-u#dl-1#u|#dH2#u", &LevelResult::difference_h2, 4, "▲", 0, {}, {}, {}, {}},
+    };
+    series.clear();
+    for (Series& d : differences)
+      if (collect(d)) series.push_back(d);
+    if (series.empty()) {
+      Series d{"|u#dl#u-u#dl-1#u|#da#u", &LevelResult::energy_difference, 2, "●", 0, {}, {}, {}, {}};
+      if (!collect(d)) return;
+      series = {d};
+    }
   }
 
   // PLplot exits the process when it cannot open its output file, so find out first.

@@ -52,6 +52,38 @@ std::vector<Point2> check_points(CellShape shape) {
 
 }  // namespace
 
+SubdividedLagrange subdivided_lagrange(CellShape shape, int order, int divisions) {
+  const std::vector<Point2> nodes = lagrange_nodes(shape, order);
+  const int m = std::max(1, divisions);
+  const double step = 1.0 / m;
+  // Sub-cells as origin + linear map of the reference cell (counterclockwise, like the cell).
+  std::vector<std::pair<Point2, Eigen::Matrix2d>> maps;
+  for (int j = 0; j < m; ++j)
+    for (int i = 0; i < m; ++i) {
+      if (shape == CellShape::quadrilateral) {
+        maps.emplace_back(Point2(i * step, j * step), Eigen::Matrix2d::Identity() * step);
+      } else if (i + j < m) {
+        maps.emplace_back(Point2(i * step, j * step), Eigen::Matrix2d::Identity() * step);
+        if (i + j + 1 < m)  // the upside-down triangle of the grid square
+          maps.emplace_back(Point2((i + 1) * step, (j + 1) * step), Eigen::Matrix2d::Identity() * -step);
+      }
+    }
+  SubdividedLagrange out;
+  std::map<std::pair<long long, long long>, int> index;
+  for (const auto& [origin, linear] : maps) {
+    std::vector<int> cell;
+    for (const Point2& r : nodes) {
+      const Point2 x = origin + linear * r;
+      const auto key = std::make_pair(std::llround(x.x() * 1e12), std::llround(x.y() * 1e12));
+      const auto [it, inserted] = index.try_emplace(key, static_cast<int>(out.points.size()));
+      if (inserted) out.points.push_back(x);
+      cell.push_back(it->second);
+    }
+    out.cells.push_back(std::move(cell));
+  }
+  return out;
+}
+
 std::vector<Point2> lagrange_nodes(CellShape shape, int order) {
   const auto cell = make_cell(shape, order);
   const double* pc = cell->GetParametricCoords();

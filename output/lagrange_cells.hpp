@@ -14,6 +14,16 @@ namespace iga {
 /// reference cells of spaces/space.hpp), in VTK's point order: corners, edge nodes, interior.
 std::vector<Point2> lagrange_nodes(CellShape shape, int order);
 
+/// A macro-element's drawing: the reference cell divided uniformly into `divisions`² sub-cells
+/// (triangles: the uniform grid's triangles; quadrilaterals: squares), each a Lagrange cell of
+/// `order`. Nodes shared by sub-cells appear once in `points`; `cells` lists each sub-cell's
+/// nodes in VTK's order.
+struct SubdividedLagrange {
+  std::vector<Point2> points;
+  std::vector<std::vector<int>> cells;
+};
+SubdividedLagrange subdivided_lagrange(CellShape shape, int order, int divisions);
+
 /// VTK cell type of a Lagrange cell on `shape`.
 int lagrange_cell_type(CellShape shape);
 

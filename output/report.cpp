@@ -123,25 +123,44 @@ std::vector<double> functional_values(const std::vector<LevelResult>& rows, std:
   return v;
 }
 
+/// Rates of the differences between successive levels (row i holds ‖u_i − u_{i−1}‖): against h,
+/// or against N for adaptive runs.
+Rates difference_rates_at(const std::vector<LevelResult>& rows, std::size_t i, bool against_dofs) {
+  if (i == 0) return {};
+  const LevelResult &a = rows[i - 1], &b = rows[i];
+  const double xa = against_dofs ? static_cast<double>(b.dofs) : a.h, xb = against_dofs ? static_cast<double>(a.dofs) : b.h;
+  return {rate(a.difference_l2, b.difference_l2, xa, xb), rate(a.difference_h1, b.difference_h1, xa, xb),
+          rate(a.difference_h2, b.difference_h2, xa, xb)};
+}
+
 /// The table of a study without exact solution.
-std::string format_difference_table(const std::vector<LevelResult>& rows, const std::vector<std::string>& names) {
+std::string format_difference_table(const std::vector<LevelResult>& rows, const std::vector<std::string>& names,
+                                    bool rates_against_dofs) {
   std::ostringstream s;
-  char line[256];
-  std::snprintf(line, sizeof line, "%5s %10s %8s %14s %14s %6s", "level", "h", "dofs", "energy", "|u_l-u_l-1|_a",
-                "rate");
+  char line[512];
+  const char* rate_label = rates_against_dofs ? "rate/N" : "rate";
+  std::snprintf(line, sizeof line, "%5s %10s %8s %10s %6s %10s %6s %10s %6s %14s %11s %6s", "level", "h", "dofs",
+                "L2(du)", rate_label, "H1(du)", rate_label, "H2(du)", rate_label, "energy", "|du|_a", rate_label);
   s << line;
   for (const std::string& n : names) {
     std::snprintf(line, sizeof line, " %16s %6s", n.substr(0, 16).c_str(), "order");
     s << line;
   }
-  s << "   t_space  assemble     solve\n";
+  s << "   t_space  assemble     solve  t_errors\n";
   const std::vector<double> h = mesh_sizes(rows);
+  const auto cell = [](std::optional<double> v, const char* format) { return v ? number(v, format) : std::string("-"); };
   for (std::size_t i = 0; i < rows.size(); ++i) {
     const LevelResult& r = rows[i];
-    const auto q = i > 0 ? rate(rows[i - 1].energy_difference, r.energy_difference, rows[i - 1].h, r.h) : std::nullopt;
-    std::snprintf(line, sizeof line, "%5d %10.4e %8d %14s %14s %6s", r.level, r.h, r.dofs,
-                  r.energy ? number(r.energy, "%.8e").c_str() : "-",
-                  r.energy_difference ? number(r.energy_difference, "%.3e").c_str() : "-",
+    const Rates d = difference_rates_at(rows, i, rates_against_dofs);
+    const auto q = i == 0 ? std::nullopt
+                   : rates_against_dofs
+                       ? rate(rows[i - 1].energy_difference, r.energy_difference, r.dofs, rows[i - 1].dofs)
+                       : rate(rows[i - 1].energy_difference, r.energy_difference, rows[i - 1].h, r.h);
+    std::snprintf(line, sizeof line, "%5d %10.4e %8d %10s %6s %10s %6s %10s %6s %14s %11s %6s", r.level, r.h, r.dofs,
+                  cell(r.difference_l2, "%.3e").c_str(), d.l2 ? number(d.l2, "%.2f").c_str() : "",
+                  cell(r.difference_h1, "%.3e").c_str(), d.h1 ? number(d.h1, "%.2f").c_str() : "",
+                  cell(r.difference_h2, "%.3e").c_str(), d.h2 ? number(d.h2, "%.2f").c_str() : "",
+                  cell(r.energy, "%.8e").c_str(), cell(r.energy_difference, "%.3e").c_str(),
                   q ? number(q, "%.2f").c_str() : "");
     s << line;
     for (std::size_t k = 0; k < names.size(); ++k) {
@@ -150,11 +169,12 @@ std::string format_difference_table(const std::vector<LevelResult>& rows, const 
       std::snprintf(line, sizeof line, " %16.9e %6s", v[i], order ? number(order, "%.2f").c_str() : "");
       s << line;
     }
-    std::snprintf(line, sizeof line, " %8.3fs %8.3fs %8.3fs\n", r.t_space, r.t_assemble, r.t_solve);
+    std::snprintf(line, sizeof line, " %8.3fs %8.3fs %8.3fs %8.3fs\n", r.t_space, r.t_assemble, r.t_solve, r.t_errors);
     s << line;
   }
-  s << "no exact solution: |u_l-u_l-1|_a = |E_l - E_l-1|^1/2 (energy E = a(u_h,u_h); exact for nested spaces with "
-       "homogeneous essential data); orders of functionals from three levels (Richardson)\n";
+  s << "no exact solution: L2/H1/H2(du) = ||u_l - u_l-1|| on level l's mesh (L2 norm, H1 and H2 seminorms; for nested "
+       "spaces an estimate of level l-1's error); |du|_a = |E_l - E_l-1|^1/2 (energy E = a(u_h,u_h); exact for nested "
+       "spaces with homogeneous essential data); orders of functionals from three levels (Richardson)\n";
   return s.str();
 }
 
@@ -164,7 +184,7 @@ void write_convergence_csv(const std::vector<LevelResult>& rows, const std::stri
                            const std::vector<std::string>& functional_names) {
   std::ofstream out = open_for_writing(filename);
   const RoundOffFloor floor = round_off_levels(rows, adaptive);
-  out << "level,h,dofs,l2,h1,h2,rate_l2,rate_h1,rate_h2,t_assemble,t_solve,free_dofs,t_space,t_errors,g1_jump,rate_dofs_l2,rate_dofs_h1,rate_dofs_h2,floor_l2,floor_h1,floor_h2,energy,energy_difference,rate_energy_difference";
+  out << "level,h,dofs,l2,h1,h2,rate_l2,rate_h1,rate_h2,t_assemble,t_solve,free_dofs,t_space,t_errors,g1_jump,rate_dofs_l2,rate_dofs_h1,rate_dofs_h2,floor_l2,floor_h1,floor_h2,energy,energy_difference,rate_energy_difference,difference_l2,difference_h1,difference_h2,rate_difference_l2,rate_difference_h1,rate_difference_h2";
   for (const std::string& n : functional_names) out << ',' << n << ",order_" << n;
   out << '\n';
   const std::vector<double> h = mesh_sizes(rows);
@@ -182,6 +202,10 @@ void write_convergence_csv(const std::vector<LevelResult>& rows, const std::stri
         << number(r.energy_difference, "%.10e") << ','
         << number(i > 0 ? rate(rows[i - 1].energy_difference, r.energy_difference, rows[i - 1].h, r.h) : std::nullopt,
                   "%.4f");
+    const Rates dr = difference_rates_at(rows, i, adaptive);
+    out << ',' << number(r.difference_l2, "%.10e") << ',' << number(r.difference_h1, "%.10e") << ','
+        << number(r.difference_h2, "%.10e") << ',' << number(dr.l2, "%.4f") << ',' << number(dr.h1, "%.4f") << ','
+        << number(dr.h2, "%.4f");
     for (std::size_t k = 0; k < functional_names.size(); ++k) {
       const std::vector<double> v = functional_values(rows, k);
       out << ',' << number(v[i], "%.15e") << ',' << number(richardson_order(v, h, i), "%.4f");
@@ -192,7 +216,7 @@ void write_convergence_csv(const std::vector<LevelResult>& rows, const std::stri
 
 std::string format_convergence_table(const std::vector<LevelResult>& rows, bool rates_against_dofs,
                                      const std::vector<std::string>& functional_names) {
-  if (!has_errors(rows) && !rows.empty()) return format_difference_table(rows, functional_names);
+  if (!has_errors(rows) && !rows.empty()) return format_difference_table(rows, functional_names, rates_against_dofs);
   // The gradient-jump column appears only for spaces that compute it.
   const bool jumps = std::any_of(rows.begin(), rows.end(), [](const LevelResult& r) { return r.g1_jump.has_value(); });
   const RoundOffFloor floor = round_off_levels(rows, rates_against_dofs);
@@ -247,6 +271,7 @@ std::string summary_json(const StudySettings& settings, const StudyResult& resul
     const LevelResult& r = result.rows[i];
     const Rates q = rates_at(result.rows, i);
     const Rates d = dof_rates_at(result.rows, i);
+    const Rates dr = difference_rates_at(result.rows, i, result.adaptive);
     levels.push_back({{"level", r.level},
                       {"h", r.h},
                       {"dofs", r.dofs},
@@ -268,6 +293,12 @@ std::string summary_json(const StudySettings& settings, const StudyResult& resul
                       {"estimator", i < result.estimators.size() ? optional_json(result.estimators[i]) : json(nullptr)},
                       {"energy", optional_json(r.energy)},
                       {"energy_difference", optional_json(r.energy_difference)},
+                      {"difference", {{"l2", optional_json(r.difference_l2)},
+                                      {"h1", optional_json(r.difference_h1)},
+                                      {"h2", optional_json(r.difference_h2)},
+                                      {"rate_l2", optional_json(dr.l2)},
+                                      {"rate_h1", optional_json(dr.h1)},
+                                      {"rate_h2", optional_json(dr.h2)}}},
                       {"timings", {{"space", r.t_space}, {"assemble", r.t_assemble}, {"solve", r.t_solve},
                                    {"errors", r.t_errors}}}});
     h.push_back(r.h);

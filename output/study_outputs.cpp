@@ -60,8 +60,10 @@ StudyResult run_study_with_vtk(const StudySettings& settings, const std::string&
     const bool lagrange = write_solution_vtu(space, sol.coefficients, opt, (dir / name).string());
     vtu_files.push_back(name);
     const std::string mesh = "mesh_" + std::to_string(level) + ".vtu";
-    // Outlines as fine as the solution's drawing: Lagrange cells of degree p have p + 1 nodes per edge.
-    write_mesh_vtu(space, lagrange ? space.degree() : settings.vtk_samples, (dir / mesh).string());
+    // Outlines as fine as the solution's drawing: Lagrange cells of degree p have p + 1 nodes per
+    // edge, a subdivided element 2p + 1.
+    write_mesh_vtu(space, lagrange ? space.degree() : settings.vtk_lagrange ? opt.divisions * space.degree() : settings.vtk_samples,
+                   (dir / mesh).string());
     mesh_files.push_back(mesh);
     // The surface itself, shaded by its own normals, level by level unless the space carries one
     // fixed surface (written once, below).

@@ -106,6 +106,12 @@ bool write_solution_vtu(const Space& space, const Eigen::VectorXd& coefficients,
   const int num_elements = space.num_elements();
   const int order = space.degree();
   const bool lagrange = options.lagrange && order >= 1 && order <= 10 && elements_are_polynomial(space, order);
+  // Elements that are not single polynomials (macro-elements, non-polynomial bases): Lagrange
+  // cells of the space's degree interpolating u_h on the element (or a subdivision of it): not
+  // exact, but far closer to the smooth u_h than linear sub-cells with many more points
+  // (tests/output/vtk_macro_fidelity_test.cpp, docs/outputs.md "VTK file sizes").
+  const bool subdivided = options.lagrange && !lagrange && order >= 1 && order <= 10 && options.divisions >= 1;
+  const bool high_order = lagrange || subdivided;
 
   // Pass 1 (serial, cheap): what each element draws.
   Layout layout;
@@ -122,6 +128,14 @@ bool write_solution_vtu(const Space& space, const Eigen::VectorXd& coefficients,
         std::vector<int> all(nodes.size());
         for (std::size_t k = 0; k < nodes.size(); ++k) all[k] = static_cast<int>(k);
         it = lagrange_drawing.emplace(shape, drawing_of(layout, nodes, {all}, lagrange_cell_type(shape))).first;
+      }
+      drawing = it->second;
+    } else if (subdivided) {
+      auto it = lagrange_drawing.find(shape);
+      if (it == lagrange_drawing.end()) {
+        SubdividedLagrange cells = subdivided_lagrange(shape, order, options.divisions);
+        it = lagrange_drawing.emplace(shape, drawing_of(layout, cells.points, std::move(cells.cells),
+                                                        lagrange_cell_type(shape))).first;
       }
       drawing = it->second;
     } else {
@@ -203,7 +217,7 @@ bool write_solution_vtu(const Space& space, const Eigen::VectorXd& coefficients,
     for (int k = 0; k < rule.size(); ++k) {
       const std::int64_t p = layout.offset[e] + k;
       bool inserted = true;
-      if (!lagrange || on_cell_boundary(shape, rule.points[k]))
+      if (!high_order || on_cell_boundary(shape, rule.points[k]))
         merged_id[p] = merger.insert(Eigen::Vector3d(xyz[3 * p], xyz[3 * p + 1], xyz[3 * p + 2]), inserted);
       else
         merged_id[p] = merger.append();  // an interior node belongs to this element alone

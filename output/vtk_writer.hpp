@@ -4,8 +4,9 @@
 ///
 /// Elements whose functions are single polynomials of the space's degree (lagrange_cells.hpp)
 /// become one VTK Lagrange triangle / quadrilateral of that degree each, sampled at its nodes; the
-/// others (macro-elements, polynomial only piece by piece, and non-polynomial bases) are drawn by
-/// linear sub-cells of Space::sample_cell. Points shared between elements are written once. Values
+/// others (macro-elements, polynomial only piece by piece, and non-polynomial bases) by Lagrange
+/// cells of that degree on a uniform subdivision of the element (or, asked for, by the linear
+/// sub-cells of Space::sample_cell). Points shared between elements are written once. Values
 /// are computed in double precision and stored in single precision (7 digits, far below what a
 /// picture resolves; the error field is stored itself, not left to a difference of two rounded fields).
 
@@ -24,6 +25,10 @@ struct VtkFieldOptions {
   int samples = 8;  ///< samples per element edge where linear sub-cells are drawn (Space::sample_cell)
   /// Draw single-polynomial elements as Lagrange cells (false: always linear sub-cells).
   bool lagrange = true;
+  /// With `lagrange`: elements that are not single polynomials are drawn as divisions² Lagrange
+  /// cells of the space's degree interpolating u_h on a uniform subdivision of the element
+  /// (1: one cell per element; 0: linear sub-cells).
+  int divisions = 1;
   /// Exact solution, if known: adds point fields `u_exact` and `error` (u - u_exact), and with its
   /// derivatives the cell fields `error_l2`, `error_h1`, `error_h2`. Called from several threads
   /// at once, so it must be thread-safe (as every ScalarField).

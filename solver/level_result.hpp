@@ -25,6 +25,10 @@ struct LevelResult {
   /// |u_l − u_{l−1}|_a = |a(u_l, u_l) − a(u_{l−1}, u_{l−1})|^½: the energy norm of the change from
   /// the previous level, exact for nested spaces with homogeneous essential data (Galerkin orthogonality).
   std::optional<double> energy_difference;
+  /// ‖u_l − u_{l−1}‖_L2, |u_l − u_{l−1}|_H1, |u_l − u_{l−1}|_H2 (C1 spaces) on this level's mesh:
+  /// the change from the previous level, computed in studies without an exact solution. For
+  /// nested spaces it estimates the previous level's error.
+  std::optional<double> difference_l2, difference_h1, difference_h2;
   /// Values of the study's functionals (output.functionals), in their order.
   std::vector<double> functionals;
 };

@@ -1,5 +1,6 @@
 #include "solver/study.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -9,6 +10,7 @@
 #include "solver/boundary_edge_kinds.hpp"
 #include "solver/data_finiteness.hpp"
 #include "solver/dorfler_marking.hpp"
+#include "solver/level_difference.hpp"
 #include "solver/output_location.hpp"
 #include "solver/resource_checks.hpp"
 #include "config/errors.hpp"
@@ -208,6 +210,11 @@ StudyResult run_study(const StudySettings& settings, const ProgressSink& progres
   SpacePtr next;      // adaptive: the refined space for the next level
   SpacePtr previous;  // uniform: the last level's space, whose level-independent parts the next shares
   double t_next = 0.0;
+  // Without an exact solution: the previous level's solution, located by its own space, for the
+  // differences between successive levels (planar problems).
+  const bool differences = !settings.problem.exact && settings.problem.pde != Pde::laplace_beltrami;
+  std::shared_ptr<const PointLocator> previous_locator;
+  Eigen::VectorXd previous_coefficients;
   for (int level = 0; level < settings.levels; ++level) {
     const std::string tag = "[level " + std::to_string(level) + "] ";
     progress(tag + "building space");
@@ -234,7 +241,26 @@ StudyResult run_study(const StudySettings& settings, const ProgressSink& progres
     sol.result.t_space = t_space;
     if (!result.rows.empty() && result.rows.back().energy && sol.result.energy)
       sol.result.energy_difference = std::sqrt(std::abs(*sol.result.energy - *result.rows.back().energy));
-    sol.result.functionals = evaluate_functionals(settings.functionals, *space, sol.coefficients);
+    std::shared_ptr<const PointLocator> locator;
+    const bool points = std::any_of(settings.functionals.begin(), settings.functionals.end(),
+                                    [](const FunctionalSpec& f) { return f.kind == FunctionalSpec::Kind::point; });
+    if ((differences && level + 1 < settings.levels) || points) locator = std::make_shared<PointLocator>(space);
+    sol.result.functionals = evaluate_functionals(settings.functionals, *space, sol.coefficients, locator.get());
+    if (differences && previous_locator) {
+      const auto t_diff = Clock::now();
+      progress(tag + "differences to the previous level");
+      const ProgressPhase phase("differences", space->num_elements());
+      const ErrorNorms d = level_difference(*space, sol.coefficients, *previous_locator, previous_coefficients,
+                                            space->continuity() >= 1, difference_rule(*space));
+      sol.result.difference_l2 = d.l2;
+      sol.result.difference_h1 = d.h1;
+      sol.result.difference_h2 = d.h2;
+      sol.result.t_errors += seconds_since(t_diff);
+    }
+    if (differences) {
+      previous_locator = locator;
+      previous_coefficients = sol.coefficients;
+    }
     progress(tag + "done: assembled in " + format_seconds(sol.result.t_assemble) + ", solved (" + sol.solve.method + ") in " +
              format_seconds(sol.result.t_solve) + ", errors in " + format_seconds(sol.result.t_errors));
 

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "config/config_node.hpp"
+#include "spaces/point_location.hpp"
 #include "spaces/space.hpp"
 
 namespace iga {
@@ -25,13 +26,10 @@ struct FunctionalSpec {
 /// on `coarse` (InputError at the config place when the point is outside the domain).
 std::vector<FunctionalSpec> parse_functionals(const ConfigNode& node, const Space& coarse);
 
-/// The element and reference coordinates of the physical point x, or nullopt when x is not in
-/// the domain. Newton's method on the element maps of the elements whose sampled bounding box holds x.
-std::optional<std::pair<int, Point2>> locate_point(const Space& space, const Point2& x);
-
-/// Value of each functional for u_h = Σ c_i N_i on `space`.
+/// Value of each functional for u_h = Σ c_i N_i on `space`. Points are located by `locator` (a
+/// PointLocator of `space`, made here when null and a functional needs it).
 std::vector<double> evaluate_functionals(const std::vector<FunctionalSpec>& functionals, const Space& space,
-                                         const Eigen::VectorXd& coefficients);
+                                         const Eigen::VectorXd& coefficients, const PointLocator* locator = nullptr);
 
 /// Observed order of a sequence F_0, F_1, ... on meshes h_0, h_1, ... from three consecutive
 /// values (Richardson): log(|F_{l-1} − F_{l-2}| / |F_l − F_{l-1}|) / log(h_{l-1} / h_l); nullopt

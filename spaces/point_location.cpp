@@ -18,76 +18,153 @@ bool inside_reference(CellShape shape, const Point2& r, double tol) {
   return r.x() >= -tol && r.y() >= -tol && r.x() + r.y() <= 1 + tol;
 }
 
-Point2 clamp_reference(const Point2& r) {
-  return r.cwiseMax(Point2(-0.5, -0.5)).cwiseMin(Point2(1.5, 1.5));
+/// Newton iterates stay in the reference cell (evaluators of macro-elements find the polynomial
+/// piece of a point and may refuse points outside): a point outside the element then keeps a
+/// residual, and is reported as not inside.
+Point2 clamp_to_cell(CellShape shape, Point2 r) {
+  r = r.cwiseMax(0.0);
+  if (shape == CellShape::quadrilateral) return r.cwiseMin(1.0);
+  if (r.sum() > 1.0) r /= r.sum();
+  return r;
 }
 
 }  // namespace
 
 PointLocator::PointLocator(SpacePtr space) : space_(std::move(space)) {
   if (space_->ambient_dimension() != 2) throw std::invalid_argument("points can be located in planar spaces only");
-  // Evaluators cache tables by the rule's address: every rule handed to one evaluator stays alive
-  // (and so distinct) while it is used.
   const auto evaluator = space_->make_evaluator();
-  std::deque<QuadratureRule> rules;
+  // A 5 x 5 sample of each element (its triangle part for triangles): two rules for all elements.
+  QuadratureRule square, triangle;
+  for (int j = 0; j <= 4; ++j)
+    for (int i = 0; i <= 4; ++i) {
+      square.points.emplace_back(i / 4.0, j / 4.0);
+      if (i + j <= 4) triangle.points.emplace_back(i / 4.0, j / 4.0);
+    }
+  square.weights.assign(square.points.size(), 0.0);
+  triangle.weights.assign(triangle.points.size(), 0.0);
   PointValues pv;
-  Eigen::AlignedBox2d all;
   for (int e = 0; e < space_->num_elements(); ++e) {
-    QuadratureRule& rule = rules.emplace_back();
-    rule.points = space_->sample_cell(e, 6).points;
-    rule.weights.assign(rule.points.size(), 0.0);
-    evaluator->evaluate_geometry(e, rule, pv);
+    evaluator->evaluate_geometry(e, space_->cell_shape(e) == CellShape::quadrilateral ? square : triangle, pv);
     Eigen::AlignedBox2d box;
     for (int q = 0; q < pv.num_points(); ++q) box.extend(Point2(pv.x.col(q)));
     // Curved element sides may bulge between the samples.
-    const double margin = 0.1 * box.diagonal().norm();
+    const double margin = 0.15 * box.diagonal().norm();
     box.min().array() -= margin;
     box.max().array() += margin;
     boxes_.push_back(box);
-    all.extend(box);
+    all_.extend(box);
   }
-  size_ = std::max(1.0, all.diagonal().cwiseAbs().maxCoeff());
+  size_ = std::max(1.0, all_.diagonal().cwiseAbs().maxCoeff());
+  // About one bin per element, square bins: a query looks at the few boxes of its bin only.
+  const Point2 extent = all_.diagonal().cwiseMax(1e-300);
+  const double n = std::max(1, space_->num_elements());
+  const double bin = std::sqrt(extent.x() * extent.y() / n);
+  bins_x_ = std::clamp(static_cast<int>(std::ceil(extent.x() / bin)), 1, 4096);
+  bins_y_ = std::clamp(static_cast<int>(std::ceil(extent.y() / bin)), 1, 4096);
+  bins_.assign(static_cast<std::size_t>(bins_x_) * bins_y_, {});
+  const auto bin_of = [&](double v, double lo, double width, int count) {
+    return std::clamp(static_cast<int>((v - lo) / width * count), 0, count - 1);
+  };
+  for (int e = 0; e < static_cast<int>(boxes_.size()); ++e) {
+    const int i0 = bin_of(boxes_[e].min().x(), all_.min().x(), extent.x(), bins_x_);
+    const int i1 = bin_of(boxes_[e].max().x(), all_.min().x(), extent.x(), bins_x_);
+    const int j0 = bin_of(boxes_[e].min().y(), all_.min().y(), extent.y(), bins_y_);
+    const int j1 = bin_of(boxes_[e].max().y(), all_.min().y(), extent.y(), bins_y_);
+    for (int j = j0; j <= j1; ++j)
+      for (int i = i0; i <= i1; ++i) bins_[static_cast<std::size_t>(j) * bins_x_ + i].push_back(e);
+  }
+}
+
+void PointLocator::candidates(const Point2& x, std::vector<int>& out) const {
+  out.clear();
+  if (!all_.contains(x)) return;
+  const Point2 extent = all_.diagonal().cwiseMax(1e-300);
+  const int i = std::clamp(static_cast<int>((x.x() - all_.min().x()) / extent.x() * bins_x_), 0, bins_x_ - 1);
+  const int j = std::clamp(static_cast<int>((x.y() - all_.min().y()) / extent.y() * bins_y_), 0, bins_y_ - 1);
+  for (int e : bins_[static_cast<std::size_t>(j) * bins_x_ + i])
+    if (boxes_[e].contains(x)) out.push_back(e);
+}
+
+void PointLocator::invert_map(int element, const Eigen::Matrix2Xd& x, const Point2& start, Space::Evaluator& evaluator,
+                              std::vector<Point2>& reference, std::vector<bool>& inside) const {
+  const CellShape shape = space_->cell_shape(element);
+  const int q = static_cast<int>(x.cols());
+  const double tol_x = 1e-12 * size_;
+  reference.assign(q, start);
+  inside.assign(q, false);
+  // The rule object is reused, its points moved by Newton: evaluators detect changed points at a
+  // reused address.
+  thread_local QuadratureRule rule;
+  thread_local PointValues pv;
+  thread_local std::vector<char> done;
+  thread_local std::vector<int> stalled;
+  rule.points = reference;
+  rule.weights.assign(q, 0.0);
+  done.assign(q, 0);
+  stalled.assign(q, 0);
+  if (space_->affine_elements()) {
+    // One Newton step is exact for an affine map.
+    evaluator.evaluate_geometry(element, rule, pv);
+    for (int k = 0; k < q; ++k) {
+      const Eigen::Matrix2d& J = pv.jacobian[k];
+      if (!(std::abs(J.determinant()) > 0.0)) continue;
+      reference[k] = start - J.lu().solve(Point2(pv.x.col(k)) - x.col(k));
+      inside[k] = inside_reference(shape, reference[k], 1e-10);
+      if (!inside[k]) reference[k] = clamp_to_cell(shape, reference[k]);  // callers may evaluate there
+    }
+    return;
+  }
+  for (int it = 0; it < 30; ++it) {
+    evaluator.evaluate_geometry(element, rule, pv);
+    bool all_done = true;
+    for (int k = 0; k < q; ++k) {
+      if (done[k]) continue;
+      const Point2 residual = Point2(pv.x.col(k)) - x.col(k);
+      if (residual.norm() <= tol_x) {
+        done[k] = 1;
+        inside[k] = inside_reference(shape, rule.points[k], 1e-10);
+        continue;
+      }
+      const Eigen::Matrix2d& J = pv.jacobian[k];
+      if (!(std::abs(J.determinant()) > 0.0)) {
+        done[k] = 1;
+        continue;
+      }
+      const Point2 next = clamp_to_cell(shape, rule.points[k] - J.lu().solve(residual));
+      // A point outside the element stops moving at the cell's boundary with a residual left.
+      if ((next - rule.points[k]).norm() <= 1e-15 && ++stalled[k] >= 2) {
+        done[k] = 1;
+        continue;
+      }
+      rule.points[k] = next;
+      all_done = false;
+    }
+    if (all_done) break;
+  }
+  reference = rule.points;
 }
 
 std::optional<PointLocation> PointLocator::locate(const Point2& x) const {
-  const double tol_x = 1e-12 * size_;
   const auto evaluator = space_->make_evaluator();
-  std::deque<QuadratureRule> rules;
-  PointValues pv;
-  const auto map = [&](int e, const Point2& r) {
-    QuadratureRule& rule = rules.emplace_back();
-    rule.points = {r};
-    rule.weights = {0.0};
-    evaluator->evaluate_geometry(e, rule, pv);
-  };
-  for (int e = 0; e < static_cast<int>(boxes_.size()); ++e) {
-    if (!boxes_[e].contains(x)) continue;
+  return locate(x, *evaluator);
+}
+
+std::optional<PointLocation> PointLocator::locate(const Point2& x, Space::Evaluator& evaluator) const {
+  thread_local std::vector<int> found;
+  candidates(x, found);
+  const Eigen::Matrix2Xd point = x;
+  std::vector<Point2> reference;
+  std::vector<bool> inside;
+  for (int e : found) {
     const CellShape shape = space_->cell_shape(e);
+    // Several starts: Newton from the centre may leave a strongly curved element.
     const std::vector<Point2> starts =
         shape == CellShape::quadrilateral
             ? std::vector<Point2>{{0.5, 0.5}, {0.2, 0.2}, {0.8, 0.2}, {0.8, 0.8}, {0.2, 0.8}}
             : std::vector<Point2>{{1.0 / 3, 1.0 / 3}, {0.15, 0.15}, {0.7, 0.15}, {0.15, 0.7}};
     for (const Point2& start : starts) {
-      Point2 r = start;
-      bool converged = false;
-      for (int it = 0; it < 30 && !converged; ++it) {
-        map(e, r);
-        const Point2 residual = Point2(pv.x.col(0)) - x;
-        if (residual.norm() <= tol_x) {
-          converged = true;
-          break;
-        }
-        const Eigen::Matrix2d& J = pv.jacobian[0];
-        if (!(std::abs(J.determinant()) > 0.0)) break;
-        const Point2 step = J.lu().solve(residual);
-        r = clamp_reference(r - step);
-        if (step.norm() <= 1e-14) {
-          map(e, r);
-          converged = (Point2(pv.x.col(0)) - x).norm() <= 1e-10 * size_;
-        }
-      }
-      if (converged && inside_reference(shape, r, 1e-10)) return PointLocation{e, r};
-      if (converged) break;  // the point's preimage lies outside this element
+      invert_map(e, point, start, evaluator, reference, inside);
+      if (inside[0]) return PointLocation{e, reference[0]};
     }
   }
   return std::nullopt;

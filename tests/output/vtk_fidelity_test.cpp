@@ -1,8 +1,9 @@
 /// @file
 /// The VTK files of real spaces, read back with VTK's own reader: polynomial elements become one
 /// Lagrange cell each whose interpolation reproduces the discrete function (to single precision)
-/// anywhere in the element, points are shared (no two points coincide), and macro-elements and
-/// surfaces in 3D are drawn by shared-point linear cells with normals.
+/// anywhere in the element, points are shared (no two points coincide), macro-elements are drawn
+/// by one Lagrange cell of the space's degree each (or, asked for, by shared-point linear
+/// sub-cells), and surfaces in 3D carry normals.
 
 #include <gtest/gtest.h>
 #include <vtkCell.h>
@@ -98,7 +99,28 @@ TEST(VtkFidelity, BsplineElementsAreLagrangeCellsThatReproduceTheFunction) {
   }
 }
 
-TEST(VtkFidelity, MacroElementsAreSharedPointLinearCells) {
+TEST(VtkFidelity, MacroElementsAreOneLagrangeTriangleEachByDefault) {
+  const SpacePtr space = test::space_from_yaml("domain: {type: unit_square}\nspace: {type: ws4, elements: 2}\n", 1);
+  const Eigen::VectorXd c = random_coefficients(space->dimension());
+  const std::string file = (test::scratch_folder() / "ws4_lagrange.vtu").string();
+  ASSERT_FALSE(write_solution_vtu(*space, c, VtkFieldOptions{}, file));  // not single polynomials
+  const auto grid = read_vtu(file);
+  ASSERT_EQ(grid->GetNumberOfCells(), space->num_elements());
+  for (vtkIdType cell = 0; cell < grid->GetNumberOfCells(); ++cell) {
+    EXPECT_EQ(grid->GetCellType(cell), VTK_LAGRANGE_TRIANGLE);
+    EXPECT_EQ(grid->GetCell(cell)->GetNumberOfPoints(), 15);  // quartic
+  }
+  // Quartic nodes shared: one per vertex, 3 per edge, 3 inside each triangle.
+  int vertices = 0, edges = 0;
+  for (const auto& [key, value] : space->parameters()) {
+    if (key == "vertices") vertices = std::stoi(value);
+    if (key == "edges") edges = std::stoi(value);
+  }
+  EXPECT_EQ(grid->GetNumberOfPoints(), vertices + 3 * edges + 3 * space->num_elements());
+  EXPECT_EQ(distinct_points(grid), static_cast<std::size_t>(grid->GetNumberOfPoints()));
+}
+
+TEST(VtkFidelity, MacroElementsAsLinearSubCellsShareTheirPoints) {
   const SpacePtr space = test::space_from_yaml("domain: {type: unit_square}\nspace: {type: ws4, elements: 2}\n");
   // WS4 is polynomial only on the pieces of its split.
   EXPECT_FALSE(elements_are_polynomial(*space, space->degree()));
@@ -106,6 +128,7 @@ TEST(VtkFidelity, MacroElementsAreSharedPointLinearCells) {
   const std::string file = (test::scratch_folder() / "ws4.vtu").string();
   VtkFieldOptions options;
   options.samples = 2;
+  options.lagrange = false;  // output.vtk.cells: linear
   ASSERT_FALSE(write_solution_vtu(*space, c, options, file));
   const auto grid = read_vtu(file);
   ASSERT_GT(grid->GetNumberOfCells(), 0);

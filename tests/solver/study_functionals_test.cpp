@@ -19,6 +19,7 @@ TEST(StudyFunctionals, LocatesPointsOnCurvedAndTriangularElements) {
                            "domain: {type: unit_square}\nspace: {type: ws4, elements: 2}\n"}) {
     const SpacePtr space = test::space_from_yaml(yaml);
     const std::unique_ptr<Space::Evaluator> evaluator = space->make_evaluator();
+    const PointLocator locator(space);
     QuadratureRule probe;
     probe.points = {{0.3, 0.2}};
     probe.weights = {0.0};
@@ -26,16 +27,16 @@ TEST(StudyFunctionals, LocatesPointsOnCurvedAndTriangularElements) {
     for (int e = 0; e < space->num_elements(); e += std::max(1, space->num_elements() / 5)) {
       evaluator->evaluate_geometry(e, probe, geometry);
       const Point2 x = geometry.x.col(0);
-      const auto at = locate_point(*space, x);
+      const auto at = locator.locate(x);
       ASSERT_TRUE(at.has_value()) << yaml << " element " << e;
       // Found again: the same physical point (possibly in a neighbour sharing it).
       QuadratureRule back;
-      back.points = {at->second};
+      back.points = {at->reference};
       back.weights = {0.0};
-      evaluator->evaluate_geometry(at->first, back, geometry);
+      evaluator->evaluate_geometry(at->element, back, geometry);
       EXPECT_LT((geometry.x.col(0) - x).norm(), 1e-10);
     }
-    EXPECT_FALSE(locate_point(*space, Point2(5.0, 5.0)).has_value());
+    EXPECT_FALSE(locator.locate(Point2(5.0, 5.0)).has_value());
   }
 }
 
