@@ -19,6 +19,7 @@
 #include "output/comparison.hpp"
 #include "output/convergence_plot.hpp"
 #include "output/geometry_study_outputs.hpp"
+#include "output/parallel_vtk.hpp"
 #include "config/errors.hpp"
 #include "output/report.hpp"
 #include "output/staged_directory.hpp"
@@ -84,6 +85,7 @@ std::string plot_title(const StudySettings& settings, const StudyResult& result)
 StudyResult run_into(const StudySettings& settings, const std::string& config_path, const std::string& directory,
                      const ProgressSink& progress, Clock::time_point t_start) {
   const std::filesystem::path dir(directory);
+  shared_output_directory(directory);  // under mpirun every rank writes its VTK piece there
   StudyResult result = run_study_with_vtk(settings, directory, progress);
   progress("writing tables and plot");
   write_convergence_csv(result.rows, (dir / "convergence.csv").string(), result.adaptive,
@@ -147,8 +149,8 @@ int run_configs(const std::vector<std::string>& paths, const std::string& output
   on_every_rank([&] {
     if (is_root_rank()) check_output(directory, output, paths.size() == 1 ? &studies.front().second.root : nullptr);
   });
-  if (!is_root_rank()) {  // takes part in the distributed solves, writes nothing
-    for (const auto& study : studies) run_study(study.second, progress);
+  if (!is_root_rank()) {  // takes part in the distributed solves, writes only its VTK pieces
+    for (const auto& study : studies) run_study_with_vtk(study.second, shared_output_directory(""), progress);
     return 0;
   }
   if (single) {

@@ -22,10 +22,11 @@ struct ElementSystem {
   Eigen::VectorXd load;
   MatrixXld extended;
 };
-}  // namespace
 
-void for_each_element_system(const Space& space, const std::vector<int>& elements, BilinearForm form,
-                             const ScalarField& f, int quad_degree, const ElementSystemSink& sink) {
+/// The element loop of both variants: `Extended` keeps the long double matrix.
+template <bool Extended, class Sink>
+void element_systems(const Space& space, const std::vector<int>& elements, BilinearForm form, const ScalarField& f,
+                     int quad_degree, const Sink& sink) {
   const int n = static_cast<int>(elements.size());
   std::vector<ElementSystem> batch(std::min(n, batch_size));
 #pragma omp parallel if (worth_threads(n))
@@ -52,17 +53,37 @@ void for_each_element_system(const Space& space, const std::vector<int>& element
         // The extended closed form, rounded once: the one Assembler::matrix_extended uses (the
         // double one of some spaces runs Eigen's threaded products per element, slow here).
         if (space.closed_form_element_matrix_extended(e, form, s.extended)) {
-          s.matrix = s.extended.cast<double>();
+          if constexpr (!Extended) s.matrix = s.extended.cast<double>();
         } else {
           ev.reinit(e, *rule);
-          element_matrix(form, ev, s.matrix);
+          if constexpr (Extended)
+            element_matrix_extended(form, ev, s.extended);
+          else
+            element_matrix(form, ev, s.matrix);
         }
       }
 #pragma omp single
-      for (int k = 0; k < m; ++k) sink(elements[first + k], batch[k].dofs, batch[k].matrix, batch[k].load);
+      for (int k = 0; k < m; ++k) {
+        if constexpr (Extended)
+          sink(elements[first + k], batch[k].dofs, batch[k].extended, batch[k].load);
+        else
+          sink(elements[first + k], batch[k].dofs, batch[k].matrix, batch[k].load);
+      }
       // implicit barrier: the batch is reused only after the sink has seen it
     }
   }
+}
+
+}  // namespace
+
+void for_each_element_system(const Space& space, const std::vector<int>& elements, BilinearForm form,
+                             const ScalarField& f, int quad_degree, const ElementSystemSink& sink) {
+  element_systems<false>(space, elements, form, f, quad_degree, sink);
+}
+
+void for_each_element_system_extended(const Space& space, const std::vector<int>& elements, BilinearForm form,
+                                      const ScalarField& f, int quad_degree, const ElementSystemSinkExtended& sink) {
+  element_systems<true>(space, elements, form, f, quad_degree, sink);
 }
 
 Eigen::VectorXd edge_load(const Space& space, const std::vector<BoundaryEdge>& edges, const BoundaryField& g,

@@ -11,6 +11,7 @@
 
 #include "assembly/error_norms.hpp"
 #include "assembly/fields.hpp"
+#include "assembly/split_matrix.hpp"
 #include "spaces/bilinear_form.hpp"
 #include "spaces/space.hpp"
 
@@ -26,6 +27,16 @@ using ElementSystemSink =
 /// systems are computed in parallel batches (OpenMP), so `sink` itself need not be thread-safe.
 void for_each_element_system(const Space& space, const std::vector<int>& elements, BilinearForm form,
                              const ScalarField& f, int quad_degree, const ElementSystemSink& sink);
+
+/// Receives one element's system with the matrix in long double (see for_each_element_system_extended).
+using ElementSystemSinkExtended =
+    std::function<void(int element, const std::vector<int>& dofs, const MatrixXld& matrix, const Eigen::VectorXd& load)>;
+
+/// The same with the element matrices in long double, not rounded to double (a space's extended
+/// closed form, else quadrature sums in long double): for residuals of iterative refinement that
+/// must see the matrix beyond its double rounding (split_matrix.hpp).
+void for_each_element_system_extended(const Space& space, const std::vector<int>& elements, BilinearForm form,
+                                      const ScalarField& f, int quad_degree, const ElementSystemSinkExtended& sink);
 
 /// ∫_Γ g v ds (or ∫_Γ g ∂v/∂n ds when `normal_derivative`) over the given boundary edges only, as a
 /// vector of length space.dimension() (nonzero only at functions active on those edges).

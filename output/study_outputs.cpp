@@ -7,17 +7,21 @@
 #include "output/surface_geometry_vtk.hpp"
 #include "output/surface_files.hpp"
 #include "output/matrix_market_sink.hpp"
+#include "output/parallel_vtk.hpp"
+#include "solver/petsc_session.hpp"
 #include "output/vtk_writer.hpp"
 
 namespace iga {
 
 StudyResult run_study_with_vtk(const StudySettings& settings, const std::string& directory,
                                const ProgressSink& progress) {
-  const LevelSink matrices = settings.write_matrices ? matrix_market_sink(settings, directory, progress) : LevelSink{};
+  // Under mpirun every rank comes here and writes its piece of the solution; rank 0 all the rest.
+  const bool root = is_root_rank();
+  const LevelSink matrices = settings.write_matrices && root ? matrix_market_sink(settings, directory, progress) : LevelSink{};
   // A surface is the same at every level: its files are written once (surface.vtu with VTK output,
   // surface_patches.txt always).
   const auto with_surface_files = [&](StudyResult result) {
-    if (result.surface) {
+    if (result.surface && root) {
       progress("writing the surface");
       write_surface_files(*result.surface, directory, "surface", settings.vtk_samples, settings.write_vtk);
     }
@@ -35,8 +39,8 @@ StudyResult run_study_with_vtk(const StudySettings& settings, const std::string&
     if (last_only && !settings.adaptive && level + 1 < settings.levels) return;
     const auto t0 = std::chrono::steady_clock::now();
     progress("[level " + std::to_string(level) + "] writing VTK");
-    if (last_only && !vtu_files.empty()) {
-      std::filesystem::remove(dir / vtu_files.back());
+    if (last_only && !vtu_files.empty() && root) {
+      remove_solution_dataset((dir / vtu_files.back()).string());
       std::filesystem::remove(dir / mesh_files.back());
       vtu_files.clear();
       mesh_files.clear();
@@ -56,9 +60,12 @@ StudyResult run_study_with_vtk(const StudySettings& settings, const std::string&
       for (int e : sol.marked) marked.at(e) = 1.0;
       opt.element_fields.emplace_back("marked", std::move(marked));
     }
-    const std::string name = "solution_" + std::to_string(level) + ".vtu";
-    const bool lagrange = write_solution_vtu(space, sol.coefficients, opt, (dir / name).string());
+    const bool pieces = parallel_vtk_output();
+    const std::string name = "solution_" + std::to_string(level) + (pieces ? ".pvtu" : ".vtu");
+    const bool lagrange = pieces ? write_solution_pvtu(space, sol.coefficients, opt, (dir / name).string())
+                                 : write_solution_vtu(space, sol.coefficients, opt, (dir / name).string());
     vtu_files.push_back(name);
+    if (!root) return;
     const std::string mesh = "mesh_" + std::to_string(level) + ".vtu";
     // Outlines as fine as the solution's drawing: Lagrange cells of degree p have p + 1 nodes per
     // edge, a subdivided element 2p + 1.
@@ -78,9 +85,11 @@ StudyResult run_study_with_vtk(const StudySettings& settings, const std::string&
     write_level(level, space, sol);
     if (matrices) matrices(level, space, sol);
   });
-  write_pvd(vtu_files, (dir / "solution.pvd").string());
-  write_pvd(mesh_files, (dir / "mesh.pvd").string());
-  if (!surface_files.empty()) write_pvd(surface_files, (dir / "surface.pvd").string());
+  if (root) {
+    write_pvd(vtu_files, (dir / "solution.pvd").string());
+    write_pvd(mesh_files, (dir / "mesh.pvd").string());
+    if (!surface_files.empty()) write_pvd(surface_files, (dir / "surface.pvd").string());
+  }
   result.t_vtk = t_vtk;
   return with_surface_files(std::move(result));
 }

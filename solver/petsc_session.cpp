@@ -194,6 +194,16 @@ void on_every_rank(const std::function<void()>& work) {
   throw std::runtime_error(message);
 }
 
+std::string broadcast_from_root(const std::string& text) {
+  if (!petsc_up()) return text;
+  std::string out = text;
+  int size = static_cast<int>(out.size());
+  MPI_Bcast(&size, 1, MPI_INT, 0, PETSC_COMM_WORLD);
+  out.resize(size);
+  MPI_Bcast(out.data(), size, MPI_CHAR, 0, PETSC_COMM_WORLD);
+  return out;
+}
+
 bool failure_shared_by_all_ranks() { return shared_failure; }
 
 int end_ranks_after_failure(int code) {
@@ -214,6 +224,7 @@ PetscSession::~PetscSession() = default;
 int mpi_rank() { return 0; }
 int mpi_size() { return 1; }
 void on_every_rank(const std::function<void()>& work) { work(); }
+std::string broadcast_from_root(const std::string& text) { return text; }
 bool failure_shared_by_all_ranks() { return false; }
 int end_ranks_after_failure(int code) { return code; }
 void ensure_petsc_initialised() {}

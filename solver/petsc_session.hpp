@@ -41,6 +41,9 @@ inline bool is_root_rank() { return mpi_rank() == 0; }
 /// std::runtime_error), so that no rank waits in a collective operation for one that has left.
 void on_every_rank(const std::function<void()>& work);
 
+/// Collective: rank 0's `text` on every rank (the others' arguments are ignored).
+std::string broadcast_from_root(const std::string& text);
+
 /// True once on_every_rank has thrown: every rank has the same error and leaves together.
 bool failure_shared_by_all_ranks();
 

@@ -11,13 +11,17 @@
 #include <cmath>
 #include <cstdio>
 #include <iterator>
+#include <memory>
 #include <sstream>
+#include <type_traits>
 #include <unordered_map>
 
 #include "assembly/boundary_conditions.hpp"
 #include "assembly/element_subset_assembly.hpp"
 #include "assembly/sparsity.hpp"
 #include "solver/boundary_edge_kinds.hpp"
+#include "solver/linear_solver.hpp"
+#include "solver/petsc_extended_residual.hpp"
 #include "solver/petsc_partition.hpp"
 #include "solver/petsc_session.hpp"
 
@@ -156,6 +160,44 @@ std::string failure_text(KSP ksp, KSPConvergedReason reason, double bnorm) {
   return out.str();
 }
 
+/// Iterative refinement with the KSP's factor, as in the serial solver (linear_solver.cpp): apply
+/// corrections K⁻¹ r, r from the extended-precision residual, while each is smaller than the last;
+/// stop once one shrinks by less than 4x (round-off reached) or drops below ε ‖x‖. Returns the
+/// number of corrections applied. Collective.
+int refine_solution(PetscObjects& p, ExtendedResidual& residual) {
+  Vec r = nullptr, d = nullptr;
+  check(VecDuplicate(p.x, &r), "VecDuplicate");
+  check(VecDuplicate(p.x, &d), "VecDuplicate");
+  int steps = 0;
+  PetscReal previous = 0, size = 0, xnorm = 0;
+  check(VecNorm(p.x, NORM_2, &previous), "VecNorm");
+  for (int step = 0; step < max_refinement_steps; ++step) {
+    check(VecScatterBegin(p.to_all, p.x, p.all, INSERT_VALUES, SCATTER_FORWARD), "VecScatterBegin");
+    check(VecScatterEnd(p.to_all, p.x, p.all, INSERT_VALUES, SCATTER_FORWARD), "VecScatterEnd");
+    const PetscScalar* all = nullptr;
+    check(VecGetArrayRead(p.all, &all), "VecGetArrayRead");
+    const std::vector<double> mine = residual.owned_rows(all);
+    check(VecRestoreArrayRead(p.all, &all), "VecRestoreArrayRead");
+    PetscScalar* rv = nullptr;
+    check(VecGetArray(r, &rv), "VecGetArray");
+    std::copy(mine.begin(), mine.end(), rv);
+    check(VecRestoreArray(r, &rv), "VecRestoreArray");
+    check(KSPSolve(p.ksp, r, d), "KSPSolve");
+    KSPConvergedReason reason;
+    check(KSPGetConvergedReason(p.ksp, &reason), "KSPGetConvergedReason");
+    check(VecNorm(d, NORM_2, &size), "VecNorm");
+    if (reason < 0 || !std::isfinite(size) || !(size < previous)) break;
+    check(VecAXPY(p.x, 1.0, d), "VecAXPY");
+    ++steps;
+    check(VecNorm(p.x, NORM_2, &xnorm), "VecNorm");
+    if (size > 0.25 * previous || size <= 1e-16 * xnorm) break;
+    previous = size;
+  }
+  VecDestroy(&d);
+  VecDestroy(&r);
+  return steps;
+}
+
 }  // namespace
 
 DiscreteSolution solve_problem_petsc(const Space& space, const ProblemSpec& problem, const PetscSettings& settings,
@@ -241,33 +283,51 @@ DiscreteSolution solve_problem_petsc(const Space& space, const ProblemSpec& prob
   check(MatSetOption(p.A, MAT_SPD, PETSC_TRUE), "MatSetOption");
   check(MatCreateVecs(p.A, &p.x, &p.b), "MatCreateVecs");
 
-  say("assembling (" + std::to_string(r.free_dofs) + " unknowns)");
+  // With a direct factorization the solution is refined with residuals of the matrix kept in
+  // long double (petsc_extended_residual.hpp): the corrections reuse the factor and remove the
+  // error floor of the double matrix. Krylov solves stop at their tolerance anyway.
+  const bool refine = settings.pc == "mumps" || settings.pc == "cholesky";
+  std::unique_ptr<ExtendedResidual> extended;
+  if (refine) extended = std::make_unique<ExtendedResidual>(n_global, layout.first_row, rank);
+  say("assembling (" + std::to_string(r.free_dofs) + " unknowns" + (refine ? ", in extended precision" : "") + ")");
   on_every_rank([&] {
     const SymbolicFunction source = problem.source;
-    std::vector<int> local;
+    const ScalarField f = [source](const Point2& x) { return source(x); };
+    std::vector<int> local, global_rows;
     std::vector<PetscInt> rows;
     Eigen::MatrixXd T;
     Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> K;
     Eigen::VectorXd g, rhs;
     bool finite = true;
-    for_each_element_system(
-        space, my_elements, problem.form, [source](const Point2& x) { return source(x); }, qa,
-        [&](int, const std::vector<int>& dofs, const Eigen::MatrixXd& A_e, const Eigen::VectorXd& b_e) {
-          basis->element(dofs, local, &T);
-          if (local.empty()) return;
-          g.resize(static_cast<int>(dofs.size()));
-          for (int i = 0; i < g.size(); ++i) g(i) = constraints.values(dofs[i]);
-          // Coefficient-wise products: Eigen's blocked ones would start a thread team per element.
-          const Eigen::MatrixXd AT = A_e.lazyProduct(T);
-          K = T.transpose().lazyProduct(AT);
-          rhs = T.transpose().lazyProduct(b_e - A_e.lazyProduct(g));
-          finite = finite && rhs.allFinite();
-          rows.resize(local.size());
-          for (std::size_t i = 0; i < local.size(); ++i) rows[i] = layout.global[local[i]];
-          const PetscInt m = static_cast<PetscInt>(rows.size());
-          check(MatSetValues(p.A, m, rows.data(), m, rows.data(), K.data(), ADD_VALUES), "MatSetValues");
-          check(VecSetValues(p.b, m, rows.data(), rhs.data(), ADD_VALUES), "VecSetValues");
-        });
+    // Tᵀ A T and Tᵀ (b − A g) in the precision of A (double, or long double for the refinement).
+    const auto add_element = [&](int, const std::vector<int>& dofs, const auto& A_e, const Eigen::VectorXd& b_e) {
+      using Scalar = typename std::decay_t<decltype(A_e)>::Scalar;
+      using Matrix = Eigen::Matrix<Scalar, Eigen::Dynamic, Eigen::Dynamic>;
+      using Vector = Eigen::Matrix<Scalar, Eigen::Dynamic, 1>;
+      basis->element(dofs, local, &T);
+      if (local.empty()) return;
+      g.resize(static_cast<int>(dofs.size()));
+      for (int i = 0; i < g.size(); ++i) g(i) = constraints.values(dofs[i]);
+      const Matrix Ts = T.cast<Scalar>();
+      // Coefficient-wise products: Eigen's blocked ones would start a thread team per element.
+      const Matrix AT = A_e.lazyProduct(Ts);
+      const Matrix Ks = Ts.transpose().lazyProduct(AT);
+      const Vector rhs_s = Ts.transpose().lazyProduct(b_e.cast<Scalar>() - A_e.lazyProduct(g.cast<Scalar>()));
+      K = Ks.template cast<double>();
+      rhs = rhs_s.template cast<double>();
+      finite = finite && rhs.allFinite();
+      rows.resize(local.size());
+      global_rows.resize(local.size());
+      for (std::size_t i = 0; i < local.size(); ++i) rows[i] = global_rows[i] = layout.global[local[i]];
+      const PetscInt m = static_cast<PetscInt>(rows.size());
+      check(MatSetValues(p.A, m, rows.data(), m, rows.data(), K.data(), ADD_VALUES), "MatSetValues");
+      check(VecSetValues(p.b, m, rows.data(), rhs.data(), ADD_VALUES), "VecSetValues");
+      if constexpr (std::is_same_v<Scalar, long double>) extended->add(global_rows, Ks, rhs_s);
+    };
+    if (refine)
+      for_each_element_system_extended(space, my_elements, problem.form, f, qa, add_element);
+    else
+      for_each_element_system(space, my_elements, problem.form, f, qa, add_element);
     // Natural conditions on this rank's boundary edges: Neumann flux ∫ g_N v, and ∫ Δu ∂v/∂n on
     // simply supported plate edges.
     Eigen::VectorXd edges = Eigen::VectorXd::Zero(space.dimension());
@@ -282,6 +342,7 @@ DiscreteSolution solve_problem_petsc(const Space& space, const ProblemSpec& prob
         const PetscInt row = layout.global[local[i]];
         const PetscScalar v = T(0, static_cast<int>(i)) * edges(d);
         check(VecSetValues(p.b, 1, &row, &v, ADD_VALUES), "VecSetValues");
+        if (extended) extended->add_load(static_cast<int>(row), v);
       }
     }
     finite = finite && edges.allFinite();
@@ -316,6 +377,8 @@ DiscreteSolution solve_problem_petsc(const Space& space, const ProblemSpec& prob
   if (reason < 0)
     throw NumericalError("PETSc " + method + " did not converge: " + failure_text(p.ksp, reason, bnorm) +
                          " (raise solver.rtol or solver.max_iterations, or choose another solver.pc)");
+  check(VecScatterCreateToAll(p.x, &p.to_all, &p.all), "VecScatterCreateToAll");
+  if (extended) out.solve.refinement_steps = refine_solution(p, *extended);
   // The true residual ‖b − A x‖ / ‖b‖, whatever norm the KSP tested.
   Vec residual;
   check(VecDuplicate(p.b, &residual), "VecDuplicate");
@@ -325,10 +388,12 @@ DiscreteSolution solve_problem_petsc(const Space& space, const ProblemSpec& prob
   VecDestroy(&residual);
   out.solve.relative_residual = bnorm > 0 ? rnorm / bnorm : rnorm;
   out.solve.method = "petsc " + method + ", " + std::to_string(its) + " iterations" +
+                     (out.solve.refinement_steps > 0
+                          ? ", " + std::to_string(out.solve.refinement_steps) + " refinement steps"
+                          : std::string()) +
                      (ranks > 1 ? ", " + std::to_string(ranks) + " ranks" : "");
 
   // Every rank gets the whole solution (the space, the outputs and the error integrals need it).
-  check(VecScatterCreateToAll(p.x, &p.to_all, &p.all), "VecScatterCreateToAll");
   check(VecScatterBegin(p.to_all, p.x, p.all, INSERT_VALUES, SCATTER_FORWARD), "VecScatterBegin");
   check(VecScatterEnd(p.to_all, p.x, p.all, INSERT_VALUES, SCATTER_FORWARD), "VecScatterEnd");
   const PetscScalar* all = nullptr;

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "solver/petsc_session.hpp"
+
 namespace iga {
 
 SpaceSize measure(const Space& space) {
@@ -22,8 +24,15 @@ SpaceSize uniform_estimate(const SpaceSize& level0, int level) {
   return {level0.elements * growth, level0.dofs * growth, level0.element_entries * growth};
 }
 
-double estimated_memory_bytes(const SpaceSize& size) {
-  return 8.5 * size.element_entries * std::log2(std::max(2.0, size.dofs));
+MemoryModel memory_model(SolverKind kind, const PetscSettings& petsc) {
+  const bool iterative = kind == SolverKind::petsc && (petsc.pc == "gamg" || petsc.pc == "hypre" || petsc.pc == "ilu");
+  return {!iterative, std::max(1, mpi_size())};
+}
+
+double estimated_memory_bytes(const SpaceSize& size, const MemoryModel& model) {
+  const double ranks = std::max(1, model.ranks);
+  if (model.factorization) return 8.5 * size.element_entries * std::log2(std::max(2.0, size.dofs)) / ranks;
+  return 400.0 * size.dofs + 7.0 * size.element_entries / ranks;
 }
 
 void check_space_request(const ConfigNode& space, const ResourceLimits& limits) {
@@ -45,18 +54,21 @@ void check_space_request(const ConfigNode& space, const ResourceLimits& limits) 
   }
 }
 
-void check_size(const SpaceSize& size, const ResourceLimits& limits, const ConfigNode& node, const std::string& what) {
+void check_size(const SpaceSize& size, const ResourceLimits& limits, const ConfigNode& node, const std::string& what,
+                const MemoryModel& model) {
   if (size.elements > limits.max_elements)
     node.fail(what + " has " + format_number(size.elements) + " elements, more than limits.max_elements = " +
               format_number(limits.max_elements) + how_to_raise("max_elements"));
   if (size.dofs > limits.max_dofs)
     node.fail(what + " has " + format_number(size.dofs) + " degrees of freedom, more than limits.max_dofs = " +
               format_number(limits.max_dofs) + how_to_raise("max_dofs"));
-  const double gb = estimated_memory_bytes(size) / 1e9;
+  const double gb = estimated_memory_bytes(size, model) / 1e9;
   if (gb > limits.max_memory_gb) {
     char buf[32];
     std::snprintf(buf, sizeof buf, "%.3g", gb);
-    node.fail(what + " needs about " + buf + " GB (matrix and factor), more than limits.max_memory_gb = " +
+    const std::string parts = model.factorization ? "matrix and factor" : "matrix and preconditioner";
+    const std::string per_rank = model.ranks > 1 ? ", per rank of " + std::to_string(model.ranks) : "";
+    node.fail(what + " needs about " + buf + " GB (" + parts + per_rank + "), more than limits.max_memory_gb = " +
               format_number(limits.max_memory_gb) + how_to_raise("max_memory_gb"));
   }
 }

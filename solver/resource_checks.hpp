@@ -8,6 +8,7 @@
 
 #include "config/config_node.hpp"
 #include "config/resource_limits.hpp"
+#include "solver/petsc_settings.hpp"
 #include "spaces/space.hpp"
 
 namespace iga {
@@ -26,18 +27,37 @@ SpaceSize measure(const Space& space);
 /// fourfold per level in 2D.
 SpaceSize uniform_estimate(const SpaceSize& level0, int level);
 
-/// Bytes a level of this size needs, matrix and Cholesky factor included: 8.5 bytes per element
-/// entry and log2(dofs) (nested dissection's fill grows like N log N). Calibrated on a B-spline
-/// study (264 196 DOFs, quadratic: 2.4 GB measured, 3.2 GB estimated); an estimate, not a bound.
-double estimated_memory_bytes(const SpaceSize& size);
+/// What a solve keeps besides the space: a sparse factorization (CHOLMOD, UMFPACK, MUMPS, PETSc's
+/// Cholesky) or, for Krylov methods with multigrid or ILU, the matrix and the preconditioner; and
+/// over how many MPI ranks it is divided.
+struct MemoryModel {
+  bool factorization = true;
+  int ranks = 1;
+};
+
+/// The model of a study's solver: PETSc with pc gamg, hypre or ilu is iterative, every other
+/// solver factorizes; `ranks` is this run's number of MPI ranks.
+MemoryModel memory_model(SolverKind kind, const PetscSettings& petsc);
+
+/// Bytes a level of this size needs (per rank), an estimate, not a bound.
+/// With a factorization: 8.5 bytes per element entry times log2(dofs) (nested dissection's fill
+/// grows like N log N), divided over the ranks. Calibrated on a B-spline study (264 196 DOFs,
+/// quadratic: 2.4 GB measured, 3.2 GB estimated).
+/// Iterative: 400 bytes per DOF on every rank (the space, its tables and the gathered solution are
+/// replicated) and 7 bytes per element entry divided over the ranks (the matrix, about 12 bytes
+/// per nonzero, and the AMG hierarchy and Krylov vectors). Calibrated on cubic B-splines with
+/// CG + GAMG at 1 006 009 DOFs: 2.10 GB measured on one rank (2.19 estimated), 1.23 GB per rank on
+/// two (1.30 estimated).
+double estimated_memory_bytes(const SpaceSize& size, const MemoryModel& model = {});
 
 /// Before the coarsest space is built: `space.degree` (a number or a list) against
 /// limits.max_degree and the elements `space.elements` asks for (a count per direction, or one for
 /// both) against limits.max_elements. InputError at the key otherwise.
 void check_space_request(const ConfigNode& space, const ResourceLimits& limits);
 
-/// InputError at `node` when `size` exceeds limits.max_elements, max_dofs or max_memory_gb; `what`
-/// says which level ("level 3 (estimated from level 0)").
-void check_size(const SpaceSize& size, const ResourceLimits& limits, const ConfigNode& node, const std::string& what);
+/// InputError at `node` when `size` exceeds limits.max_elements, max_dofs or max_memory_gb (the
+/// memory of `model`, per rank); `what` says which level ("level 3 (estimated from level 0)").
+void check_size(const SpaceSize& size, const ResourceLimits& limits, const ConfigNode& node, const std::string& what,
+                const MemoryModel& model = {});
 
 }  // namespace iga

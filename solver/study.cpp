@@ -163,13 +163,14 @@ StudySettings parse_study(const ConfigNode& root, const std::string& config_path
                        ", more than limits.max_degree = " + std::to_string(s.limits.max_degree) +
                        how_to_raise("max_degree"));
   const SpaceSize level0 = measure(*coarse);
-  check_size(level0, s.limits, space_node, "level 0");
+  const MemoryModel memory = memory_model(s.solver, s.petsc);
+  check_size(level0, s.limits, space_node, "level 0", memory);
   if (!s.adaptive) {
     const auto levels_node = root.find("refinement") ? root["refinement"].find("levels") : std::nullopt;
     const ConfigNode& blame = levels_node && levels_override <= 0 ? *levels_node : space_node;
     for (int level = 1; level < s.levels; ++level)
       check_size(uniform_estimate(level0, level), s.limits, blame,
-                 "level " + std::to_string(level) + " (estimated from level 0)");
+                 "level " + std::to_string(level) + " (estimated from level 0)", memory);
   }
 
   if (auto output = root.find("output"))  // they name points and boundary parts of the space
@@ -229,7 +230,8 @@ StudyResult run_study(const StudySettings& settings, const ProgressSink& progres
                                      }();
     previous = space;
     const double t_space = seconds_since(t0) + t_next + (reuse ? settings.level0_seconds : 0.0);
-    check_size(measure(*space), settings.limits, space_node, "level " + std::to_string(level));  // before assembly
+    check_size(measure(*space), settings.limits, space_node, "level " + std::to_string(level),
+               memory_model(settings.solver, settings.petsc));  // before assembly
     progress(tag + "space: " + std::to_string(space->dimension()) + " dofs, " +
              std::to_string(space->num_elements()) + " elements (" + format_seconds(t_space) + ")");
     // Quadrature points miss poles on mesh lines; new vertices and edges come with every level.

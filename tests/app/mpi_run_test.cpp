@@ -1,6 +1,7 @@
 // `mpirun -np 2 iga-run config.yaml` as a user runs it: one shipped config per space solved with
-// PETSc on two ranks writes the convergence table of the serial CHOLMOD run, and a failure on the
-// ranks ends every rank with the right exit code (no hang).
+// PETSc on two ranks writes the convergence table of the serial CHOLMOD run and a .pvtu whose two
+// pieces VTK reads back as the serial run's grid, and a failure on the ranks ends every rank with
+// the right exit code (no hang).
 
 #include <gtest/gtest.h>
 #include <sys/wait.h>
@@ -15,6 +16,17 @@
 
 #include "solver/petsc_settings.hpp"
 #include "tests/support/scratch_files.hpp"
+
+#ifdef IGA_WITH_PETSC  // VTK's parallel XML reader is linked with the PETSc build
+#include <vtkCellData.h>
+#include <vtkDataArray.h>
+#include <vtkNew.h>
+#include <vtkUnstructuredGrid.h>
+#include <vtkXMLPUnstructuredGridReader.h>
+#include <vtkXMLUnstructuredGridReader.h>
+
+#include <algorithm>
+#endif
 
 namespace fs = std::filesystem;
 
@@ -43,13 +55,14 @@ RunResult run(int ranks, const std::string& args) {
   return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(err)};
 }
 
-/// The shipped config with its solver: section replaced (and no VTK or plot: not compared here).
-fs::path config_with_solver(const std::string& config, const std::string& solver, const std::string& name) {
+/// The shipped config with its solver: section replaced (and no plot; no VTK unless asked for).
+fs::path config_with_solver(const std::string& config, const std::string& solver, const std::string& name,
+                            bool vtk = false) {
   std::ifstream in(std::string(IGA_SOURCE_DIR) + "/configs/" + config + ".yaml");
   std::string line, text;
   while (std::getline(in, line))
     if (line.rfind("solver:", 0) != 0 && line.rfind("output:", 0) != 0) text += line + "\n";
-  text += "solver: " + solver + "\noutput: {vtk: false, plot: false}\n";
+  text += "solver: " + solver + "\noutput: {vtk: " + (vtk ? "true" : "false") + ", plot: false}\n";
   return iga::test::scratch_file(name + ".yaml", text);
 }
 
@@ -111,6 +124,72 @@ INSTANTIATE_TEST_SUITE_P(EverySpace, TwoRanks,
                              if (ch == '-') ch = '_';
                            return name;
                          });
+
+#ifdef IGA_WITH_PETSC
+/// The global element numbers of a grid's cells (cell field `element`), sorted.
+std::vector<int> sorted_elements(vtkUnstructuredGrid* grid) {
+  vtkDataArray* element = grid->GetCellData()->GetArray("element");
+  std::vector<int> out;
+  if (!element) return out;
+  for (vtkIdType c = 0; c < element->GetNumberOfTuples(); ++c) out.push_back(static_cast<int>(element->GetTuple1(c)));
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+class TwoRanksVtk : public ::testing::TestWithParam<const char*> {};
+
+// Each rank writes its elements as one piece; VTK's parallel reader puts them together into the
+// serial run's cells (the same cells, each element once), and the .pvd collection names the .pvtu.
+TEST_P(TwoRanksVtk, ThePvtuReadsBackAsTheSerialGridWithOnePiecePerRank) {
+  if (!iga::petsc_available()) GTEST_SKIP() << "built without PETSc";
+  const std::string config = GetParam();
+  const fs::path dir = iga::test::scratch_folder() / (config + "-vtk");
+  const std::string args = " --quiet --levels 2 --output ";
+  ASSERT_EQ(run(0, config_with_solver(config, "{type: cholmod}", config + "-vtk-serial", true).string() + args +
+                       (dir / "serial").string()).exit_code, 0);
+  const RunResult parallel =
+      run(2, config_with_solver(config, "{type: petsc}", config + "-vtk-petsc", true).string() + args + (dir / "np2").string());
+  ASSERT_EQ(parallel.exit_code, 0) << parallel.err;
+  for (int level = 0; level < 2; ++level) {
+    const std::string stem = "solution_" + std::to_string(level);
+    vtkNew<vtkXMLUnstructuredGridReader> serial;
+    serial->SetFileName((dir / "serial" / (stem + ".vtu")).c_str());
+    serial->Update();
+    vtkNew<vtkXMLPUnstructuredGridReader> whole;
+    whole->SetFileName((dir / "np2" / (stem + ".pvtu")).c_str());
+    whole->Update();
+    EXPECT_EQ(whole->GetNumberOfPieces(), 2) << stem;
+    const vtkIdType cells = serial->GetOutput()->GetNumberOfCells();
+    ASSERT_GT(cells, 0);
+    EXPECT_EQ(whole->GetOutput()->GetNumberOfCells(), cells) << stem;
+    EXPECT_EQ(sorted_elements(whole->GetOutput()), sorted_elements(serial->GetOutput())) << stem;
+    vtkIdType piece_cells = 0;
+    for (int rank = 0; rank < 2; ++rank) {
+      const fs::path piece = dir / "np2" / (stem + "_" + std::to_string(rank) + ".vtu");
+      ASSERT_TRUE(fs::exists(piece)) << piece;
+      vtkNew<vtkXMLUnstructuredGridReader> reader;
+      reader->SetFileName(piece.c_str());
+      reader->Update();
+      EXPECT_GT(reader->GetOutput()->GetNumberOfCells(), 0) << piece;  // both ranks own elements
+      piece_cells += reader->GetOutput()->GetNumberOfCells();
+    }
+    EXPECT_EQ(piece_cells, cells) << stem;
+    EXPECT_FALSE(fs::exists(dir / "np2" / (stem + ".vtu")));
+  }
+  EXPECT_NE(slurp(dir / "np2" / "solution.pvd").find("file=\"solution_1.pvtu\""), std::string::npos);
+  for (const auto& entry : fs::directory_iterator(dir / "np2"))  // no scratch files left behind
+    EXPECT_NE(entry.path().filename().string().front(), '.') << entry.path();
+}
+
+// Lagrange cells (B-splines) and linear sub-cells of macro-elements (G1).
+INSTANTIATE_TEST_SUITE_P(TwoSpaces, TwoRanksVtk, ::testing::Values("bspline-poisson", "g1-biharmonic-3patch"),
+                         [](const ::testing::TestParamInfo<const char*>& info) {
+                           std::string name = info.param;
+                           for (char& ch : name)
+                             if (ch == '-') ch = '_';
+                           return name;
+                         });
+#endif
 
 TEST(TwoRanksFailures, AnUnconvergedSolveIsExitOneOnEveryRankWithTheReason) {
   if (!iga::petsc_available()) GTEST_SKIP() << "built without PETSc";

@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "solver/study.hpp"
 #include "spaces/space_factory.hpp"
 
@@ -53,6 +55,36 @@ TEST(ResourceChecks, LevelsAreEstimatedFromLevelZero) {
             std::string::npos);
   // The command line's --levels is blamed on the space (no config key holds it).
   EXPECT_EQ(study_error(base, 11).rfind("run.yaml:3:8: space: level 10", 0), 0u) << study_error(base, 11);
+}
+
+TEST(ResourceChecks, IterativePetscSolvesAreEstimatedWithoutAFactor) {
+  // Cubic B-splines on 1000 x 1000 elements: 1 006 009 DOFs, 16 functions per element.
+  const SpaceSize s{1e6, 1006009, 256e6};
+  EXPECT_NEAR(estimated_memory_bytes(s) / 1e9, 8.5 * 256e6 * std::log2(1006009.0) / 1e9, 1e-9);  // 43.4 GB
+  EXPECT_NEAR(estimated_memory_bytes(s, {false, 1}) / 1e9, (400 * 1006009.0 + 7 * 256e6) / 1e9, 1e-9);  // 2.19 GB
+  // Over two ranks the matrix divides, the replicated space does not; a factor divides.
+  EXPECT_NEAR(estimated_memory_bytes(s, {false, 2}) / 1e9, (400 * 1006009.0 + 3.5 * 256e6) / 1e9, 1e-9);
+  EXPECT_NEAR(estimated_memory_bytes(s, {true, 2}), estimated_memory_bytes(s) / 2, 1.0);
+
+  EXPECT_TRUE(memory_model(SolverKind::cholmod, {}).factorization);
+  PetscSettings petsc;
+  for (const char* pc : {"gamg", "hypre", "ilu"}) {
+    petsc.pc = pc;
+    EXPECT_FALSE(memory_model(SolverKind::petsc, petsc).factorization) << pc;
+  }
+  for (const char* pc : {"mumps", "cholesky"}) {
+    petsc.pc = pc;
+    EXPECT_TRUE(memory_model(SolverKind::petsc, petsc).factorization) << pc;
+  }
+  if (!petsc_available()) return;
+  // Level 5 of 8 x 8 cubic elements: a factor of about 2.3 GB, CG + GAMG about 0.17 GB.
+  const std::string base = "space: {type: bspline, degree: 3, elements: [8, 8]}\nrefinement: {levels: 6}\n"
+                           "limits: {max_memory_gb: 1}\n";
+  EXPECT_NE(study_error(base + "solver: {type: cholmod}\n").find("GB (matrix and factor), more than limits.max_memory_gb"),
+            std::string::npos);
+  EXPECT_EQ(study_error(base + "solver: {type: petsc}\n"), "");
+  EXPECT_NE(study_error(base + "solver: {type: petsc, ksp: preonly, pc: mumps}\n").find("limits.max_memory_gb"),
+            std::string::npos);
 }
 
 TEST(ResourceChecks, MeasureCountsElementEntries) {

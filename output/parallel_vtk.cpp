@@ -1,0 +1,198 @@
+#include "output/parallel_vtk.hpp"
+
+#include <filesystem>
+#include <stdexcept>
+#include <system_error>
+#include <vector>
+
+#include "assembly/element_subset_assembly.hpp"
+#include "config/errors.hpp"
+#include "solver/petsc_partition.hpp"
+#include "solver/petsc_session.hpp"
+
+#ifdef IGA_WITH_PETSC
+#include <vtkCellData.h>
+#include <vtkIntArray.h>
+#include <vtkMPIController.h>
+#include <vtkNew.h>
+#include <vtkSmartPointer.h>
+#include <vtkUnstructuredGrid.h>
+#include <vtkXMLPUnstructuredGridWriter.h>
+#include <vtkXMLUnstructuredGridReader.h>
+#endif
+
+namespace iga {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+/// The piece of `rank` beside `pvtu` (VTK's naming: <stem>_<rank>.vtu).
+fs::path piece_path(const fs::path& pvtu, int rank) {
+  return pvtu.parent_path() / (pvtu.stem().string() + "_" + std::to_string(rank) + ".vtu");
+}
+
+#ifdef IGA_WITH_PETSC
+
+/// Some elements of a space, renumbered 0 .. n-1, for drawing them alone: every query about
+/// element e is asked of the space's element elements[e]. The functions keep their global numbers
+/// (coefficients are the whole space's).
+class ElementSubsetView final : public Space {
+ public:
+  ElementSubsetView(const Space& space, std::vector<int> elements) : space_(space), elements_(std::move(elements)) {}
+
+  class SubsetEvaluator final : public Evaluator {
+   public:
+    SubsetEvaluator(std::unique_ptr<Evaluator> inner, const std::vector<int>& elements)
+        : inner_(std::move(inner)), elements_(elements) {}
+    void evaluate(int e, const QuadratureRule& points, unsigned flags, PointValues& out) override {
+      inner_->evaluate(elements_[e], points, flags, out);
+    }
+    void evaluate_function(int e, const QuadratureRule& points, const Eigen::VectorXd& coefficients, unsigned flags,
+                           PointValues& geometry, FunctionValues& out) override {
+      inner_->evaluate_function(elements_[e], points, coefficients, flags, geometry, out);
+    }
+    void evaluate_geometry(int e, const QuadratureRule& points, PointValues& out) override {
+      inner_->evaluate_geometry(elements_[e], points, out);
+    }
+    void integrate_values(int e, const QuadratureRule& points, const PointValues& geometry,
+                          const Eigen::VectorXd& weights, Eigen::VectorXd& local) override {
+      inner_->integrate_values(elements_[e], points, geometry, weights, local);
+    }
+
+   private:
+    std::unique_ptr<Evaluator> inner_;
+    const std::vector<int>& elements_;
+  };
+
+  std::unique_ptr<Evaluator> make_evaluator() const override {
+    return std::make_unique<SubsetEvaluator>(space_.make_evaluator(), elements_);
+  }
+  int ambient_dimension() const override { return space_.ambient_dimension(); }
+  std::shared_ptr<const SurfacePatches> surface_patches() const override { return space_.surface_patches(); }
+  std::string type() const override { return space_.type(); }
+  std::vector<std::pair<std::string, std::string>> parameters() const override { return space_.parameters(); }
+  int dimension() const override { return space_.dimension(); }
+  void element_dofs(int e, std::vector<int>& out) const override { space_.element_dofs(elements_[e], out); }
+  int num_elements() const override { return static_cast<int>(elements_.size()); }
+  CellShape cell_shape(int e) const override { return space_.cell_shape(elements_[e]); }
+  double mesh_size() const override { return space_.mesh_size(); }
+  int degree() const override { return space_.degree(); }
+  int continuity() const override { return space_.continuity(); }
+  bool affine_elements() const override { return space_.affine_elements(); }
+  RulePtr quadrature(int e, int degree) const override { return space_.quadrature(elements_[e], degree); }
+  RulePtr edge_quadrature(int e, int edge, int degree) const override {
+    return space_.edge_quadrature(elements_[e], edge, degree);
+  }
+  std::vector<std::string> boundary_names() const override { return space_.boundary_names(); }
+  /// Not needed for drawing (and the edges' element numbers would be the space's).
+  std::vector<BoundaryEdge> boundary_edges(const std::string&) const override { return {}; }
+  SampleCell sample_cell(int e, int resolution) const override { return space_.sample_cell(elements_[e], resolution); }
+
+ private:
+  const Space& space_;
+  std::vector<int> elements_;
+};
+
+/// VTK's MPI controller on the world communicator PETSc runs on, initialised once (MPI itself was
+/// initialised by PETSc). Never destroyed: its destructor would call MPI after PETSc finalised it.
+vtkMPIController* vtk_controller() {
+  static vtkMPIController* controller = [] {
+    vtkMPIController* c = vtkMPIController::New();
+    c->Initialize(nullptr, nullptr, 1);
+    return c;
+  }();
+  return controller;
+}
+
+#endif
+
+}  // namespace
+
+bool parallel_vtk_output() { return mpi_size() > 1; }
+
+std::string shared_output_directory(const std::string& root_directory) {
+  const std::string directory = broadcast_from_root(root_directory);
+  on_every_rank([&] {
+    std::error_code ec;
+    if (!fs::is_directory(directory, ec))
+      throw InputError("rank " + std::to_string(mpi_rank()) + " cannot see the output staging directory '" + directory +
+                       "': the ranks must share it (set TMPDIR to a directory every node sees)");
+  });
+  return directory;
+}
+
+#ifdef IGA_WITH_PETSC
+
+bool write_solution_pvtu(const Space& space, const Eigen::VectorXd& coefficients, const VtkFieldOptions& options,
+                         const std::string& pvtu_filename) {
+  const int rank = mpi_rank(), ranks = mpi_size();
+  const fs::path pvtu(pvtu_filename);
+  bool lagrange = false;
+  auto grid = vtkSmartPointer<vtkUnstructuredGrid>::New();
+  // Local work: this rank's elements drawn by the serial writer (into a scratch file beside the
+  // pieces), read back and given their global element numbers.
+  on_every_rank([&] {
+    const std::vector<int> owner = partition_elements(element_centres(space), ranks);
+    std::vector<int> mine;
+    for (int e = 0; e < static_cast<int>(owner.size()); ++e)
+      if (owner[e] == rank) mine.push_back(e);
+    if (mine.empty()) return;  // more ranks than elements: no piece
+    VtkFieldOptions own = options;
+    for (auto& [name, values] : own.element_fields) {
+      std::vector<double> subset;
+      subset.reserve(mine.size());
+      for (int e : mine) subset.push_back(values.at(e));
+      values = std::move(subset);
+    }
+    const fs::path scratch = pvtu.parent_path() / ("." + pvtu.stem().string() + "_" + std::to_string(rank) + ".partial.vtu");
+    const ElementSubsetView view(space, mine);
+    lagrange = write_solution_vtu(view, coefficients, own, scratch.string());
+    vtkNew<vtkXMLUnstructuredGridReader> reader;
+    reader->SetFileName(scratch.c_str());
+    reader->Update();
+    std::error_code ec;
+    fs::remove(scratch, ec);
+    grid->ShallowCopy(reader->GetOutput());
+    auto* element = vtkIntArray::SafeDownCast(grid->GetCellData()->GetArray("element"));
+    if (!element || grid->GetNumberOfCells() == 0)
+      throw std::runtime_error("cannot read back the VTK piece of rank " + std::to_string(rank));
+    for (vtkIdType c = 0; c < element->GetNumberOfTuples(); ++c) element->SetValue(c, mine.at(element->GetValue(c)));
+  });
+  // Collective inside VTK: the writer reduces which pieces were written, rank 0 lists them.
+  vtkNew<vtkXMLPUnstructuredGridWriter> writer;
+  writer->SetController(vtk_controller());
+  writer->SetInputData(grid);
+  writer->SetFileName(pvtu.c_str());
+  writer->SetNumberOfPieces(ranks);
+  writer->SetStartPiece(rank);
+  writer->SetEndPiece(rank);
+  writer->SetWriteSummaryFile(1);  // on every rank: the reduction is collective; the controller lets rank 0 write
+  writer->SetDataModeToAppended();
+  writer->SetCompressorTypeToZLib();
+  const int ok = writer->Write();
+  on_every_rank([&] {
+    if (!ok || writer->GetErrorCode() != 0)
+      throw std::runtime_error("cannot write the VTK piece '" + piece_path(pvtu, rank).string() + "' or '" +
+                               pvtu.string() + "'");
+  });
+  return broadcast_from_root(lagrange ? "1" : "0") == "1";
+}
+
+#else
+
+bool write_solution_pvtu(const Space&, const Eigen::VectorXd&, const VtkFieldOptions&, const std::string&) {
+  throw std::logic_error("write_solution_pvtu: this iga-run was built without MPI (one rank writes .vtu files)");
+}
+
+#endif
+
+void remove_solution_dataset(const std::string& filename) {
+  const fs::path path(filename);
+  std::error_code ec;
+  fs::remove(path, ec);
+  if (path.extension() == ".pvtu")
+    for (int r = 0; r < mpi_size(); ++r) fs::remove(piece_path(path, r), ec);
+}
+
+}  // namespace iga
