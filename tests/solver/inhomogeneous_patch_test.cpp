@@ -100,7 +100,12 @@ space: {type: ws4, elements: 2}
 problem: {pde: biharmonic, exact: "x^3*y + x^2*y^2 - y^4 + 1 + x", boundary: {all: clamped}}
 domain: {type: unit_square}
 space: {type: ws4, elements: 2}
-)yaml", 0, 3},
+)yaml", 0, 4},
+    {"ws4_clamped_large", R"yaml(
+problem: {pde: biharmonic, exact: "x^3*y + x^2*y^2 - y^4 + 1 + x", boundary: {all: clamped}}
+domain: {type: unit_square}
+space: {type: ws4, elements: 2}
+)yaml", 5, 5},
     // Clamped and simply supported plates stop where the long double residuals' own floor,
     // growing like h⁻⁴ (docs/known-limits.md), comes within 3x of 1e-11: the next level reaches
     // H1 4.9e-11 (WS4 clamped, 35 850 DOFs), 2.8e-11 (WS4 simply supported, 9 226), 8.0e-12
@@ -110,7 +115,12 @@ space: {type: ws4, elements: 2}
 problem: {pde: biharmonic, exact: "x^4 - 3*x^2*y^2 + x*y + y + 2", boundary: {all: simply_supported}}
 domain: {type: unit_square}
 space: {type: ws4, elements: 2}
-)yaml", 0, 2},
+)yaml", 0, 4},
+    {"ws4_simply_supported_large", R"yaml(
+problem: {pde: biharmonic, exact: "x^4 - 3*x^2*y^2 + x*y + y + 2", boundary: {all: simply_supported}}
+domain: {type: unit_square}
+space: {type: ws4, elements: 2}
+)yaml", 5, 5},
     // ---- T-meshes, polynomial sections of degree 3 (bicubics), C1 across T-junctions
     {"tmesh_poisson_dirichlet", R"yaml(
 problem: {pde: poisson, exact: "x^3*y^2 - 2*x*y^3 + x^2 + y + 1", boundary: {all: dirichlet}}
