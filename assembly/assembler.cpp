@@ -38,9 +38,7 @@ void quadrature_matrix(BilinearForm form, const ElementValues& ev, MatrixXld& lo
   element_matrix_extended(form, ev, local);
 }
 void quadrature_matrix(BilinearForm form, const ElementValues& ev, DoubleDoubleMatrix& local) {
-  thread_local MatrixXld extended;
-  element_matrix_extended(form, ev, extended);
-  local = DoubleDoubleMatrix::from_long_double(extended);
+  element_matrix_double_double(form, ev, local);
 }
 
 /// Add the columns j of `local` with dofs[j] in [first, last) into `values` (aligned with the
