@@ -142,11 +142,6 @@ problem: {pde: biharmonic, exact: "x^3*y^3 - x^2*y + 3*y^2 + x + 2", boundary: {
 domain: {type: rectangle, min: [0, 0], max: [1, 1]}
 space: {type: tmesh, section: poly, n: 3, regularity: 1, elements: [2, 2], refine: [[0, 0, 0.5, 0.5], [0.25, 0.25, 0.5, 0.5]]}
 )yaml", 0, 4},
-    {"bspline_simply_supported_p3_large", R"yaml(
-problem: {pde: biharmonic, exact: "x^3 + x^2*y - y^3 + 2 + x", boundary: {all: simply_supported}}
-domain: {type: rectangle, min: [0, 0], max: [1, 1]}
-space: {type: bspline, degree: 3, elements: [5, 5]}
-)yaml", 6, 6},
     {"tmesh_clamped_large", R"yaml(
 problem: {pde: biharmonic, exact: "x^3*y^2 - 2*x*y^3 + x^2 + y + 1", boundary: {all: clamped}}
 domain: {type: rectangle, min: [0, 0], max: [1, 1]}
