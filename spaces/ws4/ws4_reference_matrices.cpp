@@ -279,6 +279,7 @@ std::vector<DoubleDoubleMatrix> reference_sums_double_double() {
   std::vector<int> active;
   std::vector<BasicPoly4<DD>> d(6 * n);
   std::vector<DD> table(6 * n * q);  // table[(j * n + a) * q + k]
+  std::vector<double> value_hi(6 * n * q), value_lo(6 * n * q), weighted_hi(6 * n * q), weighted_lo(6 * n * q);
   DD weights[q];
   int m = 0, cached_region = -1;
   for (size_t f = 0; f < split.fan_triangles().size(); ++f) {
@@ -318,15 +319,37 @@ std::vector<DoubleDoubleMatrix> reference_sums_double_double() {
         for (int j = 0; j < 6; ++j)
           for (int i = 0; i < m; ++i) table[(j * n + i) * q + k] = d[j * n + i](x, y);
       }
+    // (table · weight) once per function and point, as hi/lo doubles; then each integral is a
+    // compensated dot product (exact products of the hi parts, the rest in the error term).
+    for (int j = 0; j < 6; ++j)
+      for (int i = 0; i < m; ++i)
+        for (int kk = 0; kk < q; ++kk) {
+          const DD& v = table[(j * n + i) * q + kk];
+          const DD vw = v * weights[kk];
+          value_hi[(j * n + i) * q + kk] = v.hi;
+          value_lo[(j * n + i) * q + kk] = v.lo;
+          weighted_hi[(j * n + i) * q + kk] = vw.hi;
+          weighted_lo[(j * n + i) * q + kk] = vw.lo;
+        }
     for (int p = 0; p < 10; ++p) {
       const int t0 = kPairs[p][0], t1 = kPairs[p][1];
       for (int b = 0; b < m; ++b) {
-        const DD* tb = &table[(t1 * n + b) * q];
-        for (int a = 0; a < m; ++a) {
-          const DD* ta = &table[(t0 * n + a) * q];
-          DD acc(0.0);
-          for (int kk = 0; kk < q; ++kk) acc += ta[kk] * weights[kk] * tb[kk];
-          sums[p][active[b] * n + active[a]] += acc;
+        const double* bh = &value_hi[(t1 * n + b) * q];
+        const double* bl = &value_lo[(t1 * n + b) * q];
+        // A symmetric pair needs only a <= b (the other half is mirrored below).
+        for (int a = 0; a < (t0 == t1 ? b + 1 : m); ++a) {
+          const double* ah = &weighted_hi[(t0 * n + a) * q];
+          const double* al = &weighted_lo[(t0 * n + a) * q];
+          double sum = 0, err = 0;
+          for (int kk = 0; kk < q; ++kk) {
+            const DD prod = dd_detail::two_prod(ah[kk], bh[kk]);
+            const DD t = dd_detail::two_sum(sum, prod.hi);
+            sum = t.hi;
+            err += t.lo + prod.lo + ah[kk] * bl[kk] + al[kk] * bh[kk];
+          }
+          // Stored at (row, column) = (active[a], active[b]); for a symmetric pair row <= column
+          // since active is increasing.
+          sums[p][active[b] * n + active[a]] += dd_detail::quick_two_sum(sum, err);
         }
       }
     }
