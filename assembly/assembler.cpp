@@ -31,8 +31,14 @@ bool closed_form(const Space& space, int e, BilinearForm form, MatrixXld& local)
 void quadrature_matrix(BilinearForm form, const ElementValues& ev, Eigen::MatrixXd& local) {
   element_matrix(form, ev, local);
 }
+bool closed_form(const Space& space, int e, BilinearForm form, DoubleDoubleMatrix& local) {
+  return space.closed_form_element_matrix_double_double(e, form, local);
+}
 void quadrature_matrix(BilinearForm form, const ElementValues& ev, MatrixXld& local) {
   element_matrix_extended(form, ev, local);
+}
+void quadrature_matrix(BilinearForm form, const ElementValues& ev, DoubleDoubleMatrix& local) {
+  element_matrix_double_double(form, ev, local);
 }
 
 /// Add the columns j of `local` with dofs[j] in [first, last) into `values` (aligned with the
@@ -108,8 +114,10 @@ SparseMatrix Assembler::matrix(BilinearForm form, int quad_degree) const {
 }
 
 SplitMatrix Assembler::matrix_extended(BilinearForm form, int quad_degree) const {
-  std::vector<long double> values(pattern_.nonZeros(), 0.0L);
-  assemble<MatrixXld>(form, quad_degree, values.data());
+  // Entries summed in double-double: long double sums of h⁻² contributions would round each entry
+  // by ≈ 5e-20 of its size, an error the biharmonic system amplifies by h⁻⁴.
+  std::vector<DoubleDouble> values(pattern_.nonZeros());
+  assemble<DoubleDoubleMatrix>(form, quad_degree, values.data());
   return split_matrix(pattern_, values);
 }
 

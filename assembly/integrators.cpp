@@ -79,6 +79,77 @@ void element_matrix_extended(BilinearForm form, const ElementValues& ev, MatrixX
   form_matrix(form, ev, local);
 }
 
+namespace {
+/// upper(s + e) += factor Σ_q (A_iq w_q) A_jq for A = hi + lo, with exact products and the sums'
+/// rounding kept in e (compensated, as if in double-double).
+void add_weighted_square_double_double(const Eigen::MatrixXd& hi, const Eigen::MatrixXd& lo, const Eigen::VectorXd& w,
+                                       double factor, Eigen::MatrixXd& s, Eigen::MatrixXd& e) {
+  const Eigen::Index n = hi.rows(), q = hi.cols();
+  thread_local Eigen::MatrixXd aw_hi, aw_lo;  // factor A_iq w_q as a double-double
+  aw_hi.resize(n, q);
+  aw_lo.resize(n, q);
+  for (Eigen::Index k = 0; k < q; ++k)
+    for (Eigen::Index i = 0; i < n; ++i) {
+      const DoubleDouble aw = DoubleDouble(hi(i, k), lo(i, k)) * (w(k) * factor);  // factor is 1 or 2: exact
+      aw_hi(i, k) = aw.hi;
+      aw_lo(i, k) = aw.lo;
+    }
+  for (Eigen::Index j = 0; j < n; ++j)
+    for (Eigen::Index k = 0; k < q; ++k) {
+      const double b = hi(j, k), bl = lo(j, k);
+      for (Eigen::Index i = 0; i <= j; ++i) {
+        const DoubleDouble p = dd_detail::two_prod(aw_hi(i, k), b);
+        const DoubleDouble t = dd_detail::two_sum(s(i, j), p.hi);
+        s(i, j) = t.hi;
+        e(i, j) += t.lo + p.lo + aw_hi(i, k) * bl + aw_lo(i, k) * b;
+      }
+    }
+}
+}  // namespace
+
+void element_matrix_double_double(BilinearForm form, const ElementValues& ev, DoubleDoubleMatrix& local) {
+  const PointValues& v = ev.values();
+  const Eigen::VectorXd& w = ev.jxw();
+  const int n = ev.num_functions();
+  thread_local Eigen::MatrixXd s, e, zero, lap_hi, lap_lo;
+  s.setZero(n, n);
+  e.setZero(n, n);
+  zero.setZero(n, ev.num_points());
+  switch (form) {
+    case BilinearForm::mass:
+      add_weighted_square_double_double(v.value, zero, w, 1, s, e);
+      break;
+    case BilinearForm::laplace:
+      add_weighted_square_double_double(v.dx, zero, w, 1, s, e);
+      add_weighted_square_double_double(v.dy, zero, w, 1, s, e);
+      if (v.dz.size() > 0) add_weighted_square_double_double(v.dz, zero, w, 1, s, e);
+      break;
+    case BilinearForm::bilaplace:
+      // Δφ = φ_xx + φ_yy exactly, as a double-double.
+      lap_hi.resize(n, ev.num_points());
+      lap_lo.resize(n, ev.num_points());
+      for (Eigen::Index k = 0; k < lap_hi.size(); ++k) {
+        const DoubleDouble d = dd_detail::two_sum(v.dxx.data()[k], v.dyy.data()[k]);
+        lap_hi.data()[k] = d.hi;
+        lap_lo.data()[k] = d.lo;
+      }
+      add_weighted_square_double_double(lap_hi, lap_lo, w, 1, s, e);
+      break;
+    case BilinearForm::hessian:
+      add_weighted_square_double_double(v.dxx, zero, w, 1, s, e);
+      add_weighted_square_double_double(v.dxy, zero, w, 2, s, e);
+      add_weighted_square_double_double(v.dyy, zero, w, 1, s, e);
+      break;
+  }
+  local.resize(n, n);
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i <= j; ++i) {
+      const DoubleDouble d = dd_detail::quick_two_sum(s(i, j), e(i, j));
+      local.set(i, j, d);
+      local.set(j, i, d);
+    }
+}
+
 void element_matrix(BilinearForm form, const ElementValues& ev, Eigen::MatrixXd& local) { form_matrix(form, ev, local); }
 
 void element_load(const ScalarField& f, const ElementValues& ev, Eigen::VectorXd& local) {

@@ -25,6 +25,10 @@ void element_matrix(BilinearForm form, const ElementValues& ev, Eigen::MatrixXd&
 /// the exact Gram matrix of the evaluated functions, to long double precision.
 void element_matrix_extended(BilinearForm form, const ElementValues& ev, MatrixXld& local);
 
+/// The same local matrix in double-double: every product of basis values and weights exact, the
+/// quadrature sums compensated (what Assembler::matrix_extended uses).
+void element_matrix_double_double(BilinearForm form, const ElementValues& ev, DoubleDoubleMatrix& local);
+
 /// Local load ∫ f v (n entries).
 void element_load(const ScalarField& f, const ElementValues& ev, Eigen::VectorXd& local);
 

@@ -4,6 +4,7 @@
 #include <cassert>
 
 #include "assembly/parallel.hpp"
+#include "config/double_double.hpp"
 
 namespace iga {
 
@@ -22,9 +23,23 @@ SplitMatrix split_matrix(const SparseMatrix& pattern, const std::vector<long dou
   return k;
 }
 
+SplitMatrix split_matrix(const SparseMatrix& pattern, const std::vector<DoubleDouble>& values) {
+  SplitMatrix k{pattern, Eigen::VectorXd(pattern.nonZeros())};
+  double* high = k.high.valuePtr();
+  for (Eigen::Index p = 0; p < pattern.nonZeros(); ++p) {
+    // Renormalised so that high is the entry rounded to double.
+    const DoubleDouble v = values[p] + DoubleDouble(0.0);
+    high[p] = v.hi;
+    k.low(p) = v.lo;
+  }
+  return k;
+}
+
 std::vector<long double> residual_extended(const SplitMatrix& K, const std::vector<long double>& x,
                                            const Eigen::VectorXd& b) {
   // Row i of a symmetric K is its column i: each entry of r is one independent sum (parallel).
+  // Products and sums in double-double: r cancels to O(h²) from terms of size |K||x| ~ h⁻², and
+  // long double sums (ε ≈ 5e-20 of those terms) leave a noise that K⁻¹ amplifies by h⁻² again.
   const SparseMatrix& a = K.high;
   const bool has_low = K.low.size() == a.nonZeros();
   std::vector<long double> r(b.size());
@@ -33,12 +48,15 @@ std::vector<long double> residual_extended(const SplitMatrix& K, const std::vect
   const int* outer = a.outerIndexPtr();
   const int* inner = a.innerIndexPtr();
   const double* high = a.valuePtr();
+  const double* low = has_low ? K.low.data() : nullptr;
+  std::vector<DoubleDouble> xd(x.size());
+  for (size_t j = 0; j < x.size(); ++j) xd[j] = DoubleDouble::from_long_double(x[j]);
 #pragma omp parallel for schedule(static) if (worth_threads(n / 64))
   for (int i = 0; i < n; ++i) {
-    long double s = b(i);
+    DoubleDouble s = b(i);
     for (int p = outer[i]; p < outer[i + 1]; ++p)
-      s -= (has_low ? static_cast<long double>(high[p]) + K.low(p) : static_cast<long double>(high[p])) * x[inner[p]];
-    r[i] = s;
+      s -= (low ? DoubleDouble(high[p], low[p]) : DoubleDouble(high[p])) * xd[inner[p]];
+    r[i] = s.to_long_double();
   }
   return r;
 }

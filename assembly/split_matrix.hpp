@@ -1,6 +1,6 @@
 #pragma once
 /// @file
-/// A sparse matrix kept to long double precision as two doubles per entry, for residuals that
+/// A sparse matrix kept beyond double precision as two doubles per entry, for residuals that
 /// must be more accurate than the matrix a factorization sees.
 ///
 /// Why: a stiffness matrix rounded to double carries entry errors δK ~ ε|K| that do not annihilate
@@ -14,12 +14,13 @@
 #include <vector>
 
 #include "assembly/sparsity.hpp"
+#include "config/double_double.hpp"
 
 namespace iga {
 
 using MatrixXld = Eigen::Matrix<long double, Eigen::Dynamic, Eigen::Dynamic>;
 
-/// The entry K_ij = high_ij + low_ij (to long double precision).
+/// The entry K_ij = high_ij + low_ij (a double-double).
 struct SplitMatrix {
   SparseMatrix high;  ///< entries rounded to double (what factorizations use)
   Eigen::VectorXd low;  ///< entry − high, aligned with high.valuePtr(); may be empty (all zero)
@@ -33,8 +34,11 @@ void scatter_add(const std::vector<int>& dofs, const MatrixXld& local, const Spa
 
 /// Split long double values aligned with `pattern` into high and low parts.
 SplitMatrix split_matrix(const SparseMatrix& pattern, const std::vector<long double>& values);
+/// The same for double-double values (kept exactly).
+SplitMatrix split_matrix(const SparseMatrix& pattern, const std::vector<DoubleDouble>& values);
 
-/// r = b − K x, products and sums in long double (K with both triangles stored).
+/// r = b − K x, products and sums in double-double, rounded to long double (K with both triangles
+/// stored).
 std::vector<long double> residual_extended(const SplitMatrix& K, const std::vector<long double>& x,
                                            const Eigen::VectorXd& b);
 

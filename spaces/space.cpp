@@ -130,4 +130,11 @@ bool Space::closed_form_element_matrix_extended(int element, BilinearForm form,
   return true;
 }
 
+bool Space::closed_form_element_matrix_double_double(int element, BilinearForm form, DoubleDoubleMatrix& local) const {
+  Eigen::Matrix<long double, Eigen::Dynamic, Eigen::Dynamic> extended;
+  if (!closed_form_element_matrix_extended(element, form, extended)) return false;
+  local = DoubleDoubleMatrix::from_long_double(extended);
+  return true;
+}
+
 }  // namespace iga

@@ -26,6 +26,7 @@
 #include <utility>
 #include <vector>
 
+#include "config/double_double.hpp"
 #include "spaces/bilinear_form.hpp"
 #include "quadrature/quadrature_rule.hpp"
 
@@ -228,6 +229,9 @@ class Space : public std::enable_shared_from_this<Space> {
   /// widens closed_form_element_matrix; a space with a closed form should override it.
   virtual bool closed_form_element_matrix_extended(int element, BilinearForm form,
                                                    Eigen::Matrix<long double, Eigen::Dynamic, Eigen::Dynamic>& local) const;
+  /// The same closed form in double-double, for fourth-order problems whose residuals need the
+  /// matrix beyond long double (assembly/split_matrix.hpp). The default widens the long double one.
+  virtual bool closed_form_element_matrix_double_double(int element, BilinearForm form, DoubleDoubleMatrix& local) const;
 
   /// The largest jump of the physical gradient of Σ c_i N_i across interior element edges, for
   /// spaces that can locate both sides of their edges (a C1 space has it at round-off). Reported

@@ -25,18 +25,17 @@ long long orient(int a, int b, int c) {
   return (bx - ax) * (cy - ay) - (by - ay) * (cx - ax);
 }
 
-using Real = long double;  // the one-time construction runs in extended precision
-using PolyL = BasicPoly4<Real>;
-
-struct PointL {
-  Real x, y;
-};
-Real cross2(const PointL& a, const PointL& b) { return a.x * b.y - a.y * b.x; }
-PointL minus(const PointL& a, const PointL& b) { return {a.x - b.x, a.y - b.y}; }
-
-
-/// Polynomial pieces on one region of the simplex splines M_Ξ for sub-multisets Ξ, memoised on Ξ.
+/// Polynomial pieces on one region of the simplex splines M_Ξ for sub-multisets Ξ, memoised on Ξ,
+/// in scalar type Real (the one-time construction runs in long double or double-double).
+template <class Real>
 class RegionRecurrence {
+  using PolyL = BasicPoly4<Real>;
+  struct PointL {
+    Real x, y;
+  };
+  static Real cross2(const PointL& a, const PointL& b) { return a.x * b.y - a.y * b.x; }
+  static PointL minus(const PointL& a, const PointL& b) { return {a.x - b.x, a.y - b.y}; }
+
  public:
   /// Pieces in coordinates x - center (small monomial coefficients, little cancellation).
   explicit RegionRecurrence(const Point2& center) : center_(center) {}
@@ -121,14 +120,26 @@ Ws4Basis::Ws4Basis() : split_(Ws4Split::reference()) {
   pieces_.resize(static_cast<size_t>(nr) * size);
   pieces_extended_.resize(static_cast<size_t>(nr) * size);
   for (int r = 0; r < nr; ++r) {
-    RegionRecurrence rec(split_.regions()[r].centroid);
+    RegionRecurrence<long double> rec(split_.regions()[r].centroid);
     for (int i = 0; i < size; ++i) {
-      PolyL scaled;
-      scaled.add_scaled(Real(sets[i].c) / 960, rec.M(sets[i].multiplicity));
+      BasicPoly4<long double> scaled;
+      scaled.add_scaled(static_cast<long double>(sets[i].c) / 960, rec.M(sets[i].multiplicity));
       pieces_[r * size + i] = scaled.cast<double>();
       pieces_extended_[r * size + i] = scaled;
     }
   }
+}
+
+std::vector<BasicPoly4<DoubleDouble>> Ws4Basis::pieces_double_double() const {
+  const auto& sets = ws4_knot_sets();
+  const int nr = static_cast<int>(split_.regions().size());
+  std::vector<BasicPoly4<DoubleDouble>> pieces(static_cast<size_t>(nr) * size);
+  for (int r = 0; r < nr; ++r) {
+    RegionRecurrence<DoubleDouble> rec(split_.regions()[r].centroid);
+    for (int i = 0; i < size; ++i)
+      pieces[r * size + i].add_scaled(DoubleDouble(sets[i].c) / DoubleDouble(960.0), rec.M(sets[i].multiplicity));
+  }
+  return pieces;
 }
 
 void Ws4Basis::tabulate(const std::vector<Point2>& points, ReferenceDerivatives& out) const {

@@ -8,6 +8,7 @@
 
 #include <vector>
 
+#include "config/double_double.hpp"
 #include "spaces/push_forward.hpp"
 #include "spaces/ws4/poly4.hpp"
 #include "spaces/ws4/ws4_split.hpp"
@@ -28,6 +29,9 @@ class Ws4Basis {
   const BasicPoly4<long double>& piece_extended(int region, int i) const {
     return pieces_extended_[region * size + i];
   }
+  /// All pieces (region-major, as piece()) built again in double-double, for reference matrices
+  /// beyond long double (a one-time cost of a fraction of a second).
+  std::vector<BasicPoly4<DoubleDouble>> pieces_double_double() const;
   /// Origin of the local coordinates of the pieces of region r (its vertex average).
   const Point2& center(int region) const { return split_.regions()[region].centroid; }
   /// Weight c_i |Δ| / 480 of B_{i+1} = ∫ B_{i+1} over the reference triangle (|Δ| = 1/2).

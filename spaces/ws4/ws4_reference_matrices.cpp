@@ -250,4 +250,279 @@ void ws4_element_matrix_extended(BilinearForm form, const Eigen::Matrix2d& jacob
   congruence_long(c, form_matrix(Ws4ReferenceMatricesExtended::get(), form, jacobian), local);
 }
 
+namespace {
+
+/// The ten integral tables of reference_sums() again, in double-double from pieces built in
+/// double-double (the long double ones carry ≈ 1e-18 of their size after the cancellations of
+/// the recurrence and the sums, which WS4's biharmonic conditioning turns into an L2 error of
+/// 1e-12 at 9 226 DOFs, growing like h⁻⁴).
+std::vector<DoubleDoubleMatrix> reference_sums_double_double() {
+  using DD = DoubleDouble;
+  const Ws4Basis& basis = Ws4Basis::reference();
+  const Ws4Split& split = basis.split();
+  const std::vector<BasicPoly4<DD>> pieces = basis.pieces_double_double();
+  constexpr int n = Ws4Basis::size, q = 25;
+  // 5-point Gauss–Legendre on [0, 1].
+  DD gx[5], gw[5];
+  {
+    const DD r = sqrt(DD(10.0) / DD(7.0));
+    const DD a = sqrt(DD(5.0) - r * 2.0) / DD(3.0), b = sqrt(DD(5.0) + r * 2.0) / DD(3.0);
+    const DD s70 = sqrt(DD(70.0));
+    const DD wa = (DD(322.0) + s70 * 13.0) / DD(900.0), wb = (DD(322.0) - s70 * 13.0) / DD(900.0);
+    const DD nodes[5] = {-b, -a, DD(0.0), a, b}, weights[5] = {wb, wa, DD(128.0) / DD(225.0), wa, wb};
+    for (int k = 0; k < 5; ++k) {
+      gx[k] = (nodes[k] + DD(1.0)) * 0.5;
+      gw[k] = weights[k] * 0.5;
+    }
+  }
+  std::vector<std::vector<DD>> sums(10, std::vector<DD>(n * n));
+  std::vector<int> active;
+  std::vector<BasicPoly4<DD>> d(6 * n);
+  std::vector<DD> table(6 * n * q);  // table[(j * n + a) * q + k]
+  std::vector<double> value_hi(6 * n * q), value_lo(6 * n * q), weighted_hi(6 * n * q), weighted_lo(6 * n * q);
+  DD weights[q];
+  int m = 0, cached_region = -1;
+  for (size_t f = 0; f < split.fan_triangles().size(); ++f) {
+    const int r = split.fan_region()[f];
+    if (r != cached_region) {
+      active.clear();
+      for (int i = 0; i < n; ++i) {
+        const BasicPoly4<DD>& p = pieces[r * n + i];
+        if (p.is_zero()) continue;
+        const int k = static_cast<int>(active.size());
+        active.push_back(i);
+        d[k] = p;
+        d[n + k] = p.derivative(0);
+        d[2 * n + k] = p.derivative(1);
+        d[3 * n + k] = d[n + k].derivative(0);
+        d[4 * n + k] = d[n + k].derivative(1);
+        d[5 * n + k] = d[2 * n + k].derivative(1);
+      }
+      m = static_cast<int>(active.size());
+      cached_region = r;
+    }
+    DD vx[3], vy[3];
+    for (int k = 0; k < 3; ++k) {
+      const Triple& b = split.vertices()[split.fan_triangles()[f][k]];
+      const DD sum = DD(b[0]) + DD(b[1]) + DD(b[2]);
+      vx[k] = DD(b[1]) / sum - DD(basis.center(r).x());
+      vy[k] = DD(b[2]) / sum - DD(basis.center(r).y());
+    }
+    const DD twice_area = abs((vx[1] - vx[0]) * (vy[2] - vy[0]) - (vy[1] - vy[0]) * (vx[2] - vx[0]));
+    int k = 0;
+    for (int a = 0; a < 5; ++a)
+      for (int c = 0; c < 5; ++c, ++k) {
+        const DD s = gx[a], t = (DD(1.0) - s) * gx[c];
+        const DD x = vx[0] + s * (vx[1] - vx[0]) + t * (vx[2] - vx[0]);
+        const DD y = vy[0] + s * (vy[1] - vy[0]) + t * (vy[2] - vy[0]);
+        weights[k] = gw[a] * gw[c] * (DD(1.0) - s) * twice_area;
+        for (int j = 0; j < 6; ++j)
+          for (int i = 0; i < m; ++i) table[(j * n + i) * q + k] = d[j * n + i](x, y);
+      }
+    // (table · weight) once per function and point, as hi/lo doubles; then each integral is a
+    // compensated dot product (exact products of the hi parts, the rest in the error term).
+    for (int j = 0; j < 6; ++j)
+      for (int i = 0; i < m; ++i)
+        for (int kk = 0; kk < q; ++kk) {
+          const DD& v = table[(j * n + i) * q + kk];
+          const DD vw = v * weights[kk];
+          value_hi[(j * n + i) * q + kk] = v.hi;
+          value_lo[(j * n + i) * q + kk] = v.lo;
+          weighted_hi[(j * n + i) * q + kk] = vw.hi;
+          weighted_lo[(j * n + i) * q + kk] = vw.lo;
+        }
+    for (int p = 0; p < 10; ++p) {
+      const int t0 = kPairs[p][0], t1 = kPairs[p][1];
+      for (int b = 0; b < m; ++b) {
+        const double* bh = &value_hi[(t1 * n + b) * q];
+        const double* bl = &value_lo[(t1 * n + b) * q];
+        // A symmetric pair needs only a <= b (the other half is mirrored below).
+        for (int a = 0; a < (t0 == t1 ? b + 1 : m); ++a) {
+          const double* ah = &weighted_hi[(t0 * n + a) * q];
+          const double* al = &weighted_lo[(t0 * n + a) * q];
+          double sum = 0, err = 0;
+          for (int kk = 0; kk < q; ++kk) {
+            const DD prod = dd_detail::two_prod(ah[kk], bh[kk]);
+            const DD t = dd_detail::two_sum(sum, prod.hi);
+            sum = t.hi;
+            err += t.lo + prod.lo + ah[kk] * bl[kk] + al[kk] * bh[kk];
+          }
+          // Stored at (row, column) = (active[a], active[b]); for a symmetric pair row <= column
+          // since active is increasing.
+          sums[p][active[b] * n + active[a]] += dd_detail::quick_two_sum(sum, err);
+        }
+      }
+    }
+  }
+  std::vector<DoubleDoubleMatrix> out(10);
+  for (int p = 0; p < 10; ++p) {
+    out[p].resize(n, n);
+    for (int b = 0; b < n; ++b)
+      for (int a = 0; a < n; ++a) {
+        // A symmetric integrand gives an exactly symmetric matrix (upper triangle mirrored).
+        const bool mirror = kPairs[p][0] == kPairs[p][1] && a > b;
+        out[p].set(a, b, mirror ? sums[p][a * n + b] : sums[p][b * n + a]);
+      }
+  }
+  return out;
+}
+
+DoubleDoubleMatrix transposed(const DoubleDoubleMatrix& m) {
+  DoubleDoubleMatrix t;
+  t.hi = m.hi.transpose();
+  t.lo = m.lo.transpose();
+  return t;
+}
+
+}  // namespace
+
+const Ws4ReferenceMatricesDoubleDouble& Ws4ReferenceMatricesDoubleDouble::get() {
+  static const Ws4ReferenceMatricesDoubleDouble m = [] {
+    const std::vector<DoubleDoubleMatrix> sums = reference_sums_double_double();
+    Ws4ReferenceMatricesDoubleDouble d;
+    d.mass = sums[0];
+    d.grad[0][0] = sums[1];
+    d.grad[0][1] = sums[2];
+    d.grad[1][0] = transposed(sums[2]);
+    d.grad[1][1] = sums[3];
+    int p = 4;
+    for (int a = 0; a < 3; ++a)
+      for (int b = a; b < 3; ++b) {
+        d.hess[a][b] = sums[p++];
+        if (b != a) d.hess[b][a] = transposed(d.hess[a][b]);
+      }
+    return d;
+  }();
+  return m;
+}
+
+namespace {
+
+/// One term of a compensated dot product (Ogita–Rump–Oishi Dot2): s + e += a b with the product
+/// exact and the rounding of the sum kept in e.
+inline void dot2_step(double& s, double& e, double a, double b) {
+  const DoubleDouble p = dd_detail::two_prod(a, b);
+  const DoubleDouble t = dd_detail::two_sum(s, p.hi);
+  s = t.hi;
+  e += t.lo + p.lo;
+}
+
+/// K = Σ_k coefficient_k R_k (upper triangle, mirrored): the element matrix in the B-basis.
+void combine(const std::vector<std::pair<DoubleDouble, const DoubleDoubleMatrix*>>& terms, DoubleDoubleMatrix& k) {
+  constexpr int n = Ws4Basis::size;
+  k.resize(n, n);
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i <= j; ++i) {
+      DoubleDouble s(0.0);
+      for (const auto& [coefficient, r] : terms) s += coefficient * (*r)(i, j);
+      k.set(i, j, s);
+      k.set(j, i, s);
+    }
+}
+
+/// Element matrix of `form` on the triangle of `jacobian` in the B-basis, in double-double.
+void form_matrix_double_double(BilinearForm form, const Eigen::Matrix2d& jac, DoubleDoubleMatrix& k) {
+  const Ws4ReferenceMatricesDoubleDouble& r = Ws4ReferenceMatricesDoubleDouble::get();
+  using dd_detail::two_prod;
+  // det J exactly, and M = adj(J) adj(J)ᵀ = det² J⁻¹J⁻ᵀ (entries of adj(J) are entries of J).
+  const DoubleDouble det = two_prod(jac(0, 0), jac(1, 1)) - two_prod(jac(0, 1), jac(1, 0));
+  const DoubleDouble area = abs(det);
+  const DoubleDouble m00 = two_prod(jac(1, 1), jac(1, 1)) + two_prod(jac(0, 1), jac(0, 1));
+  const DoubleDouble m01 = -(two_prod(jac(1, 1), jac(1, 0)) + two_prod(jac(0, 1), jac(0, 0)));
+  const DoubleDouble m11 = two_prod(jac(1, 0), jac(1, 0)) + two_prod(jac(0, 0), jac(0, 0));
+  const DoubleDouble m[2][2] = {{m00, m01}, {m01, m11}};
+  std::vector<std::pair<DoubleDouble, const DoubleDoubleMatrix*>> terms;
+  switch (form) {
+    case BilinearForm::mass:
+      terms.emplace_back(area, &r.mass);
+      break;
+    case BilinearForm::laplace:  // |det| G_ab = M_ab / |det|
+      for (int a = 0; a < 2; ++a)
+        for (int b = 0; b < 2; ++b) terms.emplace_back(m[a][b] / area, &r.grad[a][b]);
+      break;
+    case BilinearForm::bilaplace: {  // |det| α_p α_q = β_p β_q / |det|³, β = (M00, 2 M01, M11)
+      const DoubleDouble beta[3] = {m00, m01 * 2.0, m11};
+      const DoubleDouble cube = area * area * area;
+      for (int p = 0; p < 3; ++p)
+        for (int q = 0; q < 3; ++q) terms.emplace_back(beta[p] * beta[q] / cube, &r.hess[p][q]);
+      break;
+    }
+    case BilinearForm::hessian: {  // Σ_abcd |det| G_ac G_bd ∂_ab ∂_cd = Σ M_ac M_bd / |det|³
+      DoubleDouble coefficient[3][3];
+      for (int a = 0; a < 2; ++a)
+        for (int b = 0; b < 2; ++b)
+          for (int c = 0; c < 2; ++c)
+            for (int d = 0; d < 2; ++d) coefficient[hessian_index(a, b)][hessian_index(c, d)] += m[a][c] * m[b][d];
+      const DoubleDouble cube = area * area * area;
+      for (int p = 0; p < 3; ++p)
+        for (int q = 0; q < 3; ++q) terms.emplace_back(coefficient[p][q] / cube, &r.hess[p][q]);
+      break;
+    }
+  }
+  combine(terms, k);
+}
+
+}  // namespace
+
+void ws4_element_matrix_double_double(BilinearForm form, const Eigen::Matrix2d& jacobian, const Eigen::MatrixXd& c,
+                                      DoubleDoubleMatrix& local) {
+  constexpr int n = Ws4Basis::size;
+  thread_local DoubleDoubleMatrix k;
+  form_matrix_double_double(form, jacobian, k);
+  // Nonzeros of C by column (≈ 800 of 2601).
+  thread_local std::vector<std::pair<int, double>> nz;
+  thread_local std::vector<int> start;
+  nz.clear();
+  start.assign(n + 1, 0);
+  for (int m = 0; m < n; ++m) {
+    start[m] = static_cast<int>(nz.size());
+    for (int i = 0; i < n; ++i)
+      if (c(i, m) != 0) nz.emplace_back(i, c(i, m));
+  }
+  start[n] = static_cast<int>(nz.size());
+  // T = Cᵀ K (column-major: column i holds T(·, i), which the second product runs over).
+  thread_local Eigen::MatrixXd tt_hi, tt_lo;
+  tt_hi.resize(n, n);
+  tt_lo.resize(n, n);
+  double s[n], e[n];
+  for (int m = 0; m < n; ++m) {
+    std::fill(s, s + n, 0.0);
+    std::fill(e, e + n, 0.0);
+    for (int p = start[m]; p < start[m + 1]; ++p) {
+      const auto [i, v] = nz[p];
+      const double* khi = k.hi.col(i).data();  // K symmetric: column i is row i
+      const double* klo = k.lo.col(i).data();
+      for (int j = 0; j < n; ++j) {
+        dot2_step(s[j], e[j], v, khi[j]);
+        e[j] += v * klo[j];
+      }
+    }
+    for (int j = 0; j < n; ++j) {
+      const DoubleDouble t = dd_detail::quick_two_sum(s[j], e[j]);
+      tt_hi(m, j) = t.hi;
+      tt_lo(m, j) = t.lo;
+    }
+  }
+  // (Cᵀ K C)(m, q) = Σ_i T(m, i) C(i, q) for m <= q, mirrored.
+  local.resize(n, n);
+  for (int q = 0; q < n; ++q) {
+    std::fill(s, s + q + 1, 0.0);
+    std::fill(e, e + q + 1, 0.0);
+    for (int p = start[q]; p < start[q + 1]; ++p) {
+      const auto [i, v] = nz[p];
+      const double* thi = tt_hi.col(i).data();
+      const double* tlo = tt_lo.col(i).data();
+      for (int m = 0; m <= q; ++m) {
+        dot2_step(s[m], e[m], v, thi[m]);
+        e[m] += v * tlo[m];
+      }
+    }
+    for (int m = 0; m <= q; ++m) {
+      const DoubleDouble t = dd_detail::quick_two_sum(s[m], e[m]);
+      local.set(m, q, t);
+      local.set(q, m, t);
+    }
+  }
+}
+
 }  // namespace iga::ws4

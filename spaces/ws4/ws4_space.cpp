@@ -283,6 +283,11 @@ bool Ws4Space::closed_form_element_matrix_extended(int element, BilinearForm for
   return true;
 }
 
+bool Ws4Space::closed_form_element_matrix_double_double(int element, BilinearForm form, DoubleDoubleMatrix& local) const {
+  ws4_element_matrix_double_double(form, jacobian(element), extraction_[element], local);
+  return true;
+}
+
 RulePtr Ws4Space::quadrature(int, int degree) const {
   degree = std::max(degree, 0);
   std::lock_guard<std::mutex> lock(rule_mutex_);

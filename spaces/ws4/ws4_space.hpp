@@ -72,6 +72,7 @@ class Ws4Space final : public Space {
   bool closed_form_element_matrix(int element, BilinearForm form, Eigen::MatrixXd& local) const override;
   bool closed_form_element_matrix_extended(int element, BilinearForm form,
                                            Eigen::Matrix<long double, Eigen::Dynamic, Eigen::Dynamic>& local) const override;
+  bool closed_form_element_matrix_double_double(int element, BilinearForm form, DoubleDoubleMatrix& local) const override;
 
   /// Draws the element on its split (ws4_sample_cell.hpp): the 342 fan triangles over the 178 split
   /// vertices, each subdivided further for resolution >= 16, so linear cells never straddle a piece.

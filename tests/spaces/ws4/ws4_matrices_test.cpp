@@ -52,5 +52,47 @@ TEST(Ws4Matrices, ClosedFormEqualsQuadratureOnPerturbedTriangles) {
   }
 }
 
+
+TEST(Ws4Matrices, DoubleDoubleReferenceMatricesAnnihilateConstantsBeyondLongDouble) {
+  // Σ_i B_i = 1: the row sums of every derivative matrix vanish exactly. Long double sums leave
+  // ≈ 1e-19 of the entries; the double-double ones must be far below (here: 1e-25 relative).
+  const Ws4ReferenceMatricesDoubleDouble& r = Ws4ReferenceMatricesDoubleDouble::get();
+  for (int p = 0; p < 3; ++p)
+    for (int q = 0; q < 3; ++q) {
+      const DoubleDoubleMatrix& m = r.hess[p][q];
+      for (int i = 0; i < m.rows(); ++i) {
+        DoubleDouble sum(0.0);
+        for (int j = 0; j < m.cols(); ++j) sum += m(i, j);
+        EXPECT_LT(std::abs(sum.hi), 1e-25 * m.hi.cwiseAbs().maxCoeff()) << p << q << " row " << i;
+      }
+    }
+  // And they agree with the long double ones to those ones' accuracy.
+  const Ws4ReferenceMatricesExtended& e = Ws4ReferenceMatricesExtended::get();
+  for (int i = 0; i < 51; ++i)
+    for (int j = 0; j < 51; ++j)
+      EXPECT_NEAR(static_cast<double>(e.hess[0][0](i, j) - r.hess[0][0](i, j).to_long_double()), 0.0,
+                  1e-16 * r.hess[0][0].hi.cwiseAbs().maxCoeff());
+}
+
+TEST(Ws4Matrices, DoubleDoubleElementMatricesEqualTheLongDoubleOnes) {
+  Triangulation mesh = Triangulation::rectangle(2, 2, Point2(0, 0), Point2(1, 1));
+  mesh.move_vertex(4, Point2(0.57, 0.43));
+  const Ws4Space space(mesh);
+  for (BilinearForm form : {BilinearForm::mass, BilinearForm::laplace, BilinearForm::bilaplace, BilinearForm::hessian})
+    for (int t = 0; t < space.num_elements(); ++t) {
+      Eigen::Matrix<long double, Eigen::Dynamic, Eigen::Dynamic> extended;
+      DoubleDoubleMatrix dd;
+      ASSERT_TRUE(space.closed_form_element_matrix_extended(t, form, extended));
+      ASSERT_TRUE(space.closed_form_element_matrix_double_double(t, form, dd));
+      const double scale = static_cast<double>(extended.cwiseAbs().maxCoeff());
+      for (int i = 0; i < 51; ++i)
+        for (int j = 0; j < 51; ++j) {
+          EXPECT_EQ(dd(i, j), dd(j, i));
+          EXPECT_LT(std::abs(static_cast<double>(extended(i, j) - dd(i, j).to_long_double())), 1e-13 * scale)
+              << "form " << static_cast<int>(form) << " element " << t;
+        }
+    }
+}
+
 }  // namespace
 }  // namespace iga::ws4
