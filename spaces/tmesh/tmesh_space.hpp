@@ -56,6 +56,12 @@ class TMeshSpace final : public Space {
   bool closed_form_element_matrix(int element, BilinearForm form, Eigen::MatrixXd& local) const override;
   bool closed_form_element_matrix_extended(int element, BilinearForm form,
                                            Eigen::Matrix<long double, Eigen::Dynamic, Eigen::Dynamic>& local) const override;
+  /// None: the solver's residual needs the matrix beyond long double, and this closed form's long
+  /// double sums would bring back the plates' round-off floor; the quadrature path accumulates
+  /// exact products in double-double instead.
+  bool closed_form_element_matrix_double_double(int, BilinearForm, DoubleDoubleMatrix&) const override {
+    return false;
+  }
 
   std::vector<std::string> boundary_names() const override;
   std::vector<BoundaryEdge> boundary_edges(const std::string& name) const override;
