@@ -168,14 +168,18 @@ bool write_solution_vtu(const Space& space, const Eigen::VectorXd& coefficients,
 #pragma omp critical(iga_vtk_failure)
     if (!failure) failure = std::current_exception();
   };
-#pragma omp parallel if (num_elements > 1)
-  {
-    std::unique_ptr<Space::Evaluator> evaluator;
+  // One evaluator per thread; a failure to make one is kept like an element's (the loop skips).
+  auto make_evaluator = [&]() -> std::unique_ptr<Space::Evaluator> {
     try {
-      evaluator = space.make_evaluator();
+      return space.make_evaluator();
     } catch (...) {
       keep_failure();
+      return nullptr;
     }
+  };
+#pragma omp parallel if (num_elements > 1)
+  {
+    const std::unique_ptr<Space::Evaluator> evaluator = make_evaluator();
     PointValues geometry;
 #pragma omp for schedule(dynamic, 16)
     for (int e = 0; e < num_elements; ++e) {
@@ -269,12 +273,7 @@ bool write_solution_vtu(const Space& space, const Eigen::VectorXd& coefficients,
   const unsigned flags = update_values | update_gradients | (options.laplacian || has_hessian ? update_hessians : 0u);
 #pragma omp parallel if (num_elements > 1)
   {
-    std::unique_ptr<Space::Evaluator> evaluator;
-    try {
-      evaluator = space.make_evaluator();
-    } catch (...) {
-      keep_failure();
-    }
+    const std::unique_ptr<Space::Evaluator> evaluator = make_evaluator();
     PointValues geometry;
     FunctionValues uh;
 #pragma omp for schedule(dynamic, 16)

@@ -11,6 +11,17 @@ namespace iga::ws4 {
 
 namespace {
 
+/// Piece `p` and its derivatives ∂x, ∂y, ∂xx, ∂xy, ∂yy as entry k of the six blocks of n in `d`.
+template <class Poly>
+void store_derivatives(const Poly& p, int n, int k, std::vector<Poly>& d) {
+  d[k] = p;
+  d[n + k] = p.derivative(0);
+  d[2 * n + k] = p.derivative(1);
+  d[3 * n + k] = d[n + k].derivative(0);
+  d[4 * n + k] = d[n + k].derivative(1);
+  d[5 * n + k] = d[2 * n + k].derivative(1);
+}
+
 /// Index in {ξξ, ξη, ηη} of the second derivative ∂_a ∂_b.
 int hessian_index(int a, int b) { return a + b; }
 
@@ -67,12 +78,7 @@ const std::vector<MatrixL>& reference_sums() {
         if (zero) continue;
         const int k = static_cast<int>(active.size());
         active.push_back(i);
-        d[k] = p;
-        d[n + k] = p.derivative(0);
-        d[2 * n + k] = p.derivative(1);
-        d[3 * n + k] = d[n + k].derivative(0);
-        d[4 * n + k] = d[n + k].derivative(1);
-        d[5 * n + k] = d[2 * n + k].derivative(1);
+        store_derivatives(p, n, k, d);
       }
       m = static_cast<int>(active.size());
       for (MatrixL& t : table) t.resize(m, q);
@@ -291,12 +297,7 @@ std::vector<DoubleDoubleMatrix> reference_sums_double_double() {
         if (p.is_zero()) continue;
         const int k = static_cast<int>(active.size());
         active.push_back(i);
-        d[k] = p;
-        d[n + k] = p.derivative(0);
-        d[2 * n + k] = p.derivative(1);
-        d[3 * n + k] = d[n + k].derivative(0);
-        d[4 * n + k] = d[n + k].derivative(1);
-        d[5 * n + k] = d[2 * n + k].derivative(1);
+        store_derivatives(p, n, k, d);
       }
       m = static_cast<int>(active.size());
       cached_region = r;
