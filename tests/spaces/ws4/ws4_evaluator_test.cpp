@@ -10,22 +10,13 @@
 #include <random>
 
 #include "spaces/ws4/ws4_split.hpp"
+#include "tests/spaces/ws4/ws4_test_meshes.hpp"
 #include "tests/support/test_support.hpp"
 
 namespace iga::ws4 {
 namespace {
 
-/// The N x N unit-square mesh with interior vertices moved by up to ±15% of h (fixed seed).
-Triangulation perturbed_square(int n, unsigned seed) {
-  Triangulation mesh = Triangulation::rectangle(n, n, Point2(0, 0), Point2(1, 1));
-  std::mt19937 gen(seed);
-  std::uniform_real_distribution<double> u(-0.15 / n, 0.15 / n);
-  for (int v = 0; v < mesh.num_vertices(); ++v) {
-    const Point2 x = mesh.vertices()[v];
-    if (x.x() > 0 && x.x() < 1 && x.y() > 0 && x.y() < 1) mesh.move_vertex(v, x + Point2(u(gen), u(gen)));
-  }
-  return mesh;
-}
+using test::perturbed_square;
 
 Eigen::VectorXd random_coefficients(int n, unsigned seed) {
   std::mt19937 gen(seed);
