@@ -10,9 +10,11 @@
 /// of section_space.hpp; the active functions of a cell are E_c times it (E_c: n_active x (n+1)^2).
 /// Each global function is the Hermite-dual function scaled to largest Bernstein coefficient 1.
 
+#include <cstdint>
 #include <map>
 #include <memory>
 #include <mutex>
+#include <vector>
 
 #include "spaces/space.hpp"
 #include "spaces/tmesh/hermite_extraction.hpp"
@@ -56,12 +58,11 @@ class TMeshSpace final : public Space {
   bool closed_form_element_matrix(int element, BilinearForm form, Eigen::MatrixXd& local) const override;
   bool closed_form_element_matrix_extended(int element, BilinearForm form,
                                            Eigen::Matrix<long double, Eigen::Dynamic, Eigen::Dynamic>& local) const override;
-  /// None: the solver's residual needs the matrix beyond long double, and this closed form's long
-  /// double sums would bring back the plates' round-off floor; the quadrature path accumulates
-  /// exact products in double-double instead.
-  bool closed_form_element_matrix_double_double(int, BilinearForm, DoubleDoubleMatrix&) const override {
-    return false;
-  }
+  /// The same closed form in double-double, for the solver's residuals (the long double sums would
+  /// bring back the plates' round-off floor): side integrals summed from exact products, K_c per
+  /// (form, sections, side lengths) computed once per thread, then E_c K_c E_cᵀ skipping the zeros
+  /// of E_c and filling one triangle.
+  bool closed_form_element_matrix_double_double(int element, BilinearForm form, DoubleDoubleMatrix& local) const override;
 
   std::vector<std::string> boundary_names() const override;
   std::vector<BoundaryEdge> boundary_edges(const std::string& name) const override;
@@ -104,6 +105,14 @@ class TMeshSpace final : public Space {
     Eigen::Matrix<long double, Eigen::Dynamic, Eigen::Dynamic> m[9];
   };
   std::map<std::pair<int, std::int64_t>, SideIntegrals> side_integrals_;
+  /// The same side integrals in double-double ((n+1)^2 entries each, column-major).
+  struct SideIntegralsDD {
+    int size = 0;
+    std::vector<DoubleDouble> m[9];
+  };
+  std::map<std::pair<int, std::int64_t>, SideIntegralsDD> side_integrals_dd_;
+  /// Distinguishes spaces in the per-thread cache of double-double cell matrices.
+  std::uint64_t instance_id_ = 0;
   double mesh_size_ = 0.0;
 
   mutable std::mutex rule_mutex_;
