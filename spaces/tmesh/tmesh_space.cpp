@@ -7,6 +7,7 @@
 #include <span>
 #include <sstream>
 #include <stdexcept>
+#include <string_view>
 #include <tuple>
 
 #include "config/errors.hpp"
@@ -304,6 +305,28 @@ bool TMeshSpace::closed_form_element_matrix_double_double(int element, BilinearF
   }
   const CellMatrix& k = it->second;
   const Eigen::MatrixXd& e = extraction_.matrix[element];
+  // Cells of one size away from T-junctions and the boundary share E_c as well (the same Hermite
+  // functions, the same scaling): their matrices are computed once, looked up by the bytes of E_c.
+  struct Known {
+    Eigen::MatrixXd e;
+    DoubleDoubleMatrix local;
+  };
+  thread_local std::map<std::pair<const CellMatrix*, std::size_t>, std::vector<Known>> known;
+  thread_local std::uint64_t known_owner = 0;
+  thread_local std::size_t known_count = 0;
+  if (known_owner != instance_id_ || known_count > 1024) {  // bounded (a few MB): graded meshes have many
+    known_owner = instance_id_;
+    known.clear();
+    known_count = 0;
+  }
+  const std::size_t hash = std::hash<std::string_view>{}(
+      std::string_view(reinterpret_cast<const char*>(e.data()), static_cast<std::size_t>(e.size()) * sizeof(double)));
+  std::vector<Known>& same_hash = known[{&k, hash}];
+  for (const Known& c : same_hash)
+    if (c.e.rows() == e.rows() && c.e.cols() == e.cols() && c.e == e) {
+      local = c.local;
+      return true;
+    }
   const int na = static_cast<int>(e.rows()), nl = k.size;
   // The nonzeros of each row of E_c (a vertex or edge function touches a corner or side block of
   // the cell's Bernstein coefficients only).
@@ -354,6 +377,8 @@ bool TMeshSpace::closed_form_element_matrix_double_double(int element, BilinearF
       local.lo(a, b) = local.lo(b, a) = acc_lo[a];
     }
   }
+  same_hash.push_back({e, local});
+  ++known_count;
   return true;
 }
 
