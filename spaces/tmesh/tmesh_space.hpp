@@ -61,7 +61,7 @@ class TMeshSpace final : public Space {
   /// The same closed form in double-double, for the solver's residuals (the long double sums would
   /// bring back the plates' round-off floor): side integrals summed from exact products, K_c per
   /// (form, sections, side lengths) computed once per thread, then E_c K_c E_cᵀ skipping the zeros
-  /// of E_c and filling one triangle.
+  /// of E_c and filling one triangle; cells with the same K_c and E_c reuse the result.
   bool closed_form_element_matrix_double_double(int element, BilinearForm form, DoubleDoubleMatrix& local) const override;
 
   std::vector<std::string> boundary_names() const override;
