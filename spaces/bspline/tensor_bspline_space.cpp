@@ -287,6 +287,23 @@ void TensorBSplineSpace::element_dofs(int element, std::vector<int>& out) const 
     for (int a = 0; a <= pu; ++a) out[a + b * (pu + 1)] = (su - pu + a) + (sv - pv + b) * n_u_;
 }
 
+bool TensorBSplineSpace::closed_form_element_matrix_double_double(int element, BilinearForm form,
+                                                                   DoubleDoubleMatrix& local) const {
+  if (!geometry_->is_affine()) return false;
+  std::call_once(span_integrals_once_, [this] {
+    for (int mu : knots_u_.spans()) span_integrals_u_.push_back(span_integrals(knots_u_, mu));
+    for (int mu : knots_v_.spans()) span_integrals_v_.push_back(span_integrals(knots_v_, mu));
+  });
+  const int ex = element % num_elements_u(), ey = element / num_elements_u();
+  Point2 lo, hi;
+  element_box(element, lo, hi);
+  const Point2 h = hi - lo;
+  GeometryJet g = geometry_->evaluate(lo + 0.5 * h, geometry_span_u_[ex], geometry_span_v_[ey], false);
+  g.jacobian.col(0) *= h.x();
+  g.jacobian.col(1) *= h.y();
+  return tensor_element_matrix(span_integrals_u_[ex], span_integrals_v_[ey], g.jacobian, form, local);
+}
+
 void TensorBSplineSpace::element_box(int element, Point2& lo, Point2& hi) const {
   const int nex = num_elements_u();
   const int su = knots_u_.spans()[element % nex], sv = knots_v_.spans()[element / nex];

@@ -13,6 +13,7 @@
 #include <memory>
 #include <mutex>
 
+#include "spaces/bspline/exact_element_matrix.hpp"
 #include "spaces/bspline/knot_vector.hpp"
 #include "spaces/bspline/patch_geometry.hpp"
 #include "spaces/gauss_rule_cache.hpp"
@@ -47,6 +48,10 @@ class TensorBSplineSpace final : public Space {
   /// Shared Gauss rule on edge `edge` of the reference square (built once per edge and degree).
   RulePtr edge_quadrature(int element, int edge, int degree) const override;
 
+  /// On affine patches: the exact element matrix from double-double span integrals
+  /// (spaces/bspline/exact_element_matrix.hpp), so that the matrix annihilates what it should.
+  bool closed_form_element_matrix_double_double(int element, BilinearForm form, DoubleDoubleMatrix& local) const override;
+
   /// left (u = 0), right (u = 1), bottom (v = 0), top (v = 1).
   std::vector<std::string> boundary_names() const override;
   /// Edges of a named side in increasing element order; "all" lists bottom, right, top, left.
@@ -78,6 +83,9 @@ class TensorBSplineSpace final : public Space {
   std::vector<Eigen::MatrixXd> extraction_u_, extraction_v_;
   std::vector<int> geometry_span_u_, geometry_span_v_;  ///< geometry span of each element column/row
   double mesh_size_ = 0.0;
+  // Span integrals of each element column and row, built on first use of the closed form.
+  mutable std::once_flag span_integrals_once_;
+  mutable std::vector<SpanIntegrals> span_integrals_u_, span_integrals_v_;
 
   // Shared rule caches: the space is used by several threads, hence the mutex.
   GaussRuleCache rules_;

@@ -85,13 +85,16 @@ problem: {pde: biharmonic, exact: "x^3*y + x^2*y^2 - y^4 + 1 + x", boundary: {al
 domain: {type: rectangle, min: [0, 0], max: [1, 1]}
 space: {type: bspline, degree: 4, elements: [5, 5]}
 )yaml", 6, 6},
-    // Stops at 26 569 DOFs: level 6 (104 329) reaches H1 1.8e-11, a deterministic error whose
-    // cause is still open (docs/known-limits.md).
     {"bspline_simply_supported_p3", R"yaml(
 problem: {pde: biharmonic, exact: "x^3 + x^2*y - y^3 + 2 + x", boundary: {all: simply_supported}}
 domain: {type: rectangle, min: [0, 0], max: [1, 1]}
 space: {type: bspline, degree: 3, elements: [5, 5]}
 )yaml", 0, 5},
+    {"bspline_simply_supported_p3_large", R"yaml(
+problem: {pde: biharmonic, exact: "x^3 + x^2*y - y^3 + 2 + x", boundary: {all: simply_supported}}
+domain: {type: rectangle, min: [0, 0], max: [1, 1]}
+space: {type: bspline, degree: 3, elements: [5, 5]}
+)yaml", 6, 6},
     // ---- WS4 C3 quartic macro-elements: quartics
     {"ws4_poisson_dirichlet", R"yaml(
 problem: {pde: poisson, exact: "x^4 - 2*x^2*y^2 + x*y^3 + y^2 - x + 1", boundary: {all: dirichlet}}
