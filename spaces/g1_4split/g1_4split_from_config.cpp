@@ -16,6 +16,32 @@ namespace iga {
 
 namespace {
 
+/// Builds the space with `build(options)`; if the degree is below the separability degree, fails
+/// at `degree_node` naming `what` and the smallest degree (up to 10) that works.
+template <class Build>
+SpacePtr build_or_name_the_separable_degree(const G14Options& o, const ConfigNode& degree_node, const std::string& what,
+                                           int level, const Build& build) {
+  try {
+    return build(o);
+  } catch (const NotSeparable& e) {
+    int works = -1;
+    for (int k = o.degree + 1; k <= 10 && works < 0; ++k) {
+      G14Options t = o;
+      t.degree = k;
+      try {
+        build(t);
+        works = k;
+      } catch (const NotSeparable&) {
+      } catch (const InputError&) {
+        works = k;
+      }
+    }
+    degree_node.fail("g1_4split degree " + std::to_string(o.degree) + " is below the separability degree of " + what +
+                     " at level " + std::to_string(level) + " (" + e.what() + "); the smallest degree that works is " +
+                     (works > 0 ? std::to_string(works) : std::string("above 10")));
+  }
+}
+
 /// A closed quad surface in 3D: a built-in (cube, split_tetrahedron) or a quad .obj/.off file.
 std::pair<QuadTopology, std::vector<Eigen::Vector3d>> surface_mesh(const ConfigNode& domain) {
   domain.check_keys({"type", "mesh", "file"});
@@ -95,48 +121,19 @@ SpacePtr make_g1_4split_space(const ConfigNode& domain, const ConfigNode& space,
           "a g1_4split surface is refined nested only (rebuilding would fit a different surface at every level)");
     const auto [topology, vertices] = surface_mesh(domain);
     if (o.blending == Blending::linear) check_linear_blending(space, topology, symmetric_gluing(topology, o.blending));
-    try {
-      return domain.guard([&] { return std::make_shared<const G14SurfaceSpace>(topology, vertices, o); });
-    } catch (const NotSeparable& e) {
-      int works = -1;
-      for (int k = o.degree + 1; k <= 10 && works < 0; ++k) {
-        G14Options t = o;
-        t.degree = k;
-        try {
-          G14SurfaceSpace trial(topology, vertices, t);
-          works = k;
-        } catch (const NotSeparable&) {
-        } catch (const InputError&) {
-          works = k;
-        }
-      }
-      dn.fail("g1_4split degree " + std::to_string(o.degree) + " is below the separability degree of the surface '" +
-              topology.name() + "' at level " + std::to_string(level) + " (" + e.what() +
-              "); the smallest degree that works is " + (works > 0 ? std::to_string(works) : std::string("above 10")));
-    }
+    return build_or_name_the_separable_degree(o, dn, "the surface '" + topology.name() + "'", level,
+                                              [&](const G14Options& t) -> SpacePtr {
+                                                return domain.guard([&] {
+                                                  return std::make_shared<const G14SurfaceSpace>(topology, vertices, t);
+                                                });
+                                              });
   }
   const PatchMesh mesh = domain_mesh(domain);
   const QuadTopology topology = domain.guard([&] { return quad_topology(mesh); });
   if (o.blending == Blending::linear) check_linear_blending(space, topology, symmetric_gluing(topology, o.blending, vertex_angles(mesh)));
-  try {
-    return domain.guard([&] { return std::make_shared<const G14Space>(mesh, o); });
-  } catch (const NotSeparable& e) {
-    int works = -1;
-    for (int k = o.degree + 1; k <= 10 && works < 0; ++k) {
-      G14Options t = o;
-      t.degree = k;
-      try {
-        G14Space trial(mesh, t);
-        works = k;
-      } catch (const NotSeparable&) {
-      } catch (const InputError&) {
-        works = k;
-      }
-    }
-    dn.fail("g1_4split degree " + std::to_string(o.degree) + " is below the separability degree of '" + mesh.name() +
-            "' at level " + std::to_string(level) + " (" + e.what() + "); the smallest degree that works is " +
-            (works > 0 ? std::to_string(works) : std::string("above 10")));
-  }
+  return build_or_name_the_separable_degree(o, dn, "'" + mesh.name() + "'", level, [&](const G14Options& t) -> SpacePtr {
+    return domain.guard([&] { return std::make_shared<const G14Space>(mesh, t); });
+  });
 }
 
 }  // namespace iga
