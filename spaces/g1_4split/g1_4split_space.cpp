@@ -13,18 +13,18 @@ namespace iga {
 
 class G14Space::G14Evaluator final : public Space::Evaluator {
  public:
-  explicit G14Evaluator(const G14Space& s) : space_(s) {}
+  explicit G14Evaluator(const G14Space& s) : space_(s), tables_(s.basis_.bspline) {}
 
   void evaluate(int element, const QuadratureRule& rule, unsigned flags, PointValues& out) override {
-    const Tables& t = tables(rule);
-    extract_reference_derivatives(space_.basis_.extraction[element], t.t, flags, ref_);
+    const TensorTableCache::SixTables& t = tables_.at(rule);
+    extract_reference_derivatives(space_.basis_.extraction[element], t, flags, ref_);
     out.dofs = space_.basis_.face_dofs[element];
     const Eigen::VectorXd& gx = space_.geometry_.x[element];
     const Eigen::VectorXd& gy = space_.geometry_.y[element];
     Eigen::Matrix<double, 6, Eigen::Dynamic> X(6, rule.size()), Y(6, rule.size());
     for (int d = 0; d < 6; ++d) {
-      X.row(d) = gx.transpose() * t.t[d];
-      Y.row(d) = gy.transpose() * t.t[d];
+      X.row(d) = gx.transpose() * t[d];
+      Y.row(d) = gy.transpose() * t[d];
     }
     jets_.resize(rule.size());
     for (int p = 0; p < rule.size(); ++p) {
@@ -38,22 +38,8 @@ class G14Space::G14Evaluator final : public Space::Evaluator {
   }
 
  private:
-  struct Tables {
-    std::vector<Point2> points;
-    Eigen::MatrixXd t[6];
-  };
-  const Tables& tables(const QuadratureRule& rule) {
-    auto it = cache_.find(&rule);
-    if (it != cache_.end() && it->second.points == rule.points) return it->second;
-    if (it == cache_.end() && cache_.size() >= 64) cache_.clear();
-    Tables& t = cache_[&rule];
-    t.points = rule.points;
-    tensor_tables(space_.basis_.bspline, rule.points, t.t);
-    return t;
-  }
-
   const G14Space& space_;
-  std::map<const QuadratureRule*, Tables> cache_;
+  TensorTableCache tables_;
   ReferenceDerivatives ref_;
   std::vector<GeometryJet> jets_;
 };

@@ -36,15 +36,15 @@ double face_fold_bound(const SplitBSpline& b, const std::array<Eigen::VectorXd, 
 
 class G14SurfaceSpace::Evaluator3 final : public Space::Evaluator {
  public:
-  explicit Evaluator3(const G14SurfaceSpace& s) : space_(s) {}
+  explicit Evaluator3(const G14SurfaceSpace& s) : space_(s), tables_(s.surface_.basis.bspline) {}
 
   void evaluate(int element, const QuadratureRule& rule, unsigned flags, PointValues& out) override {
     if (flags & (update_hessians | update_laplacian_gradient | update_bilaplacian))
       throw std::logic_error("g1_4split surface: second derivatives of functions on surfaces are not implemented");
-    const Tables& t = tables(rule);
+    const TensorTableCache::SixTables& t = tables_.at(rule);
     const G14Basis& basis = space_.surface_.basis;
     const unsigned need = (flags & update_values ? update_values : 0u) | (flags & update_gradients ? update_gradients : 0u);
-    extract_reference_derivatives(basis.extraction[element], t.t, need, ref_);
+    extract_reference_derivatives(basis.extraction[element], t, need, ref_);
     out.dofs = basis.face_dofs[element];
     const int q = rule.size();
     const bool curvature = flags & update_surface_curvature;
@@ -52,7 +52,7 @@ class G14SurfaceSpace::Evaluator3 final : public Space::Evaluator {
     for (int c = 0; c < 3; ++c) {
       X[c].resize(6, q);
       const Eigen::VectorXd& coef = space_.surface_.coefficients[element][c];
-      for (int d = 0; d < (curvature ? 6 : 3); ++d) X[c].row(d) = coef.transpose() * t.t[d];
+      for (int d = 0; d < (curvature ? 6 : 3); ++d) X[c].row(d) = coef.transpose() * t[d];
     }
     out.x3.resize(3, q);
     out.jacobian3.resize(q);
@@ -80,9 +80,8 @@ class G14SurfaceSpace::Evaluator3 final : public Space::Evaluator {
         }
         Eigen::Matrix2d B;
         B << xuu.dot(n), xuv.dot(n), xuv.dot(n), xvv.dot(n);
-        const Eigen::Matrix2d G = J.transpose() * J;
         out.normal3.col(k) = n;
-        out.mean_curvature(k) = -(G.inverse() * B).trace();
+        out.mean_curvature(k) = mean_curvature(J, B);
       }
     }
     out.x = out.x3.topRows(2);
@@ -91,22 +90,8 @@ class G14SurfaceSpace::Evaluator3 final : public Space::Evaluator {
   }
 
  private:
-  struct Tables {
-    std::vector<Point2> points;
-    Eigen::MatrixXd t[6];
-  };
-  const Tables& tables(const QuadratureRule& rule) {
-    auto it = cache_.find(&rule);
-    if (it != cache_.end() && it->second.points == rule.points) return it->second;
-    if (it == cache_.end() && cache_.size() >= 64) cache_.clear();
-    Tables& t = cache_[&rule];
-    t.points = rule.points;
-    tensor_tables(space_.surface_.basis.bspline, rule.points, t.t);
-    return t;
-  }
-
   const G14SurfaceSpace& space_;
-  std::map<const QuadratureRule*, Tables> cache_;
+  TensorTableCache tables_;
   ReferenceDerivatives ref_;
 };
 
