@@ -9,6 +9,11 @@ double surface_measure(const Eigen::Matrix<double, 3, 2>& jacobian) {
   return jacobian.col(0).cross(jacobian.col(1)).norm();
 }
 
+double mean_curvature(const Eigen::Matrix<double, 3, 2>& jacobian, const Eigen::Matrix2d& second_form) {
+  const Eigen::Matrix2d G = jacobian.transpose() * jacobian;
+  return -(G.inverse() * second_form).trace();
+}
+
 void complete_surface_gradients(const Eigen::MatrixXd& dxi, const Eigen::MatrixXd& deta, PointValues& out) {
   const int n = static_cast<int>(dxi.rows()), q = static_cast<int>(dxi.cols());
   out.dx.resize(n, q);

@@ -154,9 +154,8 @@ class SurfaceEvaluator : public Space::Evaluator {
         B(0, 0) = second(dxi, dxi);
         B(0, 1) = B(1, 0) = second(dxi, deta);
         B(1, 1) = second(deta, deta);
-        const Eigen::Matrix2d G = J.transpose() * J;
         out.normal3.col(k) = n;
-        out.mean_curvature(k) = -(G.inverse() * B).trace();
+        out.mean_curvature(k) = mean_curvature(J, B);
       }
     }
     out.x = out.x3.topRows(2);
