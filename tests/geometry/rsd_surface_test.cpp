@@ -16,6 +16,7 @@
 #include "geometry/rsd/hermite_edge_solver.hpp"
 #include "geometry/rsd/rsd_surface.hpp"
 #include "geometry/rsd/surface_checks.hpp"
+#include "tests/support/input_error.hpp"
 
 namespace iga::rsd {
 namespace {
@@ -25,15 +26,6 @@ const RsdOptions pi1{RsdTuple::pi1, RsdMethod::hermite};
 
 std::vector<TriangleSurfaceMesh> fixtures() {
   return {regular_octahedron(), regular_tetrahedron(), perturbed_octahedron(), height_field(), icosphere(1)};
-}
-
-std::string error_of(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "no InputError";
 }
 
 /// Barycentric sample points of a triangle (the 66 points of the degree-10 lattice).
@@ -189,7 +181,7 @@ TEST(RsdSurface, TangentsOffTheVertexPlaneAreRejectedAsCondition28) {
   EXPECT_GT(small, 1e3 * std::max(clean, 1e-16));
   EXPECT_NEAR(large / small, 10.0, 0.1);
   data.g_of(e.i, e.k) += 1e-6 * data.g_of(e.i, e.k).norm() * data.n[e.i];
-  const std::string message = error_of([&] { build_rsd_surface(mesh, data, pi0); });
+  const std::string message = iga::test::input_error([&] { build_rsd_surface(mesh, data, pi0); });
   EXPECT_NE(message.find("condition (28) violated at vertex " + std::to_string(e.i)), std::string::npos) << message;
 }
 
@@ -199,11 +191,11 @@ TEST(RsdSurface, OverlappingTangentTrianglesAreCondition12AndParallelTangentsCon
   FirstOrderData data = projected_chord_data(mesh, edges);
   FirstOrderData overlapping = data;
   overlapping.g_of(0, 5) = overlapping.g_of(0, 4);  // both towards +z: same side of g_02
-  std::string message = error_of([&] { build_rsd_surface(mesh, overlapping, pi0); });
+  std::string message = iga::test::input_error([&] { build_rsd_surface(mesh, overlapping, pi0); });
   EXPECT_NE(message.find("condition (12) violated at vertex 0 on edge (0, 2)"), std::string::npos) << message;
   FirstOrderData parallel = data;
   parallel.g_of(0, 4) = 2.0 * parallel.g_of(0, 2);
-  message = error_of([&] { build_rsd_surface(mesh, parallel, pi0); });
+  message = iga::test::input_error([&] { build_rsd_surface(mesh, parallel, pi0); });
   EXPECT_NE(message.find("condition (11) violated at vertex 0"), std::string::npos) << message;
 }
 
@@ -226,7 +218,7 @@ TEST(RsdSurface, TangentsWindingTwiceAroundAVertexAreRejected) {
     const double angle = r * 2 * M_PI / 3;
     data.g_of(vertex, neighbour) = 0.3 * (std::cos(angle) * e1 + std::sin(angle) * e2);
   }
-  const std::string message = error_of([&] { build_rsd_surface(mesh, data, pi0); });
+  const std::string message = iga::test::input_error([&] { build_rsd_surface(mesh, data, pi0); });
   EXPECT_NE(message.find("the tangents at vertex 12 wind 2 times"), std::string::npos) << message;
 }
 

@@ -8,19 +8,11 @@
 #include "geometry/builtin_surface_meshes.hpp"
 #include "geometry/triangle_surface_mesh.hpp"
 #include "mesh/read_surface_mesh.hpp"
+#include "tests/support/input_error.hpp"
 #include "tests/support/scratch_files.hpp"
 
 namespace iga {
 namespace {
-
-std::string error_of(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "no InputError";
-}
 
 int count_interior(const std::vector<SurfaceEdge>& edges) {
   int n = 0;
@@ -95,7 +87,7 @@ TEST(SurfaceMeshFiles, ObjVertexWithTwoNormalsIsAnErrorWithTheLine) {
       "v 1 1 1\nv 1 -1 -1\nv -1 1 -1\nv -1 -1 1\nvn 0 0 1\nvn 0 1 0\n"
       "f 1//1 2//1 3//1\nf 1//2 4//1 2//1\n";
   std::istringstream in(text);
-  const std::string message = error_of([&] { read_obj_surface(in, "two.obj"); });
+  const std::string message = iga::test::input_error([&] { read_obj_surface(in, "two.obj"); });
   EXPECT_NE(message.find("two.obj:8:"), std::string::npos) << message;
   EXPECT_NE(message.find("vertex 1 "), std::string::npos) << message;
 }
@@ -109,9 +101,9 @@ TEST(SurfaceMeshFiles, OffIsRead) {
 
 TEST(SurfaceMeshFiles, QuadFacesAndUnknownExtensionsAreRejected) {
   std::istringstream quad("v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\n");
-  EXPECT_NE(error_of([&] { read_obj_surface(quad, "q.obj"); }).find("q.obj:5: a face with 4 vertices"),
+  EXPECT_NE(iga::test::input_error([&] { read_obj_surface(quad, "q.obj"); }).find("q.obj:5: a face with 4 vertices"),
             std::string::npos);
-  EXPECT_NE(error_of([] { read_surface_mesh("surface.ply"); }).find("unsupported surface mesh format"),
+  EXPECT_NE(iga::test::input_error([] { read_surface_mesh("surface.ply"); }).find("unsupported surface mesh format"),
             std::string::npos);
 }
 
@@ -119,7 +111,7 @@ TEST(SurfaceMeshValidation, NonManifoldEdgeIsNamed) {
   // Three triangles on the edge (0, 1).
   const std::string text = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 -1 0\nv 0 0 1\nf 1 2 3\nf 2 1 4\nf 1 2 5\n";
   const std::string message =
-      error_of([&] { surface_mesh_from_file(read_surface_mesh(test::scratch_file("nm.obj", text))); });
+      iga::test::input_error([&] { surface_mesh_from_file(read_surface_mesh(test::scratch_file("nm.obj", text))); });
   EXPECT_NE(message.find("edge (0, 1)"), std::string::npos) << message;
   EXPECT_NE(message.find("shared by 3 triangles"), std::string::npos) << message;
   EXPECT_NE(message.find("vertex 0 (line 1)"), std::string::npos) << message;  // vertex 0 is on line 1
@@ -128,7 +120,7 @@ TEST(SurfaceMeshValidation, NonManifoldEdgeIsNamed) {
 TEST(SurfaceMeshValidation, InconsistentOrientationIsNamed) {
   const std::string text = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nf 1 2 3\nf 2 3 4\n";
   const std::string message =
-      error_of([&] { surface_mesh_from_file(read_surface_mesh(test::scratch_file("or.obj", text))); });
+      iga::test::input_error([&] { surface_mesh_from_file(read_surface_mesh(test::scratch_file("or.obj", text))); });
   EXPECT_NE(message.find("or.obj: edge (1, 2)"), std::string::npos) << message;
   EXPECT_NE(message.find("inconsistent orientation"), std::string::npos) << message;
   EXPECT_NE(message.find("triangle 1 (line 6)"), std::string::npos) << message;  // the second triangle
@@ -137,7 +129,7 @@ TEST(SurfaceMeshValidation, InconsistentOrientationIsNamed) {
 TEST(SurfaceMeshValidation, ZeroAreaTriangleIsNamed) {
   const std::string text = "v 0 0 0\nv 1 0 0\nv 2 0 0\nv 0 1 0\nf 1 2 4\nf 2 3 4\nf 1 3 2\n";
   const std::string message =
-      error_of([&] { surface_mesh_from_file(read_surface_mesh(test::scratch_file("za.obj", text))); });
+      iga::test::input_error([&] { surface_mesh_from_file(read_surface_mesh(test::scratch_file("za.obj", text))); });
   EXPECT_NE(message.find("za.obj: triangle 2 (line 7)"), std::string::npos) << message;
   EXPECT_NE(message.find("zero area"), std::string::npos) << message;
 }

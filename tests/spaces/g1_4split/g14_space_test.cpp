@@ -11,6 +11,7 @@
 #include "spaces/g1_4split/face_function.hpp"
 #include "spaces/g1_4split/g1_4split_meshes.hpp"
 #include "spaces/g1_4split/g1_4split_space.hpp"
+#include "tests/support/input_error.hpp"
 #include "tests/support/test_support.hpp"
 
 using namespace iga;
@@ -23,12 +24,7 @@ std::string yaml(const std::string& problem, const std::string& domain, const st
 }
 
 std::string error_of(const std::string& text, int level) {
-  try {
-    test::space_from_yaml(text, level);
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "";
+  return test::input_error([&] { test::space_from_yaml(text, level); });
 }
 
 }  // namespace

@@ -18,6 +18,7 @@
 #include "output/surface_geometry_vtk.hpp"
 #include "solver/solve_problem.hpp"
 #include "spaces/g1_4split/g1_4split_surface_space.hpp"
+#include "tests/support/input_error.hpp"
 #include "tests/support/test_support.hpp"
 
 using namespace iga;
@@ -30,12 +31,7 @@ std::string yaml(const std::string& domain, const std::string& space) {
 }
 
 std::string error_of(const std::string& text, int level) {
-  try {
-    test::space_from_yaml(text, level);
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "";
+  return test::input_error([&] { test::space_from_yaml(text, level); });
 }
 
 const G14SurfaceSpace& as_surface(const SpacePtr& s) { return dynamic_cast<const G14SurfaceSpace&>(*s); }
