@@ -416,6 +416,55 @@ TEST(BSplineSpace, PatchDomainFromData) {
   EXPECT_FALSE(p2->affine_elements());
 }
 
+TEST(BSplineSpace, ClosedFormMatricesMatchQuadratureAndKeepTheirKernel) {
+  // On rectangles (the affine patches) the double-double closed form equals the Gauss matrix to
+  // round-off, is exactly symmetric and maps constants to zero (linears too, for the second-order
+  // forms) to double-double round-off.
+  for (int p : {2, 3, 5}) {
+    const auto s = build(kRectangle, space_yaml(p, p - 1, 5, 3));
+    ASSERT_TRUE(s->geometry().is_affine());
+    ElementValues fe(*s, update_values | update_gradients | update_hessians);
+    for (int e : {0, 7, 14}) {
+      fe.reinit(e, *s->quadrature(e, 2 * p));
+      const PointValues& v = fe.values();
+      const Eigen::VectorXd& w = fe.jxw();
+      const Eigen::MatrixXd lap = v.dxx + v.dyy;
+      const std::map<BilinearForm, Eigen::MatrixXd> gauss = {
+          {BilinearForm::mass, v.value * w.asDiagonal() * v.value.transpose()},
+          {BilinearForm::laplace, v.dx * w.asDiagonal() * v.dx.transpose() + v.dy * w.asDiagonal() * v.dy.transpose()},
+          {BilinearForm::bilaplace, lap * w.asDiagonal() * lap.transpose()},
+          {BilinearForm::hessian, v.dxx * w.asDiagonal() * v.dxx.transpose() +
+                                      2 * v.dxy * w.asDiagonal() * v.dxy.transpose() +
+                                      v.dyy * w.asDiagonal() * v.dyy.transpose()}};
+      for (const auto& [form, expected] : gauss) {
+        DoubleDoubleMatrix exact;
+        ASSERT_TRUE(s->closed_form_element_matrix_double_double(e, form, exact));
+        const double scale = expected.cwiseAbs().maxCoeff();
+        EXPECT_LT((exact.hi - expected).cwiseAbs().maxCoeff(), 1e-12 * scale) << "element " << e;
+        EXPECT_EQ(exact.hi, exact.hi.transpose());
+        EXPECT_EQ(exact.lo, exact.lo.transpose());
+        if (form == BilinearForm::mass) continue;
+        // Constants, and for the second-order forms x and y (the functions' coefficients of x, y
+        // from the element's own Gauss points by least squares), lie in the kernel.
+        std::vector<Eigen::VectorXd> kernel = {Eigen::VectorXd::Ones(exact.rows())};
+        if (form != BilinearForm::laplace)
+          for (int d = 0; d < 2; ++d)
+            kernel.push_back(v.value.transpose().colPivHouseholderQr().solve(v.x.row(d).transpose()));
+        // Constants are exact in double: their image is zero to double-double round-off; the
+        // least-squares linears carry double round-off.
+        for (std::size_t k = 0; k < kernel.size(); ++k) {
+          const double bound = (k == 0 ? 1e-24 : 1e-12) * scale * kernel[k].cwiseAbs().maxCoeff();
+          for (Eigen::Index i = 0; i < exact.rows(); ++i) {
+            DoubleDouble row(0.0);
+            for (Eigen::Index j = 0; j < exact.cols(); ++j) row += exact(i, j) * DoubleDouble(kernel[k](j));
+            EXPECT_LT(std::abs(row.hi), bound) << "element " << e;
+          }
+        }
+      }
+    }
+  }
+}
+
 TEST(BSplineSpace, ConfigErrorsNameThePlace) {
   auto err = [](const std::string& domain, const std::string& space) {
     return error_of([&] { build(domain, space); });
