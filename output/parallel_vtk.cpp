@@ -169,7 +169,7 @@ bool write_solution_pvtu(const Space& space, const Eigen::VectorXd& coefficients
   writer->SetEndPiece(rank);
   writer->SetWriteSummaryFile(1);  // on every rank: the reduction is collective; the controller lets rank 0 write
   writer->SetDataModeToAppended();
-  writer->SetCompressorTypeToZLib();
+  set_vtk_compression(*writer, options.compression);
   const int ok = writer->Write();
   on_every_rank([&] {
     if (!ok || writer->GetErrorCode() != 0)

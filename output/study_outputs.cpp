@@ -50,6 +50,7 @@ StudyResult run_study_with_vtk(const StudySettings& settings, const std::string&
     VtkFieldOptions opt;
     opt.samples = settings.vtk_samples;
     opt.lagrange = settings.vtk_lagrange;
+    opt.compression = settings.vtk_compression;
     opt.exact = exact;
     if (settings.problem.surface_exact)
       opt.exact3 = [u = *settings.problem.surface_exact](const Eigen::Vector3d& x) { return u.at(x); };
@@ -68,9 +69,12 @@ StudyResult run_study_with_vtk(const StudySettings& settings, const std::string&
     if (!root) return;
     const std::string mesh = "mesh_" + std::to_string(level) + ".vtu";
     // Outlines as fine as the solution's drawing: Lagrange cells of degree p have p + 1 nodes per
-    // edge, a subdivided element 2p + 1.
-    write_mesh_vtu(space, lagrange ? space.degree() : settings.vtk_lagrange ? opt.divisions * space.degree() : settings.vtk_samples,
-                   (dir / mesh).string());
+    // edge, a subdivided element 2p + 1; the straight edges of affine elements need their ends only.
+    const int outline_samples = space.affine_elements() ? 1
+                                : lagrange              ? space.degree()
+                                : settings.vtk_lagrange ? opt.divisions * space.degree()
+                                                        : settings.vtk_samples;
+    write_mesh_vtu(space, outline_samples, (dir / mesh).string(), settings.vtk_compression);
     mesh_files.push_back(mesh);
     // The surface itself, shaded by its own normals, level by level unless the space carries one
     // fixed surface (written once, below).

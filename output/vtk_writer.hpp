@@ -16,7 +16,10 @@
 #include <utility>
 #include <vector>
 
+class vtkXMLWriter;
+
 #include "assembly/fields.hpp"
+#include "solver/study.hpp"
 #include "spaces/space.hpp"
 
 namespace iga {
@@ -39,7 +42,11 @@ struct VtkFieldOptions {
   bool laplacian = false;
   /// Further cell fields, one value per element (e.g. the estimator η_K, marked elements).
   std::vector<std::pair<std::string, std::vector<double>>> element_fields;
+  VtkCompression compression = VtkCompression::lz4;
 };
+
+/// Set `writer`'s compressor: LZ4 at its strongest (still fast), zlib at its fastest, or none.
+void set_vtk_compression(vtkXMLWriter& writer, VtkCompression compression);
 
 /// Write the discrete function sum_i coefficients(i) N_i as an unstructured grid with point fields
 /// `u`, `grad_u` (3 components, z = 0 in the plane; on a surface in 3D the points are the surface's
@@ -53,7 +60,8 @@ bool write_solution_vtu(const Space& space, const Eigen::VectorXd& coefficients,
 
 /// Write the outline of every element (its boundary through the element map, `samples` points per
 /// edge) as closed poly-lines with a cell field `element`: the mesh, including where it was refined.
-void write_mesh_vtu(const Space& space, int samples, const std::string& filename);
+void write_mesh_vtu(const Space& space, int samples, const std::string& filename,
+                    VtkCompression compression = VtkCompression::lz4);
 
 /// Write a ParaView collection listing `datasets` (paths relative to the .pvd) as time steps 0, 1, ...
 void write_pvd(const std::vector<std::string>& datasets, const std::string& filename);

@@ -66,10 +66,14 @@ StudySettings parse_study(const ConfigNode& root, const std::string& config_path
       if (vtk->is_scalar()) {
         s.write_vtk = vtk->as_bool();
       } else {
-        vtk->check_keys({"enabled", "samples", "levels", "cells"});
+        vtk->check_keys({"enabled", "samples", "levels", "cells", "compression"});
         s.write_vtk = vtk->get_bool("enabled", true);
         if (auto levels = vtk->find("levels")) s.vtk_last_level_only = levels->as_choice({"all", "last"}) == "last";
         if (auto cells = vtk->find("cells")) s.vtk_lagrange = cells->as_choice({"lagrange", "linear"}) == "lagrange";
+        if (auto compression = vtk->find("compression")) {
+          const std::string c = compression->as_choice({"lz4", "zlib", "none"});
+          s.vtk_compression = c == "zlib" ? VtkCompression::zlib : c == "none" ? VtkCompression::none : VtkCompression::lz4;
+        }
         if (auto samples = vtk->find("samples")) {
           s.vtk_samples = samples->as_int();
           if (s.vtk_samples < 1 || s.vtk_samples > 64) samples->fail("samples must be between 1 and 64");

@@ -18,6 +18,10 @@
 
 namespace iga {
 
+/// How the .vtu files are compressed: LZ4 writes about five times faster than zlib, zlib's files
+/// are about a third smaller.
+enum class VtkCompression { lz4, zlib, none };
+
 /// Everything a study needs, validated from the config (and command-line overrides).
 struct StudySettings {
   StudySettings(ConfigNode root_node, ProblemSpec problem_spec, ConfigNode space_node, ConfigNode domain_node)
@@ -44,6 +48,7 @@ struct StudySettings {
   int vtk_samples = 8;     ///< samples per element edge of linear sub-cells (output.vtk.samples)
   bool vtk_last_level_only = false;  ///< output.vtk.levels: last (default all)
   bool vtk_lagrange = true;          ///< output.vtk.cells: lagrange (default) or linear
+  VtkCompression vtk_compression = VtkCompression::lz4;  ///< output.vtk.compression
   bool write_plot = true;
   bool write_matrices = false;  ///< output.matrices: each level's reduced system in Matrix Market
   ResourceLimits limits;   ///< the limits: section (defaults when absent)
