@@ -202,9 +202,9 @@ class Space : public std::enable_shared_from_this<Space> {
   /// True when every element map is affine (then a rule of degree 2p is exact for mass matrices).
   virtual bool affine_elements() const = 0;
   /// Degree of the rules for error norms and residual estimators, whose integrands hold the smooth
-  /// exact data as well as u_h: 2p + 8 resolves them on an element of size h. A macro-element
+  /// exact data as well as u_h: 2p + 4 resolves them on an element of size h. A macro-element
   /// whose rule is composite over much smaller sub-regions may ask for less (see WS4).
-  virtual int error_quadrature_degree() const { return 2 * degree() + 8; }
+  virtual int error_quadrature_degree() const { return 2 * degree() + 4; }
 
   /// A rule on element's reference cell exact for polynomials of degree `degree` on every
   /// polynomial piece of the element (a macro-element integrates sub-region by sub-region).
