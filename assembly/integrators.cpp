@@ -1,5 +1,7 @@
 #include "assembly/integrators.hpp"
 
+#include <cmath>
+
 namespace iga {
 
 unsigned flags_for(BilinearForm form) {
@@ -82,15 +84,34 @@ void element_matrix_extended(BilinearForm form, const ElementValues& ev, MatrixX
 namespace {
 /// upper(s + e) += factor Σ_q (A_iq w_q) A_jq for A = hi + lo, with exact products and the sums'
 /// rounding kept in e (compensated, as if in double-double).
-void add_weighted_square_double_double(const Eigen::MatrixXd& hi, const Eigen::MatrixXd& lo, const Eigen::VectorXd& w,
-                                       double factor, Eigen::MatrixXd& s, Eigen::MatrixXd& e) {
+/// The exact product a·b = p + err: with a fused multiply-add, or by Dekker's splitting (the same
+/// two numbers either way; FMA takes 2 operations instead of 17). Dekker's splitting must not be
+/// compiled for FMA: contracting its products would spoil the split.
+template <bool kFma>
+[[gnu::always_inline]] inline DoubleDouble exact_product(double a, double b) {
+  if constexpr (kFma) {
+    const double p = a * b;
+    return {p, std::fma(a, b, -p)};
+  } else {
+    return dd_detail::two_prod(a, b);
+  }
+}
+
+template <bool kFma>
+[[gnu::always_inline]] inline void weighted_square_double_double(const Eigen::MatrixXd& hi, const Eigen::MatrixXd& lo,
+                                                                 const Eigen::VectorXd& w, double factor,
+                                                                 Eigen::MatrixXd& s, Eigen::MatrixXd& e) {
   const Eigen::Index n = hi.rows(), q = hi.cols();
   thread_local Eigen::MatrixXd aw_hi, aw_lo;  // factor A_iq w_q as a double-double
   aw_hi.resize(n, q);
   aw_lo.resize(n, q);
   for (Eigen::Index k = 0; k < q; ++k)
     for (Eigen::Index i = 0; i < n; ++i) {
-      const DoubleDouble aw = DoubleDouble(hi(i, k), lo(i, k)) * (w(k) * factor);  // factor is 1 or 2: exact
+      // (hi + lo) w factor as a double-double (factor is 1 or 2: exact).
+      const double wk = w(k) * factor;
+      DoubleDouble p = exact_product<kFma>(hi(i, k), wk);
+      p.lo += lo(i, k) * wk;
+      const DoubleDouble aw = dd_detail::quick_two_sum(p.hi, p.lo);
       aw_hi(i, k) = aw.hi;
       aw_lo(i, k) = aw.lo;
     }
@@ -98,12 +119,30 @@ void add_weighted_square_double_double(const Eigen::MatrixXd& hi, const Eigen::M
     for (Eigen::Index k = 0; k < q; ++k) {
       const double b = hi(j, k), bl = lo(j, k);
       for (Eigen::Index i = 0; i <= j; ++i) {
-        const DoubleDouble p = dd_detail::two_prod(aw_hi(i, k), b);
+        const DoubleDouble p = exact_product<kFma>(aw_hi(i, k), b);
         const DoubleDouble t = dd_detail::two_sum(s(i, j), p.hi);
         s(i, j) = t.hi;
         e(i, j) += t.lo + p.lo + aw_hi(i, k) * bl + aw_lo(i, k) * b;
       }
     }
+}
+
+// The hot loop of extended assembly for spaces without closed forms, compiled twice: for CPUs
+// with AVX2 and FMA (every x86-64 of the last decade: four lanes, exact products in one
+// instruction) and for the x86-64 baseline the package is built for.
+[[gnu::target("avx2,fma")]] void weighted_square_double_double_fma(const Eigen::MatrixXd& hi, const Eigen::MatrixXd& lo,
+                                                                    const Eigen::VectorXd& w, double factor,
+                                                                    Eigen::MatrixXd& s, Eigen::MatrixXd& e) {
+  weighted_square_double_double<true>(hi, lo, w, factor, s, e);
+}
+
+void add_weighted_square_double_double(const Eigen::MatrixXd& hi, const Eigen::MatrixXd& lo, const Eigen::VectorXd& w,
+                                       double factor, Eigen::MatrixXd& s, Eigen::MatrixXd& e) {
+#if defined(__x86_64__) && !defined(__FMA__)
+  static const bool fma = __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
+  if (fma) return weighted_square_double_double_fma(hi, lo, w, factor, s, e);
+#endif
+  weighted_square_double_double<false>(hi, lo, w, factor, s, e);
 }
 }  // namespace
 

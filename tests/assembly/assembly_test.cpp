@@ -139,3 +139,39 @@ TEST(Assembly, UsesClosedFormElementMatricesWhenTheSpaceHasThem) {
   const SparseMatrix B = Assembler(closed).matrix(BilinearForm::laplace, 8);
   EXPECT_LT((B - 2.0 * A).norm(), 1e-13 * A.norm());
 }
+
+TEST(Assembly, DoubleDoubleElementMatricesAgreeWithLongDouble) {
+  // Quadrature path (curved elements): the double-double sums (compiled for FMA where the CPU has
+  // it) against the long double ones, on the same basis values. They differ by the long double
+  // sums' rounding alone: at most q u Σ_k |A_ik| w_k |A_jk| (u = 2⁻⁶⁴, q points, per form term).
+  // Compiled for FMA, Dekker's splitting would lose bits here (a contracted product breaks it).
+  const SpacePtr space = test::space_from_yaml(kAnnulus);
+  ElementValues ev(*space, update_values | update_gradients | update_hessians);
+  for (BilinearForm form : {BilinearForm::mass, BilinearForm::laplace, BilinearForm::bilaplace, BilinearForm::hessian})
+    for (int e = 0; e < space->num_elements(); e += 5) {
+      ev.reinit(e, *space->quadrature(e, 8));
+      const PointValues& v = ev.values();
+      const Eigen::VectorXd& w = ev.jxw();
+      std::vector<Eigen::MatrixXd> terms;
+      if (form == BilinearForm::mass) terms = {v.value};
+      if (form == BilinearForm::laplace) terms = {v.dx, v.dy};
+      if (form == BilinearForm::bilaplace) terms = {v.dxx + v.dyy};
+      if (form == BilinearForm::hessian) terms = {v.dxx, std::sqrt(2.0) * v.dxy, v.dyy};
+      Eigen::MatrixXd magnitude = Eigen::MatrixXd::Zero(v.num_functions(), v.num_functions());
+      for (const Eigen::MatrixXd& a : terms) magnitude += a.cwiseAbs() * w.cwiseAbs().asDiagonal() * a.cwiseAbs().transpose();
+      // The long double path rounds Δφ = φ_xx + φ_yy to double first (2⁻⁵³ relative).
+      const double rounding =
+          (ev.num_points() + 2) * std::ldexp(1.0, -64) + (form == BilinearForm::bilaplace ? std::ldexp(1.0, -52) : 0.0);
+      DoubleDoubleMatrix dd;
+      MatrixXld ld;
+      element_matrix_double_double(form, ev, dd);
+      element_matrix_extended(form, ev, ld);
+      for (Eigen::Index j = 0; j < ld.cols(); ++j)
+        for (Eigen::Index i = 0; i < ld.rows(); ++i) {
+          const long double exact = static_cast<long double>(dd.hi(i, j)) + static_cast<long double>(dd.lo(i, j));
+          EXPECT_LE(std::abs(exact - ld(i, j)), rounding * terms.size() * magnitude(i, j))
+              << to_string(form) << " element " << e;
+          EXPECT_EQ(dd(i, j), dd(j, i));
+        }
+    }
+}
