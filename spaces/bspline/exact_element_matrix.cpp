@@ -78,6 +78,34 @@ DoubleDouble integrate_product(const Row& c, const Row& d) {
   return s;
 }
 
+/// local(a + b nu, c + d nu) = Σ_t weighted_t(a, c) v_t(b, d): every form here is symmetric, so
+/// the upper triangle, mirrored (compiled twice, see exact_product in double_double.hpp).
+template <bool kFma>
+[[gnu::always_inline]] inline void tensor_entries(const std::vector<DoubleDoubleMatrix>& weighted,
+                                                  const std::vector<const DoubleDoubleMatrix*>& v_moment,
+                                                  DoubleDoubleMatrix& local) {
+  const int nu = static_cast<int>(weighted.front().rows()), nv = static_cast<int>(v_moment.front()->rows());
+  for (int d = 0; d < nv; ++d)
+    for (int c = 0; c < nu; ++c) {
+      const int j = c + d * nu;
+      for (int b = 0; b < nv; ++b)
+        for (int a = 0; a < nu; ++a) {
+          const int i = a + b * nu;
+          if (i > j) continue;
+          DoubleDouble s(0.0);
+          for (std::size_t t = 0; t < weighted.size(); ++t) s += multiply<kFma>(weighted[t](a, c), (*v_moment[t])(b, d));
+          local.set(i, j, s);
+          local.set(j, i, s);
+        }
+    }
+}
+
+[[gnu::target("avx2,fma")]] void tensor_entries_fma(const std::vector<DoubleDoubleMatrix>& weighted,
+                                                     const std::vector<const DoubleDoubleMatrix*>& v_moment,
+                                                     DoubleDoubleMatrix& local) {
+  tensor_entries<true>(weighted, v_moment, local);
+}
+
 }  // namespace
 
 SpanIntegrals span_integrals(const KnotVector& knots, int span) {
@@ -175,22 +203,13 @@ bool tensor_element_matrix(const SpanIntegrals& u, const SpanIntegrals& v, const
     for (int c = 0; c < nu; ++c)
       for (int a = 0; a < nu; ++a) weighted[t].set(a, c, w * m(a, c));
   }
-  // Every form here is symmetric: the upper triangle, mirrored.
+  std::vector<const DoubleDoubleMatrix*> v_moment;
+  for (const Term& t : merged) v_moment.push_back(&v.moment[t.av][t.bv]);
   local.resize(nu * nv, nu * nv);
-  for (int d = 0; d < nv; ++d)
-    for (int c = 0; c < nu; ++c) {
-      const int j = c + d * nu;
-      for (int b = 0; b < nv; ++b)
-        for (int a = 0; a < nu; ++a) {
-          const int i = a + b * nu;
-          if (i > j) continue;
-          DoubleDouble s(0.0);
-          for (std::size_t t = 0; t < merged.size(); ++t)
-            s += weighted[t](a, c) * v.moment[merged[t].av][merged[t].bv](b, d);
-          local.set(i, j, s);
-          local.set(j, i, s);
-        }
-    }
+  if (cpu_has_avx2_fma())
+    tensor_entries_fma(weighted, v_moment, local);
+  else
+    tensor_entries<false>(weighted, v_moment, local);
   return true;
 }
 
