@@ -1,6 +1,7 @@
 #include "solver/data_finiteness.hpp"
 
 #include <climits>
+#include <algorithm>
 #include <cmath>
 
 #include "config/config_node.hpp"
@@ -44,23 +45,48 @@ struct Finding {
 /// item(i) = (element, reference points on it), at the physical images of those points.
 template <class RuleOf>
 Finding first_non_finite(const Space& space, const std::vector<Datum>& data, int items, const RuleOf& item) {
-  Finding best;
+  // The physical points of every item first, then all data in one batch over large blocks of
+  // points (their shared subexpressions once per point, and muParser's bulk mode at full width).
+  std::vector<Eigen::Index> offset(items + 1, 0);
+  for (int i = 0; i < items; ++i) offset[i + 1] = offset[i] + item(i).second->size();
+  Eigen::Matrix2Xd points(2, offset[items]);
+  std::vector<int> owner(offset[items]);
 #pragma omp parallel if (items >= 512)
   {
-    Finding mine;
     auto evaluator = space.make_evaluator();
     PointValues geometry;
 #pragma omp for schedule(dynamic, 64)
     for (int i = 0; i < items; ++i) {
       const auto [element, rule] = item(i);
-      if (element >= mine.element) continue;
       evaluator->evaluate_geometry(element, *rule, geometry);
-      for (int q = 0; q < geometry.x.cols() && element < mine.element; ++q)
-        for (size_t d = 0; d < data.size(); ++d)
-          if (!std::isfinite(data[d].f(Point2(geometry.x.col(q))))) {
-            mine = {element, static_cast<int>(d), geometry.x.col(q)};
+      points.middleCols(offset[i], geometry.x.cols()) = geometry.x;
+      std::fill(owner.begin() + offset[i], owner.begin() + offset[i + 1], element);
+    }
+  }
+  std::vector<SymbolicFunction> functions;
+  for (const Datum& d : data) functions.push_back(d.f);
+  const FunctionBatch batch(functions);
+
+  constexpr Eigen::Index block = 4096;
+  const auto blocks = static_cast<int>((points.cols() + block - 1) / block);
+  Finding best;
+#pragma omp parallel if (blocks > 1)
+  {
+    Finding mine;
+    Eigen::MatrixXd values;
+#pragma omp for schedule(dynamic, 1)
+    for (int b = 0; b < blocks; ++b) {
+      const Eigen::Index first = b * block, count = std::min(block, points.cols() - first);
+      batch.evaluate(points.middleCols(first, count), values);
+      for (Eigen::Index k = 0; k < count; ++k) {
+        const int element = owner[first + k];
+        if (element >= mine.element) continue;
+        for (int d = 0; d < values.rows(); ++d)
+          if (!std::isfinite(values(d, k))) {
+            mine = {element, d, points.col(first + k)};
             break;
           }
+      }
     }
 #pragma omp critical(iga_data_finiteness)
     if (mine.element < best.element) best = mine;

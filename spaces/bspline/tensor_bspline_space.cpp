@@ -36,6 +36,11 @@ class TensorBSplineSpace::TensorEvaluator final : public Space::Evaluator {
   /// tu_dᵀ C tv_e at each point, with no table of every active function (the error norms' path).
   void evaluate_function(int element, const QuadratureRule& rule, const Eigen::VectorXd& coefficients, unsigned flags,
                          PointValues& geometry, FunctionValues& out) override;
+  /// Points and Jacobians alone, without the basis (data checks, VTK points, outlines).
+  void evaluate_geometry(int element, const QuadratureRule& rule, PointValues& out) override;
+  /// Σ_q w_q N_a(u_q) M_b(v_q) = (tu diag(w) tvᵀ)(a, b), by sum factorization (load vectors).
+  void integrate_values(int element, const QuadratureRule& rule, const PointValues& geometry,
+                        const Eigen::VectorXd& weights, Eigen::VectorXd& local) override;
 
  private:
   /// tu_, tv_: the element's 1D active functions and derivatives up to order nd at the points.
@@ -180,6 +185,26 @@ void TensorBSplineSpace::TensorEvaluator::evaluate_function(int element, const Q
     out.dxy = single_.dxy.row(0).transpose();
     out.dyy = single_.dyy.row(0).transpose();
   }
+}
+
+void TensorBSplineSpace::TensorEvaluator::evaluate_geometry(int element, const QuadratureRule& rule, PointValues& out) {
+  geometry_jets(element, rule, false);
+  const int q = rule.size();
+  out.x.resize(2, q);
+  out.jacobian.resize(q);
+  for (int k = 0; k < q; ++k) {
+    out.x.col(k) = jets_[k].x;
+    out.jacobian[k] = jets_[k].jacobian;
+  }
+  space_.element_dofs(element, out.dofs);
+}
+
+void TensorBSplineSpace::TensorEvaluator::integrate_values(int element, const QuadratureRule& rule,
+                                                            const PointValues& /*geometry*/,
+                                                            const Eigen::VectorXd& weights, Eigen::VectorXd& local) {
+  active_1d(element, rule, 0);
+  const Eigen::MatrixXd sums = tu_[0] * weights.asDiagonal() * tv_[0].transpose();  // column-major: a + b (pu + 1)
+  local = Eigen::Map<const Eigen::VectorXd>(sums.data(), sums.size());
 }
 
 void TensorBSplineSpace::TensorEvaluator::geometry_jets(int element, const QuadratureRule& rule, bool hess) {
