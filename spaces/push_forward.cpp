@@ -109,4 +109,43 @@ void extract_reference_derivatives(const Eigen::SparseMatrix<double>& extraction
   }
 }
 
+void contract_reference_derivatives(const Eigen::SparseMatrix<double>& extraction, const Eigen::MatrixXd (&tables)[6],
+                                    const Eigen::VectorXd& active_coefficients, unsigned flags,
+                                    ReferenceDerivatives& one) {
+  const Eigen::VectorXd local = extraction * active_coefficients;
+  const bool grads = (flags & (update_gradients | update_hessians)) != 0;
+  const bool hess = (flags & update_hessians) != 0;
+  one.value.noalias() = local.transpose() * tables[0];  // push_forward of one function reads values
+  if (grads) {
+    one.dxi.noalias() = local.transpose() * tables[1];
+    one.deta.noalias() = local.transpose() * tables[2];
+  }
+  if (hess) {
+    one.dxixi.noalias() = local.transpose() * tables[3];
+    one.dxieta.noalias() = local.transpose() * tables[4];
+    one.detaeta.noalias() = local.transpose() * tables[5];
+  }
+}
+
+void integrate_extracted(const Eigen::SparseMatrix<double>& extraction, const Eigen::MatrixXd& value_table,
+                         const Eigen::VectorXd& weights, Eigen::VectorXd& local) {
+  const Eigen::VectorXd weighted = value_table * weights;
+  local.noalias() = extraction.transpose() * weighted;
+}
+
+void take_single_function(const PointValues& single, unsigned flags, PointValues& geometry, FunctionValues& out) {
+  geometry.x = single.x;
+  geometry.jacobian = single.jacobian;
+  if (flags & update_values) out.value = single.value.row(0).transpose();
+  if (flags & update_gradients) {
+    out.dx = single.dx.row(0).transpose();
+    out.dy = single.dy.row(0).transpose();
+  }
+  if (flags & update_hessians) {
+    out.dxx = single.dxx.row(0).transpose();
+    out.dxy = single.dxy.row(0).transpose();
+    out.dyy = single.dyy.row(0).transpose();
+  }
+}
+
 }  // namespace iga

@@ -30,6 +30,22 @@ struct ReferenceDerivatives {
 void extract_reference_derivatives(const Eigen::SparseMatrix<double>& extraction, const Eigen::MatrixXd (&tables)[6],
                                    unsigned flags, ReferenceDerivatives& ref);
 
+/// The reference data of one function Σ_i c_i φ_i (c: the element's active coefficients): the
+/// coefficients go through the extraction first (one local vector), then one row per table,
+/// instead of extracting every active function at every point.
+void contract_reference_derivatives(const Eigen::SparseMatrix<double>& extraction, const Eigen::MatrixXd (&tables)[6],
+                                    const Eigen::VectorXd& active_coefficients, unsigned flags,
+                                    ReferenceDerivatives& one);
+
+/// Σ_q weights(q) φ_i(x_q) for the active functions: tables' values times weights, then the
+/// extraction (the load vector's transposed evaluation).
+void integrate_extracted(const Eigen::SparseMatrix<double>& extraction, const Eigen::MatrixXd& value_table,
+                         const Eigen::VectorXd& weights, Eigen::VectorXd& local);
+
+/// Row 0 of the physical arrays of `single` (one function pushed forward) into `out`, and its
+/// points and Jacobians into `geometry`.
+void take_single_function(const PointValues& single, unsigned flags, PointValues& geometry, FunctionValues& out);
+
 /// Fill out.x, out.jacobian and the physical arrays requested by `flags` from reference data and
 /// the geometry jets at the q points. out.dofs is left untouched.
 void push_forward(const std::vector<GeometryJet>& geometry, const ReferenceDerivatives& ref, unsigned flags,

@@ -173,18 +173,7 @@ void TensorBSplineSpace::TensorEvaluator::evaluate_function(int element, const Q
   }
   geometry_jets(element, rule, hess);
   push_forward(jets_, one_, flags | update_values, single_);
-  geometry.x = single_.x;
-  geometry.jacobian = single_.jacobian;
-  if (flags & update_values) out.value = single_.value.row(0).transpose();
-  if (flags & update_gradients) {
-    out.dx = single_.dx.row(0).transpose();
-    out.dy = single_.dy.row(0).transpose();
-  }
-  if (flags & update_hessians) {
-    out.dxx = single_.dxx.row(0).transpose();
-    out.dxy = single_.dxy.row(0).transpose();
-    out.dyy = single_.dyy.row(0).transpose();
-  }
+  take_single_function(single_, flags, geometry, out);
 }
 
 void TensorBSplineSpace::TensorEvaluator::evaluate_geometry(int element, const QuadratureRule& rule, PointValues& out) {

@@ -1,6 +1,7 @@
 #include "spaces/g1/g1_space.hpp"
 
 #include <algorithm>
+#include <stdexcept>
 
 #include "config/errors.hpp"
 #include "spaces/g1/bernstein_face.hpp"
@@ -16,6 +17,13 @@ class G1Space::G1Evaluator final : public Space::Evaluator {
  public:
   explicit G1Evaluator(const G1Space& space) : space_(space) {}
   void evaluate(int element, const QuadratureRule& rule, unsigned flags, PointValues& out) override;
+  /// u_h through the extraction once per element, not every active function at every point.
+  void evaluate_function(int element, const QuadratureRule& rule, const Eigen::VectorXd& coefficients, unsigned flags,
+                         PointValues& geometry, FunctionValues& out) override;
+  /// Points and Jacobians alone (VTK points, data checks; the load vector's integrate_values).
+  void evaluate_geometry(int element, const QuadratureRule& rule, PointValues& out) override;
+  void integrate_values(int element, const QuadratureRule& rule, const PointValues& geometry,
+                        const Eigen::VectorXd& weights, Eigen::VectorXd& local) override;
 
  private:
   /// bernstein_count x q tables of value, d/du, d/dv, d2/du2, d2/dudv, d2/dv2.
@@ -25,9 +33,13 @@ class G1Space::G1Evaluator final : public Space::Evaluator {
   };
   const Tables& tables(const QuadratureRule& rule, CellShape shape);
 
+  /// jets_ at the rule's points.
+  void map_points(int element, const QuadratureRule& rule);
+
   const G1Space& space_;
   std::map<std::pair<const QuadratureRule*, CellShape>, Tables> cache_;
-  ReferenceDerivatives ref_;
+  ReferenceDerivatives ref_, one_;
+  PointValues single_;
   std::vector<GeometryJet> jets_;
 };
 
@@ -46,9 +58,46 @@ void G1Space::G1Evaluator::evaluate(int element, const QuadratureRule& rule, uns
   const Tables& t = tables(rule, space_.mesh_->shape(element));
   extract_reference_derivatives(space_.basis_.extraction[element], t.t, flags, ref_);
   out.dofs = space_.basis_.face_dofs[element];
+  map_points(element, rule);
+  push_forward(jets_, ref_, flags, out);
+}
+
+void G1Space::G1Evaluator::map_points(int element, const QuadratureRule& rule) {
   jets_.resize(rule.size());
   for (int p = 0; p < rule.size(); ++p) jets_[p] = space_.mesh_->map(element, rule.points[p]);
-  push_forward(jets_, ref_, flags, out);
+}
+
+void G1Space::G1Evaluator::evaluate_function(int element, const QuadratureRule& rule,
+                                             const Eigen::VectorXd& coefficients, unsigned flags,
+                                             PointValues& geometry, FunctionValues& out) {
+  if (flags & (update_laplacian_gradient | update_bilaplacian))
+    throw std::logic_error("evaluate_function: this space provides derivatives up to order 2 only");
+  const Tables& t = tables(rule, space_.mesh_->shape(element));
+  const std::vector<int>& dofs = space_.basis_.face_dofs[element];
+  Eigen::VectorXd c(dofs.size());
+  for (std::size_t i = 0; i < dofs.size(); ++i) c(i) = coefficients(dofs[i]);
+  contract_reference_derivatives(space_.basis_.extraction[element], t.t, c, flags, one_);
+  geometry.dofs = dofs;
+  map_points(element, rule);
+  push_forward(jets_, one_, flags | update_values, single_);
+  take_single_function(single_, flags, geometry, out);
+}
+
+void G1Space::G1Evaluator::evaluate_geometry(int element, const QuadratureRule& rule, PointValues& out) {
+  map_points(element, rule);
+  out.dofs = space_.basis_.face_dofs[element];
+  out.x.resize(2, rule.size());
+  out.jacobian.resize(rule.size());
+  for (int p = 0; p < rule.size(); ++p) {
+    out.x.col(p) = jets_[p].x;
+    out.jacobian[p] = jets_[p].jacobian;
+  }
+}
+
+void G1Space::G1Evaluator::integrate_values(int element, const QuadratureRule& rule, const PointValues& /*geometry*/,
+                                            const Eigen::VectorXd& weights, Eigen::VectorXd& local) {
+  const Tables& t = tables(rule, space_.mesh_->shape(element));
+  integrate_extracted(space_.basis_.extraction[element], t.t[0], weights, local);
 }
 
 G1Space::G1Space(std::shared_ptr<const PatchMesh> mesh, int k) : mesh_(std::move(mesh)) {

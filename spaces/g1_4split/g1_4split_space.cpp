@@ -3,6 +3,7 @@
 #include <Eigen/LU>
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 #include "spaces/g1/boundary_parts.hpp"
 #include "spaces/g1_4split/face_function.hpp"
@@ -19,28 +20,67 @@ class G14Space::G14Evaluator final : public Space::Evaluator {
     const TensorTableCache::SixTables& t = tables_.at(rule);
     extract_reference_derivatives(space_.basis_.extraction[element], t, flags, ref_);
     out.dofs = space_.basis_.face_dofs[element];
+    map_points(element, t, rule.size());
+    push_forward(jets_, ref_, flags, out);
+  }
+
+  /// u_h through the extraction once per element, not every active function at every point.
+  void evaluate_function(int element, const QuadratureRule& rule, const Eigen::VectorXd& coefficients, unsigned flags,
+                         PointValues& geometry, FunctionValues& out) override {
+    if (flags & (update_laplacian_gradient | update_bilaplacian))
+      throw std::logic_error("evaluate_function: this space provides derivatives up to order 2 only");
+    const TensorTableCache::SixTables& t = tables_.at(rule);
+    const std::vector<int>& dofs = space_.basis_.face_dofs[element];
+    Eigen::VectorXd c(dofs.size());
+    for (std::size_t i = 0; i < dofs.size(); ++i) c(i) = coefficients(dofs[i]);
+    contract_reference_derivatives(space_.basis_.extraction[element], t, c, flags, one_);
+    geometry.dofs = dofs;
+    map_points(element, t, rule.size());
+    push_forward(jets_, one_, flags | update_values, single_);
+    take_single_function(single_, flags, geometry, out);
+  }
+
+  /// Points and Jacobians alone (VTK points, data checks; the load vector's integrate_values).
+  void evaluate_geometry(int element, const QuadratureRule& rule, PointValues& out) override {
+    map_points(element, tables_.at(rule), rule.size());
+    out.dofs = space_.basis_.face_dofs[element];
+    out.x.resize(2, rule.size());
+    out.jacobian.resize(rule.size());
+    for (int p = 0; p < rule.size(); ++p) {
+      out.x.col(p) = jets_[p].x;
+      out.jacobian[p] = jets_[p].jacobian;
+    }
+  }
+
+  void integrate_values(int element, const QuadratureRule& rule, const PointValues& /*geometry*/,
+                        const Eigen::VectorXd& weights, Eigen::VectorXd& local) override {
+    integrate_extracted(space_.basis_.extraction[element], tables_.at(rule)[0], weights, local);
+  }
+
+ private:
+  /// jets_ at the q points of the tables t: the geometry's coefficients through the same tables.
+  void map_points(int element, const TensorTableCache::SixTables& t, int q) {
     const Eigen::VectorXd& gx = space_.geometry_.x[element];
     const Eigen::VectorXd& gy = space_.geometry_.y[element];
-    Eigen::Matrix<double, 6, Eigen::Dynamic> X(6, rule.size()), Y(6, rule.size());
+    Eigen::Matrix<double, 6, Eigen::Dynamic> X(6, q), Y(6, q);
     for (int d = 0; d < 6; ++d) {
       X.row(d) = gx.transpose() * t[d];
       Y.row(d) = gy.transpose() * t[d];
     }
-    jets_.resize(rule.size());
-    for (int p = 0; p < rule.size(); ++p) {
+    jets_.resize(q);
+    for (int p = 0; p < q; ++p) {
       GeometryJet& j = jets_[p];
       j.x = Point2(X(0, p), Y(0, p));
       j.jacobian << X(1, p), X(2, p), Y(1, p), Y(2, p);
       j.hessian_x << X(3, p), X(4, p), X(4, p), X(5, p);
       j.hessian_y << Y(3, p), Y(4, p), Y(4, p), Y(5, p);
     }
-    push_forward(jets_, ref_, flags, out);
   }
 
- private:
   const G14Space& space_;
   TensorTableCache tables_;
-  ReferenceDerivatives ref_;
+  ReferenceDerivatives ref_, one_;
+  PointValues single_;
   std::vector<GeometryJet> jets_;
 };
 

@@ -1,8 +1,9 @@
 /// @file
-/// Space::Evaluator::evaluate_function and integrate_values: the WS4, T-mesh and B-spline fast
-/// paths (contract with the extraction first) agree with the default implementations (all active
-/// functions, then contract) to round-off, on a perturbed WS4 mesh, a graded T-mesh and a curved
-/// B-spline patch; Assembler::load agrees with the element-by-element load from ElementValues.
+/// Space::Evaluator::evaluate_function and integrate_values: the WS4, T-mesh, B-spline, G1 and
+/// 4-split fast paths (contract with the extraction first) agree with the default implementations
+/// (all active functions, then contract) to round-off, on a perturbed WS4 mesh, a graded T-mesh, a
+/// curved B-spline patch and G1 multipatch meshes; Assembler::load agrees with the
+/// element-by-element load from ElementValues.
 
 #include <gtest/gtest.h>
 
@@ -48,6 +49,16 @@ SpacePtr graded_tmesh() {
       "        refine: [[0, 0, 0.5, 0.5], [0.25, 0.25, 0.5, 0.5]]}\n",
       "test.yaml");
   return make_space(root["domain"], root["space"], 1);
+}
+
+/// G1 multipatch splines (k = 5, three quadrilateral patches) and the 4-split G1 macro-patches.
+SpacePtr space_from(const std::string& yaml, int level) {
+  const ConfigNode root = ConfigNode::load_string(yaml, "test.yaml");
+  return make_space(root["domain"], root["space"], level);
+}
+SpacePtr g1_three_patches() { return space_from("domain: {type: multipatch, name: 3p_square}\nspace: {type: g1, degree: 5}\n", 1); }
+SpacePtr g1_4split_fan() {
+  return space_from("domain: {type: multipatch, name: fan3}\nspace: {type: g1_4split, degree: 5}\n", 0);
 }
 
 Eigen::VectorXd random_vector(int n, unsigned seed) {
@@ -185,6 +196,11 @@ TEST(IntegrateValues, Ws4FastPathMatchesDefault) { check_integrate_paths(*pertur
 TEST(IntegrateValues, BsplineMatchesValueTable) { check_integrate_paths(*annulus_bspline(), 8); }
 TEST(AssemblerLoad, Ws4MatchesElementValues) { check_load(*perturbed_ws4(2), 8); }
 TEST(AssemblerLoad, BsplineMatchesElementValues) { check_load(*annulus_bspline(), 8); }
+TEST(FunctionEvaluation, G1FastPathMatchesDefault) { check_function_paths(*g1_three_patches(), 10); }
+TEST(FunctionEvaluation, G1FourSplitFastPathMatchesDefault) { check_function_paths(*g1_4split_fan(), 10); }
+TEST(IntegrateValues, G1MatchesValueTable) { check_integrate_paths(*g1_three_patches(), 10); }
+TEST(IntegrateValues, G1FourSplitMatchesValueTable) { check_integrate_paths(*g1_4split_fan(), 10); }
+TEST(AssemblerLoad, G1MatchesElementValues) { check_load(*g1_three_patches(), 10); }
 
 }  // namespace
 }  // namespace iga
