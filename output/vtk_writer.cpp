@@ -243,7 +243,35 @@ bool write_solution_vtu(const Space& space, const Eigen::VectorXd& coefficients,
   const bool has_hessian = has_gradient && options.exact.has_hessian();
   const int stride = (has_exact ? 1 : 0) + (has_gradient ? 2 : 0) + (has_hessian ? 3 : 0);
   std::vector<double> exact_at(static_cast<std::size_t>(stride) * num_points);
-  if (has_exact) {
+  if (has_exact && !surface && options.exact.jet) {
+    // The batch program over blocks of points (shared subexpressions once per point).
+    constexpr std::int64_t block = 1024;
+    const auto blocks = static_cast<std::int64_t>((unmerged + block - 1) / block);
+#pragma omp parallel
+    {
+      Eigen::Matrix2Xd points(2, block);
+      std::vector<std::int64_t> ids;
+      Eigen::MatrixXd values;
+#pragma omp for schedule(dynamic, 4)
+      for (std::int64_t b = 0; b < blocks; ++b) {
+        try {
+          ids.clear();
+          for (std::int64_t p = b * block; p < std::min(unmerged, (b + 1) * block); ++p) {
+            if (!owner[p]) continue;
+            points.col(static_cast<Eigen::Index>(ids.size())) = Eigen::Vector2d(xyz[3 * p], xyz[3 * p + 1]);
+            ids.push_back(merged_id[p]);
+          }
+          const auto n = static_cast<Eigen::Index>(ids.size());
+          options.exact.jet(points.leftCols(n), values);
+          for (Eigen::Index k = 0; k < n; ++k)
+            for (int r = 0; r < stride; ++r) exact_at[static_cast<std::size_t>(stride) * ids[k] + r] = values(r, k);
+        } catch (...) {
+          keep_failure();
+        }
+      }
+    }
+    if (failure) std::rethrow_exception(failure);
+  } else if (has_exact) {
 #pragma omp parallel for schedule(static)
     for (std::int64_t p = 0; p < unmerged; ++p) {
       if (!owner[p]) continue;

@@ -241,6 +241,39 @@ TEST_F(VtkWriterTest, Q1GridReproducesLinearFunctionWithAllFields) {
   EXPECT_EQ(grid->GetCellData()->GetArray("error_h1"), nullptr);
 }
 
+TEST_F(VtkWriterTest, ExactDataComeFromTheBatchWhenGiven) {
+  // With the batch (u and its derivatives as one program, as the solver passes them), the
+  // exact-solution fields and the element errors come from it: here a batch for u + 1 and its
+  // derivatives, so u_exact is u + 1, the error −1 and error_h1 zero.
+  const auto space = AffineLagrangeSpace::q1_grid(Eigen::Matrix2d::Identity(), Point2(0, 0));
+  VtkFieldOptions options;
+  options.exact.u = linear;
+  options.exact.ux = [](const Point2&) { return 2.0; };
+  options.exact.uy = [](const Point2&) { return 3.0; };
+  options.exact.jet = [](const Eigen::Matrix2Xd& x, Eigen::MatrixXd& values) {
+    values.setZero(6, x.cols());
+    for (Eigen::Index k = 0; k < x.cols(); ++k) values(0, k) = linear(Point2(x.col(k))) + 1.0;
+    values.row(1).setConstant(2.0);
+    values.row(2).setConstant(3.0);
+  };
+  const std::string file = path("batch.vtu");
+  write_solution_vtu(space, space.interpolate(linear), options, file);
+  const auto grid = read_vtu(file);
+  vtkDataArray* exact = grid->GetPointData()->GetArray("u_exact");
+  vtkDataArray* error = grid->GetPointData()->GetArray("error");
+  ASSERT_NE(exact, nullptr);
+  ASSERT_NE(error, nullptr);
+  for (vtkIdType p = 0; p < grid->GetNumberOfPoints(); ++p) {
+    double x[3];
+    grid->GetPoint(p, x);
+    EXPECT_NEAR(exact->GetComponent(p, 0), linear(Point2(x[0], x[1])) + 1.0, 1e-5);
+    EXPECT_NEAR(error->GetComponent(p, 0), -1.0, 1e-12);
+  }
+  vtkDataArray* error_h1 = grid->GetCellData()->GetArray("error_h1");
+  ASSERT_NE(error_h1, nullptr);
+  for (vtkIdType c = 0; c < grid->GetNumberOfCells(); ++c) EXPECT_LT(error_h1->GetComponent(c, 0), 1e-12);
+}
+
 TEST_F(VtkWriterTest, NonlinearCoefficientsMatchHandComputedBilinearValues) {
   // One nonzero coefficient: the hat of the centre node (1,1). On the unit grid its value at a
   // sample point is (1-|x-1|)(1-|y-1|), its gradient the product rule of that.
