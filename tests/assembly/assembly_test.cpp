@@ -175,3 +175,31 @@ TEST(Assembly, DoubleDoubleElementMatricesAgreeWithLongDouble) {
         }
     }
 }
+
+TEST(Assembly, ExtendedResidualKeepsTheLowPartsOfEntriesAndProducts) {
+  // K = tridiag(−1, 3 + 2⁻⁶⁰, −1) (the low part held apart), x = 2¹⁰ (1, …, 1), b = K_high x: the
+  // exact residual is −2⁻⁵⁰ in every row, which a double residual would round to zero. Enough
+  // rows for the parallel, FMA-compiled path (blocks of 256 rows).
+  const int n = 2000;
+  std::vector<Eigen::Triplet<double>> entries;
+  for (int i = 0; i < n; ++i) {
+    entries.emplace_back(i, i, 3.0);
+    if (i > 0) entries.emplace_back(i, i - 1, -1.0);
+    if (i + 1 < n) entries.emplace_back(i, i + 1, -1.0);
+  }
+  SparseMatrix pattern(n, n);
+  pattern.setFromTriplets(entries.begin(), entries.end());
+  pattern.makeCompressed();
+  std::vector<DoubleDouble> values(pattern.nonZeros());
+  for (int col = 0; col < n; ++col)
+    for (SparseMatrix::InnerIterator it(pattern, col); it; ++it) {
+      const auto p = &it.value() - pattern.valuePtr();
+      values[p] = it.row() == col ? DoubleDouble(3.0, std::ldexp(1.0, -60)) : DoubleDouble(-1.0);
+    }
+  const SplitMatrix K = split_matrix(pattern, values);
+  const std::vector<long double> x(n, 1024.0L);
+  Eigen::VectorXd b(n);
+  for (int i = 0; i < n; ++i) b(i) = 1024.0 * ((i > 0 && i + 1 < n) ? 1.0 : 2.0);
+  const std::vector<long double> r = residual_extended(K, x, b);
+  for (int i = 0; i < n; ++i) EXPECT_EQ(r[i], -std::ldexp(1.0L, -50)) << "row " << i;
+}
