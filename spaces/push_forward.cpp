@@ -133,6 +133,16 @@ void integrate_extracted(const Eigen::SparseMatrix<double>& extraction, const Ei
   local.noalias() = extraction.transpose() * weighted;
 }
 
+void take_geometry(const std::vector<GeometryJet>& jets, PointValues& out) {
+  const auto q = static_cast<Eigen::Index>(jets.size());
+  out.x.resize(2, q);
+  out.jacobian.resize(jets.size());
+  for (Eigen::Index p = 0; p < q; ++p) {
+    out.x.col(p) = jets[p].x;
+    out.jacobian[p] = jets[p].jacobian;
+  }
+}
+
 void take_single_function(const PointValues& single, unsigned flags, PointValues& geometry, FunctionValues& out) {
   geometry.x = single.x;
   geometry.jacobian = single.jacobian;

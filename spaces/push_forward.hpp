@@ -42,6 +42,9 @@ void contract_reference_derivatives(const Eigen::SparseMatrix<double>& extractio
 void integrate_extracted(const Eigen::SparseMatrix<double>& extraction, const Eigen::MatrixXd& value_table,
                          const Eigen::VectorXd& weights, Eigen::VectorXd& local);
 
+/// out.x and out.jacobian from the geometry jets alone (an evaluator's evaluate_geometry).
+void take_geometry(const std::vector<GeometryJet>& jets, PointValues& out);
+
 /// Row 0 of the physical arrays of `single` (one function pushed forward) into `out`, and its
 /// points and Jacobians into `geometry`.
 void take_single_function(const PointValues& single, unsigned flags, PointValues& geometry, FunctionValues& out);

@@ -178,13 +178,7 @@ void TensorBSplineSpace::TensorEvaluator::evaluate_function(int element, const Q
 
 void TensorBSplineSpace::TensorEvaluator::evaluate_geometry(int element, const QuadratureRule& rule, PointValues& out) {
   geometry_jets(element, rule, false);
-  const int q = rule.size();
-  out.x.resize(2, q);
-  out.jacobian.resize(q);
-  for (int k = 0; k < q; ++k) {
-    out.x.col(k) = jets_[k].x;
-    out.jacobian[k] = jets_[k].jacobian;
-  }
+  take_geometry(jets_, out);
   space_.element_dofs(element, out.dofs);
 }
 

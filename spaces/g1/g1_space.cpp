@@ -86,12 +86,7 @@ void G1Space::G1Evaluator::evaluate_function(int element, const QuadratureRule& 
 void G1Space::G1Evaluator::evaluate_geometry(int element, const QuadratureRule& rule, PointValues& out) {
   map_points(element, rule);
   out.dofs = space_.basis_.face_dofs[element];
-  out.x.resize(2, rule.size());
-  out.jacobian.resize(rule.size());
-  for (int p = 0; p < rule.size(); ++p) {
-    out.x.col(p) = jets_[p].x;
-    out.jacobian[p] = jets_[p].jacobian;
-  }
+  take_geometry(jets_, out);
 }
 
 void G1Space::G1Evaluator::integrate_values(int element, const QuadratureRule& rule, const PointValues& /*geometry*/,

@@ -44,12 +44,7 @@ class G14Space::G14Evaluator final : public Space::Evaluator {
   void evaluate_geometry(int element, const QuadratureRule& rule, PointValues& out) override {
     map_points(element, tables_.at(rule), rule.size());
     out.dofs = space_.basis_.face_dofs[element];
-    out.x.resize(2, rule.size());
-    out.jacobian.resize(rule.size());
-    for (int p = 0; p < rule.size(); ++p) {
-      out.x.col(p) = jets_[p].x;
-      out.jacobian[p] = jets_[p].jacobian;
-    }
+    take_geometry(jets_, out);
   }
 
   void integrate_values(int element, const QuadratureRule& rule, const PointValues& /*geometry*/,
