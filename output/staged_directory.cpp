@@ -71,14 +71,16 @@ StagedDirectory::~StagedDirectory() {
 void StagedDirectory::commit() {
   const fs::path target = fs::absolute(final_);
   if (target.has_parent_path()) fs::create_directories(target.parent_path());
-  // Copy next to the target first (the temp dir may be on another file system), then swap by
-  // renames, which are atomic within one file system.
+  // Move next to the target first (a rename when the temp dir is on the same file system, else a
+  // copy: hundreds of MB of VTK files are not copied for nothing), then swap by renames, which are
+  // atomic within one file system.
   const fs::path incoming = target.parent_path() / hidden_sibling(target, ".incoming-");
   const fs::path old = target.parent_path() / hidden_sibling(target, ".old-");
   std::error_code ec;
   bool replaced = false;
   try {
-    fs::copy(staging_, incoming, fs::copy_options::recursive);
+    fs::rename(staging_, incoming, ec);
+    if (ec) fs::copy(staging_, incoming, fs::copy_options::recursive);
     replaced = fs::exists(target);
     if (replaced) fs::rename(target, old);
     fs::rename(incoming, target);
