@@ -12,6 +12,7 @@
 #include <cstdint>
 #include <map>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "spaces/tmesh/section_space.hpp"
@@ -108,7 +109,7 @@ class TMesh {
   std::int64_t bounds_[4] = {0, 0, 0, 0};
 
   std::vector<TVertex> vertices_;
-  std::map<std::pair<std::int64_t, std::int64_t>, int> vertex_id_;
+  std::vector<std::tuple<std::int64_t, std::int64_t, int>> vertex_index_;  ///< (x, y, id), sorted
   std::vector<CompositeEdge> edges_;
   std::vector<int> side_edge_, corner_;
   std::vector<char> side_boundary_;

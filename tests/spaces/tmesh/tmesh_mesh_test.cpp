@@ -101,6 +101,13 @@ TEST(TmeshMesh, RejectsCyclesAndCornerContact) {
   const TMesh corner = mesh_of({{0, 1, 0, 1}, {1, 2, 1, 2}}, {trig(3)});
   EXPECT_NE(corner.admissibility_problem().find("not regular"), std::string::npos);
   EXPECT_THROW(mesh_of({{0, 2, 0, 2}, {1, 3, 1, 3}}, {trig(3)}), std::invalid_argument);
+  // Overlaps the sweep must see: containment, the same cell twice, a cell straddling two others,
+  // one starting inside another's x-range; cells that only touch are fine.
+  EXPECT_THROW(mesh_of({{0, 4, 0, 4}, {1, 2, 1, 2}}, {trig(3)}), std::invalid_argument);
+  EXPECT_THROW(mesh_of({{0, 1, 0, 1}, {0, 1, 0, 1}}, {trig(3)}), std::invalid_argument);
+  EXPECT_THROW(mesh_of({{0, 1, 0, 1}, {0, 1, 2, 3}, {0, 1, 1, 3}}, {trig(3)}), std::invalid_argument);
+  EXPECT_THROW(mesh_of({{0, 1, 0, 1}, {1, 2, 0, 1}, {0, 3, 3, 4}, {2, 3, 2, 5}}, {trig(3)}), std::invalid_argument);
+  EXPECT_NO_THROW(mesh_of({{0, 1, 0, 1}, {1, 2, 0, 1}, {0, 2, 1, 2}}, {trig(3)}));
 }
 
 TEST(TmeshMesh, DyadicHierarchicalMesh) {
@@ -109,6 +116,11 @@ TEST(TmeshMesh, DyadicHierarchicalMesh) {
   EXPECT_EQ(m.num_non_t_vertices(), 13);
   EXPECT_EQ(int(m.vertices().size()) - m.num_non_t_vertices(), 6);
   EXPECT_EQ(m.edges().size(), 22u);
+  // Vertex lookup on the lattice: corners and T-junctions, nothing between them.
+  for (int v = 0; v < static_cast<int>(m.vertices().size()); ++v) EXPECT_EQ(m.vertex_at(m.vertices()[v].x, m.vertices()[v].y), v);
+  ASSERT_GE(m.vertex_at(2 * U, 3 * U), 0);
+  EXPECT_TRUE(m.vertices()[m.vertex_at(2 * U, 3 * U)].t_junction);  // inside the right side of [0, 2] x [2, 4]
+  EXPECT_EQ(m.vertex_at(U, U / 2), -1);
   EXPECT_EQ(m.dimension_formula(1, 1), 52);
   EXPECT_EQ(m.dimension_formula(0, 0), 97);
   EXPECT_EQ(mesh_of(dyadic(), {trig(2)}, pi / 8).dimension_formula(0, 0), 45);
