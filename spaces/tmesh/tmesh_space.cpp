@@ -27,8 +27,17 @@ class TMeshSpace::TMeshEvaluator final : public Space::Evaluator {
   /// of the Bernstein coefficients E_cᵀ c.
   void evaluate_function(int element, const QuadratureRule& rule, const Eigen::VectorXd& coefficients, unsigned flags,
                          PointValues& geometry, FunctionValues& out) override;
+  /// Points and the (diagonal) Jacobian only: no function values.
+  void evaluate_geometry(int element, const QuadratureRule& rule, PointValues& out) override;
+  /// Σ_q w_q N_a(x_q) = E_c b with b_ij = Σ_q w_q B_i(ξ_q) B_j(η_q): the tensor Bernstein sums
+  /// first, then one small matrix-vector product (no table of every active function).
+  void integrate_values(int element, const QuadratureRule& rule, const PointValues& geometry,
+                        const Eigen::VectorXd& weights, Eigen::VectorXd& local) override;
 
  private:
+  /// dofs, x and the Jacobian of `element` at the points of `rule`.
+  void fill_geometry(int element, const QuadratureRule& rule, PointValues& out) const;
+
   /// Reference derivatives (orders 0..2) of the Bernstein basis along x and y: (n+1) x q each.
   struct Tables {
     std::vector<Point2> points;
@@ -39,6 +48,7 @@ class TMeshSpace::TMeshEvaluator final : public Space::Evaluator {
   const TMeshSpace& space_;
   std::map<std::tuple<const QuadratureRule*, int, int, std::int64_t, std::int64_t>, Tables> cache_;
   Eigen::MatrixXd local_[6];
+  Eigen::VectorXd sums_;
   ReferenceDerivatives ref_;
   std::vector<GeometryJet> jets_;
 };
@@ -106,6 +116,39 @@ void TMeshSpace::TMeshEvaluator::evaluate(int element, const QuadratureRule& rul
     jets_[k].hessian_y.setZero();
   }
   push_forward(jets_, ref_, flags, out);
+}
+
+void TMeshSpace::TMeshEvaluator::fill_geometry(int element, const QuadratureRule& rule, PointValues& out) const {
+  Point2 lo, hi;
+  space_.cell_box(element, lo, hi);
+  const Point2 h = hi - lo;
+  const int q = rule.size();
+  out.dofs = space_.extraction().dofs[element];
+  Eigen::Matrix2d J = Eigen::Matrix2d::Zero();
+  J(0, 0) = h.x();
+  J(1, 1) = h.y();
+  out.jacobian.assign(q, J);
+  out.x.resize(2, q);
+  for (int k = 0; k < q; ++k) out.x.col(k) = lo + h.cwiseProduct(rule.points[k]);
+}
+
+void TMeshSpace::TMeshEvaluator::evaluate_geometry(int element, const QuadratureRule& rule, PointValues& out) {
+  fill_geometry(element, rule, out);
+}
+
+void TMeshSpace::TMeshEvaluator::integrate_values(int element, const QuadratureRule& rule, const PointValues&,
+                                                  const Eigen::VectorXd& weights, Eigen::VectorXd& local) {
+  const Tables& t = tables(rule, space_.mesh().cells()[element]);
+  const Eigen::MatrixXd& X = t.bx[0];
+  const Eigen::MatrixXd& Y = t.by[0];
+  const int m = static_cast<int>(X.rows()), q = rule.size();
+  sums_.setZero(m * m);  // b(i + j m)
+  for (int k = 0; k < q; ++k)
+    for (int j = 0; j < m; ++j) {
+      const double wy = weights(k) * Y(j, k);
+      for (int i = 0; i < m; ++i) sums_(i + j * m) += X(i, k) * wy;
+    }
+  local.noalias() = space_.extraction().matrix[element].lazyProduct(sums_);
 }
 
 void TMeshSpace::TMeshEvaluator::evaluate_function(int element, const QuadratureRule& rule,
