@@ -48,7 +48,8 @@ class TMeshSpace::TMeshEvaluator final : public Space::Evaluator {
   const TMeshSpace& space_;
   std::map<std::tuple<const QuadratureRule*, int, int, std::int64_t, std::int64_t>, Tables> cache_;
   Eigen::MatrixXd local_[6];
-  Eigen::VectorXd sums_;
+  Eigen::VectorXd sums_, c_, b_;
+  Eigen::MatrixXd by_[3];
   ReferenceDerivatives ref_;
   std::vector<GeometryJet> jets_;
 };
@@ -158,41 +159,42 @@ void TMeshSpace::TMeshEvaluator::evaluate_function(int element, const Quadrature
   // u_h on the cell in its tensor Bernstein basis first: b = E_cᵀ c (index i + j (n+1)), then
   // ∂ξ^a ∂η^b u_h(x_k) = X_a(:, k)ᵀ B Y_b(:, k) with B = b as an (n+1) x (n+1) array, from the
   // cached 1D tables: no table of every active function (what the error norms would otherwise pay).
-  Point2 lo, hi;
-  space_.cell_box(element, lo, hi);
-  const Point2 h = hi - lo;
   const TCell& cell = space_.mesh().cells()[element];
   const Tables& t = tables(rule, cell);
   const int q = rule.size();
-  geometry.dofs = space_.extraction().dofs[element];
+  fill_geometry(element, rule, geometry);
+  Point2 lo, hi;
+  space_.cell_box(element, lo, hi);
+  const Point2 h = hi - lo;
   const Eigen::MatrixXd& E = space_.extraction().matrix[element];
-  Eigen::VectorXd c(geometry.num_functions());
-  for (int a = 0; a < c.size(); ++a) c(a) = coefficients(geometry.dofs[a]);
-  const Eigen::VectorXd b = E.transpose() * c;
+  c_.resize(geometry.num_functions());
+  for (int a = 0; a < c_.size(); ++a) c_(a) = coefficients(geometry.dofs[a]);
+  b_.noalias() = E.transpose().lazyProduct(c_);
+  const Eigen::VectorXd& b = b_;
   {
     const int m = space_.section().n + 1;
     const Eigen::Map<const Eigen::MatrixXd> B(b.data(), m, m);
-    Eigen::Matrix2d J = Eigen::Matrix2d::Zero();
-    J(0, 0) = h.x();
-    J(1, 1) = h.y();
-    geometry.x.resize(2, q);
-    geometry.jacobian.assign(q, J);
-    for (int k = 0; k < q; ++k) geometry.x.col(k) = lo + h.cwiseProduct(rule.points[k]);
     const bool grads = (flags & (update_gradients | update_hessians)) != 0, hess = (flags & update_hessians) != 0;
-    Eigen::MatrixXd by[3];  // B Y_d
-    for (int d = 0; d <= (hess ? 2 : grads ? 1 : 0); ++d) by[d].noalias() = B * t.by[d];
-    auto derivative = [&](int ax, int ay, double scale) -> Eigen::VectorXd {
-      return (t.bx[ax].cwiseProduct(by[ay]).colwise().sum().transpose()) * scale;
+    // B Y_d: (n+1) x (n+1) times (n+1) x q, coefficient-based (GEMM packing costs more at this size).
+    for (int d = 0; d <= (hess ? 2 : grads ? 1 : 0); ++d) by_[d].noalias() = B.lazyProduct(t.by[d]);
+    auto derivative = [&](int ax, int ay, double scale, Eigen::VectorXd& v) {
+      const Eigen::MatrixXd &X = t.bx[ax], &Y = by_[ay];
+      v.resize(q);
+      for (int k = 0; k < q; ++k) {
+        double sum = 0.0;
+        for (int i = 0; i < m; ++i) sum += X(i, k) * Y(i, k);
+        v(k) = sum * scale;
+      }
     };
-    if ((flags & update_values) || higher) out.value = derivative(0, 0, 1.0);
+    if ((flags & update_values) || higher) derivative(0, 0, 1.0, out.value);
     if (flags & update_gradients) {
-      out.dx = derivative(1, 0, 1.0 / h.x());
-      out.dy = derivative(0, 1, 1.0 / h.y());
+      derivative(1, 0, 1.0 / h.x(), out.dx);
+      derivative(0, 1, 1.0 / h.y(), out.dy);
     }
     if (flags & update_hessians) {
-      out.dxx = derivative(2, 0, 1.0 / (h.x() * h.x()));
-      out.dxy = derivative(1, 1, 1.0 / (h.x() * h.y()));
-      out.dyy = derivative(0, 2, 1.0 / (h.y() * h.y()));
+      derivative(2, 0, 1.0 / (h.x() * h.x()), out.dxx);
+      derivative(1, 1, 1.0 / (h.x() * h.y()), out.dxy);
+      derivative(0, 2, 1.0 / (h.y() * h.y()), out.dyy);
     }
   }
   if (!higher) return;
