@@ -9,6 +9,7 @@
 #include <stdexcept>
 #include <string_view>
 #include <tuple>
+#include <type_traits>
 
 #include "config/errors.hpp"
 #include "spaces/push_forward.hpp"
@@ -58,6 +59,53 @@ class TMeshSpace::TMeshEvaluator final : public Space::Evaluator {
   ReferenceDerivatives ref_;
   std::vector<GeometryJet> jets_;
 };
+
+namespace {
+
+/// The evaluator's loops over the n+1 Bernstein functions of a direction, with n+1 as a template
+/// parameter for the usual sizes (fixed-size Eigen blocks unroll and vectorize; the tables have
+/// q columns) and Eigen::Dynamic for the others.
+template <class F>
+void with_size(int m, F&& f) {
+  switch (m) {
+    case 3: f(std::integral_constant<int, 3>{}); break;
+    case 4: f(std::integral_constant<int, 4>{}); break;
+    case 5: f(std::integral_constant<int, 5>{}); break;
+    case 6: f(std::integral_constant<int, 6>{}); break;
+    default: f(std::integral_constant<int, Eigen::Dynamic>{}); break;
+  }
+}
+
+template <int M>
+using Rows = Eigen::Matrix<double, M, Eigen::Dynamic>;
+
+/// by = B Y with B the m x m array of b (column-major), Y m x q.
+template <int M>
+void times_table(const Eigen::VectorXd& b, const Eigen::MatrixXd& Y, Eigen::MatrixXd& by) {
+  const Eigen::Index m = Y.rows(), q = Y.cols();
+  const Eigen::Map<const Eigen::Matrix<double, M, M>> B(b.data(), m, m);
+  by.resize(m, q);
+  Eigen::Map<Rows<M>>(by.data(), m, q).noalias() = B.lazyProduct(Eigen::Map<const Rows<M>>(Y.data(), m, q));
+}
+
+/// v(k) = scale Σ_i X(i, k) Y(i, k).
+template <int M>
+void column_dots(const Eigen::MatrixXd& X, const Eigen::MatrixXd& Y, double scale, Eigen::VectorXd& v) {
+  const Eigen::Index m = X.rows(), q = X.cols();
+  v.noalias() = Eigen::Map<const Rows<M>>(X.data(), m, q).cwiseProduct(Eigen::Map<const Rows<M>>(Y.data(), m, q)).colwise().sum().transpose() * scale;
+}
+
+/// sums(i + j m) = Σ_k w_k X(i, k) Y(j, k).
+template <int M>
+void weighted_tensor_sums(const Eigen::MatrixXd& X, const Eigen::MatrixXd& Y, const Eigen::VectorXd& w, Eigen::VectorXd& sums) {
+  const Eigen::Index m = X.rows(), q = X.cols();
+  sums.setZero(m * m);
+  Eigen::Map<Eigen::Matrix<double, M, M>> S(sums.data(), m, m);
+  const Eigen::Map<const Rows<M>> XM(X.data(), m, q), YM(Y.data(), m, q);
+  for (Eigen::Index k = 0; k < q; ++k) S.noalias() += (w(k) * XM.col(k)) * YM.col(k).transpose();
+}
+
+}  // namespace
 
 const TMeshSpace::TMeshEvaluator::Tables& TMeshSpace::TMeshEvaluator::tables(const QuadratureRule& rule,
                                                                            const TCell& cell) {
@@ -147,13 +195,8 @@ void TMeshSpace::TMeshEvaluator::integrate_values(int element, const QuadratureR
   const Tables& t = tables(rule, space_.mesh().cells()[element]);
   const Eigen::MatrixXd& X = t.bx[0];
   const Eigen::MatrixXd& Y = t.by[0];
-  const int m = static_cast<int>(X.rows()), q = rule.size();
-  sums_.setZero(m * m);  // b(i + j m)
-  for (int k = 0; k < q; ++k)
-    for (int j = 0; j < m; ++j) {
-      const double wy = weights(k) * Y(j, k);
-      for (int i = 0; i < m; ++i) sums_(i + j * m) += X(i, k) * wy;
-    }
+  const int m = static_cast<int>(X.rows());
+  with_size(m, [&](auto size) { weighted_tensor_sums<decltype(size)::value>(X, Y, weights, sums_); });
   local.noalias() = space_.extraction().matrix[element].lazyProduct(sums_);
 }
 
@@ -178,18 +221,13 @@ void TMeshSpace::TMeshEvaluator::evaluate_function(int element, const Quadrature
   const Eigen::VectorXd& b = b_;
   {
     const int m = space_.section().n + 1;
-    const Eigen::Map<const Eigen::MatrixXd> B(b.data(), m, m);
     const bool grads = (flags & (update_gradients | update_hessians)) != 0, hess = (flags & update_hessians) != 0;
     // B Y_d: (n+1) x (n+1) times (n+1) x q, coefficient-based (GEMM packing costs more at this size).
-    for (int d = 0; d <= (hess ? 2 : grads ? 1 : 0); ++d) by_[d].noalias() = B.lazyProduct(t.by[d]);
+    with_size(m, [&](auto size) {
+      for (int d = 0; d <= (hess ? 2 : grads ? 1 : 0); ++d) times_table<decltype(size)::value>(b, t.by[d], by_[d]);
+    });
     auto derivative = [&](int ax, int ay, double scale, Eigen::VectorXd& v) {
-      const Eigen::MatrixXd &X = t.bx[ax], &Y = by_[ay];
-      v.resize(q);
-      for (int k = 0; k < q; ++k) {
-        double sum = 0.0;
-        for (int i = 0; i < m; ++i) sum += X(i, k) * Y(i, k);
-        v(k) = sum * scale;
-      }
+      with_size(m, [&](auto size) { column_dots<decltype(size)::value>(t.bx[ax], by_[ay], scale, v); });
     };
     if ((flags & update_values) || higher) derivative(0, 0, 1.0, out.value);
     if (flags & update_gradients) {
