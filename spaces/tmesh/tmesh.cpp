@@ -165,12 +165,13 @@ TMesh TMesh::l_shape(Eigen::Vector2d lo, Eigen::Vector2d hi, int nx, int ny, con
   return TMesh(std::move(cells), {section}, lo, unit);
 }
 
-TMesh TMesh::refined(const std::vector<int>& which) const {
-  std::vector<char> split(cells_.size(), 0);
+std::vector<TCell> TMesh::split_cells(const std::vector<TCell>& cells, const std::vector<int>& which) {
+  std::vector<char> split(cells.size(), 0);
   for (int c : which) split.at(c) = 1;
   std::vector<TCell> out;
-  for (size_t k = 0; k < cells_.size(); ++k) {
-    const TCell& c = cells_[k];
+  out.reserve(cells.size() + 3 * which.size());
+  for (size_t k = 0; k < cells.size(); ++k) {
+    const TCell& c = cells[k];
     if (!split[k]) {
       out.push_back(c);
       continue;
@@ -181,7 +182,11 @@ TMesh TMesh::refined(const std::vector<int>& which) const {
                               {xm, c.x1, ym, c.y1}})
       out.push_back({a, b, p, q, c.section_s, c.section_t});
   }
-  return TMesh(std::move(out), sections_, origin_, unit_);
+  return out;
+}
+
+TMesh TMesh::refined(const std::vector<int>& which) const {
+  return TMesh(split_cells(cells_, which), sections_, origin_, unit_);
 }
 
 TMesh TMesh::refined_uniformly() const {
@@ -301,10 +306,6 @@ void TMesh::build_topology() {
   std::sort(on_v.begin(), on_v.end());
   side_edge_.assign(4 * nc, -1);
   side_boundary_.assign(4 * nc, 0);
-  // d_e of the edges along one section space (the usual case), computed once per section.
-  std::vector<int> single_d(sections_.size(), -1);
-  std::vector<int> cells_on;
-  std::vector<SectionSpec> along;
   for (int dir = 0; dir < 2; ++dir) {
     const bool horizontal = dir == 0;
     const std::vector<Line>& lines = horizontal ? hlines : vlines;
@@ -350,16 +351,6 @@ void TMesh::build_topology() {
           });
         }
         std::sort(e.cells.begin(), e.cells.end());  // Delta_e in cell order
-        const auto section_along = [&](int cell) { return horizontal ? cells_[cell].section_s : cells_[cell].section_t; };
-        const int s0 = section_along(e.cells.front());
-        if (std::all_of(e.cells.begin(), e.cells.end(), [&](int c) { return section_along(c) == s0; })) {
-          if (single_d[s0] < 0) single_d[s0] = common_nonpolynomial_dimension({sections_[s0]});
-          e.d = single_d[s0];
-        } else {
-          along.clear();
-          for (int c : e.cells) along.push_back(sections_[section_along(c)]);
-          e.d = common_nonpolynomial_dimension(along);
-        }
         edges_.push_back(std::move(e));
         i = j;
       }
@@ -368,6 +359,7 @@ void TMesh::build_topology() {
   }
   for (int k = 0; k < 4 * nc; ++k)
     if (side_edge_[k] < 0) throw std::logic_error("T-mesh: a cell side lies in no composite edge");
+  assign_edge_dimensions();
 
   // 4. Dependencies and a topological order (Kahn); a leftover edge means a cycle.
   for (CompositeEdge& e : edges_)
@@ -399,6 +391,39 @@ void TMesh::build_topology() {
     edge_order_.clear();
     if (problem_.empty()) problem_ = "the T-junctions form a cycle (each extends a composite edge ending at the next)";
   }
+}
+
+void TMesh::assign_edge_dimensions() {
+  // d_e of the edges along one section space (the usual case), computed once per section.
+  std::vector<int> single_d(sections_.size(), -1);
+  std::vector<SectionSpec> along;
+  for (CompositeEdge& e : edges_) {
+    const auto section_along = [&](int cell) { return e.horizontal ? cells_[cell].section_s : cells_[cell].section_t; };
+    const int s0 = section_along(e.cells.front());
+    if (std::all_of(e.cells.begin(), e.cells.end(), [&](int c) { return section_along(c) == s0; })) {
+      if (single_d[s0] < 0) single_d[s0] = common_nonpolynomial_dimension({sections_[s0]});
+      e.d = single_d[s0];
+    } else {
+      along.clear();
+      for (int c : e.cells) along.push_back(sections_[section_along(c)]);
+      e.d = common_nonpolynomial_dimension(along);
+    }
+  }
+}
+
+TMesh TMesh::with_sections(const std::vector<std::array<int, 2>>& cell_sections, std::vector<SectionSpec> sections) const {
+  if (cell_sections.size() != cells_.size()) throw std::invalid_argument("T-mesh sections: one pair per cell expected");
+  TMesh out = *this;
+  out.sections_ = std::move(sections);
+  for (std::size_t c = 0; c < cells_.size(); ++c) {
+    const auto [s, t] = cell_sections[c];
+    if (s < 0 || t < 0 || s >= int(out.sections_.size()) || t >= int(out.sections_.size()))
+      throw std::invalid_argument("T-mesh cell refers to an unknown section space");
+    out.cells_[c].section_s = s;
+    out.cells_[c].section_t = t;
+  }
+  out.assign_edge_dimensions();  // the only part of the topology the sections enter
+  return out;
 }
 
 int TMesh::dimension_formula(int r1, int r2) const {

@@ -541,13 +541,24 @@ void TMeshSpace::normalize_basis() {
   // and makes mass and stiffness matrices needlessly ill-conditioned. Scaling every function to
   // largest Bernstein coefficient 1 (its sup norm up to a factor, since the Bernstein basis is a
   // nonnegative partition of unity) keeps the same space with O(1) functions.
+  // Row maxima per cell in parallel, their maximum per function serially (a function spans
+  // several cells), then the rows rescaled in parallel.
+  const int nc = static_cast<int>(extraction_.matrix.size());
+  std::vector<std::size_t> first(nc + 1, 0);
+  for (int c = 0; c < nc; ++c) first[c + 1] = first[c] + extraction_.dofs[c].size();
+  std::vector<double> row_max(first[nc]);
+#pragma omp parallel for schedule(static) if (nc >= 512)
+  for (int c = 0; c < nc; ++c)
+    for (std::size_t a = 0; a < extraction_.dofs[c].size(); ++a)
+      row_max[first[c] + a] = extraction_.matrix[c].row(static_cast<Eigen::Index>(a)).cwiseAbs().maxCoeff();
   std::vector<double> scale(extraction_.dimension, 0.0);
-  for (std::size_t c = 0; c < extraction_.matrix.size(); ++c)
+  for (int c = 0; c < nc; ++c)
     for (std::size_t a = 0; a < extraction_.dofs[c].size(); ++a) {
       double& s = scale[extraction_.dofs[c][a]];
-      s = std::max(s, extraction_.matrix[c].row(static_cast<Eigen::Index>(a)).cwiseAbs().maxCoeff());
+      s = std::max(s, row_max[first[c] + a]);
     }
-  for (std::size_t c = 0; c < extraction_.matrix.size(); ++c)
+#pragma omp parallel for schedule(static) if (nc >= 512)
+  for (int c = 0; c < nc; ++c)
     for (std::size_t a = 0; a < extraction_.dofs[c].size(); ++a) {
       const double s = scale[extraction_.dofs[c][a]];
       if (s > 0.0) extraction_.matrix[c].row(static_cast<Eigen::Index>(a)) /= s;
