@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <exception>
+#include <iterator>
 #include <map>
 #include <stdexcept>
 #include <tuple>
@@ -82,12 +83,12 @@ void trace_derivative(const TraceTable& t, int row, const LocalForms& traces, in
       add_scaled(d, t.coef[row * t.columns + m], {traces.values(first + m), traces.stores(first + m)}, traces.width(), at);
 }
 
-/// Sorted union of sorted lists.
+/// Sorted union of sorted lists (through a per-thread buffer: no allocation once grown).
 void merge_into(std::vector<int>& out, const std::vector<int>& more) {
-  const std::size_t middle = out.size();
-  out.insert(out.end(), more.begin(), more.end());
-  std::inplace_merge(out.begin(), out.begin() + static_cast<std::ptrdiff_t>(middle), out.end());
-  out.erase(std::unique(out.begin(), out.end()), out.end());
+  thread_local std::vector<int> merged;
+  merged.clear();
+  std::set_union(out.begin(), out.end(), more.begin(), more.end(), std::back_inserter(merged));
+  out.swap(merged);
 }
 
 /// Per-thread scratch of the cell loop (no allocation per cell once grown).
@@ -213,7 +214,7 @@ HermiteExtraction hermite_extraction(const TMesh& mesh, int r) {
 #pragma omp parallel if (worth_threads(count))
     {
       TraceTables tables;
-      std::vector<int> at_a, at_b;
+      std::vector<int> at_a, at_b, own;
       std::vector<double> rhs_v;
       std::vector<char> rhs_s;
 #pragma omp for schedule(dynamic, 64)
@@ -231,9 +232,11 @@ HermiteExtraction hermite_extraction(const TMesh& mesh, int r) {
           LocalForms& T = traces[e];
           T.support = ja.support;
           merge_into(T.support, jb.support);
-          std::vector<int> own(nr * ne);
-          for (int k = 0; k < nr * ne; ++k) own[k] = ebase[e] + k;
-          merge_into(T.support, own);
+          if (ne > 0) {
+            own.resize(nr * ne);
+            for (int k = 0; k < nr * ne; ++k) own[k] = ebase[e] + k;
+            merge_into(T.support, own);
+          }
           positions_in(ja.support, T.support, at_a);
           positions_in(jb.support, T.support, at_b);
           const int w = T.width();
