@@ -95,7 +95,7 @@ void merge_into(std::vector<int>& out, const std::vector<int>& more) {
 struct CellScratch {
   TraceTables tables;
   std::vector<int> support, at, active;
-  std::vector<double> coef_v, gamma_v, col_v, work_v;
+  std::vector<double> coef_v, gamma_v, col_v, work_v, powers;
   std::vector<char> coef_s, gamma_s, col_s, work_s, set;
 };
 
@@ -215,7 +215,7 @@ HermiteExtraction hermite_extraction(const TMesh& mesh, int r) {
     {
       TraceTables tables;
       std::vector<int> at_a, at_b, own;
-      std::vector<double> rhs_v;
+      std::vector<double> rhs_v, powers;
       std::vector<char> rhs_s;
 #pragma omp for schedule(dynamic, 64)
       for (int q = 0; q < count; ++q) {
@@ -244,13 +244,15 @@ HermiteExtraction hermite_extraction(const TMesh& mesh, int r) {
           rhs_v.resize(static_cast<std::size_t>(order + 1) * w);
           rhs_s.resize(rhs_v.size());
           auto rhs = [&](int k) { return FormRef{rhs_v.data() + static_cast<std::size_t>(k) * w, rhs_s.data() + static_cast<std::size_t>(k) * w}; };
+          powers.resize(r + 1);
+          for (int i = 0; i <= r; ++i) powers[i] = std::pow(L, i);
           for (int b = 0; b < nr; ++b) {
             // Jet index of (tangential order i, normal order b).
             auto jidx = [&](int i) { return ce.horizontal ? i + b * nr : b + i * nr; };
             std::fill(rhs_v.begin(), rhs_v.end(), 0.0);
             std::fill(rhs_s.begin(), rhs_s.end(), 0);
             for (int i = 0; i <= r; ++i) {
-              const double scale = std::pow(L, i);
+              const double scale = powers[i];
               for (int j = 0; j < ja.width(); ++j) {
                 rhs(i).v[at_a[j]] = scale * ja.values(jidx(i))[j];
                 rhs(i).s[at_a[j]] = ja.stores(jidx(i))[j];
@@ -389,10 +391,12 @@ HermiteExtraction hermite_extraction(const TMesh& mesh, int r) {
               assign_divided(gamma(b, i), cref(work), T0(i, i), w);
             }
           // Normal direction: sum_l c_{i,l} N(b, l) = h_nor^b gamma[b][i], triangular in b.
+          s.powers.resize(nr);
+          for (int b = 0; b < nr; ++b) s.powers[b] = std::pow(h_nor, b);
           for (int i = 0; i <= n; ++i)
             for (int b = 0; b < nr; ++b) {
               const int l = at_start ? b : n - b;
-              assign_scaled(work, std::pow(h_nor, b), cref(gamma(b, i)), w);
+              assign_scaled(work, s.powers[b], cref(gamma(b, i)), w);
               for (int bb = 0; bb < b; ++bb) {
                 const int ll = at_start ? bb : n - bb;
                 if (N(b, ll) != 0.0) subtract_scaled(work, N(b, ll), cref(col(ll)), w);
