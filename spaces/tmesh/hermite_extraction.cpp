@@ -243,7 +243,10 @@ HermiteExtraction hermite_extraction(const TMesh& mesh, int r) {
           T.reset(nr * (order + 1));
           rhs_v.resize(static_cast<std::size_t>(order + 1) * w);
           rhs_s.resize(rhs_v.size());
-          auto rhs = [&](int k) { return FormRef{rhs_v.data() + static_cast<std::size_t>(k) * w, rhs_s.data() + static_cast<std::size_t>(k) * w}; };
+          auto rhs = [&](int k) {
+            const std::size_t at = static_cast<std::size_t>(k) * w;
+            return FormRef{rhs_v.data() + at, rhs_s.data() + at};
+          };
           powers.resize(r + 1);
           for (int i = 0; i <= r; ++i) powers[i] = std::pow(L, i);
           for (int b = 0; b < nr; ++b) {
@@ -263,7 +266,8 @@ HermiteExtraction hermite_extraction(const TMesh& mesh, int r) {
               }
             }
             for (int i = r + 1; i <= ka; ++i) {
-              const int at = static_cast<int>(std::lower_bound(T.support.begin(), T.support.end(), ebase[e] + b * ne + (i - r - 1)) - T.support.begin());
+              const int dof = ebase[e] + b * ne + (i - r - 1);
+              const int at = static_cast<int>(std::lower_bound(T.support.begin(), T.support.end(), dof) - T.support.begin());
               rhs(i).v[at] = 1.0;
               rhs(i).s[at] = 1;
             }
@@ -345,7 +349,10 @@ HermiteExtraction hermite_extraction(const TMesh& mesh, int r) {
         s.work_v.resize(W);
         s.work_s.resize(W);
         auto coef = [&](int loc) { return FormRef{s.coef_v.data() + loc * W, s.coef_s.data() + loc * W}; };
-        auto gamma = [&](int b, int i) { return FormRef{s.gamma_v.data() + (b * (n + 1) + i) * W, s.gamma_s.data() + (b * (n + 1) + i) * W}; };
+        auto gamma = [&](int b, int i) {
+          const std::size_t at = (b * (n + 1) + i) * W;
+          return FormRef{s.gamma_v.data() + at, s.gamma_s.data() + at};
+        };
         auto col = [&](int l) { return FormRef{s.col_v.data() + l * W, s.col_s.data() + l * W}; };
         const FormRef work{s.work_v.data(), s.work_s.data()};
         auto cref = [](FormRef f) { return ConstFormRef{f.v, f.s}; };

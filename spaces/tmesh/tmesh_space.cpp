@@ -92,7 +92,8 @@ void times_table(const Eigen::VectorXd& b, const Eigen::MatrixXd& Y, Eigen::Matr
 template <int M>
 void column_dots(const Eigen::MatrixXd& X, const Eigen::MatrixXd& Y, double scale, Eigen::VectorXd& v) {
   const Eigen::Index m = X.rows(), q = X.cols();
-  v.noalias() = Eigen::Map<const Rows<M>>(X.data(), m, q).cwiseProduct(Eigen::Map<const Rows<M>>(Y.data(), m, q)).colwise().sum().transpose() * scale;
+  const Eigen::Map<const Rows<M>> XM(X.data(), m, q), YM(Y.data(), m, q);
+  v.noalias() = XM.cwiseProduct(YM).colwise().sum().transpose() * scale;
 }
 
 /// sums(i + j m) = Σ_k w_k X(i, k) Y(j, k).
