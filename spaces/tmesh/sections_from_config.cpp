@@ -65,12 +65,9 @@ TMesh with_sections_from_config(const TMesh& mesh, const ConfigNode& space, int 
     sections.push_back(s);
     return static_cast<int>(sections.size()) - 1;
   };
-  std::vector<TCell> cells = mesh.cells();
-  for (std::size_t c = 0; c < cells.size(); ++c) {
-    cells[c].section_s = index_of(pair[c][0]);
-    cells[c].section_t = index_of(pair[c][1]);
-  }
-  return TMesh(std::move(cells), std::move(sections), mesh.point(0, 0), mesh.unit());
+  std::vector<std::array<int, 2>> indices(pair.size());
+  for (std::size_t c = 0; c < pair.size(); ++c) indices[c] = {index_of(pair[c][0]), index_of(pair[c][1])};
+  return mesh.with_sections(indices, std::move(sections));
 }
 
 void check_trigonometric_cells(const TMesh& mesh, const ConfigNode& space) {

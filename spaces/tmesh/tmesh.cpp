@@ -2,8 +2,11 @@
 
 #include <algorithm>
 #include <array>
+#include <climits>
 #include <complex>
-#include <set>
+#include <map>
+#include <span>
+#include <tuple>
 #include <stdexcept>
 
 namespace iga {
@@ -13,26 +16,90 @@ namespace {
 /// Lattice units per base cell: room for 24 dyadic refinements.
 constexpr std::int64_t kBase = std::int64_t(1) << 24;
 
-/// A cell side on a line: [lo, hi] along the line; `positive` = the cell lies on the +y / +x side.
+/// A cell side on a line: [lo, hi] along the line.
 struct Side {
   std::int64_t lo, hi;
   int cell;
-  bool positive;
 };
 
-using Lines = std::map<std::int64_t, std::vector<Side>>;
+/// The cell sides on one line, split by the side of the line their cell lies on (+y / +x: `pos`).
+/// Cells do not overlap, so each list is disjoint; sorted by lo (hence by hi), which turns every
+/// query below into a binary search instead of a scan of the line.
+struct Line {
+  std::int64_t at = 0;
+  std::vector<Side> pos, neg;
+};
+
+/// First side of a sorted disjoint list with hi > a (hi >= a when `inclusive`).
+std::vector<Side>::const_iterator first_reaching(const std::vector<Side>& sides, std::int64_t a, bool inclusive) {
+  return std::partition_point(sides.begin(), sides.end(),
+                              [&](const Side& s) { return inclusive ? s.hi < a : s.hi <= a; });
+}
 
 bool strictly_inside(const std::vector<Side>& sides, std::int64_t a) {
-  for (const Side& s : sides)
-    if (s.lo < a && a < s.hi) return true;
-  return false;
+  const auto it = first_reaching(sides, a, false);
+  return it != sides.end() && it->lo < a;
 }
+
+bool strictly_inside(const Line& line, std::int64_t a) { return strictly_inside(line.pos, a) || strictly_inside(line.neg, a); }
 
 /// Some side covers the open segment (a, b) (sides never partially cover an edge segment).
 bool covers(const std::vector<Side>& sides, std::int64_t a, std::int64_t b) {
-  for (const Side& s : sides)
-    if (s.lo <= a && b <= s.hi) return true;
-  return false;
+  const auto it = first_reaching(sides, b, true);
+  return it != sides.end() && it->lo <= a;
+}
+
+bool covers(const Line& line, std::int64_t a, std::int64_t b) { return covers(line.pos, a, b) || covers(line.neg, a, b); }
+
+/// Lines of one direction, sorted by position; `line_of` finds one by binary search.
+std::vector<Line> make_lines(std::vector<std::pair<std::int64_t, Side>>& pos, std::vector<std::pair<std::int64_t, Side>>& neg) {
+  auto by_line = [](const auto& a, const auto& b) { return a.first != b.first ? a.first < b.first : a.second.lo < b.second.lo; };
+  std::sort(pos.begin(), pos.end(), by_line);
+  std::sort(neg.begin(), neg.end(), by_line);
+  std::vector<Line> lines;
+  std::size_t i = 0, j = 0;
+  while (i < pos.size() || j < neg.size()) {
+    const std::int64_t at = j == neg.size() || (i < pos.size() && pos[i].first < neg[j].first) ? pos[i].first : neg[j].first;
+    Line& line = lines.emplace_back();
+    line.at = at;
+    for (; i < pos.size() && pos[i].first == at; ++i) line.pos.push_back(pos[i].second);
+    for (; j < neg.size() && neg[j].first == at; ++j) line.neg.push_back(neg[j].second);
+  }
+  return lines;
+}
+
+const Line& line_of(const std::vector<Line>& lines, std::int64_t at) {
+  const auto it = std::partition_point(lines.begin(), lines.end(), [&](const Line& l) { return l.at < at; });
+  return *it;  // every vertex is a cell corner, so both of its lines carry sides
+}
+
+/// Calls f(side) for the sides of a sorted disjoint list that overlap (lo, hi) in positive length.
+template <class F>
+void for_overlapping(const std::vector<Side>& sides, std::int64_t lo, std::int64_t hi, F&& f) {
+  for (auto it = first_reaching(sides, lo, false); it != sides.end() && it->lo < hi; ++it) f(*it);
+}
+
+/// Throws when two cells overlap: a sweep over x keeps the y-intervals of the cells crossing the
+/// sweep line, which are disjoint exactly when no two of those cells overlap.
+void check_no_overlap(const std::vector<TCell>& cells) {
+  const int nc = static_cast<int>(cells.size());
+  std::vector<int> by_start(nc), by_end(nc);
+  for (int k = 0; k < nc; ++k) by_start[k] = by_end[k] = k;
+  std::sort(by_start.begin(), by_start.end(), [&](int a, int b) { return cells[a].x0 < cells[b].x0; });
+  std::sort(by_end.begin(), by_end.end(), [&](int a, int b) { return cells[a].x1 < cells[b].x1; });
+  std::map<std::int64_t, std::int64_t> active;  // y0 -> y1 of the cells crossing the sweep line
+  std::size_t e = 0;
+  for (int k : by_start) {
+    const TCell& c = cells[k];
+    for (; e < by_end.size() && cells[by_end[e]].x1 <= c.x0; ++e) {
+      const auto it = active.find(cells[by_end[e]].y0);
+      if (it != active.end() && it->second == cells[by_end[e]].y1) active.erase(it);
+    }
+    auto next = active.lower_bound(c.y0);
+    if (next != active.end() && next->first < c.y1) throw std::invalid_argument("T-mesh cells overlap");
+    if (next != active.begin() && std::prev(next)->second > c.y0) throw std::invalid_argument("T-mesh cells overlap");
+    active.emplace_hint(next, c.y0, c.y1);
+  }
 }
 
 std::vector<std::complex<double>> roots(const SectionSpec& s) {
@@ -98,12 +165,13 @@ TMesh TMesh::l_shape(Eigen::Vector2d lo, Eigen::Vector2d hi, int nx, int ny, con
   return TMesh(std::move(cells), {section}, lo, unit);
 }
 
-TMesh TMesh::refined(const std::vector<int>& which) const {
-  std::vector<char> split(cells_.size(), 0);
+std::vector<TCell> TMesh::split_cells(const std::vector<TCell>& cells, const std::vector<int>& which) {
+  std::vector<char> split(cells.size(), 0);
   for (int c : which) split.at(c) = 1;
   std::vector<TCell> out;
-  for (size_t k = 0; k < cells_.size(); ++k) {
-    const TCell& c = cells_[k];
+  out.reserve(cells.size() + 3 * which.size());
+  for (size_t k = 0; k < cells.size(); ++k) {
+    const TCell& c = cells[k];
     if (!split[k]) {
       out.push_back(c);
       continue;
@@ -114,7 +182,11 @@ TMesh TMesh::refined(const std::vector<int>& which) const {
                               {xm, c.x1, ym, c.y1}})
       out.push_back({a, b, p, q, c.section_s, c.section_t});
   }
-  return TMesh(std::move(out), sections_, origin_, unit_);
+  return out;
+}
+
+TMesh TMesh::refined(const std::vector<int>& which) const {
+  return TMesh(split_cells(cells_, which), sections_, origin_, unit_);
 }
 
 TMesh TMesh::refined_uniformly() const {
@@ -124,8 +196,8 @@ TMesh TMesh::refined_uniformly() const {
 }
 
 int TMesh::vertex_at(std::int64_t x, std::int64_t y) const {
-  auto it = vertex_id_.find({x, y});
-  return it == vertex_id_.end() ? -1 : it->second;
+  const auto it = std::lower_bound(vertex_index_.begin(), vertex_index_.end(), std::make_tuple(x, y, INT_MIN));
+  return it != vertex_index_.end() && std::get<0>(*it) == x && std::get<1>(*it) == y ? std::get<2>(*it) : -1;
 }
 
 int TMesh::num_non_t_vertices() const {
@@ -136,57 +208,77 @@ int TMesh::num_non_t_vertices() const {
 
 void TMesh::build_topology() {
   const int nc = num_cells();
-  // 1. Vertices: all cell corners, and the sides on each line.
-  Lines hlines, vlines;
+  check_no_overlap(cells_);
+  // 1. Vertices: all cell corners, numbered in order of first appearance (cell by cell, corners
+  // counterclockwise), which the DOF numbering follows.
   corner_.assign(4 * nc, -1);
-  for (int k = 0; k < nc; ++k) {
-    const TCell& c = cells_[k];
-    const std::int64_t xs[4] = {c.x0, c.x1, c.x1, c.x0}, ys[4] = {c.y0, c.y0, c.y1, c.y1};
-    for (int j = 0; j < 4; ++j) {
-      auto [it, fresh] = vertex_id_.try_emplace({xs[j], ys[j]}, static_cast<int>(vertices_.size()));
-      if (fresh) vertices_.push_back({xs[j], ys[j]});
-      corner_[4 * k + j] = it->second;
-    }
-    hlines[c.y0].push_back({c.x0, c.x1, k, true});
-    hlines[c.y1].push_back({c.x0, c.x1, k, false});
-    vlines[c.x0].push_back({c.y0, c.y1, k, true});
-    vlines[c.x1].push_back({c.y0, c.y1, k, false});
-  }
-  // Overlap check: sweep over cells sorted by x0.
   {
-    std::vector<int> order(nc);
-    for (int k = 0; k < nc; ++k) order[k] = k;
-    std::sort(order.begin(), order.end(), [&](int a, int b) { return cells_[a].x0 < cells_[b].x0; });
-    for (int a = 0; a < nc; ++a)
-      for (int b = a + 1; b < nc && cells_[order[b]].x0 < cells_[order[a]].x1; ++b) {
-        const TCell &p = cells_[order[a]], &q = cells_[order[b]];
-        if (std::max(p.y0, q.y0) < std::min(p.y1, q.y1)) throw std::invalid_argument("T-mesh cells overlap");
-      }
+    struct At {
+      std::int64_t x, y;
+      int slot;  // 4 cell + corner
+    };
+    std::vector<At> all(4 * static_cast<std::size_t>(nc));
+    for (int k = 0; k < nc; ++k) {
+      const TCell& c = cells_[k];
+      const std::int64_t xs[4] = {c.x0, c.x1, c.x1, c.x0}, ys[4] = {c.y0, c.y0, c.y1, c.y1};
+      for (int j = 0; j < 4; ++j) all[4 * k + j] = {xs[j], ys[j], 4 * k + j};
+    }
+    std::sort(all.begin(), all.end(),
+              [](const At& a, const At& b) { return a.x != b.x ? a.x < b.x : a.y != b.y ? a.y < b.y : a.slot < b.slot; });
+    std::vector<std::pair<int, std::size_t>> first;  // (first slot, start in `all`) per distinct point
+    for (std::size_t i = 0; i < all.size(); ++i)
+      if (i == 0 || all[i].x != all[i - 1].x || all[i].y != all[i - 1].y) first.emplace_back(all[i].slot, i);
+    std::sort(first.begin(), first.end());
+    vertices_.resize(first.size());
+    vertex_index_.resize(first.size());
+    for (std::size_t v = 0; v < first.size(); ++v) {
+      const std::size_t i0 = first[v].second;
+      vertices_[v].x = all[i0].x;
+      vertices_[v].y = all[i0].y;
+      for (std::size_t i = i0; i < all.size() && all[i].x == all[i0].x && all[i].y == all[i0].y; ++i)
+        corner_[all[i].slot] = static_cast<int>(v);
+    }
+    for (std::size_t v = 0; v < vertices_.size(); ++v) vertex_index_[v] = {vertices_[v].x, vertices_[v].y, static_cast<int>(v)};
+    std::sort(vertex_index_.begin(), vertex_index_.end());
+  }
+  // The sides on each line: horizontal lines y = c carry bottom (pos) and top (neg) sides.
+  std::vector<Line> hlines, vlines;
+  {
+    std::vector<std::pair<std::int64_t, Side>> pos, neg;
+    pos.reserve(nc);
+    neg.reserve(nc);
+    for (int k = 0; k < nc; ++k) {
+      pos.push_back({cells_[k].y0, {cells_[k].x0, cells_[k].x1, k}});
+      neg.push_back({cells_[k].y1, {cells_[k].x0, cells_[k].x1, k}});
+    }
+    hlines = make_lines(pos, neg);
+    pos.clear();
+    neg.clear();
+    for (int k = 0; k < nc; ++k) {
+      pos.push_back({cells_[k].x0, {cells_[k].y0, cells_[k].y1, k}});
+      neg.push_back({cells_[k].x1, {cells_[k].y0, cells_[k].y1, k}});
+    }
+    vlines = make_lines(pos, neg);
   }
 
   // 2. T-junctions (corrected rule), covered quadrants, boundary, regularity.
   for (TVertex& v : vertices_) {
-    const std::vector<Side>& hs = hlines[v.y];
-    const std::vector<Side>& vs = vlines[v.x];
+    const Line& hs = line_of(hlines, v.y);
+    const Line& vs = line_of(vlines, v.x);
     v.t_junction = strictly_inside(hs, v.x) || strictly_inside(vs, v.y);
     // Quadrants NE, NW, SW, SE covered near v.
     bool q[4] = {false, false, false, false};
-    for (const Side& s : hs) {
-      if (s.lo > v.x || v.x > s.hi) continue;
-      if (s.positive) {
-        if (v.x < s.hi) q[0] = true;
-        if (v.x > s.lo) q[1] = true;
-      } else {
-        if (v.x > s.lo) q[2] = true;
-        if (v.x < s.hi) q[3] = true;
-      }
+    for (auto it = first_reaching(hs.pos, v.x, true); it != hs.pos.end() && it->lo <= v.x; ++it) {
+      if (v.x < it->hi) q[0] = true;
+      if (v.x > it->lo) q[1] = true;
+    }
+    for (auto it = first_reaching(hs.neg, v.x, true); it != hs.neg.end() && it->lo <= v.x; ++it) {
+      if (v.x > it->lo) q[2] = true;
+      if (v.x < it->hi) q[3] = true;
     }
     // A vertex inside a vertical side has that cell on both of its quadrants on that side.
-    for (const Side& s : vs)
-      if (s.lo < v.y && v.y < s.hi) {
-        if (s.positive) q[0] = q[3] = true;
-        else q[1] = q[2] = true;
-      }
+    if (strictly_inside(vs.pos, v.y)) q[0] = q[3] = true;
+    if (strictly_inside(vs.neg, v.y)) q[1] = q[2] = true;
     const int covered = q[0] + q[1] + q[2] + q[3];
     v.boundary = covered < 4;
     // Regular: the covered quadrants form one cyclic run.
@@ -200,65 +292,74 @@ void TMesh::build_topology() {
   }
 
   // 3. Composite edges, line by line.
-  std::map<std::int64_t, std::vector<std::int64_t>> on_h, on_v;  // line -> coordinates of vertices on it
-  for (const TVertex& v : vertices_) {
-    on_h[v.y].push_back(v.x);
-    on_v[v.x].push_back(v.y);
+  struct OnLine {
+    std::int64_t line, at;
+    int vertex;
+    bool operator<(const OnLine& o) const { return line != o.line ? line < o.line : at < o.at; }
+  };
+  std::vector<OnLine> on_h(vertices_.size()), on_v(vertices_.size());  // vertices by line, then along it
+  for (std::size_t v = 0; v < vertices_.size(); ++v) {
+    on_h[v] = {vertices_[v].y, vertices_[v].x, static_cast<int>(v)};
+    on_v[v] = {vertices_[v].x, vertices_[v].y, static_cast<int>(v)};
   }
+  std::sort(on_h.begin(), on_h.end());
+  std::sort(on_v.begin(), on_v.end());
   side_edge_.assign(4 * nc, -1);
   side_boundary_.assign(4 * nc, 0);
   for (int dir = 0; dir < 2; ++dir) {
     const bool horizontal = dir == 0;
-    Lines& lines = horizontal ? hlines : vlines;
-    auto& on = horizontal ? on_h : on_v;
-    for (auto& [line, sides] : lines) {
-      std::vector<std::int64_t>& xs = on[line];
-      std::sort(xs.begin(), xs.end());
-      auto vid = [&](std::int64_t a) { return horizontal ? vertex_id_.at({a, line}) : vertex_id_.at({line, a}); };
+    const std::vector<Line>& lines = horizontal ? hlines : vlines;
+    const std::vector<OnLine>& on = horizontal ? on_h : on_v;
+    auto from = on.begin();
+    for (const Line& line : lines) {
+      from = std::lower_bound(from, on.end(), OnLine{line.at, INT64_MIN, -1});
+      const auto to = std::upper_bound(from, on.end(), OnLine{line.at, INT64_MAX, -1});
+      const std::span<const OnLine> xs(from, to);
       size_t i = 0;
       while (i + 1 < xs.size()) {
-        if (!covers(sides, xs[i], xs[i + 1])) {
+        if (!covers(line, xs[i].at, xs[i + 1].at)) {
           ++i;
           continue;
         }
         size_t j = i + 1;
-        while (j + 1 < xs.size() && strictly_inside(sides, xs[j])) ++j;
+        while (j + 1 < xs.size() && strictly_inside(line, xs[j].at)) ++j;
         CompositeEdge e;
         e.horizontal = horizontal;
-        e.line = line;
-        e.lo = xs[i];
-        e.hi = xs[j];
-        e.v_lo = vid(xs[i]);
-        e.v_hi = vid(xs[j]);
+        e.line = line.at;
+        e.lo = xs[i].at;
+        e.hi = xs[j].at;
+        e.v_lo = xs[i].vertex;
+        e.v_hi = xs[j].vertex;
         const int id = static_cast<int>(edges_.size());
         for (size_t k = i + 1; k < j; ++k) {
-          e.t_junctions.push_back(vid(xs[k]));
-          vertices_[vid(xs[k])].host_edge = id;
+          e.t_junctions.push_back(xs[k].vertex);
+          vertices_[xs[k].vertex].host_edge = id;
         }
-        std::vector<SectionSpec> along;
-        for (const Side& s : sides)
-          if (std::max(s.lo, e.lo) < std::min(s.hi, e.hi)) {
+        for (const bool positive : {true, false}) {
+          const std::vector<Side>& mine = positive ? line.pos : line.neg;
+          const std::vector<Side>& other = positive ? line.neg : line.pos;
+          for_overlapping(mine, e.lo, e.hi, [&](const Side& s) {
             e.cells.push_back(s.cell);
-            const TCell& c = cells_[s.cell];
-            along.push_back(sections_[horizontal ? c.section_s : c.section_t]);
             // Side index: bottom 0 (cell above a horizontal line), top 2, left 3, right 1.
-            const int side = horizontal ? (s.positive ? 0 : 2) : (s.positive ? 3 : 1);
+            const int side = horizontal ? (positive ? 0 : 2) : (positive ? 3 : 1);
             side_edge_[4 * s.cell + side] = id;
             // On the boundary when nothing faces it from the other side.
             std::int64_t faced = 0;
-            for (const Side& o : sides)
-              if (o.positive != s.positive) faced += std::max<std::int64_t>(0, std::min(o.hi, s.hi) - std::max(o.lo, s.lo));
+            for_overlapping(other, s.lo, s.hi, [&](const Side& o) { faced += std::min(o.hi, s.hi) - std::max(o.lo, s.lo); });
             side_boundary_[4 * s.cell + side] = faced == 0 ? 1 : 0;
             if (faced > 0 && faced < s.hi - s.lo) partial_boundary_ = true;
-          }
-        e.d = common_nonpolynomial_dimension(along);
+          });
+        }
+        std::sort(e.cells.begin(), e.cells.end());  // Delta_e in cell order
         edges_.push_back(std::move(e));
         i = j;
       }
+      from = to;
     }
   }
   for (int k = 0; k < 4 * nc; ++k)
     if (side_edge_[k] < 0) throw std::logic_error("T-mesh: a cell side lies in no composite edge");
+  assign_edge_dimensions();
 
   // 4. Dependencies and a topological order (Kahn); a leftover edge means a cycle.
   for (CompositeEdge& e : edges_)
@@ -290,6 +391,39 @@ void TMesh::build_topology() {
     edge_order_.clear();
     if (problem_.empty()) problem_ = "the T-junctions form a cycle (each extends a composite edge ending at the next)";
   }
+}
+
+void TMesh::assign_edge_dimensions() {
+  // d_e of the edges along one section space (the usual case), computed once per section.
+  std::vector<int> single_d(sections_.size(), -1);
+  std::vector<SectionSpec> along;
+  for (CompositeEdge& e : edges_) {
+    const auto section_along = [&](int cell) { return e.horizontal ? cells_[cell].section_s : cells_[cell].section_t; };
+    const int s0 = section_along(e.cells.front());
+    if (std::all_of(e.cells.begin(), e.cells.end(), [&](int c) { return section_along(c) == s0; })) {
+      if (single_d[s0] < 0) single_d[s0] = common_nonpolynomial_dimension({sections_[s0]});
+      e.d = single_d[s0];
+    } else {
+      along.clear();
+      for (int c : e.cells) along.push_back(sections_[section_along(c)]);
+      e.d = common_nonpolynomial_dimension(along);
+    }
+  }
+}
+
+TMesh TMesh::with_sections(const std::vector<std::array<int, 2>>& cell_sections, std::vector<SectionSpec> sections) const {
+  if (cell_sections.size() != cells_.size()) throw std::invalid_argument("T-mesh sections: one pair per cell expected");
+  TMesh out = *this;
+  out.sections_ = std::move(sections);
+  for (std::size_t c = 0; c < cells_.size(); ++c) {
+    const auto [s, t] = cell_sections[c];
+    if (s < 0 || t < 0 || s >= int(out.sections_.size()) || t >= int(out.sections_.size()))
+      throw std::invalid_argument("T-mesh cell refers to an unknown section space");
+    out.cells_[c].section_s = s;
+    out.cells_[c].section_t = t;
+  }
+  out.assign_edge_dimensions();  // the only part of the topology the sections enter
+  return out;
 }
 
 int TMesh::dimension_formula(int r1, int r2) const {

@@ -9,9 +9,11 @@
 /// Physical coordinates: x = origin.x + X * unit.x, y = origin.y + Y * unit.y for lattice (X, Y).
 
 #include <Eigen/Core>
+#include <array>
 #include <cstdint>
 #include <map>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "spaces/tmesh/section_space.hpp"
@@ -57,6 +59,13 @@ class TMesh {
 
   /// Split the given cells into four children (dyadic); children inherit the sections.
   TMesh refined(const std::vector<int>& cells) const;
+  /// The cells of refined(): each of `which` replaced by its four children, in place. Throws
+  /// std::invalid_argument when a cell is one lattice unit wide. Several refinements of cells
+  /// alone, then one TMesh, skip the topology of the meshes in between.
+  static std::vector<TCell> split_cells(const std::vector<TCell>& cells, const std::vector<int>& which);
+  /// The same cells (and topology) with other section spaces: `cell_sections[c]` = (s, t) indices
+  /// into `sections`. Only d_e is recomputed. Throws std::invalid_argument on a bad index.
+  TMesh with_sections(const std::vector<std::array<int, 2>>& cell_sections, std::vector<SectionSpec> sections) const;
   /// Split every cell.
   TMesh refined_uniformly() const;
 
@@ -101,6 +110,8 @@ class TMesh {
 
  private:
   void build_topology();
+  /// d_e of every composite edge from the sections of its cells.
+  void assign_edge_dimensions();
 
   std::vector<TCell> cells_;
   std::vector<SectionSpec> sections_;
@@ -108,7 +119,7 @@ class TMesh {
   std::int64_t bounds_[4] = {0, 0, 0, 0};
 
   std::vector<TVertex> vertices_;
-  std::map<std::pair<std::int64_t, std::int64_t>, int> vertex_id_;
+  std::vector<std::tuple<std::int64_t, std::int64_t, int>> vertex_index_;  ///< (x, y, id), sorted
   std::vector<CompositeEdge> edges_;
   std::vector<int> side_edge_, corner_;
   std::vector<char> side_boundary_;

@@ -48,21 +48,24 @@ SpacePtr make_tmesh_space(const ConfigNode& domain, const ConfigNode& space, int
                                                              : TMesh::l_shape(lo, hi, elements[0], elements[1], SectionSpec{}),
                                          space, n);
   if (auto rn = space.find("refine")) {
+    // Boxes select cells by their coordinates only: refine the cells, build the topology once.
+    std::vector<TCell> cells = mesh.cells();
+    const double X = double(mesh.bound(1) - mesh.bound(0)), Y = double(mesh.bound(3) - mesh.bound(2));
     for (const ConfigNode& box : rn->items()) {
       const std::vector<double> b = box.as_doubles();
       if (b.size() != 4) box.fail("expected a box [x0, y0, x1, y1] relative to the domain (got " + std::to_string(b.size()) + " numbers)");
       std::vector<int> inside;
-      for (int c = 0; c < mesh.num_cells(); ++c) {
-        const TCell& cell = mesh.cells()[c];
-        const double X = double(mesh.bound(1) - mesh.bound(0)), Y = double(mesh.bound(3) - mesh.bound(2));
+      for (int c = 0; c < static_cast<int>(cells.size()); ++c) {
+        const TCell& cell = cells[c];
         const double x0 = (cell.x0 - mesh.bound(0)) / X, x1 = (cell.x1 - mesh.bound(0)) / X;
         const double y0 = (cell.y0 - mesh.bound(2)) / Y, y1 = (cell.y1 - mesh.bound(2)) / Y;
         const double eps = 1e-12;
         if (x0 >= b[0] - eps && x1 <= b[2] + eps && y0 >= b[1] - eps && y1 <= b[3] + eps) inside.push_back(c);
       }
       if (inside.empty()) box.fail("no cell lies inside this box");
-      mesh = mesh.refined(inside);
+      cells = TMesh::split_cells(cells, inside);
     }
+    mesh = TMesh(std::move(cells), mesh.sections(), mesh.point(0, 0), mesh.unit());
   }
   if (auto rn = space.find("refine_near")) mesh = refine_near_from_config(std::move(mesh), *rn);
   for (int l = 0; l < level; ++l) mesh = mesh.refined_uniformly();

@@ -9,12 +9,18 @@
 #include <stdexcept>
 #include <string_view>
 #include <tuple>
+#include <type_traits>
 
 #include "config/errors.hpp"
 #include "spaces/push_forward.hpp"
 #include "spaces/tmesh/tmesh_refinement.hpp"
 
 namespace iga {
+
+namespace {
+/// Extra degree of the rules of trigonometric and hyperbolic sections on coarse cells.
+constexpr int kFullExtraDegree = 16;
+}  // namespace
 
 // ---------------------------------------------------------------------------------------------
 // Evaluator: Bernstein tables per (rule, cell size), then per cell only E_c times the tensor table.
@@ -27,8 +33,17 @@ class TMeshSpace::TMeshEvaluator final : public Space::Evaluator {
   /// of the Bernstein coefficients E_cᵀ c.
   void evaluate_function(int element, const QuadratureRule& rule, const Eigen::VectorXd& coefficients, unsigned flags,
                          PointValues& geometry, FunctionValues& out) override;
+  /// Points and the (diagonal) Jacobian only: no function values.
+  void evaluate_geometry(int element, const QuadratureRule& rule, PointValues& out) override;
+  /// Σ_q w_q N_a(x_q) = E_c b with b_ij = Σ_q w_q B_i(ξ_q) B_j(η_q): the tensor Bernstein sums
+  /// first, then one small matrix-vector product (no table of every active function).
+  void integrate_values(int element, const QuadratureRule& rule, const PointValues& geometry,
+                        const Eigen::VectorXd& weights, Eigen::VectorXd& local) override;
 
  private:
+  /// dofs, x and the Jacobian of `element` at the points of `rule`.
+  void fill_geometry(int element, const QuadratureRule& rule, PointValues& out) const;
+
   /// Reference derivatives (orders 0..2) of the Bernstein basis along x and y: (n+1) x q each.
   struct Tables {
     std::vector<Point2> points;
@@ -39,9 +54,59 @@ class TMeshSpace::TMeshEvaluator final : public Space::Evaluator {
   const TMeshSpace& space_;
   std::map<std::tuple<const QuadratureRule*, int, int, std::int64_t, std::int64_t>, Tables> cache_;
   Eigen::MatrixXd local_[6];
+  Eigen::VectorXd sums_, c_, b_;
+  Eigen::MatrixXd by_[3];
   ReferenceDerivatives ref_;
   std::vector<GeometryJet> jets_;
 };
+
+namespace {
+
+/// The evaluator's loops over the n+1 Bernstein functions of a direction, with n+1 as a template
+/// parameter for the usual sizes (fixed-size Eigen blocks unroll and vectorize; the tables have
+/// q columns) and Eigen::Dynamic for the others.
+template <class F>
+void with_size(int m, F&& f) {
+  switch (m) {
+    case 3: f(std::integral_constant<int, 3>{}); break;
+    case 4: f(std::integral_constant<int, 4>{}); break;
+    case 5: f(std::integral_constant<int, 5>{}); break;
+    case 6: f(std::integral_constant<int, 6>{}); break;
+    default: f(std::integral_constant<int, Eigen::Dynamic>{}); break;
+  }
+}
+
+template <int M>
+using Rows = Eigen::Matrix<double, M, Eigen::Dynamic>;
+
+/// by = B Y with B the m x m array of b (column-major), Y m x q.
+template <int M>
+void times_table(const Eigen::VectorXd& b, const Eigen::MatrixXd& Y, Eigen::MatrixXd& by) {
+  const Eigen::Index m = Y.rows(), q = Y.cols();
+  const Eigen::Map<const Eigen::Matrix<double, M, M>> B(b.data(), m, m);
+  by.resize(m, q);
+  Eigen::Map<Rows<M>>(by.data(), m, q).noalias() = B.lazyProduct(Eigen::Map<const Rows<M>>(Y.data(), m, q));
+}
+
+/// v(k) = scale Σ_i X(i, k) Y(i, k).
+template <int M>
+void column_dots(const Eigen::MatrixXd& X, const Eigen::MatrixXd& Y, double scale, Eigen::VectorXd& v) {
+  const Eigen::Index m = X.rows(), q = X.cols();
+  const Eigen::Map<const Rows<M>> XM(X.data(), m, q), YM(Y.data(), m, q);
+  v.noalias() = XM.cwiseProduct(YM).colwise().sum().transpose() * scale;
+}
+
+/// sums(i + j m) = Σ_k w_k X(i, k) Y(j, k).
+template <int M>
+void weighted_tensor_sums(const Eigen::MatrixXd& X, const Eigen::MatrixXd& Y, const Eigen::VectorXd& w, Eigen::VectorXd& sums) {
+  const Eigen::Index m = X.rows(), q = X.cols();
+  sums.setZero(m * m);
+  Eigen::Map<Eigen::Matrix<double, M, M>> S(sums.data(), m, m);
+  const Eigen::Map<const Rows<M>> XM(X.data(), m, q), YM(Y.data(), m, q);
+  for (Eigen::Index k = 0; k < q; ++k) S.noalias() += (w(k) * XM.col(k)) * YM.col(k).transpose();
+}
+
+}  // namespace
 
 const TMeshSpace::TMeshEvaluator::Tables& TMeshSpace::TMeshEvaluator::tables(const QuadratureRule& rule,
                                                                            const TCell& cell) {
@@ -108,6 +173,34 @@ void TMeshSpace::TMeshEvaluator::evaluate(int element, const QuadratureRule& rul
   push_forward(jets_, ref_, flags, out);
 }
 
+void TMeshSpace::TMeshEvaluator::fill_geometry(int element, const QuadratureRule& rule, PointValues& out) const {
+  Point2 lo, hi;
+  space_.cell_box(element, lo, hi);
+  const Point2 h = hi - lo;
+  const int q = rule.size();
+  out.dofs = space_.extraction().dofs[element];
+  Eigen::Matrix2d J = Eigen::Matrix2d::Zero();
+  J(0, 0) = h.x();
+  J(1, 1) = h.y();
+  out.jacobian.assign(q, J);
+  out.x.resize(2, q);
+  for (int k = 0; k < q; ++k) out.x.col(k) = lo + h.cwiseProduct(rule.points[k]);
+}
+
+void TMeshSpace::TMeshEvaluator::evaluate_geometry(int element, const QuadratureRule& rule, PointValues& out) {
+  fill_geometry(element, rule, out);
+}
+
+void TMeshSpace::TMeshEvaluator::integrate_values(int element, const QuadratureRule& rule, const PointValues&,
+                                                  const Eigen::VectorXd& weights, Eigen::VectorXd& local) {
+  const Tables& t = tables(rule, space_.mesh().cells()[element]);
+  const Eigen::MatrixXd& X = t.bx[0];
+  const Eigen::MatrixXd& Y = t.by[0];
+  const int m = static_cast<int>(X.rows());
+  with_size(m, [&](auto size) { weighted_tensor_sums<decltype(size)::value>(X, Y, weights, sums_); });
+  local.noalias() = space_.extraction().matrix[element].lazyProduct(sums_);
+}
+
 void TMeshSpace::TMeshEvaluator::evaluate_function(int element, const QuadratureRule& rule,
                                                    const Eigen::VectorXd& coefficients, unsigned flags,
                                                    PointValues& geometry, FunctionValues& out) {
@@ -115,41 +208,37 @@ void TMeshSpace::TMeshEvaluator::evaluate_function(int element, const Quadrature
   // u_h on the cell in its tensor Bernstein basis first: b = E_cᵀ c (index i + j (n+1)), then
   // ∂ξ^a ∂η^b u_h(x_k) = X_a(:, k)ᵀ B Y_b(:, k) with B = b as an (n+1) x (n+1) array, from the
   // cached 1D tables: no table of every active function (what the error norms would otherwise pay).
-  Point2 lo, hi;
-  space_.cell_box(element, lo, hi);
-  const Point2 h = hi - lo;
   const TCell& cell = space_.mesh().cells()[element];
   const Tables& t = tables(rule, cell);
   const int q = rule.size();
-  geometry.dofs = space_.extraction().dofs[element];
+  fill_geometry(element, rule, geometry);
+  Point2 lo, hi;
+  space_.cell_box(element, lo, hi);
+  const Point2 h = hi - lo;
   const Eigen::MatrixXd& E = space_.extraction().matrix[element];
-  Eigen::VectorXd c(geometry.num_functions());
-  for (int a = 0; a < c.size(); ++a) c(a) = coefficients(geometry.dofs[a]);
-  const Eigen::VectorXd b = E.transpose() * c;
+  c_.resize(geometry.num_functions());
+  for (int a = 0; a < c_.size(); ++a) c_(a) = coefficients(geometry.dofs[a]);
+  b_.noalias() = E.transpose().lazyProduct(c_);
+  const Eigen::VectorXd& b = b_;
   {
     const int m = space_.section().n + 1;
-    const Eigen::Map<const Eigen::MatrixXd> B(b.data(), m, m);
-    Eigen::Matrix2d J = Eigen::Matrix2d::Zero();
-    J(0, 0) = h.x();
-    J(1, 1) = h.y();
-    geometry.x.resize(2, q);
-    geometry.jacobian.assign(q, J);
-    for (int k = 0; k < q; ++k) geometry.x.col(k) = lo + h.cwiseProduct(rule.points[k]);
     const bool grads = (flags & (update_gradients | update_hessians)) != 0, hess = (flags & update_hessians) != 0;
-    Eigen::MatrixXd by[3];  // B Y_d
-    for (int d = 0; d <= (hess ? 2 : grads ? 1 : 0); ++d) by[d].noalias() = B * t.by[d];
-    auto derivative = [&](int ax, int ay, double scale) -> Eigen::VectorXd {
-      return (t.bx[ax].cwiseProduct(by[ay]).colwise().sum().transpose()) * scale;
+    // B Y_d: (n+1) x (n+1) times (n+1) x q, coefficient-based (GEMM packing costs more at this size).
+    with_size(m, [&](auto size) {
+      for (int d = 0; d <= (hess ? 2 : grads ? 1 : 0); ++d) times_table<decltype(size)::value>(b, t.by[d], by_[d]);
+    });
+    auto derivative = [&](int ax, int ay, double scale, Eigen::VectorXd& v) {
+      with_size(m, [&](auto size) { column_dots<decltype(size)::value>(t.bx[ax], by_[ay], scale, v); });
     };
-    if ((flags & update_values) || higher) out.value = derivative(0, 0, 1.0);
+    if ((flags & update_values) || higher) derivative(0, 0, 1.0, out.value);
     if (flags & update_gradients) {
-      out.dx = derivative(1, 0, 1.0 / h.x());
-      out.dy = derivative(0, 1, 1.0 / h.y());
+      derivative(1, 0, 1.0 / h.x(), out.dx);
+      derivative(0, 1, 1.0 / h.y(), out.dy);
     }
     if (flags & update_hessians) {
-      out.dxx = derivative(2, 0, 1.0 / (h.x() * h.x()));
-      out.dxy = derivative(1, 1, 1.0 / (h.x() * h.y()));
-      out.dyy = derivative(0, 2, 1.0 / (h.y() * h.y()));
+      derivative(2, 0, 1.0 / (h.x() * h.x()), out.dxx);
+      derivative(1, 1, 1.0 / (h.x() * h.y()), out.dxy);
+      derivative(0, 2, 1.0 / (h.y() * h.y()), out.dyy);
     }
   }
   if (!higher) return;
@@ -196,9 +285,20 @@ TMeshSpace::TMeshSpace(TMesh mesh, int regularity, bool rectangular, std::string
     if (!bernstein_.count(ky)) bernstein_.emplace(ky, SectionBernstein(mesh_.sections()[ky.first], mesh_.height(c)));
   }
   for (int c = 0; c < mesh_.num_cells(); ++c) mesh_size_ = std::max(mesh_size_, std::hypot(mesh_.width(c), mesh_.height(c)));
-  // Side integrals with the 1D Gauss rule the assembly's tensor rule is made of.
+  // Extra degree of every rule for the largest w h of a non-polynomial section.
+  double wh = 0.0;
+  for (int c = 0; c < mesh_.num_cells(); ++c) {
+    const SectionSpec &sx = mesh_.sections()[mesh_.cells()[c].section_s], &sy = mesh_.sections()[mesh_.cells()[c].section_t];
+    if (sx.family != SectionFamily::polynomial) wh = std::max(wh, sx.w * mesh_.width(c));
+    if (sy.family != SectionFamily::polynomial) wh = std::max(wh, sy.w * mesh_.height(c));
+  }
+  extra_degree_ = non_polynomial_extra_degree(wh);
+  // Side integrals with the 1D Gauss rule of the assembly's tensor rule on coarse cells, and with
+  // that rule's 8 extra points on fine ones too: the closed-form matrices go to the double-double
+  // solve, where a quadrature error of 1e-17 is not round-off (the plate's L2 error moved by
+  // 2e-4 relative with 4 extra points at w h = pi/128). They are computed once per side length.
   const int n = section().n;
-  const QuadratureRule gauss = gauss_legendre_for_degree(2 * n + 1 + extra_points());
+  const QuadratureRule gauss = gauss_legendre_for_degree(2 * n + 1 + (extra_degree_ > 0 ? kFullExtraDegree : 0));
   for (const auto& [key, b] : bernstein_) {
     SideIntegrals& s = side_integrals_[key];
     for (auto& m : s.m) m.setZero(b.n() + 1, b.n() + 1);
@@ -442,23 +542,44 @@ void TMeshSpace::normalize_basis() {
   // and makes mass and stiffness matrices needlessly ill-conditioned. Scaling every function to
   // largest Bernstein coefficient 1 (its sup norm up to a factor, since the Bernstein basis is a
   // nonnegative partition of unity) keeps the same space with O(1) functions.
+  // Row maxima per cell in parallel, their maximum per function serially (a function spans
+  // several cells), then the rows rescaled in parallel.
+  const int nc = static_cast<int>(extraction_.matrix.size());
+  std::vector<std::size_t> first(nc + 1, 0);
+  for (int c = 0; c < nc; ++c) first[c + 1] = first[c] + extraction_.dofs[c].size();
+  std::vector<double> row_max(first[nc]);
+#pragma omp parallel for schedule(static) if (nc >= 512)
+  for (int c = 0; c < nc; ++c)
+    for (std::size_t a = 0; a < extraction_.dofs[c].size(); ++a)
+      row_max[first[c] + a] = extraction_.matrix[c].row(static_cast<Eigen::Index>(a)).cwiseAbs().maxCoeff();
   std::vector<double> scale(extraction_.dimension, 0.0);
-  for (std::size_t c = 0; c < extraction_.matrix.size(); ++c)
+  for (int c = 0; c < nc; ++c)
     for (std::size_t a = 0; a < extraction_.dofs[c].size(); ++a) {
       double& s = scale[extraction_.dofs[c][a]];
-      s = std::max(s, extraction_.matrix[c].row(static_cast<Eigen::Index>(a)).cwiseAbs().maxCoeff());
+      s = std::max(s, row_max[first[c] + a]);
     }
-  for (std::size_t c = 0; c < extraction_.matrix.size(); ++c)
+#pragma omp parallel for schedule(static) if (nc >= 512)
+  for (int c = 0; c < nc; ++c)
     for (std::size_t a = 0; a < extraction_.dofs[c].size(); ++a) {
       const double s = scale[extraction_.dofs[c][a]];
       if (s > 0.0) extraction_.matrix[c].row(static_cast<Eigen::Index>(a)) /= s;
     }
 }
 
-int TMeshSpace::extra_points() const {
-  for (const SectionSpec& s : mesh_.sections())
-    if (s.family != SectionFamily::polynomial) return 16;
-  return 0;
+int TMeshSpace::extra_points() const { return extra_degree_; }
+
+int non_polynomial_extra_degree(double wh) {
+  // A Gauss rule exact to degree 2n + 1 + e leaves the part of B_i B_k beyond that degree, whose
+  // Taylor coefficients are below (w h)^(e+1) / (e+1)! (scaled G-basis, notes §3.1); below 1e-17
+  // the rule is exact to double round-off. Coarse cells keep the ceiling (8 more points per
+  // direction), where that bound is 6e-12 at w h = pi/2.
+  if (!(wh > 0.0)) return 0;
+  for (int e = 2; e < kFullExtraDegree; e += 2) {
+    double term = 1.0;  // (w h)^(e+1) / (e+1)!
+    for (int k = 1; k <= e + 1; ++k) term *= wh / k;
+    if (term <= 1e-17) return e;
+  }
+  return kFullExtraDegree;
 }
 
 std::unique_ptr<Space::Evaluator> TMeshSpace::make_evaluator() const { return std::make_unique<TMeshEvaluator>(*this); }

@@ -22,6 +22,11 @@
 
 namespace iga {
 
+/// Degree a Gauss rule needs beyond the polynomial degree of the integrand for trigonometric or
+/// hyperbolic sections with largest w h = `wh` to stay exact to round-off: the smallest even e with
+/// (w h)^(e+1) / (e+1)! <= 1e-17, at most 16; 0 for wh = 0 (polynomial sections).
+int non_polynomial_extra_degree(double wh);
+
 class TMeshSpace final : public Space {
  public:
   /// C^r space on `mesh` (see hermite_extraction.hpp for the conditions on n). `rectangular` names the boundary parts
@@ -45,16 +50,18 @@ class TMeshSpace final : public Space {
   /// Cells are tensor products of section spaces under a diagonal scaling: any derivative is exact.
   bool higher_derivatives() const override { return true; }
 
-  /// Tensor Gauss rule exact for `degree`; for trigonometric / hyperbolic sections 8 more points
-  /// per direction, since Gauss rules are not exact for those integrands (notes P6).
+  /// Tensor Gauss rule exact for `degree`; for trigonometric / hyperbolic sections exact for a
+  /// higher degree, since Gauss rules are not exact for those integrands (notes P6): as many more
+  /// as make the rule exact to round-off for the largest w h of the mesh
+  /// (non_polynomial_extra_degree), at most 16 (8 points per direction).
   RulePtr quadrature(int element, int degree) const override;
   RulePtr edge_quadrature(int element, int edge, int degree) const override;
 
   /// The cell map is a diagonal scaling and the local basis a tensor product, so every form is a
   /// sum of Kronecker products of 1D integrals ∫ B_i^(a) B_k^(b) over the cell's sides: E_c K_c E_cᵀ
   /// with K_c from side integrals computed once per (section, side length) with the Gauss rule of
-  /// assembly (2n + 1, plus the extra points of non-polynomial sections), i.e. the tensor rule's
-  /// sums, separated. Accumulated in long double.
+  /// assembly (2n + 1, plus 16 for non-polynomial sections: the coarse-cell rule, i.e. the tensor
+  /// rule's sums, separated; finer than quadrature() on fine cells). Accumulated in long double.
   bool closed_form_element_matrix(int element, BilinearForm form, Eigen::MatrixXd& local) const override;
   bool closed_form_element_matrix_extended(int element, BilinearForm form,
                                            Eigen::Matrix<long double, Eigen::Dynamic, Eigen::Dynamic>& local) const override;
@@ -114,6 +121,7 @@ class TMeshSpace final : public Space {
   /// Distinguishes spaces in the per-thread cache of double-double cell matrices.
   std::uint64_t instance_id_ = 0;
   double mesh_size_ = 0.0;
+  int extra_degree_ = 0;
 
   mutable std::mutex rule_mutex_;
   mutable std::map<int, RulePtr> cell_rules_;

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <iostream>
+#include <numbers>
 
 #include "assembly/integrators.hpp"
 #include "spaces/element_values.hpp"
@@ -84,6 +85,41 @@ TEST(TMeshClosedForm, DoubleDoubleMatchesTheQuadratureAndLongDoubleMatrices) {
       // Long double sums of up to a few hundred terms: their rounding, far below double's.
       EXPECT_LT(worst_long_double, 1e-16);
     }
+  }
+}
+
+TEST(TMeshClosedForm, FineCellsNeedFewerExtraPointsAndStayExact) {
+  // The extra degree of non-polynomial rules follows the largest w h: the smallest even e with
+  // (w h)^(e+1) / (e+1)! <= 1e-17, 16 at most, none for polynomial sections.
+  EXPECT_EQ(non_polynomial_extra_degree(0.0), 0);
+  EXPECT_EQ(non_polynomial_extra_degree(std::numbers::pi / 2), 16);
+  EXPECT_EQ(non_polynomial_extra_degree(std::numbers::pi / 128), 8);
+  for (double wh = 1e-4; wh < 4.0; wh *= 1.3) {
+    const int e = non_polynomial_extra_degree(wh);
+    double bound = 1.0;
+    for (int k = 1; k <= e + 1; ++k) bound *= wh / k;
+    if (e < 16) EXPECT_LE(bound, 1e-17) << "w h = " << wh;
+    EXPECT_GE(e, non_polynomial_extra_degree(wh / 1.3));
+  }
+  // On a fine trigonometric mesh the shorter rule still gives the closed-form matrices (whose
+  // side integrals keep the full rule) to round-off.
+  const std::string fine = "domain: {type: rectangle, min: [0, 0], max: [3.0, 2.0]}\n"
+                           "space: {type: tmesh, section: trig, n: 3, regularity: 1, frequency: 1, elements: [48, 32]}\n";
+  const SpacePtr s = test::space_from_yaml(fine);
+  const auto& space = dynamic_cast<const TMeshSpace&>(*s);
+  const int degree = 2 * space.degree() + 1;
+  EXPECT_LT(space.quadrature(0, degree)->size(), tensor_gauss(degree + 16).size());
+  ElementValues ev(space, update_values | update_gradients | update_hessians);
+  for (BilinearForm form : {BilinearForm::mass, BilinearForm::bilaplace}) {
+    double worst = 0.0;
+    for (int e = 0; e < space.num_elements(); e += 97) {
+      ev.reinit(e, *space.quadrature(e, degree));
+      MatrixXld quadrature, closed;
+      element_matrix_extended(form, ev, quadrature);
+      ASSERT_TRUE(space.closed_form_element_matrix_extended(e, form, closed));
+      worst = std::max(worst, static_cast<double>((closed - quadrature).cwiseAbs().maxCoeff() / quadrature.cwiseAbs().maxCoeff()));
+    }
+    EXPECT_LT(worst, 1e-13) << "form " << static_cast<int>(form);
   }
 }
 

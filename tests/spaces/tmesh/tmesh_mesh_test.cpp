@@ -64,6 +64,17 @@ TEST(TmeshMesh, PaperFigure7Spaces) {
   EXPECT_EQ(s2.dimension_formula(1, 1), 132);
   EXPECT_EQ(brute_force_dimension(s2, 1, 1), 132);
   EXPECT_EQ(brute_force_dimension(s1, 1, 1), 148);
+  // S2 again from S1 with other sections (topology kept, d_e recomputed), and back.
+  std::vector<std::array<int, 2>> sections(s1.num_cells(), {0, 0});
+  sections[0] = {1, 1};
+  sections[1] = {2, 2};
+  const TMesh s2_from_s1 = s1.with_sections(sections, {poly(5), trig(5, 1.9), hyp(5, 3.0)});
+  EXPECT_EQ(count_edges(s2_from_s1, 0), 4);
+  EXPECT_EQ(s2_from_s1.dimension_formula(1, 1), 132);
+  const TMesh s1_again = s2_from_s1.with_sections(std::vector<std::array<int, 2>>(s1.num_cells(), {0, 0}), {hyp(5, 3.0)});
+  EXPECT_EQ(count_edges(s1_again, 2), 18);
+  EXPECT_EQ(s1_again.dimension_formula(1, 1), 148);
+  EXPECT_THROW(s1.with_sections(sections, {poly(5)}), std::invalid_argument);
 }
 
 TEST(TmeshMesh, Figure7OtherSpaces) {
@@ -101,6 +112,13 @@ TEST(TmeshMesh, RejectsCyclesAndCornerContact) {
   const TMesh corner = mesh_of({{0, 1, 0, 1}, {1, 2, 1, 2}}, {trig(3)});
   EXPECT_NE(corner.admissibility_problem().find("not regular"), std::string::npos);
   EXPECT_THROW(mesh_of({{0, 2, 0, 2}, {1, 3, 1, 3}}, {trig(3)}), std::invalid_argument);
+  // Overlaps the sweep must see: containment, the same cell twice, a cell straddling two others,
+  // one starting inside another's x-range; cells that only touch are fine.
+  EXPECT_THROW(mesh_of({{0, 4, 0, 4}, {1, 2, 1, 2}}, {trig(3)}), std::invalid_argument);
+  EXPECT_THROW(mesh_of({{0, 1, 0, 1}, {0, 1, 0, 1}}, {trig(3)}), std::invalid_argument);
+  EXPECT_THROW(mesh_of({{0, 1, 0, 1}, {0, 1, 2, 3}, {0, 1, 1, 3}}, {trig(3)}), std::invalid_argument);
+  EXPECT_THROW(mesh_of({{0, 1, 0, 1}, {1, 2, 0, 1}, {0, 3, 3, 4}, {2, 3, 2, 5}}, {trig(3)}), std::invalid_argument);
+  EXPECT_NO_THROW(mesh_of({{0, 1, 0, 1}, {1, 2, 0, 1}, {0, 2, 1, 2}}, {trig(3)}));
 }
 
 TEST(TmeshMesh, DyadicHierarchicalMesh) {
@@ -109,6 +127,11 @@ TEST(TmeshMesh, DyadicHierarchicalMesh) {
   EXPECT_EQ(m.num_non_t_vertices(), 13);
   EXPECT_EQ(int(m.vertices().size()) - m.num_non_t_vertices(), 6);
   EXPECT_EQ(m.edges().size(), 22u);
+  // Vertex lookup on the lattice: corners and T-junctions, nothing between them.
+  for (int v = 0; v < static_cast<int>(m.vertices().size()); ++v) EXPECT_EQ(m.vertex_at(m.vertices()[v].x, m.vertices()[v].y), v);
+  ASSERT_GE(m.vertex_at(2 * U, 3 * U), 0);
+  EXPECT_TRUE(m.vertices()[m.vertex_at(2 * U, 3 * U)].t_junction);  // inside the right side of [0, 2] x [2, 4]
+  EXPECT_EQ(m.vertex_at(U, U / 2), -1);
   EXPECT_EQ(m.dimension_formula(1, 1), 52);
   EXPECT_EQ(m.dimension_formula(0, 0), 97);
   EXPECT_EQ(mesh_of(dyadic(), {trig(2)}, pi / 8).dimension_formula(0, 0), 45);
@@ -121,6 +144,15 @@ TEST(TmeshMesh, DyadicHierarchicalMesh) {
   EXPECT_EQ(fine.admissibility_problem(), "");
   EXPECT_EQ(fine.dimension_formula(1, 1), brute_force_dimension(fine, 1, 1));
   const TMesh local = m.refined({0, 6});
+  // Splitting cells alone, twice, then one mesh: the mesh of two refinements.
+  const TMesh twice = m.refined({0, 6}).refined({1, 7});
+  const TMesh at_once(TMesh::split_cells(TMesh::split_cells(m.cells(), {0, 6}), {1, 7}), m.sections(), {0, 0}, m.unit());
+  ASSERT_EQ(at_once.num_cells(), twice.num_cells());
+  for (int c = 0; c < twice.num_cells(); ++c) {
+    const TCell &a = at_once.cells()[c], &b = twice.cells()[c];
+    EXPECT_TRUE(a.x0 == b.x0 && a.x1 == b.x1 && a.y0 == b.y0 && a.y1 == b.y1) << "cell " << c;
+  }
+  EXPECT_EQ(at_once.edges().size(), twice.edges().size());
   EXPECT_EQ(local.admissibility_problem(), "");
   EXPECT_EQ(local.dimension_formula(1, 1), brute_force_dimension(local, 1, 1));
   const TMesh local2 = mesh_of(dyadic(), {poly(2)}, pi / 8).refined({1, 4});

@@ -233,3 +233,27 @@ TEST(TmeshSpace, PaperMixedSpaceS2) {
     EXPECT_GT(independence(space, 5), 1e-10);
   }
 }
+
+TEST(TmeshSpace, GeometryAndLoadIntegrationAgreeWithTheFullEvaluation) {
+  // evaluate_geometry / integrate_values skip the table of every active function; they must give
+  // what evaluate gives: the same points, Jacobians and DOFs, and Σ_q w_q N_a(x_q) to round-off.
+  const SpacePtr space = test::space_from_yaml(dyadic_yaml("trig", 3, 1), 1);
+  auto full = space->make_evaluator(), fast = space->make_evaluator();
+  const RulePtr rule = space->quadrature(0, 7);
+  Eigen::VectorXd w(rule->size());
+  for (int k = 0; k < w.size(); ++k) w(k) = std::cos(3.0 * k) + 1.5;  // any weights
+  PointValues pv, geometry;
+  Eigen::VectorXd local;
+  for (int e = 0; e < space->num_elements(); ++e) {
+    full->evaluate(e, *rule, update_values, pv);
+    fast->evaluate_geometry(e, *rule, geometry);
+    ASSERT_EQ(geometry.dofs, pv.dofs);
+    ASSERT_EQ(geometry.num_points(), pv.num_points());
+    EXPECT_LE((geometry.x - pv.x).cwiseAbs().maxCoeff(), 1e-15 * pi);
+    for (int k = 0; k < pv.num_points(); ++k) EXPECT_EQ(geometry.jacobian[k], pv.jacobian[k]);
+    fast->integrate_values(e, *rule, geometry, w, local);
+    const Eigen::VectorXd expected = pv.value * w;
+    // Basis values are O(1) (largest Bernstein coefficient 1), |w| <= 2.5: sums of q terms.
+    EXPECT_LE((local - expected).cwiseAbs().maxCoeff(), 1e-14 * rule->size()) << "element " << e;
+  }
+}
