@@ -81,7 +81,7 @@ const Ws4PieceEvaluation::RuleTables& Ws4PieceEvaluation::tables(const Quadratur
   const int q = rule.size();
   t.points = rule.points;
   t.reference.resize(2, q);
-  t.monomials.resize(kMonomials, q);
+  t.monomials.resize(q, kMonomials);
   t.regions.clear();
   t.runs.clear();
   std::vector<int> slot(basis.split().regions().size(), -1);
@@ -99,7 +99,7 @@ const Ws4PieceEvaluation::RuleTables& Ws4PieceEvaluation::tables(const Quadratur
     const Point2 x = rule.points[k] - basis.center(r);
     for (int a = 0; a <= Poly4::max_degree; ++a)
       for (int b = 0; a + b <= Poly4::max_degree; ++b)
-        t.monomials(Poly4::index(a, b), k) = std::pow(x.x(), a) * std::pow(x.y(), b);
+        t.monomials(k, Poly4::index(a, b)) = std::pow(x.x(), a) * std::pow(x.y(), b);
   }
   return t;
 }
@@ -142,22 +142,24 @@ void Ws4PieceEvaluation::evaluate_function(int element, const QuadratureRule& ru
   const int rows = hess ? 6 : grads ? 3 : 1;
   const Eigen::Matrix2d g = space_.jacobian(element).inverse();
   const int q = rule.size();
-  run_values_.resize(6, q);
+  // Row r of the output over the points of a run: Σ_m D(r, m) monomial_m, an axpy over contiguous
+  // points per monomial (the value uses all 15 monomials, first derivatives 10, second ones 6).
+  Eigen::VectorXd* targets[6] = {&out.value, &out.dx, &out.dy, &out.dxx, &out.dxy, &out.dyy};
+  for (int r = 0; r < rows; ++r) targets[r]->resize(q);
+  constexpr int used[6] = {15, 10, 10, 6, 6, 6};
   for (const auto& [s, first, count] : t.runs) {
     physical_derivatives(region_coefficients_.col(s).data(), g, rows, derivatives_);
-    // A few dozen points per run: the coefficient-based product beats a blocked GEMM's packing.
-    run_values_.block(0, first, rows, count).noalias() =
-        derivatives_.topRows(rows).lazyProduct(t.monomials.middleCols(first, count));
-  }
-  if (flags & update_values) out.value = run_values_.row(0).transpose();
-  if (flags & update_gradients) {
-    out.dx = run_values_.row(1).transpose();
-    out.dy = run_values_.row(2).transpose();
-  }
-  if (hess) {
-    out.dxx = run_values_.row(3).transpose();
-    out.dxy = run_values_.row(4).transpose();
-    out.dyy = run_values_.row(5).transpose();
+    for (int r = 0; r < rows; ++r) {
+      double* o = targets[r]->data() + first;
+      const double* m0 = t.monomials.col(0).data() + first;
+      const double d0 = derivatives_(r, 0);
+      for (int k = 0; k < count; ++k) o[k] = d0 * m0[k];
+      for (int m = 1; m < used[r]; ++m) {
+        const double* mm = t.monomials.col(m).data() + first;
+        const double dm = derivatives_(r, m);
+        for (int k = 0; k < count; ++k) o[k] += dm * mm[k];
+      }
+    }
   }
 }
 
@@ -167,7 +169,7 @@ void Ws4PieceEvaluation::integrate_values(int element, const QuadratureRule& rul
   // Weighted monomial moments per region, then Σ_r (pieces of r)ᵀ moments.
   region_coefficients_.setZero(kMonomials, static_cast<Eigen::Index>(t.regions.size()));
   for (const auto& [s, first, count] : t.runs)
-    region_coefficients_.col(s).noalias() += t.monomials.middleCols(first, count) * weights.segment(first, count);
+    region_coefficients_.col(s).noalias() += t.monomials.middleRows(first, count).transpose() * weights.segment(first, count);
   const auto& pieces = region_pieces();
   b_.setZero();
   for (size_t s = 0; s < t.regions.size(); ++s) {
