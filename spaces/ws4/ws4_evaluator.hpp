@@ -46,6 +46,8 @@ class Ws4PieceEvaluation {
     /// Monomials (x - center(r))^a (y - center(r))^b at each point: column Poly4::index(a, b),
     /// row = point, so that each monomial is contiguous over the points of a run.
     Eigen::Matrix<double, Eigen::Dynamic, 15> monomials;
+    /// The same points relative to the center of their region: column 0 x, column 1 y.
+    Eigen::Matrix<double, Eigen::Dynamic, 2> local;
     std::vector<int> regions;  ///< distinct regions holding points, in order of first appearance
     /// Maximal runs of consecutive points in one region: (slot in `regions`, first point, count).
     std::vector<std::array<int, 3>> runs;
