@@ -43,13 +43,15 @@ class ElementMatrixCache {
   void get(int cls, BilinearForm form, DoubleDoubleMatrix& local, Compute&& compute) const {
     if (class_size_[cls] < 2) return compute(local);
     const std::size_t slot = static_cast<std::size_t>(cls) * kForms + static_cast<std::size_t>(form);
+    std::shared_ptr<const DoubleDoubleMatrix> hit;
     {
       std::lock_guard<std::mutex> lock(mutex_);
       if (entries_.empty()) entries_.resize(class_size_.size() * kForms);
-      if (const auto& hit = entries_[slot]) {
-        local = *hit;
-        return;
-      }
+      hit = entries_[slot];
+    }
+    if (hit) {  // copied outside the lock: the other threads copy theirs meanwhile
+      local = *hit;
+      return;
     }
     auto fresh = std::make_shared<DoubleDoubleMatrix>();
     compute(*fresh);
