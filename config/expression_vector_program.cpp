@@ -3,6 +3,7 @@
 #include <cmath>
 #include <map>
 #include <string>
+#include <tuple>
 
 namespace iga::expression_detail {
 
@@ -49,6 +50,17 @@ class Compiler {
     return static_cast<int>(code_.size()) - 1;
   }
 
+  /// a + b or a * b, computed once per pair of slots: the products and sums of GiNaC's flattened
+  /// nodes (factors in canonical order) share their common prefixes, as the terms of a function's
+  /// derivatives do (x²(1-x)²y²(1-y)² and its five derivatives: 62 instructions instead of 76).
+  int binary(Op op, int a, int b) {
+    const auto key = std::make_tuple(op, a, b);
+    if (auto it = binary_memo_.find(key); it != binary_memo_.end()) return it->second;
+    const int s = emit({op, a, b});
+    binary_memo_.emplace(key, s);
+    return s;
+  }
+
   int number(const GiNaC::numeric& n) {
     if (!n.is_real()) throw Unknown{};
     return emit({Op::constant, -1, -1, 0, n.to_double()});
@@ -71,7 +83,7 @@ class Compiler {
     if (is_a<add>(e) || is_a<mul>(e)) {
       const Op op = is_a<add>(e) ? Op::add : Op::mul;
       int acc = slot(e.op(0));
-      for (size_t i = 1; i < e.nops(); ++i) acc = emit({op, acc, slot(e.op(i))});
+      for (size_t i = 1; i < e.nops(); ++i) acc = binary(op, acc, slot(e.op(i)));
       return acc;
     }
     if (is_a<power>(e)) {
@@ -83,7 +95,9 @@ class Compiler {
         if (n == numeric(1, 2)) return emit({Op::sqrt, base});
         if (n == numeric(-1, 2)) return emit({Op::power_int, emit({Op::sqrt, base}), -1, -1});
       }
-      return emit({Op::power, base, slot(exponent)});
+      VectorProgram::Instruction in{Op::power, base, slot(exponent)};
+      in.array2 = array_pow();
+      return emit(in);
     }
     if (is_a<function>(e) && !is_a<fderivative>(e)) {
       const std::string name = ex_to<function>(e).get_name();
@@ -91,6 +105,7 @@ class Compiler {
         const int a = slot(e.op(0)), b = slot(e.op(1));
         VectorProgram::Instruction in{Op::call2, a, b};
         in.f2 = [](double u, double v) { return std::atan2(u, v); };
+        in.array2 = array_atan2();
         return emit(in);
       }
       const auto& table = unary_functions();
@@ -98,6 +113,7 @@ class Compiler {
       if (it == table.end() || e.nops() != 1) throw Unknown{};
       VectorProgram::Instruction in{Op::call1, slot(e.op(0))};
       in.f1 = it->second;
+      in.array1 = array_function(name);
       return emit(in);
     }
     throw Unknown{};
@@ -105,6 +121,7 @@ class Compiler {
 
   std::vector<VectorProgram::Instruction>& code_;
   std::map<GiNaC::ex, int, GiNaC::ex_is_less> memo_;
+  std::map<std::tuple<Op, int, int>, int> binary_memo_;
 };
 
 /// v^n by squaring (n may be negative).
@@ -132,6 +149,9 @@ std::optional<VectorProgram> vector_program(const std::vector<GiNaC::ex>& es) {
   return program;
 }
 
+// Compiled twice, the AVX2 body chosen at load time where the CPU has it: the arithmetic loops
+// then run four points per instruction instead of two.
+__attribute__((target_clones("avx2", "default")))
 void VectorProgram::run(const double* x, const double* y, int count, std::vector<double>& work, double* values,
                         int stride) const {
   work.resize(code_.size() * kBlock);
@@ -157,8 +177,18 @@ void VectorProgram::run(const double* x, const double* y, int count, std::vector
         for (int k = 0; k < count; ++k) out[k] = a[k] * b[k];
         break;
       case Op::power_int:
+        // The common small exponents as straight products (they vectorize; the loop does not).
         if (in.n == 2) {
           for (int k = 0; k < count; ++k) out[k] = a[k] * a[k];
+        } else if (in.n == 3) {
+          for (int k = 0; k < count; ++k) out[k] = a[k] * a[k] * a[k];
+        } else if (in.n == 4) {
+          for (int k = 0; k < count; ++k) {
+            const double square = a[k] * a[k];
+            out[k] = square * square;
+          }
+        } else if (in.n == -1) {
+          for (int k = 0; k < count; ++k) out[k] = 1.0 / a[k];
         } else {
           for (int k = 0; k < count; ++k) out[k] = integer_power(a[k], in.n);
         }
@@ -167,13 +197,25 @@ void VectorProgram::run(const double* x, const double* y, int count, std::vector
         for (int k = 0; k < count; ++k) out[k] = std::sqrt(a[k]);
         break;
       case Op::power:
-        for (int k = 0; k < count; ++k) out[k] = std::pow(a[k], b[k]);
+        if (in.array2) {
+          in.array2(a, b, out, count);
+        } else {
+          for (int k = 0; k < count; ++k) out[k] = std::pow(a[k], b[k]);
+        }
         break;
       case Op::call1:
-        for (int k = 0; k < count; ++k) out[k] = in.f1(a[k]);
+        if (in.array1) {
+          in.array1(a, out, count);
+        } else {
+          for (int k = 0; k < count; ++k) out[k] = in.f1(a[k]);
+        }
         break;
       case Op::call2:
-        for (int k = 0; k < count; ++k) out[k] = in.f2(a[k], b[k]);
+        if (in.array2) {
+          in.array2(a, b, out, count);
+        } else {
+          for (int k = 0; k < count; ++k) out[k] = in.f2(a[k], b[k]);
+        }
         break;
     }
   }

@@ -11,6 +11,8 @@
 #include <optional>
 #include <vector>
 
+#include "config/expression_vector_math.hpp"
+
 namespace iga::expression_detail {
 
 class VectorProgram {
@@ -31,6 +33,9 @@ class VectorProgram {
     double c = 0;        ///< constant: the value
     double (*f1)(double) = nullptr;
     double (*f2)(double, double) = nullptr;
+    /// The same over arrays (libmvec), when there is one: used instead of f1, f2 or std::pow.
+    ArrayFunction1 array1 = nullptr;
+    ArrayFunction2 array2 = nullptr;
   };
 
  private:

@@ -43,8 +43,11 @@ class Ws4PieceEvaluation {
   struct RuleTables {
     std::vector<Point2> points;  ///< copy, to detect a different rule at a reused address
     Eigen::Matrix2Xd reference;  ///< the points as a 2 x q matrix
-    /// Monomials (x - center(r))^a (y - center(r))^b at each point, in Poly4 index order.
-    Eigen::Matrix<double, 15, Eigen::Dynamic> monomials;
+    /// Monomials (x - center(r))^a (y - center(r))^b at each point: column Poly4::index(a, b),
+    /// row = point, so that each monomial is contiguous over the points of a run.
+    Eigen::Matrix<double, Eigen::Dynamic, 15> monomials;
+    /// The same points relative to the center of their region: column 0 x, column 1 y.
+    Eigen::Matrix<double, Eigen::Dynamic, 2> local;
     std::vector<int> regions;  ///< distinct regions holding points, in order of first appearance
     /// Maximal runs of consecutive points in one region: (slot in `regions`, first point, count).
     std::vector<std::array<int, 3>> runs;
@@ -57,7 +60,6 @@ class Ws4PieceEvaluation {
   Eigen::Matrix<double, 51, 1> c_, b_;
   Eigen::Matrix<double, 15, Eigen::Dynamic> region_coefficients_;  ///< u_h per used region
   Eigen::Matrix<double, 6, 15> derivatives_;  ///< value, dx, dy, dxx, dxy, dyy per monomial
-  Eigen::Matrix<double, 6, Eigen::Dynamic> run_values_;
 };
 
 }  // namespace iga::ws4

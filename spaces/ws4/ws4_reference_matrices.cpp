@@ -261,12 +261,16 @@ namespace {
 /// The ten integral tables of reference_sums() again, in double-double from pieces built in
 /// double-double (the long double ones carry ≈ 1e-18 of their size after the cancellations of
 /// the recurrence and the sums, which WS4's biharmonic conditioning turns into an L2 error of
-/// 1e-12 at 9 226 DOFs, growing like h⁻⁴).
-std::vector<DoubleDoubleMatrix> reference_sums_double_double() {
+/// 1e-12 at 9 226 DOFs, growing like h⁻⁴). Only the pairs [first_pair, last_pair) of kPairs, and
+/// only the tables they use: a process needs the tables of its form alone (Poisson: 3 of the 10
+/// integrals, plates: 6), and they cost a fifth of a second together.
+std::vector<DoubleDoubleMatrix> reference_sums_double_double(int first_pair, int last_pair) {
   using DD = DoubleDouble;
   const Ws4Basis& basis = Ws4Basis::reference();
   const Ws4Split& split = basis.split();
-  const std::vector<BasicPoly4<DD>> pieces = basis.pieces_double_double();
+  static const std::vector<BasicPoly4<DD>> pieces = basis.pieces_double_double();
+  bool needed[6] = {};
+  for (int p = first_pair; p < last_pair; ++p) needed[kPairs[p][0]] = needed[kPairs[p][1]] = true;
   constexpr int n = Ws4Basis::size, q = 25;
   // 5-point Gauss–Legendre on [0, 1].
   DD gx[5], gw[5];
@@ -318,12 +322,13 @@ std::vector<DoubleDoubleMatrix> reference_sums_double_double() {
         const DD y = vy[0] + s * (vy[1] - vy[0]) + t * (vy[2] - vy[0]);
         weights[k] = gw[a] * gw[c] * (DD(1.0) - s) * twice_area;
         for (int j = 0; j < 6; ++j)
-          for (int i = 0; i < m; ++i) table[(j * n + i) * q + k] = d[j * n + i](x, y);
+          if (needed[j])
+            for (int i = 0; i < m; ++i) table[(j * n + i) * q + k] = d[j * n + i](x, y);
       }
     // (table · weight) once per function and point, as hi/lo doubles; then each integral is a
     // compensated dot product (exact products of the hi parts, the rest in the error term).
     for (int j = 0; j < 6; ++j)
-      for (int i = 0; i < m; ++i)
+      for (int i = 0; i < (needed[j] ? m : 0); ++i)
         for (int kk = 0; kk < q; ++kk) {
           const DD& v = table[(j * n + i) * q + kk];
           const DD vw = v * weights[kk];
@@ -332,7 +337,7 @@ std::vector<DoubleDoubleMatrix> reference_sums_double_double() {
           weighted_hi[(j * n + i) * q + kk] = vw.hi;
           weighted_lo[(j * n + i) * q + kk] = vw.lo;
         }
-    for (int p = 0; p < 10; ++p) {
+    for (int p = first_pair; p < last_pair; ++p) {
       const int t0 = kPairs[p][0], t1 = kPairs[p][1];
       for (int b = 0; b < m; ++b) {
         const double* bh = &value_hi[(t1 * n + b) * q];
@@ -356,7 +361,7 @@ std::vector<DoubleDoubleMatrix> reference_sums_double_double() {
     }
   }
   std::vector<DoubleDoubleMatrix> out(10);
-  for (int p = 0; p < 10; ++p) {
+  for (int p = first_pair; p < last_pair; ++p) {
     out[p].resize(n, n);
     for (int b = 0; b < n; ++b)
       for (int a = 0; a < n; ++a) {
@@ -375,23 +380,54 @@ DoubleDoubleMatrix transposed(const DoubleDoubleMatrix& m) {
   return t;
 }
 
+/// The double-double reference matrices of one group of kPairs, built on first use: 0 the mass
+/// matrix, 1 the gradient ones, 2 the Hessian ones (the other members are left empty).
+const Ws4ReferenceMatricesDoubleDouble& reference_group_double_double(int group) {
+  auto build_group = [](int group) {
+    const int first[3] = {0, 1, 4}, last[3] = {1, 4, 10};
+    const std::vector<DoubleDoubleMatrix> sums = reference_sums_double_double(first[group], last[group]);
+    Ws4ReferenceMatricesDoubleDouble d;
+    if (group == 0) d.mass = sums[0];
+    if (group == 1) {
+      d.grad[0][0] = sums[1];
+      d.grad[0][1] = sums[2];
+      d.grad[1][0] = transposed(sums[2]);
+      d.grad[1][1] = sums[3];
+    }
+    if (group == 2) {
+      int p = 4;
+      for (int a = 0; a < 3; ++a)
+        for (int b = a; b < 3; ++b) {
+          d.hess[a][b] = sums[p++];
+          if (b != a) d.hess[b][a] = transposed(d.hess[a][b]);
+        }
+    }
+    return d;
+  };
+  switch (group) {
+    case 0: {
+      static const Ws4ReferenceMatricesDoubleDouble mass = build_group(0);
+      return mass;
+    }
+    case 1: {
+      static const Ws4ReferenceMatricesDoubleDouble grad = build_group(1);
+      return grad;
+    }
+    default: {
+      static const Ws4ReferenceMatricesDoubleDouble hess = build_group(2);
+      return hess;
+    }
+  }
+}
+
 }  // namespace
 
 const Ws4ReferenceMatricesDoubleDouble& Ws4ReferenceMatricesDoubleDouble::get() {
   static const Ws4ReferenceMatricesDoubleDouble m = [] {
-    const std::vector<DoubleDoubleMatrix> sums = reference_sums_double_double();
-    Ws4ReferenceMatricesDoubleDouble d;
-    d.mass = sums[0];
-    d.grad[0][0] = sums[1];
-    d.grad[0][1] = sums[2];
-    d.grad[1][0] = transposed(sums[2]);
-    d.grad[1][1] = sums[3];
-    int p = 4;
-    for (int a = 0; a < 3; ++a)
-      for (int b = a; b < 3; ++b) {
-        d.hess[a][b] = sums[p++];
-        if (b != a) d.hess[b][a] = transposed(d.hess[a][b]);
-      }
+    Ws4ReferenceMatricesDoubleDouble d = reference_group_double_double(2);
+    d.mass = reference_group_double_double(0).mass;
+    for (int a = 0; a < 2; ++a)
+      for (int b = 0; b < 2; ++b) d.grad[a][b] = reference_group_double_double(1).grad[a][b];
     return d;
   }();
   return m;
@@ -423,7 +459,9 @@ void combine(const std::vector<std::pair<DoubleDouble, const DoubleDoubleMatrix*
 
 /// Element matrix of `form` on the triangle of `jacobian` in the B-basis, in double-double.
 void form_matrix_double_double(BilinearForm form, const Eigen::Matrix2d& jac, DoubleDoubleMatrix& k) {
-  const Ws4ReferenceMatricesDoubleDouble& r = Ws4ReferenceMatricesDoubleDouble::get();
+  // Only the group of reference matrices this form uses (each built on first use).
+  const Ws4ReferenceMatricesDoubleDouble& r = reference_group_double_double(
+      form == BilinearForm::mass ? 0 : form == BilinearForm::laplace ? 1 : 2);
   using dd_detail::two_prod;
   // det J exactly, and M = adj(J) adj(J)ᵀ = det² J⁻¹J⁻ᵀ (entries of adj(J) are entries of J).
   const DoubleDouble det = two_prod(jac(0, 0), jac(1, 1)) - two_prod(jac(0, 1), jac(1, 0));

@@ -125,9 +125,14 @@ Ws4Space::Ws4Space(Triangulation mesh, std::string description)
     }
   h_ = mesh_size_;
   compute_vertex_frames();
-  extraction_.resize(mesh_.num_triangles());
-#pragma omp parallel for schedule(static)
-  for (int t = 0; t < mesh_.num_triangles(); ++t) extraction_[t] = ws4_exact_extraction(dof_geometry(t));
+  std::vector<ElementDofGeometry> translated(mesh_.num_triangles());
+  for (int t = 0; t < mesh_.num_triangles(); ++t) translated[t] = translated_to_origin(dof_geometry(t));
+  classes_ = group_by_shape(translated);
+  class_extraction_.resize(classes_.size());
+#pragma omp parallel for schedule(dynamic, 4) if (classes_.size() > 8)
+  for (int c = 0; c < classes_.size(); ++c)
+    class_extraction_[c] = ws4_exact_extraction(translated[classes_.representative[c]]);
+  matrix_cache_ = std::make_unique<ElementMatrixCache>(classes_.count);
 }
 
 void Ws4Space::compute_vertex_frames() {
@@ -273,18 +278,21 @@ Eigen::VectorXd Ws4Space::interpolate(const Jet3& f) const {
 }
 
 bool Ws4Space::closed_form_element_matrix(int element, BilinearForm form, Eigen::MatrixXd& local) const {
-  local = symmetric_congruence_extended(extraction_[element], ws4_form_matrix(form, jacobian(element)));
+  local = symmetric_congruence_extended(extraction(element), ws4_form_matrix(form, jacobian(element)));
   return true;
 }
 
 bool Ws4Space::closed_form_element_matrix_extended(int element, BilinearForm form,
                                                   Eigen::Matrix<long double, Eigen::Dynamic, Eigen::Dynamic>& local) const {
-  ws4_element_matrix_extended(form, jacobian(element), extraction_[element], local);
+  ws4_element_matrix_extended(form, jacobian(element), extraction(element), local);
   return true;
 }
 
 bool Ws4Space::closed_form_element_matrix_double_double(int element, BilinearForm form, DoubleDoubleMatrix& local) const {
-  ws4_element_matrix_double_double(form, jacobian(element), extraction_[element], local);
+  // Every element of a class has the same J (its translated corners) and extraction.
+  matrix_cache_->get(classes_.of_element[element], form, local, [&](DoubleDoubleMatrix& out) {
+    ws4_element_matrix_double_double(form, jacobian(element), extraction(element), out);
+  });
   return true;
 }
 

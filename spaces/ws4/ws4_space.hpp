@@ -32,6 +32,7 @@
 #include "spaces/space.hpp"
 #include "spaces/ws4/triangulation.hpp"
 #include "spaces/ws4/ws4_hermite_transform.hpp"
+#include "spaces/ws4/ws4_shape_classes.hpp"
 
 namespace iga::ws4 {
 
@@ -68,7 +69,8 @@ class Ws4Space final : public Space {
   RulePtr edge_quadrature(int element, int edge, int degree) const override;
 
   /// C_Kᵀ K_B C_K with K_B from the universal reference matrices, the product accumulated in long
-  /// double (ws4_reference_matrices.hpp).
+  /// double (ws4_reference_matrices.hpp). The double-double one is computed once per shape class
+  /// shared by several elements (ws4_shape_classes.hpp).
   bool closed_form_element_matrix(int element, BilinearForm form, Eigen::MatrixXd& local) const override;
   bool closed_form_element_matrix_extended(int element, BilinearForm form,
                                            Eigen::Matrix<long double, Eigen::Dynamic, Eigen::Dynamic>& local) const override;
@@ -87,8 +89,11 @@ class Ws4Space final : public Space {
   double dof_scale() const { return h_; }
   /// J = [P1 - P0, P2 - P0] of element t.
   Eigen::Matrix2d jacobian(int element) const;
-  /// Extraction C_K of element t (51 x 51, see the file comment).
-  const Eigen::MatrixXd& extraction(int element) const { return extraction_[element]; }
+  /// Extraction C_K of element t (51 x 51, see the file comment), shared by its shape class.
+  const Eigen::MatrixXd& extraction(int element) const { return class_extraction_[classes_.of_element[element]]; }
+  /// Elements with equal extraction and element matrices (translates of each other with the same
+  /// frames, edge orientations and scales; ws4_shape_classes.hpp).
+  const ShapeClasses& shape_classes() const { return classes_; }
   /// G_K: the 51 DOF functionals of element t applied to the 51 reference B_i (rows: functionals);
   /// C_K G_K = I (an independent route to the extraction, for tests).
   Eigen::MatrixXd element_functionals(int element) const;
@@ -112,7 +117,9 @@ class Ws4Space final : public Space {
   Triangulation mesh_;
   std::string description_;
   double mesh_size_ = 0.0, h_ = 1.0;
-  std::vector<Eigen::MatrixXd> extraction_;
+  ShapeClasses classes_;
+  std::vector<Eigen::MatrixXd> class_extraction_;
+  std::unique_ptr<ElementMatrixCache> matrix_cache_;
   std::vector<Eigen::Matrix2d> vertex_frame_;
 
   mutable std::mutex rule_mutex_;

@@ -1,0 +1,70 @@
+#pragma once
+/// @file
+/// Shape classes of a WS4 mesh: the extraction C_K = A⁻¹ T_K depends on an element only through its
+/// edge vectors, corner frames, edge orientations and DOF scales (T_K is translation invariant), and
+/// its element matrices Cᵀ K_ref(J) C only through those and J. On a structured mesh a handful of
+/// classes cover all elements, so both are computed once per class instead of once per element.
+
+#include <array>
+#include <cstdint>
+#include <memory>
+#include <mutex>
+#include <vector>
+
+#include "config/double_double.hpp"
+#include "spaces/bilinear_form.hpp"
+#include "spaces/ws4/ws4_hermite_transform.hpp"
+
+namespace iga::ws4 {
+
+/// The same element moved so that corner 0 is the origin (corners 1, 2 are then the columns of J
+/// as the space computes it, in double): the input of the extraction of its class.
+ElementDofGeometry translated_to_origin(const ElementDofGeometry& geometry);
+
+/// Elements grouped by the bits of their translated geometry (equal bits: equal extraction and
+/// element matrices, exactly).
+struct ShapeClasses {
+  std::vector<int> of_element;      ///< class of each element
+  std::vector<int> representative;  ///< the first element of each class
+  std::vector<int> count;           ///< elements per class
+  int size() const { return static_cast<int>(representative.size()); }
+};
+ShapeClasses group_by_shape(const std::vector<ElementDofGeometry>& translated);
+
+/// Double-double element matrices of the classes shared by several elements, computed on first use
+/// (thread-safe). Classes of one element are not kept: on an unstructured mesh every element is its
+/// own class, and caching would only hold a 41 kB matrix per element.
+class ElementMatrixCache {
+ public:
+  explicit ElementMatrixCache(std::vector<int> class_size) : class_size_(std::move(class_size)) {}
+
+  /// local = the matrix of `form` for class `cls`; `compute` fills it when not cached.
+  template <class Compute>
+  void get(int cls, BilinearForm form, DoubleDoubleMatrix& local, Compute&& compute) const {
+    if (class_size_[cls] < 2) return compute(local);
+    const std::size_t slot = static_cast<std::size_t>(cls) * kForms + static_cast<std::size_t>(form);
+    std::shared_ptr<const DoubleDoubleMatrix> hit;
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      if (entries_.empty()) entries_.resize(class_size_.size() * kForms);
+      hit = entries_[slot];
+    }
+    if (hit) {  // copied outside the lock: the other threads copy theirs meanwhile
+      local = *hit;
+      return;
+    }
+    auto fresh = std::make_shared<DoubleDoubleMatrix>();
+    compute(*fresh);
+    local = *fresh;
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (!entries_[slot]) entries_[slot] = std::move(fresh);
+  }
+
+ private:
+  static constexpr std::size_t kForms = 4;  // BilinearForm's values
+  std::vector<int> class_size_;
+  mutable std::mutex mutex_;
+  mutable std::vector<std::shared_ptr<const DoubleDoubleMatrix>> entries_;
+};
+
+}  // namespace iga::ws4
