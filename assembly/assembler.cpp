@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cassert>
 #include <memory>
+#include <numeric>
 
 namespace iga {
 
@@ -42,19 +43,29 @@ void quadrature_matrix(BilinearForm form, const ElementValues& ev, DoubleDoubleM
 }
 
 /// Add the columns j of `local` with dofs[j] in [first, last) into `values` (aligned with the
-/// value array of `pattern`): the part of the element matrix this thread owns.
+/// value array of `pattern`): the part of the element matrix this thread owns. The element's rows
+/// are visited in increasing dof order, so each pattern column is walked once from its start
+/// instead of searched once per row.
 template <class Local, class Value>
 void scatter_owned_columns(const std::vector<int>& dofs, const Local& local, const SparseMatrix& pattern,
                            Value* values, int first, int last) {
   const int n = static_cast<int>(dofs.size());
   const int* outer = pattern.outerIndexPtr();
   const int* inner = pattern.innerIndexPtr();
+  thread_local std::vector<int> order;
+  order.resize(n);
+  bool sorted_yet = false;
   for (int j = 0; j < n; ++j) {
     if (dofs[j] < first || dofs[j] >= last) continue;
-    const int* begin = inner + outer[dofs[j]];
-    const int* end = inner + outer[dofs[j] + 1];
-    for (int i = 0; i < n; ++i) {
-      const int* pos = std::lower_bound(begin, end, dofs[i]);
+    if (!sorted_yet) {
+      std::iota(order.begin(), order.end(), 0);
+      std::sort(order.begin(), order.end(), [&](int a, int b) { return dofs[a] < dofs[b]; });
+      sorted_yet = true;
+    }
+    const int* pos = inner + outer[dofs[j]];
+    [[maybe_unused]] const int* end = inner + outer[dofs[j] + 1];
+    for (int i : order) {
+      while (*pos < dofs[i]) ++pos;
       assert(pos != end && *pos == dofs[i]);
       values[pos - inner] += local(i, j);
     }
