@@ -1,4 +1,5 @@
 #include "config/expression_vector_program.hpp"
+#include "config/cpu_dispatch.hpp"
 
 #include <cmath>
 #include <map>
@@ -151,7 +152,7 @@ std::optional<VectorProgram> vector_program(const std::vector<GiNaC::ex>& es) {
 
 // Compiled twice, the AVX2 body chosen at load time where the CPU has it: the arithmetic loops
 // then run four points per instruction instead of two.
-__attribute__((target_clones("avx2", "default")))
+IGA_AVX2_CLONES
 void VectorProgram::run(const double* x, const double* y, int count, std::vector<double>& work, double* values,
                         int stride) const {
   work.resize(code_.size() * kBlock);

@@ -5,6 +5,7 @@
 #include <cstring>
 #include <stdexcept>
 
+#include "config/cpu_dispatch.hpp"
 #include "spaces/ws4/ws4_basis.hpp"
 #include "spaces/ws4/ws4_space.hpp"
 
@@ -73,7 +74,7 @@ void physical_derivatives(const double* p, const Eigen::Matrix2d& g, int rows, E
 
 /// moments(m) += Σ_k weights(first + k) monomials(first + k, m) for the 15 monomials: dot products
 /// of contiguous arrays (AVX2 clone as below).
-__attribute__((target_clones("avx2", "default")))
+IGA_AVX2_CLONES
 void add_moments(const double* monomials, Eigen::Index stride, const double* weights, int first, int count,
                  double* moments) {
   const double* w = weights + first;
@@ -106,7 +107,7 @@ inline double horner(const double* c, double x, double y) {
 /// and the points' coordinates relative to the region's center: Horner per point, which reads two
 /// numbers per point instead of a table of 15 monomials. Compiled twice, the AVX2 body chosen at
 /// load time where the CPU has it (four points per instruction instead of two).
-__attribute__((target_clones("avx2", "default")))
+IGA_AVX2_CLONES
 void run_values(const Eigen::Matrix<double, 6, 15>& d, int rows, const double* __restrict x,
                 const double* __restrict y, int count, double* const* out) {
   double c[6][15];
