@@ -285,14 +285,21 @@ std::vector<DoubleDoubleMatrix> reference_sums_double_double(int first_pair, int
       gw[k] = weights[k] * 0.5;
     }
   }
-  std::vector<std::vector<DD>> sums(10, std::vector<DD>(n * n));
+  // The fan triangles in a fixed number of chunks, summed separately (in parallel) and then added
+  // in chunk order: the same sums whatever the number of threads.
+  constexpr int kChunks = 8;
+  const int num_fans = static_cast<int>(split.fan_triangles().size());
+  std::vector<std::vector<std::vector<DD>>> chunk_sums(kChunks, std::vector<std::vector<DD>>(10, std::vector<DD>(n * n)));
+#pragma omp parallel for schedule(dynamic, 1)
+  for (int chunk = 0; chunk < kChunks; ++chunk) {
+  std::vector<std::vector<DD>>& sums = chunk_sums[chunk];
   std::vector<int> active;
   std::vector<BasicPoly4<DD>> d(6 * n);
   std::vector<DD> table(6 * n * q);  // table[(j * n + a) * q + k]
   std::vector<double> value_hi(6 * n * q), value_lo(6 * n * q), weighted_hi(6 * n * q), weighted_lo(6 * n * q);
   DD weights[q];
   int m = 0, cached_region = -1;
-  for (size_t f = 0; f < split.fan_triangles().size(); ++f) {
+  for (int f = num_fans * chunk / kChunks; f < num_fans * (chunk + 1) / kChunks; ++f) {
     const int r = split.fan_region()[f];
     if (r != cached_region) {
       active.clear();
@@ -360,6 +367,11 @@ std::vector<DoubleDoubleMatrix> reference_sums_double_double(int first_pair, int
       }
     }
   }
+  }
+  std::vector<std::vector<DD>>& sums = chunk_sums[0];
+  for (int chunk = 1; chunk < kChunks; ++chunk)
+    for (int p = 0; p < 10; ++p)
+      for (int i = 0; i < n * n; ++i) sums[p][i] += chunk_sums[chunk][p][i];
   std::vector<DoubleDoubleMatrix> out(10);
   for (int p = first_pair; p < last_pair; ++p) {
     out[p].resize(n, n);

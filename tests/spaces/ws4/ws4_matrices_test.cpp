@@ -74,6 +74,20 @@ TEST(Ws4Matrices, DoubleDoubleReferenceMatricesAnnihilateConstantsBeyondLongDoub
                   1e-16 * r.hess[0][0].hi.cwiseAbs().maxCoeff());
 }
 
+TEST(Ws4Matrices, DoubleDoubleTablesLeaveLongDoubleArithmeticWorking) {
+  // The double-double tables are pure SSE code, but a compiler may route a 64-bit move through an
+  // MMX register, which fills the x87 register stack unless followed by EMMS: every long double
+  // load after it then gives NaN (seen as NaN long double element matrices in the next test).
+  // Whether that happens depends on the compiler's register allocation, so this guards the build
+  // flag (-mno-mmx) rather than a line of code.
+  Ws4ReferenceMatricesDoubleDouble::get();
+  volatile long double one = 1;
+  const long double sum = one + one + one + one + one + one + one + one + one;
+  EXPECT_EQ(sum, 9.0L);
+  const Ws4ReferenceMatricesExtended& e = Ws4ReferenceMatricesExtended::get();
+  EXPECT_TRUE(e.hess[0][0].allFinite());
+}
+
 TEST(Ws4Matrices, DoubleDoubleElementMatricesEqualTheLongDoubleOnes) {
   Triangulation mesh = Triangulation::rectangle(2, 2, Point2(0, 0), Point2(1, 1));
   mesh.move_vertex(4, Point2(0.57, 0.43));
