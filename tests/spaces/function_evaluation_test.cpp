@@ -18,6 +18,7 @@
 #include "spaces/element_values.hpp"
 #include "spaces/space_factory.hpp"
 #include "spaces/ws4/ws4_space.hpp"
+#include "tests/support/test_support.hpp"
 
 namespace iga {
 namespace {
@@ -52,22 +53,12 @@ SpacePtr graded_tmesh() {
 }
 
 /// G1 multipatch splines (k = 5, three quadrilateral patches) and the 4-split G1 macro-patches.
-SpacePtr space_from(const std::string& yaml, int level) {
-  const ConfigNode root = ConfigNode::load_string(yaml, "test.yaml");
-  return make_space(root["domain"], root["space"], level);
-}
-SpacePtr g1_three_patches() { return space_from("domain: {type: multipatch, name: 3p_square}\nspace: {type: g1, degree: 5}\n", 1); }
+SpacePtr g1_three_patches() { return test::space_from_yaml("domain: {type: multipatch, name: 3p_square}\nspace: {type: g1, degree: 5}\n", 1); }
 SpacePtr g1_4split_fan() {
-  return space_from("domain: {type: multipatch, name: fan3}\nspace: {type: g1_4split, degree: 5}\n", 0);
+  return test::space_from_yaml("domain: {type: multipatch, name: fan3}\nspace: {type: g1_4split, degree: 5}\n", 0);
 }
 
-Eigen::VectorXd random_vector(int n, unsigned seed) {
-  std::mt19937 gen(seed);
-  std::uniform_real_distribution<double> u(-1.0, 1.0);
-  Eigen::VectorXd v(n);
-  for (int i = 0; i < n; ++i) v(i) = u(gen);
-  return v;
-}
+using test::random_vector;
 
 double max_abs_diff(const Eigen::VectorXd& a, const Eigen::VectorXd& b) {
   EXPECT_EQ(a.size(), b.size());

@@ -1,7 +1,9 @@
 #pragma once
 // Helpers shared by tests: build spaces and problems from YAML text, as a user's config would.
 
+#include <Eigen/Core>
 #include <cstdio>
+#include <random>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -20,6 +22,15 @@ namespace iga::test {
 inline SpacePtr space_from_yaml(const std::string& yaml, int level = 0) {
   const ConfigNode root = ConfigNode::load_string(yaml, "test.yaml");
   return make_space(root["domain"], root["space"], level);
+}
+
+/// n numbers uniform in [−1, 1] from `seed` (random coefficients or weights, the same on every run).
+inline Eigen::VectorXd random_vector(int n, unsigned seed) {
+  std::mt19937 gen(seed);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  Eigen::VectorXd v(n);
+  for (int i = 0; i < n; ++i) v(i) = u(gen);
+  return v;
 }
 
 inline ProblemSpec problem_from_yaml(const std::string& yaml) {

@@ -18,13 +18,7 @@ namespace {
 
 using test::perturbed_square;
 
-Eigen::VectorXd random_coefficients(int n, unsigned seed) {
-  std::mt19937 gen(seed);
-  std::uniform_real_distribution<double> u(-1, 1);
-  Eigen::VectorXd c(n);
-  for (int i = 0; i < n; ++i) c(i) = u(gen);
-  return c;
-}
+using test::random_vector;
 
 /// A rule whose points lie on split lines, vertices and element edges as well as inside regions
 /// (the one-sided pieces of Ws4Split::locate), in no particular order.
@@ -51,7 +45,7 @@ double relative_difference(const Eigen::VectorXd& a, const Eigen::VectorXd& b) {
 
 TEST(Ws4Evaluator, FunctionValuesMatchTheTabulatedBasis) {
   const Ws4Space space(perturbed_square(3, 17));
-  const Eigen::VectorXd coef = random_coefficients(space.dimension(), 3);
+  const Eigen::VectorXd coef = random_vector(space.dimension(), 3);
   const auto evaluator = space.make_evaluator();
   const unsigned flags = update_values | update_gradients | update_hessians;
   const QuadratureRule scattered = scattered_points();
@@ -90,7 +84,7 @@ TEST(Ws4Evaluator, LoadVectorMatchesTheTabulatedBasis) {
   const auto evaluator = space.make_evaluator();
   const QuadratureRule scattered = scattered_points();
   for (const QuadratureRule* rule : {space.quadrature(0, 9).get(), &scattered}) {
-    const Eigen::VectorXd w = random_coefficients(rule->size(), 11);
+    const Eigen::VectorXd w = random_vector(rule->size(), 11);
     for (int e = 0; e < space.num_elements(); ++e) {
       PointValues all, geometry;
       evaluator->evaluate(e, *rule, update_values, all);

@@ -18,6 +18,7 @@
 #include "spaces/ws4/ws4_basis.hpp"
 #include "tests/spaces/ws4/ws4_test_meshes.hpp"
 #include "tests/support/test_support.hpp"
+#include "tests/support/test_support.hpp"
 
 namespace iga::ws4 {
 namespace {
@@ -87,10 +88,7 @@ TEST(Ws4Space, BoundaryPartsAndConfigErrors) {
 TEST(Ws4Space, C3AcrossElementEdgesOnAPerturbedMesh) {
   const Ws4Space space(perturbed_square(3, 17));
   const Triangulation& mesh = space.mesh();
-  std::mt19937 gen(5);
-  std::uniform_real_distribution<double> u(-1, 1);
-  Eigen::VectorXd coef(space.dimension());
-  for (int i = 0; i < coef.size(); ++i) coef(i) = u(gen);
+  const Eigen::VectorXd coef = test::random_vector(space.dimension(), 5);
 
   // All partial derivatives of order <= 3 of the spline on element t at physical point x.
   auto derivatives = [&](int t, const Point2& x) {
