@@ -9,6 +9,8 @@
 #include <Eigen/Core>
 #include <cmath>
 
+#include "config/cpu_dispatch.hpp"
+
 namespace iga {
 
 struct DoubleDouble {
@@ -100,9 +102,10 @@ inline DoubleDouble& operator/=(DoubleDouble& a, const DoubleDouble& b) { return
 
 /// Hot double-double kernels are compiled twice: for the x86-64 baseline the package targets and,
 /// under [[gnu::target("avx2,fma")]], for CPUs with AVX2 and FMA (every x86-64 of the last
-/// decade), chosen at run time by cpu_has_avx2_fma(). Inside the FMA copy, products must come from
-/// exact_product<true>: Dekker's splitting (two_prod without __FMA__) is unsafe there, as the
-/// compiler may contract its products into FMAs and spoil the split.
+/// decade), chosen at run time by cpu_has_avx2_fma() (config/cpu_dispatch.hpp). Inside the FMA
+/// copy, products must come from exact_product<true>: Dekker's splitting (two_prod without
+/// __FMA__) is unsafe there, as the compiler may contract its products into FMAs and spoil the
+/// split.
 template <bool kFma>
 [[gnu::always_inline]] inline DoubleDouble exact_product(double a, double b) {
   if constexpr (kFma) {
@@ -118,16 +121,6 @@ template <bool kFma>
   DoubleDouble p = exact_product<kFma>(a.hi, b.hi);
   p.lo += a.hi * b.lo + a.lo * b.hi;
   return dd_detail::quick_two_sum(p.hi, p.lo);
-}
-/// True when the CPU has AVX2 and FMA and the build does not already target them (then the
-/// baseline copy uses FMA itself).
-inline bool cpu_has_avx2_fma() {
-#if defined(__x86_64__) && !defined(__FMA__)
-  static const bool has = __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
-  return has;
-#else
-  return false;
-#endif
 }
 
 inline bool operator==(const DoubleDouble& a, const DoubleDouble& b) { return a.hi == b.hi && a.lo == b.lo; }
