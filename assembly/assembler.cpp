@@ -21,22 +21,16 @@ Assembler::Assembler(const Space& space)
 
 namespace {
 
-/// The element matrix of `form` in double or long double (the type of `local`): the space's closed
-/// form if it has one (rows in element_dofs order, as the table), else quadrature.
+/// The element matrix of `form` in double or double-double (the type of `local`): the space's
+/// closed form if it has one (rows in element_dofs order, as the table), else quadrature.
 bool closed_form(const Space& space, int e, BilinearForm form, Eigen::MatrixXd& local) {
   return space.closed_form_element_matrix(e, form, local);
-}
-bool closed_form(const Space& space, int e, BilinearForm form, MatrixXld& local) {
-  return space.closed_form_element_matrix_extended(e, form, local);
-}
-void quadrature_matrix(BilinearForm form, const ElementValues& ev, Eigen::MatrixXd& local) {
-  element_matrix(form, ev, local);
 }
 bool closed_form(const Space& space, int e, BilinearForm form, DoubleDoubleMatrix& local) {
   return space.closed_form_element_matrix_double_double(e, form, local);
 }
-void quadrature_matrix(BilinearForm form, const ElementValues& ev, MatrixXld& local) {
-  element_matrix_extended(form, ev, local);
+void quadrature_matrix(BilinearForm form, const ElementValues& ev, Eigen::MatrixXd& local) {
+  element_matrix(form, ev, local);
 }
 void quadrature_matrix(BilinearForm form, const ElementValues& ev, DoubleDoubleMatrix& local) {
   element_matrix_double_double(form, ev, local);
