@@ -29,6 +29,15 @@ bool closed_form(const Space& space, int e, BilinearForm form, Eigen::MatrixXd& 
 bool closed_form(const Space& space, int e, BilinearForm form, DoubleDoubleMatrix& local) {
   return space.closed_form_element_matrix_double_double(e, form, local);
 }
+/// The shared closed form of element e (read in place), or null; double matrices are never shared.
+const Eigen::MatrixXd* shared_closed_form(const Space&, int, BilinearForm, const Eigen::MatrixXd*) { return nullptr; }
+const DoubleDoubleMatrix* shared_closed_form(const Space& space, int e, BilinearForm form, const DoubleDoubleMatrix*) {
+  return space.shared_closed_form_double_double(e, form);
+}
+void prepare_closed_forms(const Space&, BilinearForm, const Eigen::MatrixXd*) {}
+void prepare_closed_forms(const Space& space, BilinearForm form, const DoubleDoubleMatrix*) {
+  space.prepare_closed_forms_double_double(form);
+}
 void quadrature_matrix(BilinearForm form, const ElementValues& ev, Eigen::MatrixXd& local) {
   element_matrix(form, ev, local);
 }
@@ -76,6 +85,7 @@ void Assembler::assemble(BilinearForm form, int quad_degree, Value* values) cons
   // matrix), and there are two barriers per block instead of one per colour: colours of a small
   // mesh hold a few dozen elements each, too few to keep two threads busy between barriers.
   keep_eigen_serial();
+  prepare_closed_forms(space_, form, static_cast<const Local*>(nullptr));
   const int ne = space_.num_elements();
   const int dim = space_.dimension();
   using Scalar = typename Local::Scalar;
@@ -83,6 +93,7 @@ void Assembler::assemble(BilinearForm form, int quad_degree, Value* values) cons
   const long per_element = std::max<long>(1, static_cast<long>(max_local_) * max_local_ * sizeof(Scalar));
   const int block = static_cast<int>(std::max<long>(1, std::min<long>(ne, std::max<long>(64, kBlockBytes / per_element))));
   std::vector<Local> slots(std::min(block, ne));
+  std::vector<const Local*> slot_matrix(slots.size());  // the slot, or a matrix shared by elements
   std::vector<std::vector<int>> slot_dofs(slots.size());
 #pragma omp parallel if (worth_threads(ne))
   {
@@ -97,7 +108,11 @@ void Assembler::assemble(BilinearForm form, int quad_degree, Value* values) cons
         progress_tick();
         Local& local = slots[e - first];
         std::vector<int>& dofs = slot_dofs[e - first];
-        if (closed_form(space_, e, form, local)) {
+        slot_matrix[e - first] = &local;
+        if (const Local* shared = shared_closed_form(space_, e, form, &local)) {
+          slot_matrix[e - first] = shared;
+          dofs.assign(table_.begin(e), table_.begin(e + 1));
+        } else if (closed_form(space_, e, form, local)) {
           dofs.assign(table_.begin(e), table_.begin(e + 1));
         } else {
           ev.reinit(e, *space_.quadrature(e, quad_degree));
@@ -106,7 +121,7 @@ void Assembler::assemble(BilinearForm form, int quad_degree, Value* values) cons
         }
       }
       for (int e = first; e < last; ++e)
-        scatter_owned_columns(slot_dofs[e - first], slots[e - first], pattern_, values, own_first, own_last);
+        scatter_owned_columns(slot_dofs[e - first], *slot_matrix[e - first], pattern_, values, own_first, own_last);
 #pragma omp barrier
     }
   }

@@ -232,6 +232,17 @@ class Space : public std::enable_shared_from_this<Space> {
   /// The same closed form in double-double, for fourth-order problems whose residuals need the
   /// matrix beyond long double (assembly/split_matrix.hpp). The default widens the long double one.
   virtual bool closed_form_element_matrix_double_double(int element, BilinearForm form, DoubleDoubleMatrix& local) const;
+  /// Called once before an element loop over the double-double closed forms, outside any parallel
+  /// region: a space whose closed forms share tables (reference matrices, matrices of shape
+  /// classes) builds them here with every thread, rather than inside the loop, where the first
+  /// element to need them builds them on one thread while the others wait. Default: nothing.
+  virtual void prepare_closed_forms_double_double(BilinearForm /*form*/) const {}
+  /// The double-double closed form of `element` when it is a matrix shared by several elements
+  /// (valid while the space lives): the assembler reads it in place instead of copying it. Null
+  /// (the default) when the element has no shared matrix; then closed_form_element_matrix_double_double.
+  virtual const DoubleDoubleMatrix* shared_closed_form_double_double(int /*element*/, BilinearForm /*form*/) const {
+    return nullptr;
+  }
 
   /// The largest jump of the physical gradient of Σ c_i N_i across interior element edges, for
   /// spaces that can locate both sides of their edges (a C1 space has it at round-off). Reported

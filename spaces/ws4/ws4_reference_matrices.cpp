@@ -1,6 +1,7 @@
 #include "spaces/ws4/ws4_reference_matrices.hpp"
 
 #include <Eigen/LU>
+#include <algorithm>
 #include <cmath>
 #include <type_traits>
 #include <vector>
@@ -258,6 +259,41 @@ void ws4_element_matrix_extended(BilinearForm form, const Eigen::Matrix2d& jacob
 
 namespace {
 
+/// Total degree of the derivative table j of store_derivatives (value, ∂x, ∂y, ∂xx, ∂xy, ∂yy)
+/// of a quartic piece.
+int derivative_degree(int j) { return j == 0 ? 4 : j < 3 ? 3 : 2; }
+
+/// g-point Gauss–Legendre (g = 3, 4 or 5) on [0, 1] in double-double: nodes x, weights w.
+void gauss_legendre_unit_double_double(int g, DoubleDouble* x, DoubleDouble* w) {
+  using DD = DoubleDouble;
+  DD nodes[5], weights[5];
+  if (g == 3) {
+    const DD a = sqrt(DD(3.0) / DD(5.0));
+    nodes[0] = -a, nodes[1] = DD(0.0), nodes[2] = a;
+    weights[0] = weights[2] = DD(5.0) / DD(9.0);
+    weights[1] = DD(8.0) / DD(9.0);
+  } else if (g == 4) {
+    const DD r = sqrt(DD(6.0) / DD(5.0)) * 2.0 / DD(7.0);
+    const DD a = sqrt(DD(3.0) / DD(7.0) - r), b = sqrt(DD(3.0) / DD(7.0) + r);
+    const DD s30 = sqrt(DD(30.0));
+    const DD wa = (DD(18.0) + s30) / DD(36.0), wb = (DD(18.0) - s30) / DD(36.0);
+    nodes[0] = -b, nodes[1] = -a, nodes[2] = a, nodes[3] = b;
+    weights[0] = weights[3] = wb;
+    weights[1] = weights[2] = wa;
+  } else {
+    const DD r = sqrt(DD(10.0) / DD(7.0));
+    const DD a = sqrt(DD(5.0) - r * 2.0) / DD(3.0), b = sqrt(DD(5.0) + r * 2.0) / DD(3.0);
+    const DD s70 = sqrt(DD(70.0));
+    const DD wa = (DD(322.0) + s70 * 13.0) / DD(900.0), wb = (DD(322.0) - s70 * 13.0) / DD(900.0);
+    const DD n5[5] = {-b, -a, DD(0.0), a, b}, w5[5] = {wb, wa, DD(128.0) / DD(225.0), wa, wb};
+    for (int k = 0; k < 5; ++k) nodes[k] = n5[k], weights[k] = w5[k];
+  }
+  for (int k = 0; k < g; ++k) {
+    x[k] = (nodes[k] + DD(1.0)) * 0.5;
+    w[k] = weights[k] * 0.5;
+  }
+}
+
 /// The ten integral tables of reference_sums() again, in double-double from pieces built in
 /// double-double (the long double ones carry ≈ 1e-18 of their size after the cancellations of
 /// the recurrence and the sums, which WS4's biharmonic conditioning turns into an L2 error of
@@ -271,20 +307,18 @@ std::vector<DoubleDoubleMatrix> reference_sums_double_double(int first_pair, int
   static const std::vector<BasicPoly4<DD>> pieces = basis.pieces_double_double();
   bool needed[6] = {};
   for (int p = first_pair; p < last_pair; ++p) needed[kPairs[p][0]] = needed[kPairs[p][1]] = true;
-  constexpr int n = Ws4Basis::size, q = 25;
-  // 5-point Gauss–Legendre on [0, 1].
+  // Collapsed Gauss–Legendre with g x g points, g the fewest that integrate the products of the
+  // requested pairs exactly: degree d in (x, y) becomes degree d + 1 in s (with the Jacobian
+  // 1 - s) and d in t, exact when 2g - 1 >= d + 1. Pieces are quartics, so products of values
+  // have degree 8 (g = 5), of first derivatives 6 (g = 4), of second derivatives 4 (g = 3).
+  int max_degree = 0;
+  for (int p = first_pair; p < last_pair; ++p)
+    max_degree = std::max(max_degree, derivative_degree(kPairs[p][0]) + derivative_degree(kPairs[p][1]));
+  const int g = (max_degree + 3) / 2;
+  constexpr int n = Ws4Basis::size, kMaxPoints = 25;
+  const int q = g * g;
   DD gx[5], gw[5];
-  {
-    const DD r = sqrt(DD(10.0) / DD(7.0));
-    const DD a = sqrt(DD(5.0) - r * 2.0) / DD(3.0), b = sqrt(DD(5.0) + r * 2.0) / DD(3.0);
-    const DD s70 = sqrt(DD(70.0));
-    const DD wa = (DD(322.0) + s70 * 13.0) / DD(900.0), wb = (DD(322.0) - s70 * 13.0) / DD(900.0);
-    const DD nodes[5] = {-b, -a, DD(0.0), a, b}, weights[5] = {wb, wa, DD(128.0) / DD(225.0), wa, wb};
-    for (int k = 0; k < 5; ++k) {
-      gx[k] = (nodes[k] + DD(1.0)) * 0.5;
-      gw[k] = weights[k] * 0.5;
-    }
-  }
+  gauss_legendre_unit_double_double(g, gx, gw);
   // The fan triangles in a fixed number of chunks, summed separately (in parallel) and then added
   // in chunk order: the same sums whatever the number of threads.
   constexpr int kChunks = 8;
@@ -297,7 +331,7 @@ std::vector<DoubleDoubleMatrix> reference_sums_double_double(int first_pair, int
   std::vector<BasicPoly4<DD>> d(6 * n);
   std::vector<DD> table(6 * n * q);  // table[(j * n + a) * q + k]
   std::vector<double> value_hi(6 * n * q), value_lo(6 * n * q), weighted_hi(6 * n * q), weighted_lo(6 * n * q);
-  DD weights[q];
+  DD weights[kMaxPoints];
   int m = 0, cached_region = -1;
   for (int f = num_fans * chunk / kChunks; f < num_fans * (chunk + 1) / kChunks; ++f) {
     const int r = split.fan_region()[f];
@@ -322,8 +356,8 @@ std::vector<DoubleDoubleMatrix> reference_sums_double_double(int first_pair, int
     }
     const DD twice_area = abs((vx[1] - vx[0]) * (vy[2] - vy[0]) - (vy[1] - vy[0]) * (vx[2] - vx[0]));
     int k = 0;
-    for (int a = 0; a < 5; ++a)
-      for (int c = 0; c < 5; ++c, ++k) {
+    for (int a = 0; a < g; ++a)
+      for (int c = 0; c < g; ++c, ++k) {
         const DD s = gx[a], t = (DD(1.0) - s) * gx[c];
         const DD x = vx[0] + s * (vx[1] - vx[0]) + t * (vx[2] - vx[0]);
         const DD y = vy[0] + s * (vy[1] - vy[0]) + t * (vy[2] - vy[0]);
@@ -514,6 +548,10 @@ void form_matrix_double_double(BilinearForm form, const Eigen::Matrix2d& jac, Do
 }
 
 }  // namespace
+
+void prepare_reference_matrices_double_double(BilinearForm form) {
+  reference_group_double_double(form == BilinearForm::mass ? 0 : form == BilinearForm::laplace ? 1 : 2);
+}
 
 void ws4_element_matrix_double_double(BilinearForm form, const Eigen::Matrix2d& jacobian, const Eigen::MatrixXd& c,
                                       DoubleDoubleMatrix& local) {

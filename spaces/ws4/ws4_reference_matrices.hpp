@@ -42,6 +42,10 @@ struct Ws4ReferenceMatricesDoubleDouble {
   static const Ws4ReferenceMatricesDoubleDouble& get();
 };
 
+/// Build the double-double reference tables `form` needs (with the threads of the calling
+/// context: call it outside parallel regions), so that later element matrices find them ready.
+void prepare_reference_matrices_double_double(BilinearForm form);
+
 /// Element matrix of `form` in the basis B_i of the triangle x = P0 + J ξ (51 x 51).
 Eigen::MatrixXd ws4_form_matrix(BilinearForm form, const Eigen::Matrix2d& jacobian);
 

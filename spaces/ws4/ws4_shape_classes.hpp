@@ -39,6 +39,33 @@ class ElementMatrixCache {
   explicit ElementMatrixCache(std::vector<int> class_size) : class_size_(std::move(class_size)) {}
 
   /// local = the matrix of `form` for class `cls`; `compute` fills it when not cached.
+  /// The cached matrix of `form` for `cls`, or null (a class of one element, or not built yet).
+  const DoubleDoubleMatrix* find(int cls, BilinearForm form) const {
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (entries_.empty()) return nullptr;
+    return entries_[static_cast<std::size_t>(cls) * kForms + static_cast<std::size_t>(form)].get();
+  }
+
+  /// Build the matrices of `form` for every class shared by several elements, in parallel;
+  /// compute(cls, out) fills the matrix of class cls.
+  template <class Compute>
+  void build_all(BilinearForm form, Compute&& compute) const {
+    const int n = static_cast<int>(class_size_.size());
+    std::vector<std::shared_ptr<DoubleDoubleMatrix>> fresh(n);
+#pragma omp parallel for schedule(dynamic, 1) if (n > 1)
+    for (int c = 0; c < n; ++c) {
+      if (class_size_[c] < 2 || find(c, form)) continue;
+      fresh[c] = std::make_shared<DoubleDoubleMatrix>();
+      compute(c, *fresh[c]);
+    }
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (entries_.empty()) entries_.resize(class_size_.size() * kForms);
+    for (int c = 0; c < n; ++c) {
+      auto& slot = entries_[static_cast<std::size_t>(c) * kForms + static_cast<std::size_t>(form)];
+      if (fresh[c] && !slot) slot = std::move(fresh[c]);
+    }
+  }
+
   template <class Compute>
   void get(int cls, BilinearForm form, DoubleDoubleMatrix& local, Compute&& compute) const {
     if (class_size_[cls] < 2) return compute(local);

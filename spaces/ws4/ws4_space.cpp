@@ -296,6 +296,18 @@ bool Ws4Space::closed_form_element_matrix_double_double(int element, BilinearFor
   return true;
 }
 
+void Ws4Space::prepare_closed_forms_double_double(BilinearForm form) const {
+  prepare_reference_matrices_double_double(form);
+  matrix_cache_->build_all(form, [&](int cls, DoubleDoubleMatrix& out) {
+    const int element = classes_.representative[cls];
+    ws4_element_matrix_double_double(form, jacobian(element), extraction(element), out);
+  });
+}
+
+const DoubleDoubleMatrix* Ws4Space::shared_closed_form_double_double(int element, BilinearForm form) const {
+  return matrix_cache_->find(classes_.of_element[element], form);
+}
+
 RulePtr Ws4Space::quadrature(int, int degree) const {
   degree = std::max(degree, 0);
   std::lock_guard<std::mutex> lock(rule_mutex_);

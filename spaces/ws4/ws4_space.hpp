@@ -75,6 +75,10 @@ class Ws4Space final : public Space {
   bool closed_form_element_matrix_extended(int element, BilinearForm form,
                                            Eigen::Matrix<long double, Eigen::Dynamic, Eigen::Dynamic>& local) const override;
   bool closed_form_element_matrix_double_double(int element, BilinearForm form, DoubleDoubleMatrix& local) const override;
+  /// The reference tables of `form` and the matrices of every shared shape class, with all threads.
+  void prepare_closed_forms_double_double(BilinearForm form) const override;
+  /// The cached matrix of the element's shape class (after prepare_closed_forms_double_double).
+  const DoubleDoubleMatrix* shared_closed_form_double_double(int element, BilinearForm form) const override;
 
   /// Draws the element on its split (ws4_sample_cell.hpp): the 342 fan triangles over the 178 split
   /// vertices, each subdivided further for resolution >= 16, so linear cells never straddle a piece.

@@ -68,5 +68,28 @@ TEST(Ws4ShapeClasses, CachedDoubleDoubleElementMatricesAreTheElementsOwn) {
   }
 }
 
+TEST(Ws4ShapeClasses, PreparedSharedMatricesAreTheClosedFormsOfEveryElement) {
+  const Ws4Space space(Triangulation::rectangle(12, 12, Point2(0, 0), Point2(1, 1)));
+  const ShapeClasses& classes = space.shape_classes();
+  for (BilinearForm form : {BilinearForm::mass, BilinearForm::bilaplace}) {
+    EXPECT_EQ(space.shared_closed_form_double_double(0, form), nullptr) << "nothing is shared before preparing";
+    space.prepare_closed_forms_double_double(form);
+    int shared = 0;
+    for (int t = 0; t < space.num_elements(); ++t) {
+      const DoubleDoubleMatrix* m = space.shared_closed_form_double_double(t, form);
+      // Classes of one element keep no matrix; all others share the class's.
+      ASSERT_EQ(m != nullptr, classes.count[classes.of_element[t]] > 1) << t;
+      if (!m) continue;
+      ++shared;
+      DoubleDoubleMatrix own;
+      ASSERT_TRUE(space.closed_form_element_matrix_double_double(t, form, own));
+      EXPECT_EQ(m->hi, own.hi) << t;
+      EXPECT_EQ(m->lo, own.lo) << t;
+    }
+    std::cout << shared << " of " << space.num_elements() << " elements share a matrix\n";
+    EXPECT_GT(shared, space.num_elements() / 2);
+  }
+}
+
 }  // namespace
 }  // namespace iga::ws4
