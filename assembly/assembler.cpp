@@ -45,13 +45,26 @@ void quadrature_matrix(BilinearForm form, const ElementValues& ev, DoubleDoubleM
   element_matrix_double_double(form, ev, local);
 }
 
+/// Double-double entries accumulated straight into the two arrays of a SplitMatrix: no array of
+/// pairs to allocate (16 bytes per nonzero) and split afterwards.
+struct SplitValues {
+  double* hi;
+  double* lo;
+};
+inline void add_entry(double* values, std::ptrdiff_t p, double v) { values[p] += v; }
+inline void add_entry(SplitValues values, std::ptrdiff_t p, const DoubleDouble& v) {
+  const DoubleDouble sum = DoubleDouble(values.hi[p], values.lo[p]) + v;
+  values.hi[p] = sum.hi;
+  values.lo[p] = sum.lo;
+}
+
 /// Add the columns j of `local` with dofs[j] in [first, last) into `values` (aligned with the
 /// value array of `pattern`): the part of the element matrix this thread owns. The element's rows
 /// are visited in increasing dof order, so each pattern column is walked once from its start
 /// instead of searched once per row.
-template <class Local, class Value>
+template <class Local, class Values>
 void scatter_owned_columns(const std::vector<int>& dofs, const Local& local, const SparseMatrix& pattern,
-                           Value* values, int first, int last) {
+                           Values values, int first, int last) {
   const int n = static_cast<int>(dofs.size());
   const int* outer = pattern.outerIndexPtr();
   const int* inner = pattern.innerIndexPtr();
@@ -70,15 +83,15 @@ void scatter_owned_columns(const std::vector<int>& dofs, const Local& local, con
     for (int i : order) {
       while (*pos < dofs[i]) ++pos;
       assert(pos != end && *pos == dofs[i]);
-      values[pos - inner] += local(i, j);
+      add_entry(values, pos - inner, local(i, j));
     }
   }
 }
 
 }  // namespace
 
-template <class Local, class Value>
-void Assembler::assemble(BilinearForm form, int quad_degree, Value* values) const {
+template <class Local, class Values>
+void Assembler::assemble(BilinearForm form, int quad_degree, Values values) const {
   // Blocks of consecutive elements: their matrices are computed in parallel into slots, then each
   // thread adds the columns it owns (an equal share of the dofs), element by element. Every entry
   // receives its contributions in element order whatever the number of threads (bitwise the same
@@ -136,9 +149,19 @@ SparseMatrix Assembler::matrix(BilinearForm form, int quad_degree) const {
 SplitMatrix Assembler::matrix_extended(BilinearForm form, int quad_degree) const {
   // Entries summed in double-double: long double sums of h⁻² contributions would round each entry
   // by ≈ 5e-20 of its size, an error the biharmonic system amplifies by h⁻⁴.
-  std::vector<DoubleDouble> values(pattern_.nonZeros());
-  assemble<DoubleDoubleMatrix>(form, quad_degree, values.data());
-  return split_matrix(pattern_, values);
+  SplitMatrix k{pattern_, Eigen::VectorXd::Zero(pattern_.nonZeros())};
+  double* hi = k.high.valuePtr();
+  double* lo = k.low.data();
+  assemble<DoubleDoubleMatrix>(form, quad_degree, SplitValues{hi, lo});
+  // Renormalised so that high is each entry rounded to double.
+  const Eigen::Index nnz = pattern_.nonZeros();
+#pragma omp parallel for schedule(static) if (worth_threads(nnz / 1024))
+  for (Eigen::Index p = 0; p < nnz; ++p) {
+    const DoubleDouble v = DoubleDouble(hi[p], lo[p]) + DoubleDouble(0.0);
+    hi[p] = v.hi;
+    lo[p] = v.lo;
+  }
+  return k;
 }
 
 Eigen::VectorXd Assembler::load(const ScalarField& f, int quad_degree) const {

@@ -40,10 +40,11 @@ class Assembler {
   const ElementDofTable& element_dofs() const { return table_; }
 
  private:
-  /// Add the element matrices of `form` (Local: double or long double) into `values`, aligned
-  /// with the value array of the pattern; in parallel without locks (see the definition).
-  template <class Local, class Value>
-  void assemble(BilinearForm form, int quad_degree, Value* values) const;
+  /// Add the element matrices of `form` (Local: double or double-double) into `values` (a value
+  /// array aligned with the pattern's, or the two arrays of a SplitMatrix); in parallel without
+  /// locks (see the definition).
+  template <class Local, class Values>
+  void assemble(BilinearForm form, int quad_degree, Values values) const;
 
   const Space& space_;
   ElementDofTable table_;
