@@ -38,12 +38,21 @@ void elements_of_dofs(const ElementDofTable& t, int dimension, std::vector<int>&
 SparseMatrix sparsity_pattern(const ElementDofTable& table, int dimension) {
   std::vector<int> d_off, d_el;
   elements_of_dofs(table, dimension, d_off, d_el);
+  // Dofs active on the same elements (those of one vertex, edge or cell, numbered together) have
+  // the same column: it is built once, for the first dof of each run, and copied.
+  std::vector<int> first_of_run(dimension);
+  for (int j = 0; j < dimension; ++j) {
+    const bool same = j > 0 && d_off[j + 1] - d_off[j] == d_off[j] - d_off[j - 1] &&
+                      std::equal(d_el.begin() + d_off[j], d_el.begin() + d_off[j + 1], d_el.begin() + d_off[j - 1]);
+    first_of_run[j] = same ? first_of_run[j - 1] : j;
+  }
   std::vector<std::vector<int>> columns(dimension);
 #pragma omp parallel if (worth_threads(dimension))
   {
     std::vector<char> seen(dimension, 0);  // per-thread marker, reset after each column
 #pragma omp for schedule(dynamic, 256)
     for (int j = 0; j < dimension; ++j) {
+      if (first_of_run[j] != j) continue;
       std::vector<int>& col = columns[j];
       for (int k = d_off[j]; k < d_off[j + 1]; ++k) {
         const int e = d_el[k];
@@ -59,14 +68,15 @@ SparseMatrix sparsity_pattern(const ElementDofTable& table, int dimension) {
   }
   SparseMatrix A(dimension, dimension);
   std::size_t nnz = 0;
-  for (const auto& c : columns) nnz += c.size();
+  for (int j = 0; j < dimension; ++j) nnz += columns[first_of_run[j]].size();
   A.resizeNonZeros(static_cast<Eigen::Index>(nnz));
   int* outer = A.outerIndexPtr();
   int* inner = A.innerIndexPtr();
   outer[0] = 0;
   for (int j = 0; j < dimension; ++j) {
-    std::copy(columns[j].begin(), columns[j].end(), inner + outer[j]);
-    outer[j + 1] = outer[j] + static_cast<int>(columns[j].size());
+    const std::vector<int>& col = columns[first_of_run[j]];
+    std::copy(col.begin(), col.end(), inner + outer[j]);
+    outer[j + 1] = outer[j] + static_cast<int>(col.size());
   }
   std::fill(A.valuePtr(), A.valuePtr() + nnz, 0.0);
   return A;
