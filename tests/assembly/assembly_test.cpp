@@ -5,6 +5,7 @@
 
 #include <Eigen/SparseCholesky>
 
+#include <algorithm>
 #include <set>
 
 #include "assembly/assembler.hpp"
@@ -56,6 +57,30 @@ TEST(Assembly, PatternHoldsEveryElementCoupling) {
     return total;
   };
   EXPECT_EQ(pattern.nonZeros(), overlaps_1d(8, 3) * overlaps_1d(6, 3));
+}
+
+TEST(Assembly, PatternIsExactlyTheSetOfElementCouplings) {
+  // Spaces whose dofs come in runs active on the same elements (vertex, edge and cell dofs of a
+  // macro-element; B-splines of one knot span) and one without.
+  for (const char* yaml : {"domain: {type: unit_square}\nspace: {type: ws4, elements: 3}\n",
+                           "domain: {type: multipatch, name: 3p_square}\nspace: {type: g1, degree: 5}\n", kCubic}) {
+    const SpacePtr space = test::space_from_yaml(yaml);
+    const ElementDofTable table = collect_element_dofs(*space);
+    const SparseMatrix pattern = sparsity_pattern(table, space->dimension());
+    std::set<std::pair<int, int>> couplings;
+    for (int e = 0; e < table.num_elements(); ++e)
+      for (const int* i = table.begin(e); i != table.begin(e + 1); ++i)
+        for (const int* j = table.begin(e); j != table.begin(e + 1); ++j) couplings.insert({*j, *i});
+    std::set<std::pair<int, int>> stored;
+    for (int col = 0; col < pattern.outerSize(); ++col) {
+      for (SparseMatrix::InnerIterator it(pattern, col); it; ++it) stored.insert({col, static_cast<int>(it.row())});
+      // Rows sorted and distinct within each column.
+      const int* inner = pattern.innerIndexPtr();
+      EXPECT_TRUE(std::is_sorted(inner + pattern.outerIndexPtr()[col], inner + pattern.outerIndexPtr()[col + 1]));
+    }
+    EXPECT_EQ(static_cast<std::size_t>(pattern.nonZeros()), stored.size()) << yaml;
+    EXPECT_EQ(stored, couplings) << yaml;
+  }
 }
 
 TEST(Assembly, StiffnessIsSymmetricAndAnnihilatesConstants) {
