@@ -149,12 +149,24 @@ SparseMatrix Assembler::matrix(BilinearForm form, int quad_degree) const {
 SplitMatrix Assembler::matrix_extended(BilinearForm form, int quad_degree) const {
   // Entries summed in double-double: long double sums of h⁻² contributions would round each entry
   // by ≈ 5e-20 of its size, an error the biharmonic system amplifies by h⁻⁴.
-  SplitMatrix k{pattern_, Eigen::VectorXd::Zero(pattern_.nonZeros())};
+  // The pattern copied and the values zeroed by all threads: first touch of a few hundred
+  // megabytes, whose page faults cost as much as the copy.
+  const Eigen::Index nnz = pattern_.nonZeros();
+  SplitMatrix k{SparseMatrix(pattern_.rows(), pattern_.cols()), Eigen::VectorXd(nnz)};
+  k.high.resizeNonZeros(nnz);
+  std::copy(pattern_.outerIndexPtr(), pattern_.outerIndexPtr() + pattern_.outerSize() + 1, k.high.outerIndexPtr());
   double* hi = k.high.valuePtr();
   double* lo = k.low.data();
+  int* inner = k.high.innerIndexPtr();
+  const int* pattern_inner = pattern_.innerIndexPtr();
+#pragma omp parallel for schedule(static) if (worth_threads(nnz / 1024))
+  for (Eigen::Index p = 0; p < nnz; ++p) {
+    inner[p] = pattern_inner[p];
+    hi[p] = 0.0;
+    lo[p] = 0.0;
+  }
   assemble<DoubleDoubleMatrix>(form, quad_degree, SplitValues{hi, lo});
   // Renormalised so that high is each entry rounded to double.
-  const Eigen::Index nnz = pattern_.nonZeros();
 #pragma omp parallel for schedule(static) if (worth_threads(nnz / 1024))
   for (Eigen::Index p = 0; p < nnz; ++p) {
     const DoubleDouble v = DoubleDouble(hi[p], lo[p]) + DoubleDouble(0.0);

@@ -299,7 +299,7 @@ void gauss_legendre_unit_double_double(int g, DoubleDouble* x, DoubleDouble* w) 
 /// the recurrence and the sums, which WS4's biharmonic conditioning turns into an L2 error of
 /// 1e-12 at 9 226 DOFs, growing like h⁻⁴). Only the pairs [first_pair, last_pair) of kPairs, and
 /// only the tables they use: a process needs the tables of its form alone (Poisson: 3 of the 10
-/// integrals, plates: 6), and they cost a fifth of a second together.
+/// integrals, plates: 6), each with the fewest exact Gauss points.
 std::vector<DoubleDoubleMatrix> reference_sums_double_double(int first_pair, int last_pair) {
   using DD = DoubleDouble;
   const Ws4Basis& basis = Ws4Basis::reference();
