@@ -194,7 +194,10 @@ Eigen::VectorXd reduced_residual(const SplitMatrix& A, const Eigen::VectorXd& b,
   std::vector<long double> x(c.values.data(), c.values.data() + c.values.size());
   for (int k = 0; k < nf; ++k) x[c.free[k]] = u_free(k);
   for (const auto& t : c.basis_change) x[t.row()] += static_cast<long double>(t.value()) * u_free(t.col());
-  const std::vector<long double> r = residual_extended(A, x, b);
+  // r = b − K x is b itself when x = 0 (homogeneous conditions, first residual): skip the product.
+  const bool zero = std::all_of(x.begin(), x.end(), [](long double v) { return v == 0; });
+  const std::vector<long double> r = zero ? std::vector<long double>(b.data(), b.data() + b.size())
+                                          : residual_extended(A, x, b);
   std::vector<long double> out(nf);
   for (int k = 0; k < nf; ++k) out[k] = r[c.free[k]];
   for (const auto& t : c.basis_change) out[t.col()] += static_cast<long double>(t.value()) * r[t.row()];
@@ -226,11 +229,13 @@ void reduce_system(const SplitMatrix& K, const Eigen::VectorXd& b, const Constra
   // Column by column: keep entries whose row and column are both free (inner order stays sorted).
   A_free.resize(nf, nf);
   std::vector<int> outer(nf + 1, 0);
+#pragma omp parallel for schedule(static) if (worth_threads(nf))
   for (int k = 0; k < nf; ++k) {
     int count = 0;
     for (SparseMatrix::InnerIterator it(A, c.free[k]); it; ++it) count += free_of[it.row()] >= 0;
-    outer[k + 1] = outer[k] + count;
+    outer[k + 1] = count;
   }
+  for (int k = 0; k < nf; ++k) outer[k + 1] += outer[k];
   A_free.resizeNonZeros(outer[nf]);
   std::copy(outer.begin(), outer.end(), A_free.outerIndexPtr());
 #pragma omp parallel for schedule(static) if (worth_threads(nf))
