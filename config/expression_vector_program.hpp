@@ -24,6 +24,8 @@ class VectorProgram {
   void run(const double* x, const double* y, int count, std::vector<double>& work, double* values,
            int stride) const;
   int size() const { return static_cast<int>(results_.size()); }
+  /// Number of instructions (each one pass over a block).
+  int length() const { return static_cast<int>(code_.size()); }
 
   enum class Op { constant, x, y, add, mul, power_int, sqrt, power, call1, call2 };
   struct Instruction {
