@@ -140,21 +140,27 @@ class Compiler {
       return number(ex_to<numeric>(value));
     }
     if (is_a<add>(e)) return polynomial_or_sum(e);
-    if (is_a<mul>(e)) {
-      int acc = slot(e.op(0));
-      for (size_t i = 1; i < e.nops(); ++i) acc = times(acc, slot(e.op(i)));
-      return acc;
-    }
+    if (is_a<mul>(e)) return product(e);
     if (is_a<power>(e)) {
-      const int base = slot(e.op(0));
       const ex exponent = e.op(1);
-      if (is_a<numeric>(exponent)) {
+      if (is_a<numeric>(exponent) && ex_to<numeric>(exponent).is_rational()) {
         const numeric n = ex_to<numeric>(exponent);
-        if (n.is_integer() && abs(n) <= 64) return power_int(base, n.to_int());
-        if (n == numeric(1, 2)) return pure({Op::sqrt, base});
-        if (n == numeric(-1, 2)) return power_int(pure({Op::sqrt, base}), -1);
+        if (n.is_integer() && abs(n) <= 64) {
+          const int k = n.to_int();
+          return k >= 0 ? power_int(slot(e.op(0)), k) : pure({Op::div_c, power_int(slot(e.op(0)), -k), -1, -1, 0, 1.0});
+        }
+        // b^n = b^f * b^k, k = floor(n): powers of one base that differ by integers (those of a
+        // singular solution and its derivatives) take one pow and a multiply or divide each.
+        const numeric k = n - fractional_part(n);
+        if (abs(k) <= 8 && !k.is_zero()) {
+          const int fraction = slot(power(e.op(0), fractional_part(n)));
+          const int base = slot(e.op(0));
+          return k > 0 ? times(fraction, power_int(base, k.to_int()))
+                       : pure({Op::div, fraction, power_int(base, -k.to_int())});
+        }
+        if (n == numeric(1, 2)) return pure({Op::sqrt, slot(e.op(0))});
       }
-      Instruction in{Op::power, base, slot(exponent)};
+      Instruction in{Op::power, slot(e.op(0)), slot(exponent)};
       in.array2 = array_pow();
       return emit(in);
     }
@@ -176,6 +182,42 @@ class Compiler {
       return emit(in);
     }
     throw Unknown{};
+  }
+
+  /// n - floor(n) for a rational n.
+  static GiNaC::numeric fractional_part(const GiNaC::numeric& n) {
+    const GiNaC::numeric r = GiNaC::mod(n.numer(), n.denom());  // in [0, denom)
+    return r / n.denom();
+  }
+
+  /// A product: the factors in their order (shared prefixes), then one division by the product of
+  /// the denominators (negative powers), then the numeric coefficient (an immediate operand, so a
+  /// sum fuses it into a multiply-add).
+  int product(const GiNaC::ex& e) {
+    using namespace GiNaC;
+    int numerator = -1, denominator = -1, coefficient = -1;
+    auto join = [&](int& acc, int s) { acc = acc < 0 ? s : times(acc, s); };
+    for (size_t i = 0; i < e.nops(); ++i) {
+      const ex f = e.op(i);
+      if (is_a<numeric>(f)) {
+        coefficient = slot(f);
+        continue;
+      }
+      if (is_a<power>(f) && is_a<numeric>(f.op(1)) && ex_to<numeric>(f.op(1)).is_rational() &&
+          ex_to<numeric>(f.op(1)).is_negative() && ex_to<numeric>(f.op(1)) >= -64) {
+        // b^-m = 1 / b^m, b^(f-m) = b^f / b^m with f in (0, 1): divisions, not reciprocals.
+        const numeric n = ex_to<numeric>(f.op(1));
+        const numeric fraction = fractional_part(n);
+        if (!fraction.is_zero()) join(numerator, slot(power(f.op(0), fraction)));
+        join(denominator, slot(power(f.op(0), fraction - n)));
+        continue;
+      }
+      join(numerator, slot(f));
+    }
+    int acc = numerator;
+    if (denominator >= 0) acc = numerator < 0 ? pure({Op::div_c, denominator, -1, -1, 0, 1.0}) : pure({Op::div, numerator, denominator});
+    if (coefficient >= 0) acc = acc < 0 ? coefficient : times(acc, coefficient);
+    return acc;
   }
 
   /// A sum term by term: c * r as one multiply-add into the partial sum, the constant term
@@ -297,16 +339,16 @@ class Compiler {
   bool trial_ = false;  ///< inside one candidate of polynomial_or_sum: no nested choices
 };
 
-/// v^n by squaring (n may be negative).
+/// v^n by squaring (n >= 0).
 double integer_power(double v, int n) {
-  unsigned m = static_cast<unsigned>(n < 0 ? -n : n);
+  unsigned m = static_cast<unsigned>(n);
   double result = 1.0, base = v;
   while (m) {
     if (m & 1u) result *= base;
     base *= base;
     m >>= 1u;
   }
-  return n < 0 ? 1.0 / result : result;
+  return result;
 }
 
 }  // namespace
@@ -409,6 +451,12 @@ template <bool kFused>
       case Op::mul_c:
         for (int k = 0; k < count; ++k) out[k] = a[k] * c;
         break;
+      case Op::div:
+        for (int k = 0; k < count; ++k) out[k] = a[k] / b[k];
+        break;
+      case Op::div_c:
+        for (int k = 0; k < count; ++k) out[k] = c / a[k];
+        break;
       case Op::affine:
         for (int k = 0; k < count; ++k) out[k] = multiply_add<kFused>(a[k], c, c2);
         break;
@@ -432,8 +480,6 @@ template <bool kFused>
             const double square = a[k] * a[k];
             out[k] = square * square;
           }
-        } else if (in.n == -1) {
-          for (int k = 0; k < count; ++k) out[k] = 1.0 / a[k];
         } else {
           for (int k = 0; k < count; ++k) out[k] = integer_power(a[k], in.n);
         }

@@ -39,11 +39,13 @@ class VectorProgram {
     mul,        ///< a * b
     add_c,      ///< a + c
     mul_c,      ///< a * c
+    div,        ///< a / b
+    div_c,      ///< c / a
     affine,     ///< a * c + c2
     mul_add,    ///< a * b + d
     mul_c_add,  ///< a * c + d
     mul_add_c,  ///< a * b + c
-    power_int,  ///< a^n
+    power_int,  ///< a^n, n >= 0
     sqrt,
     power,  ///< a^b
     call1,  ///< f1(a)
@@ -54,7 +56,7 @@ class VectorProgram {
   struct Instruction {
     Op op;
     int a = -1, b = -1, d = -1;  ///< operand slots
-    int n = 0;                   ///< power_int: the exponent
+    int n = 0;                   ///< power_int: the exponent (>= 0)
     double c = 0, c2 = 0;        ///< immediate operands
     double (*f1)(double) = nullptr;
     double (*f2)(double, double) = nullptr;
