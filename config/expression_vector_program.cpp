@@ -190,13 +190,18 @@ class Compiler {
     return r / n.denom();
   }
 
-  /// A product: the factors in their order (shared prefixes), then one division by the product of
-  /// the denominators (negative powers), then the numeric coefficient (an immediate operand, so a
-  /// sum fuses it into a multiply-add).
+  /// A product: the factors in x alone, those in y alone and the others each multiplied in
+  /// their order (so the derivatives of a separable u = X(x) Y(y) share X, Y and their
+  /// derivatives), then one division by the product of the denominators (negative powers), then
+  /// the numeric coefficient (an immediate operand, so a sum fuses it into a multiply-add).
   int product(const GiNaC::ex& e) {
     using namespace GiNaC;
-    int numerator = -1, denominator = -1, coefficient = -1;
+    int in_x = -1, in_y = -1, others = -1, denominator = -1, coefficient = -1;
     auto join = [&](int& acc, int s) { acc = acc < 0 ? s : times(acc, s); };
+    auto group = [&](const ex& f) -> int& {
+      const bool x = f.has(x_symbol()), y = f.has(y_symbol());
+      return x && !y ? in_x : (y && !x ? in_y : others);
+    };
     for (size_t i = 0; i < e.nops(); ++i) {
       const ex f = e.op(i);
       if (is_a<numeric>(f)) {
@@ -208,14 +213,16 @@ class Compiler {
         // b^-m = 1 / b^m, b^(f-m) = b^f / b^m with f in (0, 1): divisions, not reciprocals.
         const numeric n = ex_to<numeric>(f.op(1));
         const numeric fraction = fractional_part(n);
-        if (!fraction.is_zero()) join(numerator, slot(power(f.op(0), fraction)));
+        if (!fraction.is_zero()) join(group(f), slot(power(f.op(0), fraction)));
         join(denominator, slot(power(f.op(0), fraction - n)));
         continue;
       }
-      join(numerator, slot(f));
+      join(group(f), slot(f));
     }
-    int acc = numerator;
-    if (denominator >= 0) acc = numerator < 0 ? pure({Op::div_c, denominator, -1, -1, 0, 1.0}) : pure({Op::div, numerator, denominator});
+    int acc = -1;
+    for (int part : {in_x, in_y, others})
+      if (part >= 0) join(acc, part);
+    if (denominator >= 0) acc = acc < 0 ? pure({Op::div_c, denominator, -1, -1, 0, 1.0}) : pure({Op::div, acc, denominator});
     if (coefficient >= 0) acc = acc < 0 ? coefficient : times(acc, coefficient);
     return acc;
   }
@@ -260,9 +267,9 @@ class Compiler {
     return n;
   }
 
-  /// A sum that is a polynomial in x and y with numeric coefficients: compiled as written and in
-  /// nested Horner form (x outside, then y outside), keeping whichever adds the fewest
-  /// instructions. Expanded sources (Δ²u of a polynomial comes back as a sum of monomials) need a
+  /// A sum that is a polynomial in x and y with numeric coefficients: compiled as written,
+  /// factored, and in nested Horner form (x outside, then y outside), keeping whichever adds the
+  /// fewest instructions. Expanded sources (Δ²u of a polynomial comes back as a sum of monomials) need a
   /// third of the passes; factored derivatives usually stay as written.
   int polynomial_or_sum(const GiNaC::ex& e) {
     using namespace GiNaC;
@@ -289,6 +296,17 @@ class Compiler {
       if (!best || cost < best_cost) best = Candidate{std::move(trial), root}, best_cost = cost;
     };
     consider([&](Compiler& c) { return c.sum(e); });
+    consider([&](Compiler& c) {
+      // Factored: the derivatives of a product of powers of linear factors share those factors.
+      GiNaC::ex factored;
+      try {
+        factored = GiNaC::factor(expanded);
+      } catch (const std::exception&) {
+        throw Unknown{};
+      }
+      if (!GiNaC::is_a<GiNaC::mul>(factored) && !GiNaC::is_a<GiNaC::power>(factored)) throw Unknown{};
+      return c.slot(factored);
+    });
     consider([&](Compiler& c) { return c.horner(expanded, x_symbol(), y_symbol()); });
     consider([&](Compiler& c) { return c.horner(expanded, y_symbol(), x_symbol()); });
     *this = std::move(best->compiler);
