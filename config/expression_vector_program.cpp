@@ -5,6 +5,8 @@
 #include <cmath>
 #include <algorithm>
 #include <array>
+#include <bit>
+#include <cstdint>
 #include <limits>
 #include <map>
 #include <optional>
@@ -59,11 +61,15 @@ class Compiler {
   }
 
  private:
-  using Key = std::tuple<int, int, int, int, int, double, double>;
+  static constexpr int kMaxHornerDegree = 24, kMaxFactorDegree = 16;
+
+  /// Immediate operands by their bits: a strict order even for NaN, and -0 apart from 0.
+  using Key = std::tuple<int, int, int, int, int, std::uint64_t, std::uint64_t>;
 
   /// An arithmetic instruction, or the equal one already emitted.
   int pure(Instruction in) {
-    const Key key{static_cast<int>(in.op), in.a, in.b, in.d, in.n, in.c, in.c2};
+    const Key key{static_cast<int>(in.op), in.a, in.b, in.d, in.n, std::bit_cast<std::uint64_t>(in.c),
+                  std::bit_cast<std::uint64_t>(in.c2)};
     if (auto it = pure_memo_.find(key); it != pure_memo_.end()) return it->second;
     code.push_back(in);
     const int s = static_cast<int>(code.size()) - 1;
@@ -274,8 +280,11 @@ class Compiler {
   int polynomial_or_sum(const GiNaC::ex& e) {
     using namespace GiNaC;
     if (trial_ || !e.is_polynomial(lst{x_symbol(), y_symbol()})) return sum(e);
+    // Degrees of the unexpanded form bound those of the expansion: keep expanding and factoring
+    // cheap (the data of a config have small degrees).
+    const int degree = e.degree(x_symbol()) + e.degree(y_symbol());
+    if (degree > kMaxHornerDegree) return sum(e);
     const ex expanded = e.expand();
-    if (expanded.degree(x_symbol()) > 32 || expanded.degree(y_symbol()) > 32) return sum(e);
     const int first = static_cast<int>(code.size());
     trial_ = true;
     struct Candidate {
@@ -296,7 +305,7 @@ class Compiler {
       if (!best || cost < best_cost) best = Candidate{std::move(trial), root}, best_cost = cost;
     };
     consider([&](Compiler& c) { return c.sum(e); });
-    consider([&](Compiler& c) {
+    if (degree <= kMaxFactorDegree) consider([&](Compiler& c) {
       // Factored: the derivatives of a product of powers of linear factors share those factors.
       GiNaC::ex factored;
       try {
