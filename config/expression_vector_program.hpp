@@ -5,8 +5,9 @@
 /// interpreter is paid once per block instead of once per point (muParser pays it per point and
 /// operation, which made it the largest cost of error norms and loads with polynomial data).
 /// Common subexpressions of all the functions are computed once; constants are immediate operands,
-/// a product feeding a sum is one multiply-add, expanded polynomials may run in Horner form, and
-/// work slots are reused once their value is dead. Callers hold the GiNaC lock.
+/// a product feeding a sum is one multiply-add, polynomials run as written, factored or in Horner
+/// form (whichever is shortest), powers of one base share one pow, and work slots are reused once
+/// their value is dead. Callers hold the GiNaC lock.
 
 #include <ginac/ginac.h>
 
@@ -21,10 +22,10 @@ class VectorProgram {
  public:
   /// Points evaluated together: the live work arrays of one block stay in the first-level cache
   /// (slots are reused), and each instruction's dispatch is paid once per 128 points (64 were
-  /// measurably slower, 256 no faster).
+  /// 5-10 % slower in benchmarks/expression_program_bench, 256 no faster).
   static constexpr int kBlock = 128;
 
-  /// values[i * stride + k] = f_i(x[k], y[k]) for k < count (count <= kBlock), `work` scratch.
+  /// values[i + k * stride] = f_i(x[k], y[k]) for k < count (count <= kBlock), `work` scratch.
   void run(const double* x, const double* y, int count, std::vector<double>& work, double* values,
            int stride) const;
   int size() const { return static_cast<int>(results_.size()); }
