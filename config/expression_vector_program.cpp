@@ -198,11 +198,12 @@ class Compiler {
 
   /// A product: the factors in x alone, those in y alone and the others each multiplied in
   /// their order (so the derivatives of a separable u = X(x) Y(y) share X, Y and their
-  /// derivatives), then one division by the product of the denominators (negative powers), then
-  /// the numeric coefficient (an immediate operand, so a sum fuses it into a multiply-add).
+  /// derivatives), then the numeric coefficient (an immediate operand, so a sum fuses it into a
+  /// multiply-add). A negative power b^-m is the factor 1/b^m, computed once for all the terms
+  /// (the derivatives of a singular solution divide by a few powers of one base in every term).
   int product(const GiNaC::ex& e) {
     using namespace GiNaC;
-    int in_x = -1, in_y = -1, others = -1, denominator = -1, coefficient = -1;
+    int in_x = -1, in_y = -1, others = -1, coefficient = -1;
     auto join = [&](int& acc, int s) { acc = acc < 0 ? s : times(acc, s); };
     auto group = [&](const ex& f) -> int& {
       const bool x = f.has(x_symbol()), y = f.has(y_symbol());
@@ -216,11 +217,11 @@ class Compiler {
       }
       if (is_a<power>(f) && is_a<numeric>(f.op(1)) && ex_to<numeric>(f.op(1)).is_rational() &&
           ex_to<numeric>(f.op(1)).is_negative() && ex_to<numeric>(f.op(1)) >= -64) {
-        // b^-m = 1 / b^m, b^(f-m) = b^f / b^m with f in (0, 1): divisions, not reciprocals.
+        // b^(f-m) = b^f (1/b^m) with f in [0, 1).
         const numeric n = ex_to<numeric>(f.op(1));
         const numeric fraction = fractional_part(n);
         if (!fraction.is_zero()) join(group(f), slot(power(f.op(0), fraction)));
-        join(denominator, slot(power(f.op(0), fraction - n)));
+        join(group(f), pure({Op::div_c, slot(power(f.op(0), fraction - n)), -1, -1, 0, 1.0}));
         continue;
       }
       join(group(f), slot(f));
@@ -228,7 +229,6 @@ class Compiler {
     int acc = -1;
     for (int part : {in_x, in_y, others})
       if (part >= 0) join(acc, part);
-    if (denominator >= 0) acc = acc < 0 ? pure({Op::div_c, denominator, -1, -1, 0, 1.0}) : pure({Op::div, acc, denominator});
     if (coefficient >= 0) acc = acc < 0 ? coefficient : times(acc, coefficient);
     return acc;
   }
