@@ -190,6 +190,31 @@ class Compiler {
     throw Unknown{};
   }
 
+  /// The operands of a sum or product ordered by their printed text. GiNaC orders them by hashes
+  /// seeded with addresses, which differ from run to run; this order makes the program, and so
+  /// the rounding of every value, the same in every run.
+  std::vector<GiNaC::ex> operands(const GiNaC::ex& e) {
+    std::vector<std::pair<std::string, GiNaC::ex>> keyed;
+    for (size_t i = 0; i < e.nops(); ++i) {
+      const GiNaC::ex o = e.op(i);
+      auto it = text_.find(o);
+      if (it == text_.end()) {
+        std::string text;
+        try {
+          text = mu_text(o);
+        } catch (const Unsupported&) {
+          throw Unknown{};
+        }
+        it = text_.emplace(o, std::move(text)).first;
+      }
+      keyed.emplace_back(it->second, o);
+    }
+    std::stable_sort(keyed.begin(), keyed.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+    std::vector<GiNaC::ex> sorted;
+    for (auto& [text, o] : keyed) sorted.push_back(o);
+    return sorted;
+  }
+
   /// n - floor(n) for a rational n.
   static GiNaC::numeric fractional_part(const GiNaC::numeric& n) {
     const GiNaC::numeric r = GiNaC::mod(n.numer(), n.denom());  // in [0, denom)
@@ -209,8 +234,7 @@ class Compiler {
       const bool x = f.has(x_symbol()), y = f.has(y_symbol());
       return x && !y ? in_x : (y && !x ? in_y : others);
     };
-    for (size_t i = 0; i < e.nops(); ++i) {
-      const ex f = e.op(i);
+    for (const ex& f : operands(e)) {
       if (is_a<numeric>(f)) {
         coefficient = slot(f);
         continue;
@@ -239,8 +263,7 @@ class Compiler {
     using namespace GiNaC;
     std::vector<int> terms;
     int constant_term = -1;
-    for (size_t i = 0; i < e.nops(); ++i) {
-      const ex t = e.op(i);
+    for (const ex& t : operands(e)) {
       if (is_a<numeric>(t)) {
         constant_term = slot(t);
       } else if (is_a<mul>(t) && is_a<numeric>(t.op(t.nops() - 1))) {
@@ -363,6 +386,7 @@ class Compiler {
 
   std::map<GiNaC::ex, int, GiNaC::ex_is_less> memo_;
   std::map<Key, int> pure_memo_;
+  std::map<GiNaC::ex, std::string, GiNaC::ex_is_less> text_;  ///< operands() keys
   bool trial_ = false;  ///< inside one candidate of polynomial_or_sum: no nested choices
 };
 
