@@ -90,6 +90,18 @@ void run(benchmark::State& state, bool source) {
   state.counters["instructions"] = program_length(text, source);
 }
 
+/// The cost of compiling the jet and the source once (parse, derivatives, the program).
+void BM_Compile(benchmark::State& state) {
+  const std::string text = kCases[state.range(0)];
+  for (auto _ : state) {
+    const SymbolicFunction u = SymbolicFunction::parse(text, "bench");
+    const FunctionBatch jet_batch(jet(u)), source_batch({u.bilaplacian()});
+    benchmark::DoNotOptimize(&jet_batch);
+    benchmark::DoNotOptimize(&source_batch);
+  }
+  state.SetLabel(text.substr(0, 24));
+}
+
 void BM_Jet(benchmark::State& state) { run(state, false); }
 void BM_Source(benchmark::State& state) { run(state, true); }
 
@@ -97,5 +109,6 @@ void BM_Source(benchmark::State& state) { run(state, true); }
 
 BENCHMARK(BM_Jet)->DenseRange(0, 3);
 BENCHMARK(BM_Source)->DenseRange(0, 3);
+BENCHMARK(BM_Compile)->DenseRange(0, 3)->Unit(benchmark::kMillisecond);
 
 BENCHMARK_MAIN();
