@@ -211,6 +211,15 @@ TEST(ExpressionVectorProgram, InputsConstantsAndRepeatsAmongReusedSlots) {
   EXPECT_EQ(values.row(7), points.row(1));
   EXPECT_TRUE((values.row(8).array() == 2.5).all());
   EXPECT_TRUE((values.row(fs.size() - 2).array() == 0.0).all());
+  // Every count of functions (the results are stored four and two at a time, then one by one):
+  // the first m functions alone give the same values, bit for bit (the functions are compiled in
+  // order, so a prefix compiles to the same instructions).
+  for (size_t m = 1; m <= 7; ++m) {
+    const std::vector<SymbolicFunction> first(fs.begin(), fs.begin() + static_cast<std::ptrdiff_t>(m));
+    Eigen::MatrixXd some;
+    FunctionBatch(first).evaluate(points, some);
+    EXPECT_EQ(some, values.topRows(static_cast<Eigen::Index>(m))) << m << " functions";
+  }
 }
 
 }  // namespace
