@@ -2,11 +2,12 @@
 #include "config/cpu_dispatch.hpp"
 #include "config/expression_printer.hpp"
 
-#include <cmath>
+#include <immintrin.h>
+
 #include <algorithm>
 #include <array>
-#include <immintrin.h>
 #include <bit>
+#include <cmath>
 #include <cstdint>
 #include <limits>
 #include <map>
@@ -45,7 +46,7 @@ using Instruction = VectorProgram::Instruction;
 
 /// Builds the program in single-assignment form (instruction i defines value i; the inputs x and y
 /// are instructions too). Equal instructions are emitted once, so the products and sums of GiNaC's
-/// flattened nodes (factors in canonical order) share their common prefixes, as the terms of a
+/// flattened nodes (operands in printed order) share their common prefixes, as the terms of a
 /// function's derivatives do. Constants become immediate operands, and a product feeding a sum
 /// becomes one multiply-add: fewer passes over the block.
 class Compiler {
@@ -342,6 +343,7 @@ class Compiler {
     });
     consider([&](Compiler& c) { return c.horner(expanded, x_symbol(), y_symbol()); });
     consider([&](Compiler& c) { return c.horner(expanded, y_symbol(), x_symbol()); });
+    if (!best) throw Unknown{};
     *this = std::move(best->compiler);
     trial_ = false;
     return best->root;

@@ -180,7 +180,8 @@ TEST(ExpressionVectorProgram, TranscendentalJetsAgreeWithMuParser) {
     for (size_t f = 0; f < fs.size(); ++f)
       for (int k = 0; k < points.cols(); ++k) {
         const double r = points.col(k).norm();
-        const double scale = c.singular ? singular_terms[f] * std::pow(r, 2.0 / 3 - order[f]) : std::pow(c.scale_per_order, order[f]);
+        const double scale = c.singular ? singular_terms[f] * std::pow(r, 2.0 / 3 - order[f])
+                                        : std::pow(c.scale_per_order, order[f]);
         const double single = fs[f](points.col(k));
         EXPECT_NEAR(values(static_cast<int>(f), k), single, 1e-13 * (1 + scale))
             << c.text << ", function " << f << " at (" << points(0, k) << ", " << points(1, k) << ")";
@@ -205,7 +206,8 @@ TEST(ExpressionVectorProgram, InputsConstantsAndRepeatsAmongReusedSlots) {
   for (size_t f = 0; f < fs.size(); ++f)
     for (int k = 0; k < points.cols(); ++k) {
       const double single = fs[f](points.col(k));
-      EXPECT_NEAR(values(static_cast<int>(f), k), single, 1e-13 * (1 + std::abs(single))) << "function " << f << " at " << k;
+      EXPECT_NEAR(values(static_cast<int>(f), k), single, 1e-13 * (1 + std::abs(single)))
+          << "function " << f << " at " << k;
     }
   EXPECT_EQ(values.row(6), points.row(0));
   EXPECT_EQ(values.row(7), points.row(1));
