@@ -1,8 +1,17 @@
 #include "config/expression_vector_program.hpp"
 #include "config/cpu_dispatch.hpp"
+#include "config/expression_printer.hpp"
 
+#include <immintrin.h>
+
+#include <algorithm>
+#include <array>
+#include <bit>
 #include <cmath>
+#include <cstdint>
+#include <limits>
 #include <map>
+#include <optional>
 #include <string>
 #include <tuple>
 
@@ -32,9 +41,19 @@ const std::map<std::string, Fn1>& unary_functions() {
 
 struct Unknown {};  // thrown inside the compiler: fall back to muParser
 
+using Op = VectorProgram::Op;
+using Instruction = VectorProgram::Instruction;
+
+/// Builds the program in single-assignment form (instruction i defines value i; the inputs x and y
+/// are instructions too). Equal instructions are emitted once, so the products and sums of GiNaC's
+/// flattened nodes (operands in printed order) share their common prefixes, as the terms of a
+/// function's derivatives do. Constants become immediate operands, and a product feeding a sum
+/// becomes one multiply-add: fewer passes over the block.
 class Compiler {
  public:
-  explicit Compiler(std::vector<VectorProgram::Instruction>& code) : code_(code) {}
+  enum : int { kOpX = 100, kOpY = 101 };  // pseudo-ops of the inputs, only in this form
+
+  std::vector<Instruction> code;
 
   int slot(const GiNaC::ex& e) {
     if (auto it = memo_.find(e); it != memo_.end()) return it->second;
@@ -44,27 +63,74 @@ class Compiler {
   }
 
  private:
-  using Op = VectorProgram::Op;
+  static constexpr int kMaxHornerDegree = 24, kMaxFactorDegree = 16;
 
-  int emit(VectorProgram::Instruction in) {
-    code_.push_back(in);
-    return static_cast<int>(code_.size()) - 1;
+  /// Immediate operands by their bits: a strict order even for NaN, and -0 apart from 0.
+  using Key = std::tuple<int, int, int, int, int, std::uint64_t, std::uint64_t>;
+
+  /// An arithmetic instruction, or the equal one already emitted.
+  int pure(Instruction in) {
+    const Key key{static_cast<int>(in.op), in.a, in.b, in.d, in.n, std::bit_cast<std::uint64_t>(in.c),
+                  std::bit_cast<std::uint64_t>(in.c2)};
+    if (auto it = pure_memo_.find(key); it != pure_memo_.end()) return it->second;
+    code.push_back(in);
+    const int s = static_cast<int>(code.size()) - 1;
+    pure_memo_.emplace(key, s);
+    return s;
+  }
+  int emit(const Instruction& in) {
+    code.push_back(in);
+    return static_cast<int>(code.size()) - 1;
+  }
+  int input(int pseudo_op) { return pure({static_cast<Op>(pseudo_op)}); }
+
+  bool constant_value(int s, double& c) const {
+    if (code[s].op != Op::constant) return false;
+    c = code[s].c;
+    return true;
+  }
+  int literal(double c) { return pure({Op::constant, -1, -1, -1, 0, c}); }
+
+  int plus(int a, int b) {
+    double ca, cb;
+    const bool a_constant = constant_value(a, ca), b_constant = constant_value(b, cb);
+    if (a_constant && b_constant) return literal(ca + cb);
+    if (b_constant) return plus_constant(a, cb);
+    if (a_constant) return plus_constant(b, ca);
+    // Copies, not references: pure() may grow `code`.
+    for (const auto& [product, other] : {std::pair{a, b}, std::pair{b, a}}) {
+      const Instruction p = code[product];
+      if (p.op == Op::mul) return pure({Op::mul_add, p.a, p.b, other});
+      if (p.op == Op::mul_c) return pure({Op::mul_c_add, p.a, -1, other, 0, p.c});
+    }
+    return pure({Op::add, a, b});
   }
 
-  /// a + b or a * b, computed once per pair of slots: the products and sums of GiNaC's flattened
-  /// nodes (factors in canonical order) share their common prefixes, as the terms of a function's
-  /// derivatives do (x²(1-x)²y²(1-y)² and its five derivatives: 62 instructions instead of 76).
-  int binary(Op op, int a, int b) {
-    const auto key = std::make_tuple(op, a, b);
-    if (auto it = binary_memo_.find(key); it != binary_memo_.end()) return it->second;
-    const int s = emit({op, a, b});
-    binary_memo_.emplace(key, s);
-    return s;
+  int plus_constant(int a, double c) {
+    if (c == 0) return a;
+    const Instruction p = code[a];
+    if (p.op == Op::mul) return pure({Op::mul_add_c, p.a, p.b, -1, 0, c});
+    if (p.op == Op::mul_c) return pure({Op::affine, p.a, -1, -1, 0, p.c, c});
+    return pure({Op::add_c, a, -1, -1, 0, c});
+  }
+
+  int times(int a, int b) {
+    double ca, cb;
+    const bool a_constant = constant_value(a, ca), b_constant = constant_value(b, cb);
+    if (a_constant && b_constant) return literal(ca * cb);
+    if (b_constant) return cb == 1 ? a : pure({Op::mul_c, a, -1, -1, 0, cb});
+    if (a_constant) return ca == 1 ? b : pure({Op::mul_c, b, -1, -1, 0, ca});
+    return pure({Op::mul, a, b});
+  }
+
+  int power_int(int base, int n) {
+    if (n == 1) return base;
+    return pure({Op::power_int, base, -1, -1, n});
   }
 
   int number(const GiNaC::numeric& n) {
     if (!n.is_real()) throw Unknown{};
-    return emit({Op::constant, -1, -1, 0, n.to_double()});
+    return literal(n.to_double());
   }
 
   int compile(const GiNaC::ex& e) {
@@ -72,8 +138,8 @@ class Compiler {
     if (is_a<numeric>(e)) return number(ex_to<numeric>(e));
     if (is_a<symbol>(e)) {
       const std::string name = ex_to<symbol>(e).get_name();
-      if (name == "x") return emit({Op::x});
-      if (name == "y") return emit({Op::y});
+      if (name == "x") return input(kOpX);
+      if (name == "y") return input(kOpY);
       throw Unknown{};
     }
     if (is_a<constant>(e)) {
@@ -81,22 +147,28 @@ class Compiler {
       if (!is_a<numeric>(value)) throw Unknown{};
       return number(ex_to<numeric>(value));
     }
-    if (is_a<add>(e) || is_a<mul>(e)) {
-      const Op op = is_a<add>(e) ? Op::add : Op::mul;
-      int acc = slot(e.op(0));
-      for (size_t i = 1; i < e.nops(); ++i) acc = binary(op, acc, slot(e.op(i)));
-      return acc;
-    }
+    if (is_a<add>(e)) return polynomial_or_sum(e);
+    if (is_a<mul>(e)) return product(e);
     if (is_a<power>(e)) {
-      const int base = slot(e.op(0));
       const ex exponent = e.op(1);
-      if (is_a<numeric>(exponent)) {
+      if (is_a<numeric>(exponent) && ex_to<numeric>(exponent).is_rational()) {
         const numeric n = ex_to<numeric>(exponent);
-        if (n.is_integer() && abs(n) <= 64) return emit({Op::power_int, base, -1, n.to_int()});
-        if (n == numeric(1, 2)) return emit({Op::sqrt, base});
-        if (n == numeric(-1, 2)) return emit({Op::power_int, emit({Op::sqrt, base}), -1, -1});
+        if (n.is_integer() && abs(n) <= 64) {
+          const int k = n.to_int();
+          return k >= 0 ? power_int(slot(e.op(0)), k) : pure({Op::div_c, power_int(slot(e.op(0)), -k), -1, -1, 0, 1.0});
+        }
+        // b^n = b^f * b^k, k = floor(n): powers of one base that differ by integers (those of a
+        // singular solution and its derivatives) take one pow and a multiply or divide each.
+        const numeric k = n - fractional_part(n);
+        if (abs(k) <= 8 && !k.is_zero()) {
+          const int fraction = slot(power(e.op(0), fractional_part(n)));
+          const int base = slot(e.op(0));
+          return k > 0 ? times(fraction, power_int(base, k.to_int()))
+                       : pure({Op::div, fraction, power_int(base, -k.to_int())});
+        }
+        if (n == numeric(1, 2)) return pure({Op::sqrt, slot(e.op(0))});
       }
-      VectorProgram::Instruction in{Op::power, base, slot(exponent)};
+      Instruction in{Op::power, slot(e.op(0)), slot(exponent)};
       in.array2 = array_pow();
       return emit(in);
     }
@@ -104,7 +176,7 @@ class Compiler {
       const std::string name = ex_to<function>(e).get_name();
       if (name == "atan2" && e.nops() == 2) {
         const int a = slot(e.op(0)), b = slot(e.op(1));
-        VectorProgram::Instruction in{Op::call2, a, b};
+        Instruction in{Op::call2, a, b};
         in.f2 = [](double u, double v) { return std::atan2(u, v); };
         in.array2 = array_atan2();
         return emit(in);
@@ -112,7 +184,7 @@ class Compiler {
       const auto& table = unary_functions();
       auto it = table.find(name);
       if (it == table.end() || e.nops() != 1) throw Unknown{};
-      VectorProgram::Instruction in{Op::call1, slot(e.op(0))};
+      Instruction in{Op::call1, slot(e.op(0))};
       in.f1 = it->second;
       in.array1 = array_function(name);
       return emit(in);
@@ -120,62 +192,336 @@ class Compiler {
     throw Unknown{};
   }
 
-  std::vector<VectorProgram::Instruction>& code_;
+  /// The operands of a sum or product ordered by their printed text. GiNaC orders them by hashes
+  /// seeded with addresses, which differ from run to run; this order makes the program, and so
+  /// the rounding of every value, the same in every run.
+  std::vector<GiNaC::ex> operands(const GiNaC::ex& e) {
+    std::vector<std::pair<std::string, GiNaC::ex>> keyed;
+    for (size_t i = 0; i < e.nops(); ++i) {
+      const GiNaC::ex o = e.op(i);
+      auto it = text_.find(o);
+      if (it == text_.end()) {
+        std::string text;
+        try {
+          text = mu_text(o);
+        } catch (const Unsupported&) {
+          throw Unknown{};
+        }
+        it = text_.emplace(o, std::move(text)).first;
+      }
+      keyed.emplace_back(it->second, o);
+    }
+    std::stable_sort(keyed.begin(), keyed.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+    std::vector<GiNaC::ex> sorted;
+    for (auto& [text, o] : keyed) sorted.push_back(o);
+    return sorted;
+  }
+
+  /// n - floor(n) for a rational n.
+  static GiNaC::numeric fractional_part(const GiNaC::numeric& n) {
+    const GiNaC::numeric r = GiNaC::mod(n.numer(), n.denom());  // in [0, denom)
+    return r / n.denom();
+  }
+
+  /// A product: the factors in x alone, those in y alone and the others each multiplied in
+  /// their order (so the derivatives of a separable u = X(x) Y(y) share X, Y and their
+  /// derivatives), then the numeric coefficient (an immediate operand, so a sum fuses it into a
+  /// multiply-add). A negative power b^-m is the factor 1/b^m, computed once for all the terms
+  /// (the derivatives of a singular solution divide by a few powers of one base in every term).
+  int product(const GiNaC::ex& e) {
+    using namespace GiNaC;
+    int in_x = -1, in_y = -1, others = -1, coefficient = -1;
+    auto join = [&](int& acc, int s) { acc = acc < 0 ? s : times(acc, s); };
+    auto group = [&](const ex& f) -> int& {
+      const bool x = f.has(x_symbol()), y = f.has(y_symbol());
+      return x && !y ? in_x : (y && !x ? in_y : others);
+    };
+    for (const ex& f : operands(e)) {
+      if (is_a<numeric>(f)) {
+        coefficient = slot(f);
+        continue;
+      }
+      if (is_a<power>(f) && is_a<numeric>(f.op(1)) && ex_to<numeric>(f.op(1)).is_rational() &&
+          ex_to<numeric>(f.op(1)).is_negative() && ex_to<numeric>(f.op(1)) >= -64) {
+        // b^(f-m) = b^f (1/b^m) with f in [0, 1).
+        const numeric n = ex_to<numeric>(f.op(1));
+        const numeric fraction = fractional_part(n);
+        if (!fraction.is_zero()) join(group(f), slot(power(f.op(0), fraction)));
+        join(group(f), pure({Op::div_c, slot(power(f.op(0), fraction - n)), -1, -1, 0, 1.0}));
+        continue;
+      }
+      join(group(f), slot(f));
+    }
+    int acc = -1;
+    for (int part : {in_x, in_y, others})
+      if (part >= 0) join(acc, part);
+    if (coefficient >= 0) acc = acc < 0 ? coefficient : times(acc, coefficient);
+    return acc;
+  }
+
+  /// A sum term by term: c * r as one multiply-add into the partial sum, the constant term
+  /// joined to the first product.
+  int sum(const GiNaC::ex& e) {
+    using namespace GiNaC;
+    std::vector<int> terms;
+    int constant_term = -1;
+    for (const ex& t : operands(e)) {
+      if (is_a<numeric>(t)) {
+        constant_term = slot(t);
+      } else if (is_a<mul>(t) && is_a<numeric>(t.op(t.nops() - 1))) {
+        const ex c = t.op(t.nops() - 1);
+        terms.push_back(times(slot(t / c), slot(c)));
+      } else {
+        terms.push_back(slot(t));
+      }
+    }
+    int acc = terms.empty() ? constant_term : terms[0];
+    if (constant_term >= 0 && !terms.empty()) acc = plus(acc, constant_term);
+    for (size_t i = 1; i < terms.size(); ++i) acc = plus(acc, terms[i]);
+    return acc;
+  }
+
+  /// Number of instructions from `first` on that `root` needs (its new cost).
+  int new_instructions(int root, int first) const {
+    std::vector<char> seen(code.size(), 0);
+    std::vector<int> stack{root};
+    int n = 0;
+    while (!stack.empty()) {
+      const int s = stack.back();
+      stack.pop_back();
+      if (s < first || seen[s]) continue;
+      seen[s] = 1;
+      ++n;
+      for (int operand : {code[s].a, code[s].b, code[s].d})
+        if (operand >= 0) stack.push_back(operand);
+    }
+    return n;
+  }
+
+  /// A sum that is a polynomial in x and y with numeric coefficients: compiled as written,
+  /// factored, and in nested Horner form (x outside, then y outside), keeping whichever adds the
+  /// fewest instructions. Expanded sources (Δ²u of a polynomial comes back as a sum of monomials) need a
+  /// third of the passes; factored derivatives usually stay as written.
+  int polynomial_or_sum(const GiNaC::ex& e) {
+    using namespace GiNaC;
+    if (trial_ || !e.is_polynomial(lst{x_symbol(), y_symbol()})) return sum(e);
+    // Degrees of the unexpanded form bound those of the expansion: keep expanding and factoring
+    // cheap (the data of a config have small degrees).
+    const int degree = e.degree(x_symbol()) + e.degree(y_symbol());
+    if (degree > kMaxHornerDegree) return sum(e);
+    const ex expanded = e.expand();
+    const int first = static_cast<int>(code.size());
+    trial_ = true;
+    struct Candidate {
+      Compiler compiler;
+      int root;
+    };
+    std::optional<Candidate> best;
+    int best_cost = 0;
+    auto consider = [&](auto&& build) {
+      Compiler trial = *this;
+      int root;
+      try {
+        root = build(trial);
+      } catch (const Unknown&) {
+        return;
+      }
+      const int cost = trial.new_instructions(root, first);
+      if (!best || cost < best_cost) best = Candidate{std::move(trial), root}, best_cost = cost;
+    };
+    consider([&](Compiler& c) { return c.sum(e); });
+    if (degree <= kMaxFactorDegree) consider([&](Compiler& c) {
+      // Factored: the derivatives of a product of powers of linear factors share those factors.
+      GiNaC::ex factored;
+      try {
+        factored = GiNaC::factor(expanded);
+      } catch (const std::exception&) {
+        throw Unknown{};
+      }
+      if (!GiNaC::is_a<GiNaC::mul>(factored) && !GiNaC::is_a<GiNaC::power>(factored)) throw Unknown{};
+      return c.slot(factored);
+    });
+    consider([&](Compiler& c) { return c.horner(expanded, x_symbol(), y_symbol()); });
+    consider([&](Compiler& c) { return c.horner(expanded, y_symbol(), x_symbol()); });
+    if (!best) throw Unknown{};
+    *this = std::move(best->compiler);
+    trial_ = false;
+    return best->root;
+  }
+
+  /// p = Σ_i outer^i q_i(inner), each q_i by Horner's rule in `inner`, then Horner's rule in `outer`.
+  int horner(const GiNaC::ex& p, const GiNaC::ex& outer, const GiNaC::ex& inner) {
+    const int n = p.degree(outer);
+    std::vector<int> q(n + 1, -1);
+    for (int i = 0; i <= n; ++i) {
+      const GiNaC::ex qi = p.coeff(outer, i);
+      if (qi.is_zero()) continue;
+      const int m = qi.degree(inner);
+      std::vector<double> c(m + 1, 0.0);
+      std::vector<bool> present(m + 1, false);
+      for (int j = 0; j <= m; ++j) {
+        const GiNaC::ex cij = qi.coeff(inner, j).evalf();
+        if (!GiNaC::is_a<GiNaC::numeric>(cij) || !GiNaC::ex_to<GiNaC::numeric>(cij).is_real()) throw Unknown{};
+        c[j] = GiNaC::ex_to<GiNaC::numeric>(cij).to_double();
+        present[j] = !cij.is_zero();
+      }
+      q[i] = horner_rule(slot(inner), [&](int j) { return present[j] ? literal(c[j]) : -1; }, m);
+    }
+    return horner_rule(slot(outer), [&](int i) { return q[i]; }, n);
+  }
+
+  /// Σ_{j ≤ m} v^j coefficient(j) by Horner's rule (coefficient -1: absent), a power of v taken
+  /// out of the lowest terms.
+  template <class Coefficient>
+  int horner_rule(int v, Coefficient coefficient, int m) {
+    int lowest = 0;
+    while (lowest < m && coefficient(lowest) < 0) ++lowest;
+    int acc = coefficient(m);
+    for (int j = m - 1; j >= lowest; --j) {
+      acc = times(acc, v);
+      if (const int cj = coefficient(j); cj >= 0) acc = plus(acc, cj);
+    }
+    return lowest == 0 ? acc : times(acc, power_int(v, lowest));
+  }
+
+  static GiNaC::ex x_symbol() { return sym_x(); }
+  static GiNaC::ex y_symbol() { return sym_y(); }
+
   std::map<GiNaC::ex, int, GiNaC::ex_is_less> memo_;
-  std::map<std::tuple<Op, int, int>, int> binary_memo_;
+  std::map<Key, int> pure_memo_;
+  std::map<GiNaC::ex, std::string, GiNaC::ex_is_less> text_;  ///< operands() keys
+  bool trial_ = false;  ///< inside one candidate of polynomial_or_sum: no nested choices
 };
 
-/// v^n by squaring (n may be negative).
+/// v^n by squaring (n >= 0).
 double integer_power(double v, int n) {
-  unsigned m = static_cast<unsigned>(n < 0 ? -n : n);
+  unsigned m = static_cast<unsigned>(n);
   double result = 1.0, base = v;
   while (m) {
     if (m & 1u) result *= base;
     base *= base;
     m >>= 1u;
   }
-  return n < 0 ? 1.0 / result : result;
+  return result;
 }
 
 }  // namespace
 
 std::optional<VectorProgram> vector_program(const std::vector<GiNaC::ex>& es) {
-  VectorProgram program;
+  Compiler compiler;
+  std::vector<int> roots;
   try {
-    Compiler compiler(program.code_);
-    for (const GiNaC::ex& e : es) program.results_.push_back(compiler.slot(e));
+    for (const GiNaC::ex& e : es) roots.push_back(compiler.slot(e));
   } catch (const Unknown&) {
     return std::nullopt;
   }
+  const std::vector<Instruction>& ssa = compiler.code;
+  const int n = static_cast<int>(ssa.size());
+  auto operands = [](const Instruction& in) { return std::array<int, 3>{in.a, in.b, in.d}; };
+
+  // What the results need, and where each value is read for the last time (results: never).
+  std::vector<char> live(n, 0);
+  for (int r : roots) live[r] = 1;
+  for (int i = n - 1; i >= 0; --i)
+    if (live[i])
+      for (int s : operands(ssa[i]))
+        if (s >= 0) live[s] = 1;
+  constexpr int kForever = std::numeric_limits<int>::max();
+  std::vector<int> last_use(n, -1);
+  for (int i = 0; i < n; ++i)
+    if (live[i])
+      for (int s : operands(ssa[i]))
+        if (s >= 0) last_use[s] = std::max(last_use[s], i);
+  for (int r : roots) last_use[r] = kForever;
+
+  // Slots reused as soon as their value is dead, so the working set stays in the first-level cache.
+  // Every operation is elementwise, so an instruction may overwrite an operand it reads last.
+  VectorProgram program;
+  std::vector<int> slot_of(n, -1), free_slots;
+  for (int i = 0; i < n; ++i) {
+    if (!live[i]) continue;
+    const Instruction& in = ssa[i];
+    if (static_cast<int>(in.op) == Compiler::kOpX || static_cast<int>(in.op) == Compiler::kOpY) {
+      slot_of[i] = static_cast<int>(in.op) == Compiler::kOpX ? VectorProgram::kInputX : VectorProgram::kInputY;
+      continue;
+    }
+    Instruction out = in;
+    for (int* s : {&out.a, &out.b, &out.d})
+      if (*s >= 0) *s = slot_of[*s];
+    for (int s : operands(in))
+      if (s >= 0 && last_use[s] == i && slot_of[s] >= 0 &&
+          std::find(free_slots.begin(), free_slots.end(), slot_of[s]) == free_slots.end())
+        free_slots.push_back(slot_of[s]);
+    if (free_slots.empty()) {
+      out.out = program.slots_++;
+    } else {
+      out.out = free_slots.back();
+      free_slots.pop_back();
+    }
+    slot_of[i] = out.out;
+    program.code_.push_back(out);
+  }
+  for (int r : roots) program.results_.push_back(slot_of[r]);
   return program;
 }
 
-// Compiled twice, the AVX2 body chosen at load time where the CPU has it: the arithmetic loops
-// then run four points per instruction instead of two.
-IGA_AVX2_CLONES
-void VectorProgram::run(const double* x, const double* y, int count, std::vector<double>& work, double* values,
-                        int stride) const {
-  work.resize(code_.size() * kBlock);
-  for (size_t i = 0; i < code_.size(); ++i) {
-    const Instruction& in = code_[i];
-    double* out = &work[i * kBlock];
-    const double* a = in.a >= 0 ? &work[static_cast<size_t>(in.a) * kBlock] : nullptr;
-    const double* b = in.b >= 0 ? &work[static_cast<size_t>(in.b) * kBlock] : nullptr;
+namespace {
+
+template <bool kFused>
+[[gnu::always_inline]] inline double multiply_add(double a, double b, double c) {
+  if constexpr (kFused) {
+    return std::fma(a, b, c);
+  } else {
+    return a * b + c;
+  }
+}
+
+/// The body of VectorProgram::run; kFused: the multiply-adds round once (hardware FMA).
+template <bool kFused>
+[[gnu::always_inline]] inline void execute(const std::vector<VectorProgram::Instruction>& code, const double* x,
+                                           const double* y, int count, double* work) {
+  auto at = [&](int s) -> const double* {
+    return s >= 0 ? work + static_cast<size_t>(s) * VectorProgram::kBlock : (s == VectorProgram::kInputX ? x : y);
+  };
+  for (const Instruction& in : code) {
+    double* out = work + static_cast<size_t>(in.out) * VectorProgram::kBlock;
+    const double* a = at(in.a);
+    const double* b = in.b != -1 ? at(in.b) : nullptr;
+    const double* d = in.d != -1 ? at(in.d) : nullptr;
+    const double c = in.c, c2 = in.c2;
     switch (in.op) {
       case Op::constant:
-        for (int k = 0; k < count; ++k) out[k] = in.c;
-        break;
-      case Op::x:
-        for (int k = 0; k < count; ++k) out[k] = x[k];
-        break;
-      case Op::y:
-        for (int k = 0; k < count; ++k) out[k] = y[k];
+        for (int k = 0; k < count; ++k) out[k] = c;
         break;
       case Op::add:
         for (int k = 0; k < count; ++k) out[k] = a[k] + b[k];
         break;
       case Op::mul:
         for (int k = 0; k < count; ++k) out[k] = a[k] * b[k];
+        break;
+      case Op::add_c:
+        for (int k = 0; k < count; ++k) out[k] = a[k] + c;
+        break;
+      case Op::mul_c:
+        for (int k = 0; k < count; ++k) out[k] = a[k] * c;
+        break;
+      case Op::div:
+        for (int k = 0; k < count; ++k) out[k] = a[k] / b[k];
+        break;
+      case Op::div_c:
+        for (int k = 0; k < count; ++k) out[k] = c / a[k];
+        break;
+      case Op::affine:
+        for (int k = 0; k < count; ++k) out[k] = multiply_add<kFused>(a[k], c, c2);
+        break;
+      case Op::mul_add:
+        for (int k = 0; k < count; ++k) out[k] = multiply_add<kFused>(a[k], b[k], d[k]);
+        break;
+      case Op::mul_c_add:
+        for (int k = 0; k < count; ++k) out[k] = multiply_add<kFused>(a[k], c, d[k]);
+        break;
+      case Op::mul_add_c:
+        for (int k = 0; k < count; ++k) out[k] = multiply_add<kFused>(a[k], b[k], c);
         break;
       case Op::power_int:
         // The common small exponents as straight products (they vectorize; the loop does not).
@@ -188,8 +534,6 @@ void VectorProgram::run(const double* x, const double* y, int count, std::vector
             const double square = a[k] * a[k];
             out[k] = square * square;
           }
-        } else if (in.n == -1) {
-          for (int k = 0; k < count; ++k) out[k] = 1.0 / a[k];
         } else {
           for (int k = 0; k < count; ++k) out[k] = integer_power(a[k], in.n);
         }
@@ -220,8 +564,92 @@ void VectorProgram::run(const double* x, const double* y, int count, std::vector
         break;
     }
   }
-  for (size_t i = 0; i < results_.size(); ++i) {
-    const double* r = &work[static_cast<size_t>(results_[i]) * kBlock];
+}
+
+// Compiled twice, the AVX2 body chosen at load time where the CPU has it: the arithmetic loops
+// then run four points per instruction instead of two. No contraction here (the build's rule).
+IGA_AVX2_CLONES
+void execute_separate(const std::vector<Instruction>& code, const double* x, const double* y, int count,
+                      double* work) {
+  execute<false>(code, x, y, count, work);
+}
+
+// With FMA, where the CPU has it: a multiply-add rounds once instead of twice, so its result is as
+// accurate or more. Nothing here relies on the rounding of a separate product (unlike the
+// error-free transformations of double_double.hpp, which is why the rest of the build has no FMA).
+__attribute__((target("avx2,fma"))) void execute_fused(const std::vector<Instruction>& code, const double* x,
+                                                       const double* y, int count, double* work) {
+  execute<true>(code, x, y, count, work);
+}
+
+/// Results up to this many are stored by store_transposed.
+constexpr int kMaxTransposed = 64;
+
+bool cpu_has_avx2() {
+  static const bool has = __builtin_cpu_supports("avx2");
+  return has;
+}
+
+/// values[i + k * stride] = rows[i][k] for i < m, k < count: the results of a block turned to the
+/// layout of values (a point's functions together). Four functions of four points are transposed
+/// in registers and stored as four vectors, a pair of functions as two halves: a quarter or half
+/// of the stores of an element-by-element copy, which cost as much as a jet's arithmetic.
+__attribute__((target("avx2"))) void store_transposed(const double* const* rows, int m, int count, double* values,
+                                                      int stride) {
+  if (m == 1 && stride == 1) {  // one function (a source): a plain copy
+    std::copy(rows[0], rows[0] + count, values);
+    return;
+  }
+  const int quads = m & ~3, full4 = count & ~3, full2 = count & ~1;
+  const bool pair = m - quads >= 2;
+  auto at = [&](int i, int k) { return values + i + static_cast<size_t>(k) * stride; };
+  for (int i = 0; i < quads; i += 4)
+    for (int k = 0; k < full4; k += 4) {
+      const __m256d a0 = _mm256_loadu_pd(rows[i] + k), a1 = _mm256_loadu_pd(rows[i + 1] + k);
+      const __m256d a2 = _mm256_loadu_pd(rows[i + 2] + k), a3 = _mm256_loadu_pd(rows[i + 3] + k);
+      const __m256d t0 = _mm256_unpacklo_pd(a0, a1), t1 = _mm256_unpackhi_pd(a0, a1);
+      const __m256d t2 = _mm256_unpacklo_pd(a2, a3), t3 = _mm256_unpackhi_pd(a2, a3);
+      _mm256_storeu_pd(at(i, k), _mm256_permute2f128_pd(t0, t2, 0x20));
+      _mm256_storeu_pd(at(i, k + 1), _mm256_permute2f128_pd(t1, t3, 0x20));
+      _mm256_storeu_pd(at(i, k + 2), _mm256_permute2f128_pd(t0, t2, 0x31));
+      _mm256_storeu_pd(at(i, k + 3), _mm256_permute2f128_pd(t1, t3, 0x31));
+    }
+  if (pair)
+    for (int k = 0; k < full2; k += 2) {
+      const __m128d a = _mm_loadu_pd(rows[quads] + k), b = _mm_loadu_pd(rows[quads + 1] + k);
+      _mm_storeu_pd(at(quads, k), _mm_unpacklo_pd(a, b));
+      _mm_storeu_pd(at(quads, k + 1), _mm_unpackhi_pd(a, b));
+    }
+  // What the vectors left: the last points of each function, and a last odd function.
+  for (int i = 0; i < m; ++i) {
+    const int done = i < quads ? full4 : (pair && i < quads + 2 ? full2 : 0);
+    for (int k = done; k < count; ++k) *at(i, k) = rows[i][k];
+  }
+}
+
+}  // namespace
+
+void VectorProgram::run(const double* x, const double* y, int count, std::vector<double>& work, double* values,
+                        int stride) const {
+  if (work.size() < static_cast<size_t>(slots_) * kBlock) work.resize(static_cast<size_t>(slots_) * kBlock);
+  if (cpu_has_avx2_fma()) {
+    execute_fused(code_, x, y, count, work.data());
+  } else {
+    execute_separate(code_, x, y, count, work.data());
+  }
+  const int m = size();
+  std::array<const double*, kMaxTransposed> rows;
+  if (m <= kMaxTransposed && cpu_has_avx2()) {
+    for (int i = 0; i < m; ++i) {
+      const int s = results_[i];
+      rows[i] = s >= 0 ? &work[static_cast<size_t>(s) * kBlock] : (s == kInputX ? x : y);
+    }
+    store_transposed(rows.data(), m, count, values, stride);
+    return;
+  }
+  for (int i = 0; i < m; ++i) {
+    const int s = results_[i];
+    const double* r = s >= 0 ? &work[static_cast<size_t>(s) * kBlock] : (s == kInputX ? x : y);
     for (int k = 0; k < count; ++k) values[i + static_cast<size_t>(k) * stride] = r[k];
   }
 }
