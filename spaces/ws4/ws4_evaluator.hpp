@@ -5,12 +5,13 @@
 ///
 /// On region r of the split, u_h = Σ_i b_i B_i with b = C_K c_K is one quartic: its 15 monomial
 /// coefficients Σ_i b_i piece(r, i) cost a few hundred operations per region, and then each point
-/// costs a 15-term sum per array instead of a 51-term one, read from a 15 x q monomial table that
-/// fits in cache (the 51 x q tables of six arrays do not, and streaming them dominated the error
-/// norms). The element map is affine, so the physical derivatives are taken on the coefficients,
-/// once per region, rather than pushed forward point by point.
+/// costs a Horner evaluation instead of a 51-term sum. The element map is affine, so the physical
+/// derivatives are taken on the coefficients, once per region and element and for all regions
+/// at once (ws4_piece_kernels.hpp), rather than pushed forward point by point. Load vectors run
+/// the same steps transposed: weighted monomial moments per region, then the pieces, then C_Kᵀ.
 
 #include <Eigen/Core>
+#include <array>
 #include <map>
 #include <vector>
 
@@ -43,12 +44,9 @@ class Ws4PieceEvaluation {
   struct RuleTables {
     std::vector<Point2> points;  ///< copy, to detect a different rule at a reused address
     Eigen::Matrix2Xd reference;  ///< the points as a 2 x q matrix
-    /// Monomials (x - center(r))^a (y - center(r))^b at each point: column Poly4::index(a, b),
-    /// row = point, so that each monomial is contiguous over the points of a run.
-    Eigen::Matrix<double, Eigen::Dynamic, 15> monomials;
-    /// The same points relative to the center of their region: column 0 x, column 1 y.
+    /// The points relative to the center of their region: column 0 x, column 1 y.
     Eigen::Matrix<double, Eigen::Dynamic, 2> local;
-    std::vector<int> regions;  ///< distinct regions holding points, in order of first appearance
+    std::vector<int> regions;  ///< distinct regions holding points (slots), in order of first appearance
     /// Maximal runs of consecutive points in one region: (slot in `regions`, first point, count).
     std::vector<std::array<int, 3>> runs;
   };
@@ -58,8 +56,9 @@ class Ws4PieceEvaluation {
   const Ws4Space& space_;
   std::map<const QuadratureRule*, RuleTables> cache_;
   Eigen::Matrix<double, 51, 1> c_, b_;
-  Eigen::Matrix<double, 15, Eigen::Dynamic> region_coefficients_;  ///< u_h per used region
-  Eigen::Matrix<double, 6, 15> derivatives_;  ///< value, dx, dy, dxx, dxy, dyy per monomial
+  /// Per slot: the polynomial coefficient table of piece_kernels (rows x stride), or the 16
+  /// weighted moments of the load vector.
+  std::vector<double> slot_values_;
 };
 
 }  // namespace iga::ws4

@@ -1,0 +1,232 @@
+#include "spaces/ws4/ws4_piece_kernels.hpp"
+
+#include <cstring>
+#include <stdexcept>
+#include <type_traits>
+
+#include "spaces/ws4/poly4.hpp"
+
+/// Three copies of each kernel: baseline, AVX2 + FMA (x86-64-v3) and AVX-512 (x86-64-v4). The
+/// project's IGA_AVX2_CLONES (config/cpu_dispatch.hpp) has no FMA in its AVX2 copy, and Horner's
+/// rule is a chain of multiply-adds. Clang builds (fuzz, sanitizers) need no speed: one copy.
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
+#define WS4_KERNEL_CLONES __attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")))
+#else
+#define WS4_KERNEL_CLONES
+#endif
+
+namespace iga::ws4::piece_kernels {
+
+namespace {
+
+constexpr int kMonomials = Ws4PieceTable::monomials;
+constexpr int kPadded = Ws4PieceTable::padded;
+
+/// Four doubles, one vector register of AVX2 (two SSE2 registers in the baseline copy): GCC's and
+/// Clang's vector extension, so that the loops below are vectorised whatever the cost model says.
+using V4 = double __attribute__((vector_size(4 * sizeof(double))));
+constexpr int kLanes = 4;
+
+inline V4 load(const double* p) {
+  V4 v;
+  std::memcpy(&v, p, sizeof v);
+  return v;
+}
+inline void store(double* p, V4 v) { std::memcpy(p, &v, sizeof v); }
+template <class T>
+inline T splat(double a) {
+  if constexpr (std::is_same_v<T, double>)
+    return a;
+  else
+    return T{} + a;
+}
+
+/// p(x, y) for degree <= D, coefficients in Poly4 index order: Horner in x for each power of y,
+/// then in y. T = double or V4 (four points at once, the same operations per lane).
+template <int D, class T>
+inline T horner(const double* c, T x, T y) {
+  T outer = splat<T>(0.0);
+  for (int b = D; b >= 0; --b) {
+    T inner = splat<T>(c[Poly4::index(D - b, b)]);
+    for (int a = D - b - 1; a >= 0; --a) inner = inner * x + c[Poly4::index(a, b)];
+    outer = outer * y + inner;
+  }
+  return outer;
+}
+
+/// Rows of `out` (degree D) = the derivative of the rows of `in` (degree D + 1) along the
+/// physical axis whose reference components are (g_xi, g_eta): for each monomial x^a y^b of
+/// degree <= D, g_xi (a + 1) in[a + 1, b] + g_eta (b + 1) in[a, b + 1], over all slots (stride
+/// a multiple of 4; rows of `in` and `out` do not overlap).
+template <int D>
+inline void derive(const double* in, double g_xi, double g_eta, double* out, int stride) {
+  for (int a = 0; a <= D; ++a)
+    for (int b = 0; a + b <= D; ++b) {
+      const double f = g_xi * (a + 1), h = g_eta * (b + 1);
+      const double* p = in + Poly4::index(a + 1, b) * stride;
+      const double* q = in + Poly4::index(a, b + 1) * stride;
+      double* o = out + Poly4::index(a, b) * stride;
+      for (int s = 0; s < stride; s += kLanes) store(o + s, f * load(p + s) + h * load(q + s));
+    }
+}
+
+/// value, dx, dy, dxx, dxy, dyy (the first 1, 3 or 6 for Order 0, 1, 2) at one point or four.
+template <int Order, class T>
+inline void point_values(const double* c, T x, T y, T* v) {
+  v[0] = horner<4>(c, x, y);
+  if constexpr (Order >= 1) {
+    v[1] = horner<3>(c + dx_row, x, y);
+    v[2] = horner<3>(c + dy_row, x, y);
+  }
+  if constexpr (Order >= 2) {
+    v[3] = horner<2>(c + dxx_row, x, y);
+    v[4] = horner<2>(c + dxy_row, x, y);
+    v[5] = horner<2>(c + dyy_row, x, y);
+  }
+}
+
+template <int Order>
+inline void evaluate_points(const double* c, const double* x, const double* y, int count, double* const* out) {
+  constexpr int n = Order == 0 ? 1 : Order == 1 ? 3 : 6;
+  int k = 0;
+  for (; k + kLanes <= count; k += kLanes) {
+    V4 v[n];
+    point_values<Order>(c, load(x + k), load(y + k), v);
+    for (int a = 0; a < n; ++a) store(out[a] + k, v[a]);
+  }
+  for (; k < count; ++k) {
+    double v[n];
+    point_values<Order>(c, x[k], y[k], v);
+    for (int a = 0; a < n; ++a) out[a][k] = v[a];
+  }
+}
+
+/// Adds w x^a y^b to sums[Poly4::index(a, b)] for all 15 monomials (T = double or V4).
+template <class T>
+inline void accumulate_moments(T x, T y, T w, T* sums) {
+  const T x2 = x * x, x3 = x2 * x, x4 = x2 * x2;
+  const T t1 = w * y, t2 = t1 * y, t3 = t2 * y, t4 = t3 * y;  // w y^b
+  sums[Poly4::index(0, 0)] += w;
+  sums[Poly4::index(1, 0)] += w * x;
+  sums[Poly4::index(2, 0)] += w * x2;
+  sums[Poly4::index(3, 0)] += w * x3;
+  sums[Poly4::index(4, 0)] += w * x4;
+  sums[Poly4::index(0, 1)] += t1;
+  sums[Poly4::index(1, 1)] += t1 * x;
+  sums[Poly4::index(2, 1)] += t1 * x2;
+  sums[Poly4::index(3, 1)] += t1 * x3;
+  sums[Poly4::index(0, 2)] += t2;
+  sums[Poly4::index(1, 2)] += t2 * x;
+  sums[Poly4::index(2, 2)] += t2 * x2;
+  sums[Poly4::index(0, 3)] += t3;
+  sums[Poly4::index(1, 3)] += t3 * x;
+  sums[Poly4::index(0, 4)] += t4;
+}
+
+/// out[0 .. 4 NB) = Σ_m moments[m] row m of a 15 x (4 NB) block (NB vectors of accumulators).
+template <int NB>
+inline void block_times_moments(const double* block, const double* moments, double* out) {
+  V4 acc[NB] = {};
+  for (int m = 0; m < kMonomials; ++m) {
+    const double mm = moments[m];
+    const double* row = block + m * NB * kLanes;
+    for (int j = 0; j < NB; ++j) acc[j] += mm * load(row + j * kLanes);
+  }
+  for (int j = 0; j < NB; ++j) store(out + j * kLanes, acc[j]);
+}
+
+}  // namespace
+
+WS4_KERNEL_CLONES
+void region_polynomials(const Ws4PieceTable& table, const int* regions, int slots, const double* b,
+                        double* coefficients, int stride) {
+  constexpr int nv = kPadded / kLanes;
+  const int* function = table.function.data();
+  const double* pieces = table.by_function.data();
+  for (int s = 0; s < slots; ++s) {
+    const int r = regions[s];
+    // Two partial sums (even and odd functions): two independent chains of multiply-adds.
+    V4 even[nv] = {}, odd[nv] = {};
+    int k = table.begin[r];
+    const int end = table.begin[r + 1];
+    for (; k + 1 < end; k += 2) {
+      const double be = b[function[k]], bo = b[function[k + 1]];
+      const double* pe = pieces + static_cast<size_t>(k) * kPadded;
+      for (int v = 0; v < nv; ++v) {
+        even[v] += be * load(pe + v * kLanes);
+        odd[v] += bo * load(pe + kPadded + v * kLanes);
+      }
+    }
+    if (k < end) {
+      const double be = b[function[k]];
+      const double* pe = pieces + static_cast<size_t>(k) * kPadded;
+      for (int v = 0; v < nv; ++v) even[v] += be * load(pe + v * kLanes);
+    }
+    double sum[kPadded];
+    for (int v = 0; v < nv; ++v) store(sum + v * kLanes, even[v] + odd[v]);
+    for (int m = 0; m < kMonomials; ++m) coefficients[m * stride + s] = sum[m];
+  }
+}
+
+WS4_KERNEL_CLONES
+void derivative_polynomials(const Eigen::Matrix2d& g, int order, double* coefficients, int stride) {
+  if (stride % kLanes != 0) throw std::logic_error("derivative_polynomials: stride must be a multiple of 4");
+  double* c = coefficients;
+  derive<3>(c + value_row * stride, g(0, 0), g(1, 0), c + dx_row * stride, stride);
+  derive<3>(c + value_row * stride, g(0, 1), g(1, 1), c + dy_row * stride, stride);
+  if (order < 2) return;
+  derive<2>(c + dx_row * stride, g(0, 0), g(1, 0), c + dxx_row * stride, stride);
+  derive<2>(c + dx_row * stride, g(0, 1), g(1, 1), c + dxy_row * stride, stride);
+  derive<2>(c + dy_row * stride, g(0, 1), g(1, 1), c + dyy_row * stride, stride);
+}
+
+WS4_KERNEL_CLONES
+void evaluate_run(const double* coefficients, int stride, int slot, int order, const double* x, const double* y,
+                  int count, double* const* out) {
+  const int used = order == 0 ? dx_row : order == 1 ? dxx_row : rows;
+  double c[rows];
+  for (int j = 0; j < used; ++j) c[j] = coefficients[j * stride + slot];
+  switch (order) {
+    case 0: evaluate_points<0>(c, x, y, count, out); break;
+    case 1: evaluate_points<1>(c, x, y, count, out); break;
+    default: evaluate_points<2>(c, x, y, count, out); break;
+  }
+}
+
+WS4_KERNEL_CLONES
+void add_moments(const double* x, const double* y, const double* w, int count, double* moments) {
+  // Four points at a time, one partial sum per monomial and lane.
+  V4 sums[kMonomials] = {};
+  int k = 0;
+  for (; k + kLanes <= count; k += kLanes) accumulate_moments(load(x + k), load(y + k), load(w + k), sums);
+  double tail[kMonomials] = {};
+  for (; k < count; ++k) accumulate_moments(x[k], y[k], w[k], tail);
+  for (int m = 0; m < kMonomials; ++m) moments[m] += ((sums[m][0] + sums[m][1]) + (sums[m][2] + sums[m][3])) + tail[m];
+}
+
+WS4_KERNEL_CLONES
+void transposed_pieces(const Ws4PieceTable& table, const int* regions, int slots, const double* moments, double* b) {
+  constexpr int kMaxWidth = 8 * kLanes;
+  if (table.max_width > kMaxWidth) throw std::logic_error("transposed_pieces: more active functions than expected");
+  const int* function = table.function.data();
+  double out[kMaxWidth];
+  for (int s = 0; s < slots; ++s) {
+    const int r = regions[s];
+    const double* block = table.by_monomial.data() + static_cast<size_t>(table.block_begin[r]) * kMonomials;
+    const double* mom = moments + static_cast<size_t>(s) * kPadded;
+    switch (table.width(r) / kLanes) {  // the register count, known to the compiler
+      case 1: block_times_moments<1>(block, mom, out); break;
+      case 2: block_times_moments<2>(block, mom, out); break;
+      case 3: block_times_moments<3>(block, mom, out); break;
+      case 4: block_times_moments<4>(block, mom, out); break;
+      case 5: block_times_moments<5>(block, mom, out); break;
+      case 6: block_times_moments<6>(block, mom, out); break;
+      case 7: block_times_moments<7>(block, mom, out); break;
+      default: block_times_moments<8>(block, mom, out); break;
+    }
+    const int first = table.begin[r], n = table.active(r);
+    for (int j = 0; j < n; ++j) b[function[first + j]] += out[j];
+  }
+}
+
+}  // namespace iga::ws4::piece_kernels
