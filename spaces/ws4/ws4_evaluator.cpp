@@ -1,6 +1,7 @@
 #include "spaces/ws4/ws4_evaluator.hpp"
 
 #include <Eigen/LU>
+#include <algorithm>
 #include <cstring>
 #include <stdexcept>
 
@@ -42,6 +43,9 @@ const Ws4PieceEvaluation::RuleTables& Ws4PieceEvaluation::tables(const Quadratur
     t.local(k, 0) = x.x();
     t.local(k, 1) = x.y();
   }
+  // Runs by slot (the order of the coefficient blocks in evaluate_function); each run writes its
+  // own points, so the order does not change the results.
+  std::stable_sort(t.runs.begin(), t.runs.end(), [](const auto& a, const auto& b) { return a[0] < b[0]; });
   return t;
 }
 
@@ -67,25 +71,30 @@ void Ws4PieceEvaluation::evaluate_function(int element, const QuadratureRule& ru
   for (int i = 0; i < Ws4Basis::size; ++i) c_(i) = coefficients(geometry.dofs[i]);
   b_.noalias() = space_.extraction(element) * c_;
 
-  // u_h on each region holding points, then its physical derivatives for all regions at once:
-  // a table of polynomial coefficients, rows contiguous over the slots (ws4_piece_kernels.hpp).
+  // u_h on each region holding points, then its physical derivatives, eight regions at a time: a
+  // table of polynomial coefficients with rows of eight slots (ws4_piece_kernels.hpp) that stays
+  // in the first-level cache while the points of those regions are evaluated.
+  constexpr int block = piece_kernels::block_slots;
   const int order = (flags & update_hessians) ? 2 : (flags & update_gradients) ? 1 : 0;
   const int slots = static_cast<int>(t.regions.size());
-  const int stride = (slots + 7) / 8 * 8;  // whole vectors per row; the padding slots stay zero
-  slot_values_.assign(static_cast<size_t>(piece_kernels::rows) * stride, 0.0);
-  piece_kernels::region_polynomials(Ws4PieceTable::reference(), t.regions.data(), slots, b_.data(),
-                                    slot_values_.data(), stride);
-  if (order > 0) piece_kernels::derivative_polynomials(space_.jacobian(element).inverse(), order, slot_values_.data(), stride);
-
+  if (slot_values_.size() != static_cast<size_t>(piece_kernels::rows) * block)
+    slot_values_.assign(static_cast<size_t>(piece_kernels::rows) * block, 0.0);
+  const Eigen::Matrix2d g = space_.jacobian(element).inverse();
   const int q = rule.size();
   Eigen::VectorXd* targets[6] = {&out.value, &out.dx, &out.dy, &out.dxx, &out.dxy, &out.dyy};
   const int arrays = order == 2 ? 6 : order == 1 ? 3 : 1;
   for (int r = 0; r < arrays; ++r) targets[r]->resize(q);
-  for (const auto& [s, first, count] : t.runs) {
-    double* rows_out[6];
-    for (int r = 0; r < arrays; ++r) rows_out[r] = targets[r]->data() + first;
-    piece_kernels::evaluate_run(slot_values_.data(), stride, s, order, t.local.col(0).data() + first,
-                                t.local.col(1).data() + first, count, rows_out);
+  for (int first_slot = 0, run = 0; first_slot < slots; first_slot += block) {
+    piece_kernels::region_polynomials(Ws4PieceTable::reference(), t.regions.data() + first_slot,
+                                      std::min(block, slots - first_slot), b_.data(), slot_values_.data());
+    if (order > 0) piece_kernels::derivative_polynomials(g, order, slot_values_.data());
+    for (; run < static_cast<int>(t.runs.size()) && t.runs[run][0] < first_slot + block; ++run) {
+      const auto& [s, first, count] = t.runs[run];
+      double* rows_out[6];
+      for (int r = 0; r < arrays; ++r) rows_out[r] = targets[r]->data() + first;
+      piece_kernels::evaluate_run(slot_values_.data(), s - first_slot, order, t.local.col(0).data() + first,
+                                  t.local.col(1).data() + first, count, rows_out);
+    }
   }
 }
 

@@ -47,7 +47,8 @@ class Ws4PieceEvaluation {
     /// The points relative to the center of their region: column 0 x, column 1 y.
     Eigen::Matrix<double, Eigen::Dynamic, 2> local;
     std::vector<int> regions;  ///< distinct regions holding points (slots), in order of first appearance
-    /// Maximal runs of consecutive points in one region: (slot in `regions`, first point, count).
+    /// Maximal runs of consecutive points in one region: (slot in `regions`, first point, count),
+    /// ordered by slot.
     std::vector<std::array<int, 3>> runs;
   };
   const RuleTables& tables(const QuadratureRule& rule);
@@ -56,8 +57,8 @@ class Ws4PieceEvaluation {
   const Ws4Space& space_;
   std::map<const QuadratureRule*, RuleTables> cache_;
   Eigen::Matrix<double, 51, 1> c_, b_;
-  /// Per slot: the polynomial coefficient table of piece_kernels (rows x stride), or the 16
-  /// weighted moments of the load vector.
+  /// The polynomial coefficients of one block of slots (piece_kernels::rows x block_slots), or
+  /// the 16 weighted moments per slot of the load vector.
   std::vector<double> slot_values_;
 };
 

@@ -14,6 +14,12 @@
 #else
 #define WS4_KERNEL_CLONES
 #endif
+/// The helpers below must be inlined into the kernels: a call would run the baseline copy.
+#if defined(__GNUC__)
+#define WS4_INLINE inline __attribute__((always_inline))
+#else
+#define WS4_INLINE inline
+#endif
 
 namespace iga::ws4::piece_kernels {
 
@@ -26,15 +32,22 @@ constexpr int kPadded = Ws4PieceTable::padded;
 /// Clang's vector extension, so that the loops below are vectorised whatever the cost model says.
 using V4 = double __attribute__((vector_size(4 * sizeof(double))));
 constexpr int kLanes = 4;
+/// Eight doubles: one AVX-512 register, two of AVX2 (the points of a run, 16 or 32 in the rules
+/// of the space, in whole vectors).
+using V8 = double __attribute__((vector_size(8 * sizeof(double))));
 
-inline V4 load(const double* p) {
-  V4 v;
+template <class V = V4>
+WS4_INLINE V load(const double* p) {
+  V v;
   std::memcpy(&v, p, sizeof v);
   return v;
 }
-inline void store(double* p, V4 v) { std::memcpy(p, &v, sizeof v); }
+template <class V>
+WS4_INLINE void store(double* p, V v) {
+  std::memcpy(p, &v, sizeof v);
+}
 template <class T>
-inline T splat(double a) {
+WS4_INLINE T splat(double a) {
   if constexpr (std::is_same_v<T, double>)
     return a;
   else
@@ -43,52 +56,59 @@ inline T splat(double a) {
 
 /// p(x, y) for degree <= D, coefficients in Poly4 index order: Horner in x for each power of y,
 /// then in y. T = double or V4 (four points at once, the same operations per lane).
-template <int D, class T>
-inline T horner(const double* c, T x, T y) {
+/// Coefficient j is c[j * S] (S: the slots of a coefficient table).
+template <int D, int S = 1, class T>
+WS4_INLINE T horner(const double* c, T x, T y) {
   T outer = splat<T>(0.0);
   for (int b = D; b >= 0; --b) {
-    T inner = splat<T>(c[Poly4::index(D - b, b)]);
-    for (int a = D - b - 1; a >= 0; --a) inner = inner * x + c[Poly4::index(a, b)];
+    T inner = splat<T>(c[Poly4::index(D - b, b) * S]);
+    for (int a = D - b - 1; a >= 0; --a) inner = inner * x + c[Poly4::index(a, b) * S];
     outer = outer * y + inner;
   }
   return outer;
 }
 
+constexpr int kSlots = block_slots;
+using VS = double __attribute__((vector_size(kSlots * sizeof(double))));  ///< one row of a table
+
 /// Rows of `out` (degree D) = the derivative of the rows of `in` (degree D + 1) along the
 /// physical axis whose reference components are (g_xi, g_eta): for each monomial x^a y^b of
-/// degree <= D, g_xi (a + 1) in[a + 1, b] + g_eta (b + 1) in[a, b + 1], over all slots (stride
-/// a multiple of 4; rows of `in` and `out` do not overlap).
+/// degree <= D, g_xi (a + 1) in[a + 1, b] + g_eta (b + 1) in[a, b + 1], for all slots.
 template <int D>
-inline void derive(const double* in, double g_xi, double g_eta, double* out, int stride) {
+WS4_INLINE void derive(const double* in, double g_xi, double g_eta, double* out) {
   for (int a = 0; a <= D; ++a)
     for (int b = 0; a + b <= D; ++b) {
       const double f = g_xi * (a + 1), h = g_eta * (b + 1);
-      const double* p = in + Poly4::index(a + 1, b) * stride;
-      const double* q = in + Poly4::index(a, b + 1) * stride;
-      double* o = out + Poly4::index(a, b) * stride;
-      for (int s = 0; s < stride; s += kLanes) store(o + s, f * load(p + s) + h * load(q + s));
+      store(out + Poly4::index(a, b) * kSlots,
+            f * load<VS>(in + Poly4::index(a + 1, b) * kSlots) + h * load<VS>(in + Poly4::index(a, b + 1) * kSlots));
     }
 }
 
 /// value, dx, dy, dxx, dxy, dyy (the first 1, 3 or 6 for Order 0, 1, 2) at one point or four.
+/// c: the column of one slot in a coefficient table.
 template <int Order, class T>
-inline void point_values(const double* c, T x, T y, T* v) {
-  v[0] = horner<4>(c, x, y);
+WS4_INLINE void point_values(const double* c, T x, T y, T* v) {
+  v[0] = horner<4, kSlots>(c, x, y);
   if constexpr (Order >= 1) {
-    v[1] = horner<3>(c + dx_row, x, y);
-    v[2] = horner<3>(c + dy_row, x, y);
+    v[1] = horner<3, kSlots>(c + dx_row * kSlots, x, y);
+    v[2] = horner<3, kSlots>(c + dy_row * kSlots, x, y);
   }
   if constexpr (Order >= 2) {
-    v[3] = horner<2>(c + dxx_row, x, y);
-    v[4] = horner<2>(c + dxy_row, x, y);
-    v[5] = horner<2>(c + dyy_row, x, y);
+    v[3] = horner<2, kSlots>(c + dxx_row * kSlots, x, y);
+    v[4] = horner<2, kSlots>(c + dxy_row * kSlots, x, y);
+    v[5] = horner<2, kSlots>(c + dyy_row * kSlots, x, y);
   }
 }
 
 template <int Order>
-inline void evaluate_points(const double* c, const double* x, const double* y, int count, double* const* out) {
+WS4_INLINE void evaluate_points(const double* c, const double* x, const double* y, int count, double* const* out) {
   constexpr int n = Order == 0 ? 1 : Order == 1 ? 3 : 6;
   int k = 0;
+  for (; k + 8 <= count; k += 8) {
+    V8 v[n];
+    point_values<Order>(c, load<V8>(x + k), load<V8>(y + k), v);
+    for (int a = 0; a < n; ++a) store(out[a] + k, v[a]);
+  }
   for (; k + kLanes <= count; k += kLanes) {
     V4 v[n];
     point_values<Order>(c, load(x + k), load(y + k), v);
@@ -103,7 +123,7 @@ inline void evaluate_points(const double* c, const double* x, const double* y, i
 
 /// Adds w x^a y^b to sums[Poly4::index(a, b)] for all 15 monomials (T = double or V4).
 template <class T>
-inline void accumulate_moments(T x, T y, T w, T* sums) {
+WS4_INLINE void accumulate_moments(T x, T y, T w, T* sums) {
   const T x2 = x * x, x3 = x2 * x, x4 = x2 * x2;
   const T t1 = w * y, t2 = t1 * y, t3 = t2 * y, t4 = t3 * y;  // w y^b
   sums[Poly4::index(0, 0)] += w;
@@ -125,7 +145,7 @@ inline void accumulate_moments(T x, T y, T w, T* sums) {
 
 /// out[0 .. 4 NB) = Σ_m moments[m] row m of a 15 x (4 NB) block (NB vectors of accumulators).
 template <int NB>
-inline void block_times_moments(const double* block, const double* moments, double* out) {
+WS4_INLINE void block_times_moments(const double* block, const double* moments, double* out) {
   V4 acc[NB] = {};
   for (int m = 0; m < kMonomials; ++m) {
     const double mm = moments[m];
@@ -139,7 +159,8 @@ inline void block_times_moments(const double* block, const double* moments, doub
 
 WS4_KERNEL_CLONES
 void region_polynomials(const Ws4PieceTable& table, const int* regions, int slots, const double* b,
-                        double* coefficients, int stride) {
+                        double* coefficients) {
+  if (slots > kSlots) throw std::logic_error("region_polynomials: more slots than a coefficient table holds");
   constexpr int nv = kPadded / kLanes;
   const int* function = table.function.data();
   const double* pieces = table.by_function.data();
@@ -164,28 +185,25 @@ void region_polynomials(const Ws4PieceTable& table, const int* regions, int slot
     }
     double sum[kPadded];
     for (int v = 0; v < nv; ++v) store(sum + v * kLanes, even[v] + odd[v]);
-    for (int m = 0; m < kMonomials; ++m) coefficients[m * stride + s] = sum[m];
+    for (int m = 0; m < kMonomials; ++m) coefficients[m * kSlots + s] = sum[m];
   }
 }
 
 WS4_KERNEL_CLONES
-void derivative_polynomials(const Eigen::Matrix2d& g, int order, double* coefficients, int stride) {
-  if (stride % kLanes != 0) throw std::logic_error("derivative_polynomials: stride must be a multiple of 4");
+void derivative_polynomials(const Eigen::Matrix2d& g, int order, double* coefficients) {
   double* c = coefficients;
-  derive<3>(c + value_row * stride, g(0, 0), g(1, 0), c + dx_row * stride, stride);
-  derive<3>(c + value_row * stride, g(0, 1), g(1, 1), c + dy_row * stride, stride);
+  derive<3>(c + value_row * kSlots, g(0, 0), g(1, 0), c + dx_row * kSlots);
+  derive<3>(c + value_row * kSlots, g(0, 1), g(1, 1), c + dy_row * kSlots);
   if (order < 2) return;
-  derive<2>(c + dx_row * stride, g(0, 0), g(1, 0), c + dxx_row * stride, stride);
-  derive<2>(c + dx_row * stride, g(0, 1), g(1, 1), c + dxy_row * stride, stride);
-  derive<2>(c + dy_row * stride, g(0, 1), g(1, 1), c + dyy_row * stride, stride);
+  derive<2>(c + dx_row * kSlots, g(0, 0), g(1, 0), c + dxx_row * kSlots);
+  derive<2>(c + dx_row * kSlots, g(0, 1), g(1, 1), c + dxy_row * kSlots);
+  derive<2>(c + dy_row * kSlots, g(0, 1), g(1, 1), c + dyy_row * kSlots);
 }
 
 WS4_KERNEL_CLONES
-void evaluate_run(const double* coefficients, int stride, int slot, int order, const double* x, const double* y,
-                  int count, double* const* out) {
-  const int used = order == 0 ? dx_row : order == 1 ? dxx_row : rows;
-  double c[rows];
-  for (int j = 0; j < used; ++j) c[j] = coefficients[j * stride + slot];
+void evaluate_run(const double* coefficients, int slot, int order, const double* x, const double* y, int count,
+                  double* const* out) {
+  const double* c = coefficients + slot;
   switch (order) {
     case 0: evaluate_points<0>(c, x, y, count, out); break;
     case 1: evaluate_points<1>(c, x, y, count, out); break;

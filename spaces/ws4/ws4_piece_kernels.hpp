@@ -4,8 +4,9 @@
 /// the compiler turns into vector instructions (compiled for the x86-64 baseline, AVX2 + FMA and
 /// AVX-512, the copy chosen at load time).
 ///
-/// One discrete function on one element is a table of polynomial coefficients, one column per
-/// *slot* (a region of the split holding points of the rule), `stride` columns apart row by row:
+/// One discrete function on one element is a sequence of tables of polynomial coefficients, each
+/// for block_slots *slots* (regions of the split holding points of the rule), one column per slot
+/// and one row per monomial coefficient (a table stays in the first-level cache):
 /// rows [0, 15) the quartic u_h, then the physical derivatives (cubics ∂x, ∂y: 10 rows each,
 /// quadratics ∂xx, ∂xy, ∂yy: 6 rows each), all in coordinates relative to the region's center.
 /// Rows are contiguous over slots, so derivatives are taken for all regions at once.
@@ -18,21 +19,24 @@ namespace iga::ws4::piece_kernels {
 
 /// First row of each polynomial in the coefficient table, and the number of rows.
 inline constexpr int value_row = 0, dx_row = 15, dy_row = 25, dxx_row = 35, dxy_row = 41, dyy_row = 47, rows = 53;
+/// Slots per coefficient table: one AVX-512 vector per row. A table is rows x block_slots.
+inline constexpr int block_slots = 8;
 
-/// coefficients[m * stride + s] = Σ_i b[i] piece(regions[s], i) (m < 15): u_h on each listed region.
+/// coefficients[m * block_slots + s] = Σ_i b[i] piece(regions[s], i) (m < 15, s < slots <=
+/// block_slots): u_h on each listed region.
 void region_polynomials(const Ws4PieceTable& table, const int* regions, int slots, const double* b,
-                        double* coefficients, int stride);
+                        double* coefficients);
 
-/// The derivative rows of `coefficients` from its value rows, for all `stride` slots: ∂x_j = Σ_k
+/// The derivative rows of a table from its value rows, for all its slots: ∂x_j = Σ_k
 /// g(k, j) ∂ξ_k for the affine map ξ = g (x - p0) (g the inverse Jacobian). `order` 1 fills the
 /// gradient rows, 2 the Hessian rows too.
-void derivative_polynomials(const Eigen::Matrix2d& g, int order, double* coefficients, int stride);
+void derivative_polynomials(const Eigen::Matrix2d& g, int order, double* coefficients);
 
 /// u_h (order 0), with its gradient (1) and Hessian (2), at `count` points of the region in
-/// `slot`, from their coordinates x, y relative to the region's center: Horner per point.
+/// `slot` of a table, from their coordinates x, y relative to the region's center: Horner per point.
 /// out[0..5] = value, dx, dy, dxx, dxy, dyy (the first 1, 3 or 6 are written).
-void evaluate_run(const double* coefficients, int stride, int slot, int order, const double* x, const double* y,
-                  int count, double* const* out);
+void evaluate_run(const double* coefficients, int slot, int order, const double* x, const double* y, int count,
+                  double* const* out);
 
 /// moments[Poly4::index(a, b)] += Σ_k w[k] x[k]^a y[k]^b over `count` points.
 void add_moments(const double* x, const double* y, const double* w, int count, double* moments);
