@@ -23,13 +23,14 @@ const Ws4PieceEvaluation::RuleTables& Ws4PieceEvaluation::tables(const Quadratur
   const Ws4Basis& basis = Ws4Basis::reference();
   const int q = rule.size();
   t.points = rule.points;
-  t.reference.resize(2, q);
+  t.reference.resize(q, 2);
   t.local.resize(q, 2);
   t.regions.clear();
   t.runs.clear();
   std::vector<int> slot(basis.split().regions().size(), -1);
   for (int k = 0; k < q; ++k) {
-    t.reference.col(k) = rule.points[k];
+    t.reference(k, 0) = rule.points[k].x();
+    t.reference(k, 1) = rule.points[k].y();
     const int r = basis.split().locate(rule.points[k]);
     if (slot[r] < 0) {
       slot[r] = static_cast<int>(t.regions.size());
@@ -53,9 +54,13 @@ void Ws4PieceEvaluation::fill_geometry(int element, const RuleTables& t, PointVa
   space_.element_dofs(element, out.dofs);
   const Eigen::Matrix2d j = space_.jacobian(element);
   const Point2 p0 = space_.mesh().vertices()[space_.mesh().triangle(element)[0]];
-  out.x.noalias() = j * t.reference;
-  out.x.colwise() += p0;
-  out.jacobian.assign(t.points.size(), j);
+  const int q = static_cast<int>(t.points.size());
+  out.x.resize(2, q);
+  piece_kernels::affine_points(j, p0, t.reference.col(0).data(), t.reference.col(1).data(), q, out.x.data());
+  // One Jacobian per point, as PointValues has it (the map is affine: all the same).
+  static_assert(sizeof(Eigen::Matrix2d) == 4 * sizeof(double));
+  out.jacobian.resize(q);
+  piece_kernels::repeat_matrix(j, q, out.jacobian.data()->data());
 }
 
 void Ws4PieceEvaluation::evaluate_geometry(int element, const QuadratureRule& rule, PointValues& out) {

@@ -43,7 +43,7 @@ class Ws4PieceEvaluation {
   /// The points of one rule grouped by split region.
   struct RuleTables {
     std::vector<Point2> points;  ///< copy, to detect a different rule at a reused address
-    Eigen::Matrix2Xd reference;  ///< the points as a 2 x q matrix
+    Eigen::Matrix<double, Eigen::Dynamic, 2> reference;  ///< the points: column 0 x, column 1 y
     /// The points relative to the center of their region: column 0 x, column 1 y.
     Eigen::Matrix<double, Eigen::Dynamic, 2> local;
     std::vector<int> regions;  ///< distinct regions holding points (slots), in order of first appearance

@@ -143,6 +143,14 @@ WS4_INLINE void accumulate_moments(T x, T y, T w, T* sums) {
   sums[Poly4::index(0, 4)] += t4;
 }
 
+/// (Σ a, Σ b, Σ c, Σ d) over the lanes of each, (l0 + l1) + (l2 + l3): three additions and six
+/// shuffles for four sums.
+WS4_INLINE V4 sum_lanes(V4 a, V4 b, V4 c, V4 d) {
+  const V4 ab = __builtin_shufflevector(a, b, 0, 4, 2, 6) + __builtin_shufflevector(a, b, 1, 5, 3, 7);
+  const V4 cd = __builtin_shufflevector(c, d, 0, 4, 2, 6) + __builtin_shufflevector(c, d, 1, 5, 3, 7);
+  return __builtin_shufflevector(ab, cd, 0, 1, 4, 5) + __builtin_shufflevector(ab, cd, 2, 3, 6, 7);
+}
+
 /// out[0 .. 4 NB) = Σ_m moments[m] row m of a 15 x (4 NB) block (NB vectors of accumulators).
 template <int NB>
 WS4_INLINE void block_times_moments(const double* block, const double* moments, double* out) {
@@ -213,13 +221,17 @@ void evaluate_run(const double* coefficients, int slot, int order, const double*
 
 WS4_KERNEL_CLONES
 void add_moments(const double* x, const double* y, const double* w, int count, double* moments) {
-  // Four points at a time, one partial sum per monomial and lane.
-  V4 sums[kMonomials] = {};
-  int k = 0;
-  for (; k + kLanes <= count; k += kLanes) accumulate_moments(load(x + k), load(y + k), load(w + k), sums);
-  double tail[kMonomials] = {};
-  for (; k < count; ++k) accumulate_moments(x[k], y[k], w[k], tail);
-  for (int m = 0; m < kMonomials; ++m) moments[m] += ((sums[m][0] + sums[m][1]) + (sums[m][2] + sums[m][3])) + tail[m];
+  // Four points at a time, one partial sum per monomial and lane; the lanes are added four
+  // monomials at a time (sum_lanes), the last of the 16 being zero.
+  const int whole = count / kLanes * kLanes;
+  if (whole > 0) {
+    V4 sums[kPadded];
+    for (V4& v : sums) v = V4{};
+    for (int k = 0; k < whole; k += kLanes) accumulate_moments(load(x + k), load(y + k), load(w + k), sums);
+    for (int m = 0; m < kPadded; m += kLanes)
+      store(moments + m, load(moments + m) + sum_lanes(sums[m], sums[m + 1], sums[m + 2], sums[m + 3]));
+  }
+  for (int k = whole; k < count; ++k) accumulate_moments(x[k], y[k], w[k], moments);
 }
 
 WS4_KERNEL_CLONES
@@ -245,6 +257,29 @@ void transposed_pieces(const Ws4PieceTable& table, const int* regions, int slots
     const int first = table.begin[r], n = table.active(r);
     for (int j = 0; j < n; ++j) b[function[first + j]] += out[j];
   }
+}
+
+WS4_KERNEL_CLONES
+void affine_points(const Eigen::Matrix2d& j, const Point2& p0, const double* xi, const double* eta, int count,
+                   double* x) {
+  const double j00 = j(0, 0), j01 = j(0, 1), j10 = j(1, 0), j11 = j(1, 1), x0 = p0.x(), y0 = p0.y();
+  int k = 0;
+  for (; k + kLanes <= count; k += kLanes) {
+    const V4 a = load(xi + k), b = load(eta + k);
+    const V4 u = x0 + j00 * a + j01 * b, v = y0 + j10 * a + j11 * b;
+    store(x + 2 * k, __builtin_shufflevector(u, v, 0, 4, 1, 5));
+    store(x + 2 * k + kLanes, __builtin_shufflevector(u, v, 2, 6, 3, 7));
+  }
+  for (; k < count; ++k) {
+    x[2 * k] = x0 + j00 * xi[k] + j01 * eta[k];
+    x[2 * k + 1] = y0 + j10 * xi[k] + j11 * eta[k];
+  }
+}
+
+WS4_KERNEL_CLONES
+void repeat_matrix(const Eigen::Matrix2d& j, int count, double* out) {
+  const V4 m = {j(0, 0), j(1, 0), j(0, 1), j(1, 1)};  // column-major, as Eigen stores it
+  for (int k = 0; k < count; ++k) store(out + 4 * k, m);
 }
 
 }  // namespace iga::ws4::piece_kernels

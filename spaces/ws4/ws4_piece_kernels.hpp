@@ -13,6 +13,7 @@
 
 #include <Eigen/Core>
 
+#include "quadrature/quadrature_rule.hpp"
 #include "spaces/ws4/ws4_piece_table.hpp"
 
 namespace iga::ws4::piece_kernels {
@@ -44,5 +45,13 @@ void add_moments(const double* x, const double* y, const double* w, int count, d
 /// b[i] += piece(regions[s], i) · moments[16 s .. 16 s + 15) for every listed region and its
 /// active functions i: the transposed region_polynomials.
 void transposed_pieces(const Ws4PieceTable& table, const int* regions, int slots, const double* moments, double* b);
+
+/// x(:, k) = p0 + j (xi[k], eta[k]) for k < count, x a 2 x count column-major array: the
+/// element's affine map at the points of a rule.
+void affine_points(const Eigen::Matrix2d& j, const Point2& p0, const double* xi, const double* eta, int count,
+                   double* x);
+
+/// count copies of the 2 x 2 matrix j, column-major, one after the other (out: 4 count numbers).
+void repeat_matrix(const Eigen::Matrix2d& j, int count, double* out);
 
 }  // namespace iga::ws4::piece_kernels
