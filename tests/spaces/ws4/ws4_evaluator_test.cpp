@@ -132,8 +132,8 @@ TEST(Ws4Evaluator, PieceTableHoldsEveryNonzeroPiece) {
 
 TEST(Ws4Evaluator, EveryFlagSetAndRunLengthMatchesTheTabulatedBasis) {
   // Values alone, with gradients, with Hessians; rules whose runs (points of one region in a row)
-  // hold 3 or 6 and 7 or 14 points (remainders of the loops over 8 and 4 points) and the scattered rule (runs of one
-  // point, regions met again later, more than one block of eight regions).
+  // hold 3 or 6 and 7 or 14 points (remainders of the loops over 8 and 4 points), and the
+  // scattered rule (runs of one point, regions met again later, more than one block of regions).
   const Ws4Space space(perturbed_square(2, 41));
   const Eigen::VectorXd coef = random_vector(space.dimension(), 7);
   const auto evaluator = space.make_evaluator();
