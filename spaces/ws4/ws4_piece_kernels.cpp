@@ -69,7 +69,7 @@ WS4_INLINE T horner(const double* c, T x, T y) {
 }
 
 constexpr int kSlots = block_slots;
-using VS = double __attribute__((vector_size(kSlots * sizeof(double))));  ///< one row of a table
+static_assert(kSlots % kLanes == 0);
 
 /// Rows of `out` (degree D) = the derivative of the rows of `in` (degree D + 1) along the
 /// physical axis whose reference components are (g_xi, g_eta): for each monomial x^a y^b of
@@ -79,8 +79,11 @@ WS4_INLINE void derive(const double* in, double g_xi, double g_eta, double* out)
   for (int a = 0; a <= D; ++a)
     for (int b = 0; a + b <= D; ++b) {
       const double f = g_xi * (a + 1), h = g_eta * (b + 1);
-      store(out + Poly4::index(a, b) * kSlots,
-            f * load<VS>(in + Poly4::index(a + 1, b) * kSlots) + h * load<VS>(in + Poly4::index(a, b + 1) * kSlots));
+      const double* p = in + Poly4::index(a + 1, b) * kSlots;
+      const double* q = in + Poly4::index(a, b + 1) * kSlots;
+      double* o = out + Poly4::index(a, b) * kSlots;
+      // Four slots at a time: eight-wide vectors are split badly where there is no AVX-512.
+      for (int s = 0; s < kSlots; s += kLanes) store(o + s, f * load(p + s) + h * load(q + s));
     }
 }
 
