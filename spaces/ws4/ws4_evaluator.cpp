@@ -21,6 +21,7 @@ const Ws4PieceEvaluation::RuleTables& Ws4PieceEvaluation::tables(const Quadratur
   if (it == cache_.end() && cache_.size() >= 64) cache_.clear();  // bound temporary rules
   RuleTables& t = cache_[&rule];
   const Ws4Basis& basis = Ws4Basis::reference();
+  const Ws4PieceTable& pieces = Ws4PieceTable::reference();
   const int q = rule.size();
   t.points = rule.points;
   t.reference.resize(q, 2);
@@ -40,7 +41,8 @@ const Ws4PieceEvaluation::RuleTables& Ws4PieceEvaluation::tables(const Quadratur
       ++t.runs.back()[2];
     else
       t.runs.push_back({slot[r], k, 1});
-    const Point2 x = rule.points[k] - basis.center(r);
+    // Coordinates of the orbit's representative region, whose pieces the table holds.
+    const Point2 x = pieces.inverse_linear[r] * (rule.points[k] - basis.center(r));
     t.local(k, 0) = x.x();
     t.local(k, 1) = x.y();
   }
@@ -80,6 +82,7 @@ void Ws4PieceEvaluation::evaluate_function(int element, const QuadratureRule& ru
   // table of polynomial coefficients with rows of eight slots (ws4_piece_kernels.hpp) that stays
   // in the first-level cache while the points of those regions are evaluated.
   constexpr int block = piece_kernels::block_slots;
+  static_assert(4 * block == std::tuple_size_v<decltype(slot_maps_)>);
   const int order = (flags & update_hessians) ? 2 : (flags & update_gradients) ? 1 : 0;
   const int slots = static_cast<int>(t.regions.size());
   if (slot_values_.size() != static_cast<size_t>(piece_kernels::rows) * block)
@@ -89,10 +92,22 @@ void Ws4PieceEvaluation::evaluate_function(int element, const QuadratureRule& ru
   Eigen::VectorXd* targets[6] = {&out.value, &out.dx, &out.dy, &out.dxx, &out.dxy, &out.dyy};
   const int arrays = order == 2 ? 6 : order == 1 ? 3 : 1;
   for (int r = 0; r < arrays; ++r) targets[r]->resize(q);
+  const Ws4PieceTable& pieces = Ws4PieceTable::reference();
   for (int first_slot = 0, run = 0; first_slot < slots; first_slot += block) {
-    piece_kernels::region_polynomials(Ws4PieceTable::reference(), t.regions.data() + first_slot,
-                                      std::min(block, slots - first_slot), b_.data(), slot_values_.data());
-    if (order > 0) piece_kernels::derivative_polynomials(g, order, slot_values_.data());
+    const int n = std::min(block, slots - first_slot);
+    piece_kernels::region_polynomials(pieces, t.regions.data() + first_slot, n, b_.data(), slot_values_.data());
+    if (order > 0) {
+      // Per slot, the inverse Jacobian in its representative's coordinates: L⁻¹ g.
+      for (int s = 0; s < block; ++s) {
+        const Eigen::Matrix2d gs =
+            s < n ? Eigen::Matrix2d(pieces.inverse_linear[t.regions[first_slot + s]] * g) : Eigen::Matrix2d::Zero();
+        slot_maps_[s] = gs(0, 0);
+        slot_maps_[block + s] = gs(1, 0);
+        slot_maps_[2 * block + s] = gs(0, 1);
+        slot_maps_[3 * block + s] = gs(1, 1);
+      }
+      piece_kernels::derivative_polynomials(slot_maps_.data(), order, slot_values_.data());
+    }
     for (; run < static_cast<int>(t.runs.size()) && t.runs[run][0] < first_slot + block; ++run) {
       const auto& [s, first, count] = t.runs[run];
       double* rows_out[6];

@@ -44,7 +44,8 @@ class Ws4PieceEvaluation {
   struct RuleTables {
     std::vector<Point2> points;  ///< copy, to detect a different rule at a reused address
     Eigen::Matrix<double, Eigen::Dynamic, 2> reference;  ///< the points: column 0 x, column 1 y
-    /// The points relative to the center of their region: column 0 x, column 1 y.
+    /// The points relative to the center of their region, in the coordinates of the region's
+    /// representative (Ws4PieceTable): column 0 x, column 1 y.
     Eigen::Matrix<double, Eigen::Dynamic, 2> local;
     std::vector<int> regions;  ///< distinct regions holding points (slots), in order of first appearance
     /// Maximal runs of consecutive points in one region: (slot in `regions`, first point, count),
@@ -60,6 +61,7 @@ class Ws4PieceEvaluation {
   /// The polynomial coefficients of one block of slots (piece_kernels::rows x block_slots), or
   /// the 16 weighted moments per slot of the load vector.
   std::vector<double> slot_values_;
+  std::array<double, 32> slot_maps_{};  ///< the slots' inverse Jacobians (piece_kernels::derivative_polynomials)
 };
 
 }  // namespace iga::ws4

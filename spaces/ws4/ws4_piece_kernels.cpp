@@ -72,19 +72,21 @@ constexpr int kSlots = block_slots;
 static_assert(kSlots % kLanes == 0);
 
 /// Rows of `out` (degree D) = the derivative of the rows of `in` (degree D + 1) along the
-/// physical axis whose reference components are (g_xi, g_eta): for each monomial x^a y^b of
-/// degree <= D, g_xi (a + 1) in[a + 1, b] + g_eta (b + 1) in[a, b + 1], for all slots.
+/// physical axis whose components in each slot's coordinates are (g_xi[s], g_eta[s]): for each
+/// monomial x^a y^b of degree <= D, g_xi (a + 1) in[a + 1, b] + g_eta (b + 1) in[a, b + 1].
 template <int D>
-WS4_INLINE void derive(const double* in, double g_xi, double g_eta, double* out) {
-  for (int a = 0; a <= D; ++a)
-    for (int b = 0; a + b <= D; ++b) {
-      const double f = g_xi * (a + 1), h = g_eta * (b + 1);
-      const double* p = in + Poly4::index(a + 1, b) * kSlots;
-      const double* q = in + Poly4::index(a, b + 1) * kSlots;
-      double* o = out + Poly4::index(a, b) * kSlots;
-      // Four slots at a time: eight-wide vectors are split badly where there is no AVX-512.
-      for (int s = 0; s < kSlots; s += kLanes) store(o + s, f * load(p + s) + h * load(q + s));
-    }
+WS4_INLINE void derive(const double* in, const double* g_xi, const double* g_eta, double* out) {
+  // Four slots at a time: eight-wide vectors are split badly where there is no AVX-512.
+  for (int s = 0; s < kSlots; s += kLanes) {
+    const V4 gx = load(g_xi + s), ge = load(g_eta + s);
+    for (int a = 0; a <= D; ++a)
+      for (int b = 0; a + b <= D; ++b) {
+        const V4 f = gx * (a + 1), h = ge * (b + 1);
+        const V4 p = load(in + Poly4::index(a + 1, b) * kSlots + s);
+        const V4 q = load(in + Poly4::index(a, b + 1) * kSlots + s);
+        store(out + Poly4::index(a, b) * kSlots + s, f * p + h * q);
+      }
+  }
 }
 
 /// value, dx, dy, dxx, dxy, dyy (the first 1, 3 or 6 for Order 0, 1, 2) at one point or four.
@@ -155,15 +157,21 @@ WS4_INLINE V4 sum_lanes(V4 a, V4 b, V4 c, V4 d) {
 }
 
 /// out[0 .. 4 NB) = Σ_m moments[m] row m of a 15 x (4 NB) block (NB vectors of accumulators).
+/// Two partial sums (even and odd m) halve the chains of dependent multiply-adds.
 template <int NB>
 WS4_INLINE void block_times_moments(const double* block, const double* moments, double* out) {
-  V4 acc[NB] = {};
-  for (int m = 0; m < kMonomials; ++m) {
-    const double mm = moments[m];
+  V4 even[NB] = {}, odd[NB] = {};
+  int m = 0;
+  for (; m + 1 < kMonomials; m += 2) {
+    const double me = moments[m], mo = moments[m + 1];
     const double* row = block + m * NB * kLanes;
-    for (int j = 0; j < NB; ++j) acc[j] += mm * load(row + j * kLanes);
+    for (int j = 0; j < NB; ++j) {
+      even[j] += me * load(row + j * kLanes);
+      odd[j] += mo * load(row + (NB + j) * kLanes);
+    }
   }
-  for (int j = 0; j < NB; ++j) store(out + j * kLanes, acc[j]);
+  const double* row = block + m * NB * kLanes;  // the last (15th) row
+  for (int j = 0; j < NB; ++j) store(out + j * kLanes, (even[j] + moments[m] * load(row + j * kLanes)) + odd[j]);
 }
 
 }  // namespace
@@ -181,9 +189,10 @@ void region_polynomials(const Ws4PieceTable& table, const int* regions, int slot
     V4 even[nv] = {}, odd[nv] = {};
     int k = table.begin[r];
     const int end = table.begin[r + 1];
+    const double* first_piece = pieces + static_cast<size_t>(table.piece_begin[r] - k) * kPadded;
     for (; k + 1 < end; k += 2) {
       const double be = b[function[k]], bo = b[function[k + 1]];
-      const double* pe = pieces + static_cast<size_t>(k) * kPadded;
+      const double* pe = first_piece + static_cast<size_t>(k) * kPadded;
       for (int v = 0; v < nv; ++v) {
         even[v] += be * load(pe + v * kLanes);
         odd[v] += bo * load(pe + kPadded + v * kLanes);
@@ -191,7 +200,7 @@ void region_polynomials(const Ws4PieceTable& table, const int* regions, int slot
     }
     if (k < end) {
       const double be = b[function[k]];
-      const double* pe = pieces + static_cast<size_t>(k) * kPadded;
+      const double* pe = first_piece + static_cast<size_t>(k) * kPadded;
       for (int v = 0; v < nv; ++v) even[v] += be * load(pe + v * kLanes);
     }
     double sum[kPadded];
@@ -201,14 +210,15 @@ void region_polynomials(const Ws4PieceTable& table, const int* regions, int slot
 }
 
 WS4_KERNEL_CLONES
-void derivative_polynomials(const Eigen::Matrix2d& g, int order, double* coefficients) {
+void derivative_polynomials(const double* g, int order, double* coefficients) {
   double* c = coefficients;
-  derive<3>(c + value_row * kSlots, g(0, 0), g(1, 0), c + dx_row * kSlots);
-  derive<3>(c + value_row * kSlots, g(0, 1), g(1, 1), c + dy_row * kSlots);
+  const double *g00 = g, *g10 = g + kSlots, *g01 = g + 2 * kSlots, *g11 = g + 3 * kSlots;
+  derive<3>(c + value_row * kSlots, g00, g10, c + dx_row * kSlots);
+  derive<3>(c + value_row * kSlots, g01, g11, c + dy_row * kSlots);
   if (order < 2) return;
-  derive<2>(c + dx_row * kSlots, g(0, 0), g(1, 0), c + dxx_row * kSlots);
-  derive<2>(c + dx_row * kSlots, g(0, 1), g(1, 1), c + dxy_row * kSlots);
-  derive<2>(c + dy_row * kSlots, g(0, 1), g(1, 1), c + dyy_row * kSlots);
+  derive<2>(c + dx_row * kSlots, g00, g10, c + dxx_row * kSlots);
+  derive<2>(c + dx_row * kSlots, g01, g11, c + dxy_row * kSlots);
+  derive<2>(c + dy_row * kSlots, g01, g11, c + dyy_row * kSlots);
 }
 
 WS4_KERNEL_CLONES

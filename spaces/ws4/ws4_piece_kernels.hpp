@@ -29,9 +29,10 @@ void region_polynomials(const Ws4PieceTable& table, const int* regions, int slot
                         double* coefficients);
 
 /// The derivative rows of a table from its value rows, for all its slots: ∂x_j = Σ_k
-/// g(k, j) ∂ξ_k for the affine map ξ = g (x - p0) (g the inverse Jacobian). `order` 1 fills the
-/// gradient rows, 2 the Hessian rows too.
-void derivative_polynomials(const Eigen::Matrix2d& g, int order, double* coefficients);
+/// g_s(k, j) ∂ξ_k where ξ = g_s x + const are slot s's coordinates of the physical point x; g holds
+/// g_s(0, 0), g_s(1, 0), g_s(0, 1), g_s(1, 1) as four rows of block_slots numbers. `order` 1 fills
+/// the gradient rows, 2 the Hessian rows too.
+void derivative_polynomials(const double* g, int order, double* coefficients);
 
 /// u_h (order 0), with its gradient (1) and Hessian (2), at `count` points of the region in
 /// `slot` of a table, from their coordinates x, y relative to the region's center: Horner per point.

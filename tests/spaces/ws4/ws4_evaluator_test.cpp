@@ -101,33 +101,53 @@ TEST(Ws4Evaluator, LoadVectorMatchesTheTabulatedBasis) {
   }
 }
 
-TEST(Ws4Evaluator, PieceTableHoldsEveryNonzeroPiece) {
-  // Both layouts are copies of Ws4Basis::piece: equal bit for bit, and every piece left out is zero.
+TEST(Ws4Evaluator, PieceTableHoldsEveryNonzeroPieceOncePerOrbit) {
+  // Every region's listed functions have, in its representative's coordinates ξ = L⁻¹ (x - c),
+  // the representative's pieces: piece(r, function[j])(L ξ) = stored piece j (ξ). Both are
+  // computed separately (in long double, then rounded), and L has integer entries: they agree to
+  // a few units of the last place of the largest term, checked at points of the size of the
+  // regions (|ξ| <= 0.2). Every function left out is zero on the region, and the representatives
+  // are at most a third of the regions (orbits of six, three or one).
   const Ws4Basis& basis = Ws4Basis::reference();
   const Ws4PieceTable& t = Ws4PieceTable::reference();
   ASSERT_EQ(t.num_regions(), static_cast<int>(basis.split().regions().size()));
+  int representatives = 0;
+  const Point2 samples[4] = {Point2(0.0, 0.0), Point2(0.2, -0.1), Point2(-0.13, 0.17), Point2(0.05, 0.2)};
   for (int r = 0; r < t.num_regions(); ++r) {
+    const int r0 = t.representative[r];
+    ASSERT_EQ(t.representative[r0], r0);
+    representatives += r0 == r;
     ASSERT_EQ(t.width(r) % 4, 0);
     ASSERT_GE(t.width(r), t.active(r));
     ASSERT_LE(t.width(r), t.max_width);
+    const Eigen::Matrix2d linv = t.inverse_linear[r];
+    EXPECT_EQ(std::abs(linv.determinant()), 1.0);
+    const Eigen::Matrix2d l = linv.inverse();
     std::vector<bool> listed(Ws4Basis::size, false);
     const double* block = t.by_monomial.data() + static_cast<size_t>(t.block_begin[r]) * Ws4PieceTable::monomials;
     for (int j = 0; j < t.active(r); ++j) {
       const int i = t.function[t.begin[r] + j];
+      ASSERT_FALSE(listed[i]);
       listed[i] = true;
-      const double* f = t.by_function.data() + static_cast<size_t>(t.begin[r] + j) * Ws4PieceTable::padded;
+      const double* f = t.by_function.data() + static_cast<size_t>(t.piece_begin[r] + j) * Ws4PieceTable::padded;
       EXPECT_EQ(f[Ws4PieceTable::padded - 1], 0.0);
+      Poly4 stored;
+      double scale = 0;
       for (int a = 0; a <= Poly4::max_degree; ++a)
         for (int b = 0; a + b <= Poly4::max_degree; ++b) {
-          EXPECT_EQ(f[Poly4::index(a, b)], basis.piece(r, i).coefficient(a, b));
-          EXPECT_EQ(block[Poly4::index(a, b) * t.width(r) + j], basis.piece(r, i).coefficient(a, b));
+          stored.coefficient(a, b) = f[Poly4::index(a, b)];
+          scale += std::abs(f[Poly4::index(a, b)]);
+          EXPECT_EQ(block[Poly4::index(a, b) * t.width(r) + j], f[Poly4::index(a, b)]);
         }
+      for (const Point2& xi : samples)
+        EXPECT_NEAR(basis.piece(r, i)(Point2(l * xi)), stored(xi), 1e-14 * scale) << "region " << r << " function " << i;
     }
     for (int j = t.active(r); j < t.width(r); ++j)
       for (int m = 0; m < Ws4PieceTable::monomials; ++m) EXPECT_EQ(block[m * t.width(r) + j], 0.0);
     for (int i = 0; i < Ws4Basis::size; ++i)
       if (!listed[i]) EXPECT_TRUE(basis.piece(r, i).is_zero()) << "region " << r << " function " << i;
   }
+  EXPECT_LE(3 * representatives, t.num_regions());
 }
 
 TEST(Ws4Evaluator, EveryFlagSetAndRunLengthMatchesTheTabulatedBasis) {
