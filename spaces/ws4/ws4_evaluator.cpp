@@ -49,6 +49,20 @@ const Ws4PieceEvaluation::RuleTables& Ws4PieceEvaluation::tables(const Quadratur
   // Runs by slot (the order of the coefficient blocks in evaluate_function); each run writes its
   // own points, so the order does not change the results.
   std::stable_sort(t.runs.begin(), t.runs.end(), [](const auto& a, const auto& b) { return a[0] < b[0]; });
+  // Slots grouped by orbit (the kernels read each representative's pieces once per group).
+  std::vector<std::array<int, 3>> members;  // (representative, region, slot)
+  for (int s = 0; s < static_cast<int>(t.regions.size()); ++s)
+    members.push_back({pieces.representative[t.regions[s]], t.regions[s], s});
+  std::sort(members.begin(), members.end());
+  t.orbit_regions.clear();
+  t.orbit_slots.clear();
+  t.orbit_begin.assign(1, 0);
+  for (size_t i = 0; i < members.size(); ++i) {
+    if (i > 0 && members[i][0] != members[i - 1][0]) t.orbit_begin.push_back(static_cast<int>(i));
+    t.orbit_regions.push_back(members[i][1]);
+    t.orbit_slots.push_back(members[i][2]);
+  }
+  t.orbit_begin.push_back(static_cast<int>(members.size()));
   return t;
 }
 
@@ -78,9 +92,10 @@ void Ws4PieceEvaluation::evaluate_function(int element, const QuadratureRule& ru
   for (int i = 0; i < Ws4Basis::size; ++i) c_(i) = coefficients(geometry.dofs[i]);
   b_.noalias() = space_.extraction(element) * c_;
 
-  // u_h on each region holding points, then its physical derivatives, eight regions at a time: a
-  // table of polynomial coefficients with rows of eight slots (ws4_piece_kernels.hpp) that stays
-  // in the first-level cache while the points of those regions are evaluated.
+  // u_h on each region holding points (15 rows over the slots, computed orbit by orbit), then
+  // eight regions at a time its physical derivatives: a table of polynomial coefficients with
+  // rows of eight slots (ws4_piece_kernels.hpp) that stays in the first-level cache while the
+  // points of those regions are evaluated.
   constexpr int block = piece_kernels::block_slots;
   static_assert(4 * block == std::tuple_size_v<decltype(slot_maps_)>);
   const int order = (flags & update_hessians) ? 2 : (flags & update_gradients) ? 1 : 0;
@@ -93,9 +108,18 @@ void Ws4PieceEvaluation::evaluate_function(int element, const QuadratureRule& ru
   const int arrays = order == 2 ? 6 : order == 1 ? 3 : 1;
   for (int r = 0; r < arrays; ++r) targets[r]->resize(q);
   const Ws4PieceTable& pieces = Ws4PieceTable::reference();
+  const int stride = (slots + block - 1) / block * block;
+  values_.resize(static_cast<size_t>(Ws4PieceTable::monomials) * stride);
+  for (int m = 0; m < Ws4PieceTable::monomials; ++m)
+    std::fill(values_.begin() + m * stride + slots, values_.begin() + (m + 1) * stride, 0.0);
+  for (size_t o = 0; o + 1 < t.orbit_begin.size(); ++o)
+    piece_kernels::orbit_polynomials(pieces, t.orbit_regions.data() + t.orbit_begin[o],
+                                     t.orbit_slots.data() + t.orbit_begin[o], t.orbit_begin[o + 1] - t.orbit_begin[o],
+                                     b_.data(), values_.data(), stride);
   for (int first_slot = 0, run = 0; first_slot < slots; first_slot += block) {
     const int n = std::min(block, slots - first_slot);
-    piece_kernels::region_polynomials(pieces, t.regions.data() + first_slot, n, b_.data(), slot_values_.data());
+    for (int m = 0; m < Ws4PieceTable::monomials; ++m)
+      std::copy_n(values_.data() + m * stride + first_slot, block, slot_values_.data() + m * block);
     if (order > 0) {
       // Per slot, the inverse Jacobian in its representative's coordinates: L⁻¹ g.
       for (int s = 0; s < block; ++s) {
@@ -128,7 +152,11 @@ void Ws4PieceEvaluation::integrate_values(int element, const QuadratureRule& rul
     piece_kernels::add_moments(t.local.col(0).data() + first, t.local.col(1).data() + first, weights.data() + first,
                                count, slot_values_.data() + static_cast<size_t>(s) * Ws4PieceTable::padded);
   b_.setZero();
-  piece_kernels::transposed_pieces(Ws4PieceTable::reference(), t.regions.data(), slots, slot_values_.data(), b_.data());
+  const Ws4PieceTable& pieces = Ws4PieceTable::reference();
+  for (size_t o = 0; o + 1 < t.orbit_begin.size(); ++o)
+    piece_kernels::orbit_transposed(pieces, t.orbit_regions.data() + t.orbit_begin[o],
+                                    t.orbit_slots.data() + t.orbit_begin[o], t.orbit_begin[o + 1] - t.orbit_begin[o],
+                                    slot_values_.data(), b_.data());
   local.noalias() = space_.extraction(element).transpose() * b_;
 }
 

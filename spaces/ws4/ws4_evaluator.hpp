@@ -51,6 +51,9 @@ class Ws4PieceEvaluation {
     /// Maximal runs of consecutive points in one region: (slot in `regions`, first point, count),
     /// ordered by slot.
     std::vector<std::array<int, 3>> runs;
+    /// The slots grouped by the orbit of their region (Ws4PieceTable::representative): group g is
+    /// orbit_regions / orbit_slots [orbit_begin[g], orbit_begin[g + 1]).
+    std::vector<int> orbit_regions, orbit_slots, orbit_begin;
   };
   const RuleTables& tables(const QuadratureRule& rule);
   void fill_geometry(int element, const RuleTables& t, PointValues& out) const;
@@ -60,6 +63,7 @@ class Ws4PieceEvaluation {
   Eigen::Matrix<double, 51, 1> c_, b_;
   /// The polynomial coefficients of one block of slots (piece_kernels::rows x block_slots), or
   /// the 16 weighted moments per slot of the load vector.
+  std::vector<double> values_;  ///< u_h per slot: 15 rows of the slots (rounded up to a block)
   std::vector<double> slot_values_;
   std::array<double, 32> slot_maps_{};  ///< the slots' inverse Jacobians (piece_kernels::derivative_polynomials)
 };

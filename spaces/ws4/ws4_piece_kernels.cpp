@@ -1,5 +1,6 @@
 #include "spaces/ws4/ws4_piece_kernels.hpp"
 
+#include <algorithm>
 #include <cstring>
 #include <stdexcept>
 #include <type_traits>
@@ -27,6 +28,10 @@ namespace {
 
 constexpr int kMonomials = Ws4PieceTable::monomials;
 constexpr int kPadded = Ws4PieceTable::padded;
+constexpr int kMaxWidth = 24;  ///< widest block of the table (checked by the kernels)
+/// Regions of one orbit taken together (a sixth of the regions have orbits of 3, the rest of 6):
+/// 3 x 4 accumulators, within the 16 vector registers of AVX2 with the piece's 4.
+constexpr int kMembers = 3;
 
 /// Four doubles, one vector register of AVX2 (two SSE2 registers in the baseline copy): GCC's and
 /// Clang's vector extension, so that the loops below are vectorised whatever the cost model says.
@@ -157,55 +162,104 @@ WS4_INLINE V4 sum_lanes(V4 a, V4 b, V4 c, V4 d) {
 }
 
 /// out[0 .. 4 NB) = Σ_m moments[m] row m of a 15 x (4 NB) block (NB vectors of accumulators).
-/// Two partial sums (even and odd m) halve the chains of dependent multiply-adds.
-template <int NB>
-WS4_INLINE void block_times_moments(const double* block, const double* moments, double* out) {
-  V4 even[NB] = {}, odd[NB] = {};
-  int m = 0;
-  for (; m + 1 < kMonomials; m += 2) {
-    const double me = moments[m], mo = moments[m + 1];
-    const double* row = block + m * NB * kLanes;
-    for (int j = 0; j < NB; ++j) {
-      even[j] += me * load(row + j * kLanes);
-      odd[j] += mo * load(row + (NB + j) * kLanes);
+/// u_h on K regions of one orbit: each piece of the representative is loaded once and serves
+/// the K regions (their functions permuted), so the table is read once per orbit, not per region;
+/// 4 K independent chains of multiply-adds.
+template <int K>
+WS4_INLINE void member_polynomials(const Ws4PieceTable& t, const int* regions, const int* slots, const double* b,
+                                   double* values, int stride) {
+  const int r0 = t.representative[regions[0]];
+  const int n = t.active(r0);
+  const double* pieces = t.by_function.data() + static_cast<size_t>(t.piece_begin[r0]) * kPadded;
+  const int* function[K];
+  for (int i = 0; i < K; ++i) function[i] = t.function.data() + t.begin[regions[i]];
+  V4 acc[K][4];
+  for (int i = 0; i < K; ++i)
+    for (int v = 0; v < 4; ++v) acc[i][v] = V4{};
+  for (int j = 0; j < n; ++j) {
+    const double* p = pieces + static_cast<size_t>(j) * kPadded;
+    const V4 p0 = load(p), p1 = load(p + 4), p2 = load(p + 8), p3 = load(p + 12);
+    for (int i = 0; i < K; ++i) {
+      const double bi = b[function[i][j]];
+      acc[i][0] += bi * p0;
+      acc[i][1] += bi * p1;
+      acc[i][2] += bi * p2;
+      acc[i][3] += bi * p3;
     }
   }
-  const double* row = block + m * NB * kLanes;  // the last (15th) row
-  for (int j = 0; j < NB; ++j) store(out + j * kLanes, (even[j] + moments[m] * load(row + j * kLanes)) + odd[j]);
+  for (int i = 0; i < K; ++i) {
+    double sum[kPadded];
+    for (int v = 0; v < 4; ++v) store(sum + 4 * v, acc[i][v]);
+    for (int m = 0; m < kMonomials; ++m) values[m * stride + slots[i]] = sum[m];
+  }
+}
+
+/// The transposed member_polynomials for K regions of one orbit whose representative's block has
+/// NB vectors per row: out[i][0 .. 4 NB) = Σ_m moments[i][m] row m; each row is loaded once for
+/// the K regions (K NB independent chains).
+template <int K, int NB>
+WS4_INLINE void member_contractions(const double* block, const double* const* moments, double (*out)[kMaxWidth]) {
+  V4 acc[K][NB];
+  for (int i = 0; i < K; ++i)
+    for (int j = 0; j < NB; ++j) acc[i][j] = V4{};
+  for (int m = 0; m < kMonomials; ++m) {
+    const double* row = block + m * NB * kLanes;
+    for (int j = 0; j < NB; ++j) {
+      const V4 r = load(row + j * kLanes);
+      for (int i = 0; i < K; ++i) acc[i][j] += moments[i][m] * r;
+    }
+  }
+  for (int i = 0; i < K; ++i)
+    for (int j = 0; j < NB; ++j) store(out[i] + j * kLanes, acc[i][j]);
+}
+
+template <int K>
+WS4_INLINE void member_transposed(const Ws4PieceTable& t, const int* regions, const int* slots, const double* moments,
+                                  double* b) {
+  const int r0 = t.representative[regions[0]];
+  const double* block = t.by_monomial.data() + static_cast<size_t>(t.block_begin[r0]) * kMonomials;
+  const double* mom[K];
+  for (int i = 0; i < K; ++i) mom[i] = moments + static_cast<size_t>(slots[i]) * kPadded;
+  double out[K][kMaxWidth];
+  switch (t.width(r0) / kLanes) {  // the register count, known to the compiler
+    case 1: member_contractions<K, 1>(block, mom, out); break;
+    case 2: member_contractions<K, 2>(block, mom, out); break;
+    case 3: member_contractions<K, 3>(block, mom, out); break;
+    case 4: member_contractions<K, 4>(block, mom, out); break;
+    case 5: member_contractions<K, 5>(block, mom, out); break;
+    default: member_contractions<K, 6>(block, mom, out); break;
+  }
+  const int n = t.active(r0);
+  for (int i = 0; i < K; ++i) {
+    const int* function = t.function.data() + t.begin[regions[i]];
+    for (int j = 0; j < n; ++j) b[function[j]] += out[i][j];
+  }
 }
 
 }  // namespace
 
 WS4_KERNEL_CLONES
-void region_polynomials(const Ws4PieceTable& table, const int* regions, int slots, const double* b,
-                        double* coefficients) {
-  if (slots > kSlots) throw std::logic_error("region_polynomials: more slots than a coefficient table holds");
-  constexpr int nv = kPadded / kLanes;
-  const int* function = table.function.data();
-  const double* pieces = table.by_function.data();
-  for (int s = 0; s < slots; ++s) {
-    const int r = regions[s];
-    // Two partial sums (even and odd functions): two independent chains of multiply-adds.
-    V4 even[nv] = {}, odd[nv] = {};
-    int k = table.begin[r];
-    const int end = table.begin[r + 1];
-    const double* first_piece = pieces + static_cast<size_t>(table.piece_begin[r] - k) * kPadded;
-    for (; k + 1 < end; k += 2) {
-      const double be = b[function[k]], bo = b[function[k + 1]];
-      const double* pe = first_piece + static_cast<size_t>(k) * kPadded;
-      for (int v = 0; v < nv; ++v) {
-        even[v] += be * load(pe + v * kLanes);
-        odd[v] += bo * load(pe + kPadded + v * kLanes);
-      }
+void orbit_polynomials(const Ws4PieceTable& table, const int* regions, const int* slots, int members, const double* b,
+                       double* values, int stride) {
+  for (int first = 0; first < members; first += kMembers) {
+    switch (std::min(kMembers, members - first)) {
+      case 3: member_polynomials<3>(table, regions + first, slots + first, b, values, stride); break;
+      case 2: member_polynomials<2>(table, regions + first, slots + first, b, values, stride); break;
+      default: member_polynomials<1>(table, regions + first, slots + first, b, values, stride); break;
     }
-    if (k < end) {
-      const double be = b[function[k]];
-      const double* pe = first_piece + static_cast<size_t>(k) * kPadded;
-      for (int v = 0; v < nv; ++v) even[v] += be * load(pe + v * kLanes);
+  }
+}
+
+WS4_KERNEL_CLONES
+void orbit_transposed(const Ws4PieceTable& table, const int* regions, const int* slots, int members,
+                      const double* moments, double* b) {
+  if (table.max_width > kMaxWidth) throw std::logic_error("orbit_transposed: more active functions than expected");
+  for (int first = 0; first < members; first += kMembers) {
+    switch (std::min(kMembers, members - first)) {
+      case 3: member_transposed<3>(table, regions + first, slots + first, moments, b); break;
+      case 2: member_transposed<2>(table, regions + first, slots + first, moments, b); break;
+      default: member_transposed<1>(table, regions + first, slots + first, moments, b); break;
     }
-    double sum[kPadded];
-    for (int v = 0; v < nv; ++v) store(sum + v * kLanes, even[v] + odd[v]);
-    for (int m = 0; m < kMonomials; ++m) coefficients[m * kSlots + s] = sum[m];
   }
 }
 
@@ -245,31 +299,6 @@ void add_moments(const double* x, const double* y, const double* w, int count, d
       store(moments + m, load(moments + m) + sum_lanes(sums[m], sums[m + 1], sums[m + 2], sums[m + 3]));
   }
   for (int k = whole; k < count; ++k) accumulate_moments(x[k], y[k], w[k], moments);
-}
-
-WS4_KERNEL_CLONES
-void transposed_pieces(const Ws4PieceTable& table, const int* regions, int slots, const double* moments, double* b) {
-  constexpr int kMaxWidth = 8 * kLanes;
-  if (table.max_width > kMaxWidth) throw std::logic_error("transposed_pieces: more active functions than expected");
-  const int* function = table.function.data();
-  double out[kMaxWidth];
-  for (int s = 0; s < slots; ++s) {
-    const int r = regions[s];
-    const double* block = table.by_monomial.data() + static_cast<size_t>(table.block_begin[r]) * kMonomials;
-    const double* mom = moments + static_cast<size_t>(s) * kPadded;
-    switch (table.width(r) / kLanes) {  // the register count, known to the compiler
-      case 1: block_times_moments<1>(block, mom, out); break;
-      case 2: block_times_moments<2>(block, mom, out); break;
-      case 3: block_times_moments<3>(block, mom, out); break;
-      case 4: block_times_moments<4>(block, mom, out); break;
-      case 5: block_times_moments<5>(block, mom, out); break;
-      case 6: block_times_moments<6>(block, mom, out); break;
-      case 7: block_times_moments<7>(block, mom, out); break;
-      default: block_times_moments<8>(block, mom, out); break;
-    }
-    const int first = table.begin[r], n = table.active(r);
-    for (int j = 0; j < n; ++j) b[function[first + j]] += out[j];
-  }
 }
 
 WS4_KERNEL_CLONES

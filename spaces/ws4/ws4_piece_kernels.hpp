@@ -23,10 +23,11 @@ inline constexpr int value_row = 0, dx_row = 15, dy_row = 25, dxx_row = 35, dxy_
 /// Slots per coefficient table: one AVX-512 vector per row. A table is rows x block_slots.
 inline constexpr int block_slots = 8;
 
-/// coefficients[m * block_slots + s] = Σ_i b[i] piece(regions[s], i) (m < 15, s < slots <=
-/// block_slots): u_h on each listed region.
-void region_polynomials(const Ws4PieceTable& table, const int* regions, int slots, const double* b,
-                        double* coefficients);
+/// values[m * stride + slots[i]] = Σ_j b[j] piece(regions[i], j) (m < 15, i < members): u_h on
+/// regions of one orbit (the same representative in Ws4PieceTable), in the representative's
+/// coordinates.
+void orbit_polynomials(const Ws4PieceTable& table, const int* regions, const int* slots, int members, const double* b,
+                       double* values, int stride);
 
 /// The derivative rows of a table from its value rows, for all its slots: ∂x_j = Σ_k
 /// g_s(k, j) ∂ξ_k where ξ = g_s x + const are slot s's coordinates of the physical point x; g holds
@@ -43,9 +44,10 @@ void evaluate_run(const double* coefficients, int slot, int order, const double*
 /// moments[Poly4::index(a, b)] += Σ_k w[k] x[k]^a y[k]^b over `count` points.
 void add_moments(const double* x, const double* y, const double* w, int count, double* moments);
 
-/// b[i] += piece(regions[s], i) · moments[16 s .. 16 s + 15) for every listed region and its
-/// active functions i: the transposed region_polynomials.
-void transposed_pieces(const Ws4PieceTable& table, const int* regions, int slots, const double* moments, double* b);
+/// b[j] += piece(regions[i], j) · moments[16 slots[i] .. 16 slots[i] + 15) for regions of one
+/// orbit and their active functions j: the transposed orbit_polynomials.
+void orbit_transposed(const Ws4PieceTable& table, const int* regions, const int* slots, int members,
+                      const double* moments, double* b);
 
 /// x(:, k) = p0 + j (xi[k], eta[k]) for k < count, x a 2 x count column-major array: the
 /// element's affine map at the points of a rule.
