@@ -15,6 +15,11 @@
 #else
 #define WS4_KERNEL_CLONES
 #endif
+// The vector helpers below pass and return vector types by value; they are always inlined, so
+// GCC's note that their calling convention differs between the copies concerns no call.
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC diagnostic ignored "-Wpsabi"
+#endif
 /// The helpers below must be inlined into the kernels: a call would run the baseline copy.
 #if defined(__GNUC__)
 #define WS4_INLINE inline __attribute__((always_inline))
