@@ -6,9 +6,12 @@
 /// On region r of the split, u_h = Σ_i b_i B_i with b = C_K c_K is one quartic: its 15 monomial
 /// coefficients Σ_i b_i piece(r, i) cost a few hundred operations per region, and then each point
 /// costs a Horner evaluation instead of a 51-term sum. The element map is affine, so the physical
-/// derivatives are taken on the coefficients, once per region and element and for all regions
+/// derivatives are taken on the coefficients, once per region and element and for eight regions
 /// at once (ws4_piece_kernels.hpp), rather than pushed forward point by point. Load vectors run
 /// the same steps transposed: weighted monomial moments per region, then the pieces, then C_Kᵀ.
+/// The pieces are those of each region's representative under the symmetries of the triangle
+/// (ws4_piece_table.hpp): the regions of an orbit are contracted together, and the points are
+/// taken in their representative's coordinates.
 
 #include <Eigen/Core>
 #include <array>
@@ -61,9 +64,9 @@ class Ws4PieceEvaluation {
   const Ws4Space& space_;
   std::map<const QuadratureRule*, RuleTables> cache_;
   Eigen::Matrix<double, 51, 1> c_, b_;
+  std::vector<double> values_;  ///< u_h per slot: 15 rows over the slots (rounded up to a block)
   /// The polynomial coefficients of one block of slots (piece_kernels::rows x block_slots), or
   /// the 16 weighted moments per slot of the load vector.
-  std::vector<double> values_;  ///< u_h per slot: 15 rows of the slots (rounded up to a block)
   std::vector<double> slot_values_;
   std::array<double, 32> slot_maps_{};  ///< the slots' inverse Jacobians (piece_kernels::derivative_polynomials)
 };

@@ -1,15 +1,16 @@
 #pragma once
 /// @file
-/// The arithmetic of Ws4PieceEvaluation (ws4_evaluator.hpp), in loops over contiguous arrays that
-/// the compiler turns into vector instructions (compiled for the x86-64 baseline, AVX2 + FMA and
-/// AVX-512, the copy chosen at load time).
+/// The arithmetic of Ws4PieceEvaluation (ws4_evaluator.hpp), written with the vector types of GCC
+/// and Clang over contiguous arrays (compiled for the x86-64 baseline, AVX2 + FMA and AVX-512, the
+/// copy chosen at load time).
 ///
 /// One discrete function on one element is a sequence of tables of polynomial coefficients, each
 /// for block_slots *slots* (regions of the split holding points of the rule), one column per slot
 /// and one row per monomial coefficient (a table stays in the first-level cache):
 /// rows [0, 15) the quartic u_h, then the physical derivatives (cubics ∂x, ∂y: 10 rows each,
-/// quadratics ∂xx, ∂xy, ∂yy: 6 rows each), all in coordinates relative to the region's center.
-/// Rows are contiguous over slots, so derivatives are taken for all regions at once.
+/// quadratics ∂xx, ∂xy, ∂yy: 6 rows each), all in the coordinates of the region's representative
+/// (Ws4PieceTable). Rows are contiguous over slots, so derivatives are taken for all the slots of
+/// a table at once.
 
 #include <Eigen/Core>
 
@@ -36,7 +37,8 @@ void orbit_polynomials(const Ws4PieceTable& table, const int* regions, const int
 void derivative_polynomials(const double* g, int order, double* coefficients);
 
 /// u_h (order 0), with its gradient (1) and Hessian (2), at `count` points of the region in
-/// `slot` of a table, from their coordinates x, y relative to the region's center: Horner per point.
+/// `slot` of a table, from their coordinates x, y in the region's representative's coordinates
+/// (RuleTables::local of ws4_evaluator.hpp): Horner per point.
 /// out[0..5] = value, dx, dy, dxx, dxy, dyy (the first 1, 3 or 6 are written).
 void evaluate_run(const double* coefficients, int slot, int order, const double* x, const double* y, int count,
                   double* const* out);
