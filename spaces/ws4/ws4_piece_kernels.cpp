@@ -307,17 +307,12 @@ void add_moments(const double* x, const double* y, const double* w, int count, d
 }
 
 WS4_KERNEL_CLONES
-void affine_points(const Eigen::Matrix2d& j, const Point2& p0, const double* xi, const double* eta, int count,
-                   double* x) {
+void affine_points(const Eigen::Matrix2d& j, const Point2& p0, const double* __restrict xi,
+                   const double* __restrict eta, int count, double* __restrict x) {
+  // A plain loop: the compiler interleaves the two coordinates with the shuffles of each target
+  // (written with vector shuffles, the baseline copy went through the stack).
   const double j00 = j(0, 0), j01 = j(0, 1), j10 = j(1, 0), j11 = j(1, 1), x0 = p0.x(), y0 = p0.y();
-  int k = 0;
-  for (; k + kLanes <= count; k += kLanes) {
-    const V4 a = load(xi + k), b = load(eta + k);
-    const V4 u = x0 + j00 * a + j01 * b, v = y0 + j10 * a + j11 * b;
-    store(x + 2 * k, __builtin_shufflevector(u, v, 0, 4, 1, 5));
-    store(x + 2 * k + kLanes, __builtin_shufflevector(u, v, 2, 6, 3, 7));
-  }
-  for (; k < count; ++k) {
+  for (int k = 0; k < count; ++k) {
     x[2 * k] = x0 + j00 * xi[k] + j01 * eta[k];
     x[2 * k + 1] = y0 + j10 * xi[k] + j11 * eta[k];
   }
