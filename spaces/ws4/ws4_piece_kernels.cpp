@@ -63,6 +63,13 @@ WS4_INLINE T splat(double a) {
   else
     return T{} + a;
 }
+/// The same, lane by lane: where T is wider than a register (the baseline copy), `T{} + a` with a
+/// scalar loaded from memory went through the stack in the contraction kernels.
+WS4_INLINE V4 broadcast(double a) {
+  V4 v;
+  for (int lane = 0; lane < kLanes; ++lane) v[lane] = a;
+  return v;
+}
 
 /// p(x, y) for degree <= D, coefficients in Poly4 index order: Horner in x for each power of y,
 /// then in y. T = double or V4 (four points at once, the same operations per lane).
@@ -185,7 +192,7 @@ WS4_INLINE void member_polynomials(const Ws4PieceTable& t, const int* regions, c
     const double* p = pieces + static_cast<size_t>(j) * kPadded;
     const V4 p0 = load(p), p1 = load(p + 4), p2 = load(p + 8), p3 = load(p + 12);
     for (int i = 0; i < K; ++i) {
-      const double bi = b[function[i][j]];
+      const V4 bi = broadcast(b[function[i][j]]);
       acc[i][0] += bi * p0;
       acc[i][1] += bi * p1;
       acc[i][2] += bi * p2;
@@ -211,7 +218,7 @@ WS4_INLINE void member_contractions(const double* block, const double* const* mo
     const double* row = block + m * NB * kLanes;
     for (int j = 0; j < NB; ++j) {
       const V4 r = load(row + j * kLanes);
-      for (int i = 0; i < K; ++i) acc[i][j] += moments[i][m] * r;
+      for (int i = 0; i < K; ++i) acc[i][j] += broadcast(moments[i][m]) * r;
     }
   }
   for (int i = 0; i < K; ++i)
