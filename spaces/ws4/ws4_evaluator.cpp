@@ -1,139 +1,16 @@
 #include "spaces/ws4/ws4_evaluator.hpp"
 
 #include <Eigen/LU>
-#include <cmath>
+#include <algorithm>
 #include <cstring>
 #include <stdexcept>
 
-#include "config/cpu_dispatch.hpp"
 #include "spaces/ws4/ws4_basis.hpp"
+#include "spaces/ws4/ws4_piece_kernels.hpp"
+#include "spaces/ws4/ws4_piece_table.hpp"
 #include "spaces/ws4/ws4_space.hpp"
 
 namespace iga::ws4 {
-
-namespace {
-
-constexpr int kMonomials = Poly4::size;
-
-/// Per region of the split, the reference functions whose piece there is not zero and their
-/// monomial coefficients as columns (15 x active): most simplex splines vanish on most regions.
-struct RegionPieces {
-  std::vector<int> active;
-  Eigen::Matrix<double, kMonomials, Eigen::Dynamic> coefficients;
-};
-
-const std::vector<RegionPieces>& region_pieces() {
-  static const std::vector<RegionPieces> pieces = [] {
-    const Ws4Basis& basis = Ws4Basis::reference();
-    const int nr = static_cast<int>(basis.split().regions().size());
-    std::vector<RegionPieces> out(nr);
-    for (int r = 0; r < nr; ++r) {
-      for (int i = 0; i < Ws4Basis::size; ++i)
-        if (!basis.piece(r, i).is_zero()) out[r].active.push_back(i);
-      out[r].coefficients.resize(kMonomials, static_cast<Eigen::Index>(out[r].active.size()));
-      for (size_t m = 0; m < out[r].active.size(); ++m)
-        for (int a = 0; a <= Poly4::max_degree; ++a)
-          for (int b = 0; a + b <= Poly4::max_degree; ++b)
-            out[r].coefficients(Poly4::index(a, b), static_cast<Eigen::Index>(m)) =
-                basis.piece(r, out[r].active[m]).coefficient(a, b);
-    }
-    return out;
-  }();
-  return pieces;
-}
-
-/// Rows value, dx, dy, dxx, dxy, dyy of the physical derivatives of the reference polynomial p
-/// (15 monomial coefficients) under ξ = G (x - p0): ∂x_j = Σ_k G(k, j) ∂ξ_k.
-void physical_derivatives(const double* p, const Eigen::Matrix2d& g, int rows, Eigen::Matrix<double, 6, 15>& d) {
-  d.topRows(rows).setZero();
-  double pxi[kMonomials] = {}, peta[kMonomials] = {}, pxx[kMonomials] = {}, pxe[kMonomials] = {},
-         pee[kMonomials] = {};
-  for (int a = 0; a <= Poly4::max_degree; ++a)
-    for (int b = 0; a + b <= Poly4::max_degree; ++b) {
-      const double v = p[Poly4::index(a, b)];
-      d(0, Poly4::index(a, b)) = v;
-      if (rows == 1) continue;
-      if (a > 0) pxi[Poly4::index(a - 1, b)] = a * v;
-      if (b > 0) peta[Poly4::index(a, b - 1)] = b * v;
-      if (a > 1) pxx[Poly4::index(a - 2, b)] = a * (a - 1) * v;
-      if (a > 0 && b > 0) pxe[Poly4::index(a - 1, b - 1)] = a * b * v;
-      if (b > 1) pee[Poly4::index(a, b - 2)] = b * (b - 1) * v;
-    }
-  if (rows == 1) return;
-  for (int k = 0; k < 10; ++k) {  // first derivatives have degree <= 3: the first 10 monomials
-    d(1, k) = g(0, 0) * pxi[k] + g(1, 0) * peta[k];
-    d(2, k) = g(0, 1) * pxi[k] + g(1, 1) * peta[k];
-  }
-  if (rows == 3) return;
-  for (int k = 0; k < 6; ++k) {  // second derivatives: degree <= 2
-    d(3, k) = g(0, 0) * g(0, 0) * pxx[k] + 2 * g(0, 0) * g(1, 0) * pxe[k] + g(1, 0) * g(1, 0) * pee[k];
-    d(4, k) = g(0, 0) * g(0, 1) * pxx[k] + (g(0, 0) * g(1, 1) + g(1, 0) * g(0, 1)) * pxe[k] + g(1, 0) * g(1, 1) * pee[k];
-    d(5, k) = g(0, 1) * g(0, 1) * pxx[k] + 2 * g(0, 1) * g(1, 1) * pxe[k] + g(1, 1) * g(1, 1) * pee[k];
-  }
-}
-
-/// moments(m) += Σ_k weights(first + k) monomials(first + k, m) for the 15 monomials: dot products
-/// of contiguous arrays (AVX2 clone as below).
-IGA_AVX2_CLONES
-void add_moments(const double* monomials, Eigen::Index stride, const double* weights, int first, int count,
-                 double* moments) {
-  const double* w = weights + first;
-  for (int m = 0; m < kMonomials; ++m) {
-    const double* mm = monomials + m * stride + first;
-    double sum[4] = {0, 0, 0, 0};  // four independent sums: one vector of lanes
-    int k = 0;
-    for (; k + 4 <= count; k += 4)
-      for (int lane = 0; lane < 4; ++lane) sum[lane] += mm[k + lane] * w[k + lane];
-    for (; k < count; ++k) sum[0] += mm[k] * w[k];
-    moments[m] += (sum[0] + sum[1]) + (sum[2] + sum[3]);
-  }
-}
-
-/// p(x, y) for a polynomial of degree <= D with coefficients in Poly4 index order: Horner in x for
-/// each power of y, then Horner in y (14 multiply-adds for a quartic).
-template <int D>
-inline double horner(const double* c, double x, double y) {
-  double outer = 0;
-  for (int b = D; b >= 0; --b) {
-    double inner = c[Poly4::index(D - b, b)];
-    for (int a = D - b - 1; a >= 0; --a) inner = inner * x + c[Poly4::index(a, b)];
-    outer = outer * y + inner;
-  }
-  return outer;
-}
-
-/// Rows value, dx, dy, dxx, dxy, dyy (the first `rows`) of u_h at the `count` points of a run from
-/// its per-region polynomials `d` (value quartic, first derivatives cubic, second ones quadratic)
-/// and the points' coordinates relative to the region's center: Horner per point, which reads two
-/// numbers per point instead of a table of 15 monomials. Compiled twice, the AVX2 body chosen at
-/// load time where the CPU has it (four points per instruction instead of two).
-IGA_AVX2_CLONES
-void run_values(const Eigen::Matrix<double, 6, 15>& d, int rows, const double* __restrict x,
-                const double* __restrict y, int count, double* const* out) {
-  double c[6][15];
-  for (int r = 0; r < rows; ++r)
-    for (int m = 0; m < 15; ++m) c[r][m] = d(r, m);
-  double* __restrict value = out[0];
-  for (int k = 0; k < count; ++k) value[k] = horner<4>(c[0], x[k], y[k]);
-  if (rows < 3) return;
-  double* __restrict dx = out[1];
-  double* __restrict dy = out[2];
-  for (int k = 0; k < count; ++k) {
-    dx[k] = horner<3>(c[1], x[k], y[k]);
-    dy[k] = horner<3>(c[2], x[k], y[k]);
-  }
-  if (rows < 6) return;
-  double* __restrict dxx = out[3];
-  double* __restrict dxy = out[4];
-  double* __restrict dyy = out[5];
-  for (int k = 0; k < count; ++k) {
-    dxx[k] = horner<2>(c[3], x[k], y[k]);
-    dxy[k] = horner<2>(c[4], x[k], y[k]);
-    dyy[k] = horner<2>(c[5], x[k], y[k]);
-  }
-}
-
-}  // namespace
 
 const Ws4PieceEvaluation::RuleTables& Ws4PieceEvaluation::tables(const QuadratureRule& rule) {
   auto it = cache_.find(&rule);
@@ -144,16 +21,17 @@ const Ws4PieceEvaluation::RuleTables& Ws4PieceEvaluation::tables(const Quadratur
   if (it == cache_.end() && cache_.size() >= 64) cache_.clear();  // bound temporary rules
   RuleTables& t = cache_[&rule];
   const Ws4Basis& basis = Ws4Basis::reference();
+  const Ws4PieceTable& pieces = Ws4PieceTable::reference();
   const int q = rule.size();
   t.points = rule.points;
-  t.reference.resize(2, q);
-  t.monomials.resize(q, kMonomials);
+  t.reference.resize(q, 2);
   t.local.resize(q, 2);
   t.regions.clear();
   t.runs.clear();
   std::vector<int> slot(basis.split().regions().size(), -1);
   for (int k = 0; k < q; ++k) {
-    t.reference.col(k) = rule.points[k];
+    t.reference(k, 0) = rule.points[k].x();
+    t.reference(k, 1) = rule.points[k].y();
     const int r = basis.split().locate(rule.points[k]);
     if (slot[r] < 0) {
       slot[r] = static_cast<int>(t.regions.size());
@@ -163,13 +41,28 @@ const Ws4PieceEvaluation::RuleTables& Ws4PieceEvaluation::tables(const Quadratur
       ++t.runs.back()[2];
     else
       t.runs.push_back({slot[r], k, 1});
-    const Point2 x = rule.points[k] - basis.center(r);
+    // Coordinates of the orbit's representative region, whose pieces the table holds.
+    const Point2 x = pieces.inverse_linear[r] * (rule.points[k] - basis.center(r));
     t.local(k, 0) = x.x();
     t.local(k, 1) = x.y();
-    for (int a = 0; a <= Poly4::max_degree; ++a)
-      for (int b = 0; a + b <= Poly4::max_degree; ++b)
-        t.monomials(k, Poly4::index(a, b)) = std::pow(x.x(), a) * std::pow(x.y(), b);
   }
+  // Runs by slot (the order of the coefficient blocks in evaluate_function); each run writes its
+  // own points, so the order does not change the results.
+  std::stable_sort(t.runs.begin(), t.runs.end(), [](const auto& a, const auto& b) { return a[0] < b[0]; });
+  // Slots grouped by orbit (the kernels read each representative's pieces once per group).
+  std::vector<std::array<int, 3>> members;  // (representative, region, slot)
+  for (int s = 0; s < static_cast<int>(t.regions.size()); ++s)
+    members.push_back({pieces.representative[t.regions[s]], t.regions[s], s});
+  std::sort(members.begin(), members.end());
+  t.orbit_regions.clear();
+  t.orbit_slots.clear();
+  t.orbit_begin.assign(1, 0);
+  for (size_t i = 0; i < members.size(); ++i) {
+    if (i > 0 && members[i][0] != members[i - 1][0]) t.orbit_begin.push_back(static_cast<int>(i));
+    t.orbit_regions.push_back(members[i][1]);
+    t.orbit_slots.push_back(members[i][2]);
+  }
+  t.orbit_begin.push_back(static_cast<int>(members.size()));
   return t;
 }
 
@@ -177,9 +70,13 @@ void Ws4PieceEvaluation::fill_geometry(int element, const RuleTables& t, PointVa
   space_.element_dofs(element, out.dofs);
   const Eigen::Matrix2d j = space_.jacobian(element);
   const Point2 p0 = space_.mesh().vertices()[space_.mesh().triangle(element)[0]];
-  out.x.noalias() = j * t.reference;
-  out.x.colwise() += p0;
-  out.jacobian.assign(t.points.size(), j);
+  const int q = static_cast<int>(t.points.size());
+  out.x.resize(2, q);
+  piece_kernels::affine_points(j, p0, t.reference.col(0).data(), t.reference.col(1).data(), q, out.x.data());
+  // One Jacobian per point, as PointValues has it (the map is affine: all the same).
+  static_assert(sizeof(Eigen::Matrix2d) == 4 * sizeof(double));
+  out.jacobian.resize(q);
+  piece_kernels::repeat_matrix(j, q, out.jacobian.data()->data());
 }
 
 void Ws4PieceEvaluation::evaluate_geometry(int element, const QuadratureRule& rule, PointValues& out) {
@@ -195,48 +92,71 @@ void Ws4PieceEvaluation::evaluate_function(int element, const QuadratureRule& ru
   for (int i = 0; i < Ws4Basis::size; ++i) c_(i) = coefficients(geometry.dofs[i]);
   b_.noalias() = space_.extraction(element) * c_;
 
-  // u_h on each region holding points: 15 monomial coefficients in that region's coordinates.
-  const auto& pieces = region_pieces();
-  region_coefficients_.resize(kMonomials, static_cast<Eigen::Index>(t.regions.size()));
-  for (size_t s = 0; s < t.regions.size(); ++s) {
-    const RegionPieces& rp = pieces[t.regions[s]];
-    auto column = region_coefficients_.col(static_cast<Eigen::Index>(s));
-    column.setZero();
-    for (size_t m = 0; m < rp.active.size(); ++m)
-      column += b_(rp.active[m]) * rp.coefficients.col(static_cast<Eigen::Index>(m));
-  }
-
-  const bool hess = (flags & update_hessians) != 0;
-  const bool grads = hess || (flags & update_gradients) != 0;
-  const int rows = hess ? 6 : grads ? 3 : 1;
+  // u_h on each region holding points (15 rows over the slots, computed orbit by orbit), then
+  // eight regions at a time its physical derivatives: a table of polynomial coefficients with
+  // rows of eight slots (ws4_piece_kernels.hpp) that stays in the first-level cache while the
+  // points of those regions are evaluated.
+  constexpr int block = piece_kernels::block_slots;
+  static_assert(4 * block == std::tuple_size_v<decltype(slot_maps_)>);
+  const int order = (flags & update_hessians) ? 2 : (flags & update_gradients) ? 1 : 0;
+  const int slots = static_cast<int>(t.regions.size());
+  if (slot_values_.size() != static_cast<size_t>(piece_kernels::rows) * block)
+    slot_values_.assign(static_cast<size_t>(piece_kernels::rows) * block, 0.0);
   const Eigen::Matrix2d g = space_.jacobian(element).inverse();
   const int q = rule.size();
   Eigen::VectorXd* targets[6] = {&out.value, &out.dx, &out.dy, &out.dxx, &out.dxy, &out.dyy};
-  for (int r = 0; r < rows; ++r) targets[r]->resize(q);
-  for (const auto& [s, first, count] : t.runs) {
-    physical_derivatives(region_coefficients_.col(s).data(), g, rows, derivatives_);
-    double* rows_out[6];
-    for (int r = 0; r < rows; ++r) rows_out[r] = targets[r]->data() + first;
-    run_values(derivatives_, rows, t.local.col(0).data() + first, t.local.col(1).data() + first, count, rows_out);
+  const int arrays = order == 2 ? 6 : order == 1 ? 3 : 1;
+  for (int r = 0; r < arrays; ++r) targets[r]->resize(q);
+  const Ws4PieceTable& pieces = Ws4PieceTable::reference();
+  const int stride = (slots + block - 1) / block * block;
+  values_.resize(static_cast<size_t>(Ws4PieceTable::monomials) * stride);
+  for (int m = 0; m < Ws4PieceTable::monomials; ++m)
+    std::fill(values_.begin() + m * stride + slots, values_.begin() + (m + 1) * stride, 0.0);
+  for (size_t o = 0; o + 1 < t.orbit_begin.size(); ++o)
+    piece_kernels::orbit_polynomials(pieces, t.orbit_regions.data() + t.orbit_begin[o],
+                                     t.orbit_slots.data() + t.orbit_begin[o], t.orbit_begin[o + 1] - t.orbit_begin[o],
+                                     b_.data(), values_.data(), stride);
+  for (int first_slot = 0, run = 0; first_slot < slots; first_slot += block) {
+    const int n = std::min(block, slots - first_slot);
+    for (int m = 0; m < Ws4PieceTable::monomials; ++m)
+      std::copy_n(values_.data() + m * stride + first_slot, block, slot_values_.data() + m * block);
+    if (order > 0) {
+      // Per slot, the inverse Jacobian in its representative's coordinates: L⁻¹ g.
+      for (int s = 0; s < block; ++s) {
+        const Eigen::Matrix2d gs =
+            s < n ? Eigen::Matrix2d(pieces.inverse_linear[t.regions[first_slot + s]] * g) : Eigen::Matrix2d::Zero();
+        slot_maps_[s] = gs(0, 0);
+        slot_maps_[block + s] = gs(1, 0);
+        slot_maps_[2 * block + s] = gs(0, 1);
+        slot_maps_[3 * block + s] = gs(1, 1);
+      }
+      piece_kernels::derivative_polynomials(slot_maps_.data(), order, slot_values_.data());
+    }
+    for (; run < static_cast<int>(t.runs.size()) && t.runs[run][0] < first_slot + block; ++run) {
+      const auto& [s, first, count] = t.runs[run];
+      double* rows_out[6];
+      for (int r = 0; r < arrays; ++r) rows_out[r] = targets[r]->data() + first;
+      piece_kernels::evaluate_run(slot_values_.data(), s - first_slot, order, t.local.col(0).data() + first,
+                                  t.local.col(1).data() + first, count, rows_out);
+    }
   }
 }
 
 void Ws4PieceEvaluation::integrate_values(int element, const QuadratureRule& rule, const Eigen::VectorXd& weights,
                                           Eigen::VectorXd& local) {
   const RuleTables& t = tables(rule);
-  // Weighted monomial moments per region, then Σ_r (pieces of r)ᵀ moments.
-  region_coefficients_.setZero(kMonomials, static_cast<Eigen::Index>(t.regions.size()));
+  // Weighted monomial moments per region, then Σ_r (pieces of r)ᵀ moments, then C_Kᵀ.
+  const int slots = static_cast<int>(t.regions.size());
+  slot_values_.assign(static_cast<size_t>(Ws4PieceTable::padded) * slots, 0.0);
   for (const auto& [s, first, count] : t.runs)
-    add_moments(t.monomials.data(), t.monomials.outerStride(), weights.data(), first, count,
-                region_coefficients_.col(s).data());
-  const auto& pieces = region_pieces();
+    piece_kernels::add_moments(t.local.col(0).data() + first, t.local.col(1).data() + first, weights.data() + first,
+                               count, slot_values_.data() + static_cast<size_t>(s) * Ws4PieceTable::padded);
   b_.setZero();
-  for (size_t s = 0; s < t.regions.size(); ++s) {
-    const RegionPieces& rp = pieces[t.regions[s]];
-    const auto moments = region_coefficients_.col(static_cast<Eigen::Index>(s));
-    for (size_t m = 0; m < rp.active.size(); ++m)
-      b_(rp.active[m]) += rp.coefficients.col(static_cast<Eigen::Index>(m)).dot(moments);
-  }
+  const Ws4PieceTable& pieces = Ws4PieceTable::reference();
+  for (size_t o = 0; o + 1 < t.orbit_begin.size(); ++o)
+    piece_kernels::orbit_transposed(pieces, t.orbit_regions.data() + t.orbit_begin[o],
+                                    t.orbit_slots.data() + t.orbit_begin[o], t.orbit_begin[o + 1] - t.orbit_begin[o],
+                                    slot_values_.data(), b_.data());
   local.noalias() = space_.extraction(element).transpose() * b_;
 }
 

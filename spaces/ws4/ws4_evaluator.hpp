@@ -5,12 +5,16 @@
 ///
 /// On region r of the split, u_h = Σ_i b_i B_i with b = C_K c_K is one quartic: its 15 monomial
 /// coefficients Σ_i b_i piece(r, i) cost a few hundred operations per region, and then each point
-/// costs a 15-term sum per array instead of a 51-term one, read from a 15 x q monomial table that
-/// fits in cache (the 51 x q tables of six arrays do not, and streaming them dominated the error
-/// norms). The element map is affine, so the physical derivatives are taken on the coefficients,
-/// once per region, rather than pushed forward point by point.
+/// costs a Horner evaluation instead of a 51-term sum. The element map is affine, so the physical
+/// derivatives are taken on the coefficients, once per region and element and for eight regions
+/// at once (ws4_piece_kernels.hpp), rather than pushed forward point by point. Load vectors run
+/// the same steps transposed: weighted monomial moments per region, then the pieces, then C_Kᵀ.
+/// The pieces are those of each region's representative under the symmetries of the triangle
+/// (ws4_piece_table.hpp): the regions of an orbit are contracted together, and the points are
+/// taken in their representative's coordinates.
 
 #include <Eigen/Core>
+#include <array>
 #include <map>
 #include <vector>
 
@@ -42,15 +46,17 @@ class Ws4PieceEvaluation {
   /// The points of one rule grouped by split region.
   struct RuleTables {
     std::vector<Point2> points;  ///< copy, to detect a different rule at a reused address
-    Eigen::Matrix2Xd reference;  ///< the points as a 2 x q matrix
-    /// Monomials (x - center(r))^a (y - center(r))^b at each point: column Poly4::index(a, b),
-    /// row = point, so that each monomial is contiguous over the points of a run.
-    Eigen::Matrix<double, Eigen::Dynamic, 15> monomials;
-    /// The same points relative to the center of their region: column 0 x, column 1 y.
+    Eigen::Matrix<double, Eigen::Dynamic, 2> reference;  ///< the points: column 0 x, column 1 y
+    /// The points relative to the center of their region, in the coordinates of the region's
+    /// representative (Ws4PieceTable): column 0 x, column 1 y.
     Eigen::Matrix<double, Eigen::Dynamic, 2> local;
-    std::vector<int> regions;  ///< distinct regions holding points, in order of first appearance
-    /// Maximal runs of consecutive points in one region: (slot in `regions`, first point, count).
+    std::vector<int> regions;  ///< distinct regions holding points (slots), in order of first appearance
+    /// Maximal runs of consecutive points in one region: (slot in `regions`, first point, count),
+    /// ordered by slot.
     std::vector<std::array<int, 3>> runs;
+    /// The slots grouped by the orbit of their region (Ws4PieceTable::representative): group g is
+    /// orbit_regions / orbit_slots [orbit_begin[g], orbit_begin[g + 1]).
+    std::vector<int> orbit_regions, orbit_slots, orbit_begin;
   };
   const RuleTables& tables(const QuadratureRule& rule);
   void fill_geometry(int element, const RuleTables& t, PointValues& out) const;
@@ -58,8 +64,11 @@ class Ws4PieceEvaluation {
   const Ws4Space& space_;
   std::map<const QuadratureRule*, RuleTables> cache_;
   Eigen::Matrix<double, 51, 1> c_, b_;
-  Eigen::Matrix<double, 15, Eigen::Dynamic> region_coefficients_;  ///< u_h per used region
-  Eigen::Matrix<double, 6, 15> derivatives_;  ///< value, dx, dy, dxx, dxy, dyy per monomial
+  std::vector<double> values_;  ///< u_h per slot: 15 rows over the slots (rounded up to a block)
+  /// The polynomial coefficients of one block of slots (piece_kernels::rows x block_slots), or
+  /// the 16 weighted moments per slot of the load vector.
+  std::vector<double> slot_values_;
+  std::array<double, 32> slot_maps_{};  ///< the slots' inverse Jacobians (piece_kernels::derivative_polynomials)
 };
 
 }  // namespace iga::ws4
