@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "config/errors.hpp"
+#include "solver/blas_threads.hpp"
 
 namespace iga {
 
@@ -70,6 +71,7 @@ Eigen::VectorXd solve_linear_system(const SparseMatrix& A, const Eigen::VectorXd
   }
   bool ok = false;
   if (kind == SolverKind::cholmod) {
+    set_blas_threads_for(static_cast<int>(A.rows()));
     Eigen::CholmodSupernodalLLT<SparseMatrix, Eigen::Lower> llt;
     llt.cholmod().print = 0;  // its warnings would go to stdout; a failure is reported by the fallback
     ok = try_solve(llt, A, b, residual, x, report);
