@@ -206,15 +206,7 @@ TEST(Assembly, ExtendedResidualKeepsTheLowPartsOfEntriesAndProducts) {
   // exact residual is −2⁻⁵⁰ in every row, which a double residual would round to zero. Enough
   // rows for the parallel, FMA-compiled path (blocks of 256 rows).
   const int n = 2000;
-  std::vector<Eigen::Triplet<double>> entries;
-  for (int i = 0; i < n; ++i) {
-    entries.emplace_back(i, i, 3.0);
-    if (i > 0) entries.emplace_back(i, i - 1, -1.0);
-    if (i + 1 < n) entries.emplace_back(i, i + 1, -1.0);
-  }
-  SparseMatrix pattern(n, n);
-  pattern.setFromTriplets(entries.begin(), entries.end());
-  pattern.makeCompressed();
+  const SparseMatrix pattern = test::tridiagonal(n, 3.0);
   std::vector<DoubleDouble> values(pattern.nonZeros());
   for (int col = 0; col < n; ++col)
     for (SparseMatrix::InnerIterator it(pattern, col); it; ++it) {

@@ -9,33 +9,20 @@
 #include <omp.h>
 
 #include <cstdlib>
-#include <vector>
 
 #include "solver/blas_threads.hpp"
 #include "solver/linear_solver.hpp"
+#include "tests/support/test_support.hpp"
 
 namespace iga {
 namespace {
-
-/// The 1D Laplacian with Dirichlet ends (tridiagonal, SPD), n unknowns: cheap at any size.
-SparseMatrix laplacian_1d(int n) {
-  std::vector<Eigen::Triplet<double>> t;
-  for (int i = 0; i < n; ++i) {
-    t.emplace_back(i, i, 2.0);
-    if (i > 0) t.emplace_back(i, i - 1, -1.0);
-    if (i + 1 < n) t.emplace_back(i, i + 1, -1.0);
-  }
-  SparseMatrix a(n, n);
-  a.setFromTriplets(t.begin(), t.end());
-  return a;
-}
 
 TEST(BlasThreads, FactorizationsOfSmallSystemsUseOneBlasThreadAndLargeOnesOpenMPs) {
   if (std::getenv("OPENBLAS_NUM_THREADS") || std::getenv("GOTO_NUM_THREADS"))
     GTEST_SKIP() << "OPENBLAS_NUM_THREADS is set: the user's choice is kept";
   omp_set_num_threads(2);
   for (const int n : {kParallelBlasUnknowns - 1, kParallelBlasUnknowns, 500}) {
-    const SparseMatrix a = laplacian_1d(n);
+    const SparseMatrix a = test::tridiagonal(n, 2.0);  // the 1D Laplacian, h = 1
     SolveReport report;
     const Eigen::VectorXd x = solve_linear_system(a, Eigen::VectorXd::Ones(n), SolverKind::cholmod, report);
     ASSERT_EQ(report.method, "cholmod");

@@ -4,6 +4,7 @@
 /// difference matrix, cond ≈ 1.6e11 at n = 1000), and stops at once on a well-conditioned one.
 
 #include "solver/linear_solver.hpp"
+#include "tests/support/test_support.hpp"
 
 #include <gtest/gtest.h>
 
@@ -16,20 +17,7 @@
 namespace iga {
 namespace {
 
-/// tridiag(−1, d, −1), n x n, both triangles stored.
-SparseMatrix tridiagonal(int n, double d) {
-  SparseMatrix t(n, n);
-  std::vector<Eigen::Triplet<double>> entries;
-  for (int i = 0; i < n; ++i) {
-    entries.emplace_back(i, i, d);
-    if (i + 1 < n) {
-      entries.emplace_back(i, i + 1, -1.0);
-      entries.emplace_back(i + 1, i, -1.0);
-    }
-  }
-  t.setFromTriplets(entries.begin(), entries.end());
-  return t;
-}
+using test::tridiagonal;
 
 /// T² with T the second-difference matrix (pentadiagonal 1, −4, 6, −4, 1; 5 in the first and last
 /// diagonal entries): SPD, integer entries.

@@ -2,6 +2,7 @@
 // Helpers shared by tests: build spaces and problems from YAML text, as a user's config would.
 
 #include <Eigen/Core>
+#include <Eigen/Sparse>
 #include <cstdio>
 #include <random>
 #include <filesystem>
@@ -31,6 +32,22 @@ inline Eigen::VectorXd random_vector(int n, unsigned seed) {
   Eigen::VectorXd v(n);
   for (int i = 0; i < n; ++i) v(i) = u(gen);
   return v;
+}
+
+/// tridiag(−1, d, −1), n x n, both triangles stored, compressed.
+inline SparseMatrix tridiagonal(int n, double d) {
+  std::vector<Eigen::Triplet<double>> entries;
+  for (int i = 0; i < n; ++i) {
+    entries.emplace_back(i, i, d);
+    if (i + 1 < n) {
+      entries.emplace_back(i, i + 1, -1.0);
+      entries.emplace_back(i + 1, i, -1.0);
+    }
+  }
+  SparseMatrix t(n, n);
+  t.setFromTriplets(entries.begin(), entries.end());
+  t.makeCompressed();
+  return t;
 }
 
 inline ProblemSpec problem_from_yaml(const std::string& yaml) {
