@@ -31,19 +31,19 @@ struct ShapeClasses {
 };
 ShapeClasses group_by_shape(const std::vector<ElementDofGeometry>& translated);
 
-/// Double-double element matrices of the classes shared by several elements, computed on first use
-/// (thread-safe). Classes of one element are not kept: on an unstructured mesh every element is its
-/// own class, and caching would only hold a 41 kB matrix per element.
+/// Double-double element matrices of the classes shared by several elements, built for all classes
+/// at once (build_all) or on first use (get); thread-safe. Classes of one element are not kept: on
+/// an unstructured mesh every element is its own class, and caching would only hold a 41 kB matrix
+/// per element.
 class ElementMatrixCache {
  public:
-  explicit ElementMatrixCache(std::vector<int> class_size) : class_size_(std::move(class_size)) {}
+  explicit ElementMatrixCache(std::vector<int> class_size)
+      : class_size_(std::move(class_size)), entries_(class_size_.size() * kForms) {}
 
-  /// local = the matrix of `form` for class `cls`; `compute` fills it when not cached.
   /// The cached matrix of `form` for `cls`, or null (a class of one element, or not built yet).
   const DoubleDoubleMatrix* find(int cls, BilinearForm form) const {
     std::lock_guard<std::mutex> lock(mutex_);
-    if (entries_.empty()) return nullptr;
-    return entries_[static_cast<std::size_t>(cls) * kForms + static_cast<std::size_t>(form)].get();
+    return entries_[slot(cls, form)].get();
   }
 
   /// Build the matrices of `form` for every class shared by several elements, in parallel;
@@ -59,22 +59,18 @@ class ElementMatrixCache {
       compute(c, *fresh[c]);
     }
     std::lock_guard<std::mutex> lock(mutex_);
-    if (entries_.empty()) entries_.resize(class_size_.size() * kForms);
-    for (int c = 0; c < n; ++c) {
-      auto& slot = entries_[static_cast<std::size_t>(c) * kForms + static_cast<std::size_t>(form)];
-      if (fresh[c] && !slot) slot = std::move(fresh[c]);
-    }
+    for (int c = 0; c < n; ++c)
+      if (fresh[c] && !entries_[slot(c, form)]) entries_[slot(c, form)] = std::move(fresh[c]);
   }
 
+  /// local = the matrix of `form` for class `cls`; `compute` fills it when not cached.
   template <class Compute>
   void get(int cls, BilinearForm form, DoubleDoubleMatrix& local, Compute&& compute) const {
     if (class_size_[cls] < 2) return compute(local);
-    const std::size_t slot = static_cast<std::size_t>(cls) * kForms + static_cast<std::size_t>(form);
     std::shared_ptr<const DoubleDoubleMatrix> hit;
     {
       std::lock_guard<std::mutex> lock(mutex_);
-      if (entries_.empty()) entries_.resize(class_size_.size() * kForms);
-      hit = entries_[slot];
+      hit = entries_[slot(cls, form)];
     }
     if (hit) {  // copied outside the lock: the other threads copy theirs meanwhile
       local = *hit;
@@ -84,11 +80,14 @@ class ElementMatrixCache {
     compute(*fresh);
     local = *fresh;
     std::lock_guard<std::mutex> lock(mutex_);
-    if (!entries_[slot]) entries_[slot] = std::move(fresh);
+    if (!entries_[slot(cls, form)]) entries_[slot(cls, form)] = std::move(fresh);
   }
 
  private:
   static constexpr std::size_t kForms = 4;  // BilinearForm's values
+  static std::size_t slot(int cls, BilinearForm form) {
+    return static_cast<std::size_t>(cls) * kForms + static_cast<std::size_t>(form);
+  }
   std::vector<int> class_size_;
   mutable std::mutex mutex_;
   mutable std::vector<std::shared_ptr<const DoubleDoubleMatrix>> entries_;
