@@ -47,9 +47,9 @@ class SymbolicFunction {
 };
 
 /// Several functions of (x, y) evaluated together at many points, e.g. an exact solution and its
-/// derivatives in the error norms. One muParser program computes the subexpressions they share
-/// (sin(pi x) in u, u_x, u_xx, ...) once per point, and the per-thread lookup of the compiled
-/// program happens once per batch instead of once per function and point.
+/// derivatives in the error norms. One program computes the subexpressions they share (sin(pi x)
+/// in u, u_x, u_xx, ...) once per point: compiled from the GiNaC expressions to code over blocks of
+/// points (expression_vector_program.hpp), or a muParser program for what that compiler does not know.
 class FunctionBatch {
  public:
   /// Throws InputError like SymbolicFunction::parse if muParser rejects the joint program.

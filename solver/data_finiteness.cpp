@@ -46,7 +46,7 @@ struct Finding {
 template <class RuleOf>
 Finding first_non_finite(const Space& space, const std::vector<Datum>& data, int items, const RuleOf& item) {
   // The physical points of every item first, then all data in one batch over large blocks of
-  // points (their shared subexpressions once per point, and muParser's bulk mode at full width).
+  // points (their shared subexpressions once per point, the compiled program running over whole blocks).
   std::vector<Eigen::Index> offset(items + 1, 0);
   for (int i = 0; i < items; ++i) offset[i + 1] = offset[i] + item(i).second->size();
   Eigen::Matrix2Xd points(2, offset[items]);
