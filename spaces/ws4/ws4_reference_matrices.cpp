@@ -28,20 +28,38 @@ int hessian_index(int a, int b) { return a + b; }
 
 using Real = long double;
 
-/// 5-point Gauss–Legendre on [0, 1] in long double (exact to degree 9).
-struct Gauss5 {
-  Real x[5], w[5];
-  Gauss5() {
-    const Real a = std::sqrt(Real(5) - 2 * std::sqrt(Real(10) / 7)) / 3;
-    const Real b = std::sqrt(Real(5) + 2 * std::sqrt(Real(10) / 7)) / 3;
-    const Real wa = (322 + 13 * std::sqrt(Real(70))) / 900, wb = (322 - 13 * std::sqrt(Real(70))) / 900;
-    const Real nodes[5] = {-b, -a, 0, a, b}, weights[5] = {wb, wa, Real(128) / 225, wa, wb};
-    for (int k = 0; k < 5; ++k) {
-      x[k] = (nodes[k] + 1) / 2;
-      w[k] = weights[k] / 2;
-    }
+/// g-point Gauss–Legendre (g = 3, 4 or 5, exact to degree 2g - 1) on [0, 1] in T (long double or
+/// double-double): nodes x, weights w.
+template <class T>
+void gauss_legendre_unit(int g, T* x, T* w) {
+  using std::sqrt;
+  T nodes[5], weights[5];
+  if (g == 3) {
+    const T a = sqrt(T(3.0) / T(5.0));
+    nodes[0] = -a, nodes[1] = T(0.0), nodes[2] = a;
+    weights[0] = weights[2] = T(5.0) / T(9.0);
+    weights[1] = T(8.0) / T(9.0);
+  } else if (g == 4) {
+    const T r = sqrt(T(6.0) / T(5.0)) * 2.0 / T(7.0);
+    const T a = sqrt(T(3.0) / T(7.0) - r), b = sqrt(T(3.0) / T(7.0) + r);
+    const T s30 = sqrt(T(30.0));
+    const T wa = (T(18.0) + s30) / T(36.0), wb = (T(18.0) - s30) / T(36.0);
+    nodes[0] = -b, nodes[1] = -a, nodes[2] = a, nodes[3] = b;
+    weights[0] = weights[3] = wb;
+    weights[1] = weights[2] = wa;
+  } else {
+    const T r = sqrt(T(10.0) / T(7.0));
+    const T a = sqrt(T(5.0) - r * 2.0) / T(3.0), b = sqrt(T(5.0) + r * 2.0) / T(3.0);
+    const T s70 = sqrt(T(70.0));
+    const T wa = (T(322.0) + s70 * 13.0) / T(900.0), wb = (T(322.0) - s70 * 13.0) / T(900.0);
+    const T n5[5] = {-b, -a, T(0.0), a, b}, w5[5] = {wb, wa, T(128.0) / T(225.0), wa, wb};
+    for (int k = 0; k < 5; ++k) nodes[k] = n5[k], weights[k] = w5[k];
   }
-};
+  for (int k = 0; k < g; ++k) {
+    x[k] = (nodes[k] + T(1.0)) * 0.5;
+    w[k] = weights[k] * 0.5;
+  }
+}
 
 /// The reference matrices in long double, rounded once. Every integrand is a polynomial of degree
 /// <= 8 on each fan triangle of the split: a collapsed 5 x 5 Gauss rule (degree 9 in the collapsed
@@ -54,7 +72,8 @@ const std::vector<MatrixL>& reference_sums() {
   static const std::vector<MatrixL> sums = [] {
   const Ws4Basis& basis = Ws4Basis::reference();
   const Ws4Split& split = basis.split();
-  const Gauss5 g;
+  Real gx[5], gw[5];
+  gauss_legendre_unit(5, gx, gw);
   constexpr int n = Ws4Basis::size, q = 25;
   // Six tables: value, ∂ξ, ∂η, ∂ξξ, ∂ξη, ∂ηη; sums[k][l] = ∫ table_k table_lᵀ for the pairs used.
   const int pairs[10][2] = {{0, 0}, {1, 1}, {1, 2}, {2, 2}, {3, 3}, {3, 4}, {3, 5}, {4, 4}, {4, 5}, {5, 5}};
@@ -97,10 +116,10 @@ const std::vector<MatrixL>& reference_sums() {
     for (int a = 0; a < 5; ++a)
       for (int c = 0; c < 5; ++c, ++k) {
         // Collapsed coordinates: x = v0 + s (v1 − v0) + (1 − s) t (v2 − v0), dx = (1 − s) 2|T| ds dt.
-        const Real s = g.x[a], t = (1 - s) * g.x[c];
+        const Real s = gx[a], t = (1 - s) * gx[c];
         const Real x = vx[0] + s * (vx[1] - vx[0]) + t * (vx[2] - vx[0]);
         const Real y = vy[0] + s * (vy[1] - vy[0]) + t * (vy[2] - vy[0]);
-        weights(k) = g.w[a] * g.w[c] * (1 - s) * twice_area;
+        weights(k) = gw[a] * gw[c] * (1 - s) * twice_area;
         for (int j = 0; j < 6; ++j)
           for (int i = 0; i < m; ++i) table[j](i, k) = d[j * n + i](x, y);
       }
@@ -263,36 +282,6 @@ namespace {
 /// of a quartic piece.
 int derivative_degree(int j) { return j == 0 ? 4 : j < 3 ? 3 : 2; }
 
-/// g-point Gauss–Legendre (g = 3, 4 or 5) on [0, 1] in double-double: nodes x, weights w.
-void gauss_legendre_unit_double_double(int g, DoubleDouble* x, DoubleDouble* w) {
-  using DD = DoubleDouble;
-  DD nodes[5], weights[5];
-  if (g == 3) {
-    const DD a = sqrt(DD(3.0) / DD(5.0));
-    nodes[0] = -a, nodes[1] = DD(0.0), nodes[2] = a;
-    weights[0] = weights[2] = DD(5.0) / DD(9.0);
-    weights[1] = DD(8.0) / DD(9.0);
-  } else if (g == 4) {
-    const DD r = sqrt(DD(6.0) / DD(5.0)) * 2.0 / DD(7.0);
-    const DD a = sqrt(DD(3.0) / DD(7.0) - r), b = sqrt(DD(3.0) / DD(7.0) + r);
-    const DD s30 = sqrt(DD(30.0));
-    const DD wa = (DD(18.0) + s30) / DD(36.0), wb = (DD(18.0) - s30) / DD(36.0);
-    nodes[0] = -b, nodes[1] = -a, nodes[2] = a, nodes[3] = b;
-    weights[0] = weights[3] = wb;
-    weights[1] = weights[2] = wa;
-  } else {
-    const DD r = sqrt(DD(10.0) / DD(7.0));
-    const DD a = sqrt(DD(5.0) - r * 2.0) / DD(3.0), b = sqrt(DD(5.0) + r * 2.0) / DD(3.0);
-    const DD s70 = sqrt(DD(70.0));
-    const DD wa = (DD(322.0) + s70 * 13.0) / DD(900.0), wb = (DD(322.0) - s70 * 13.0) / DD(900.0);
-    const DD n5[5] = {-b, -a, DD(0.0), a, b}, w5[5] = {wb, wa, DD(128.0) / DD(225.0), wa, wb};
-    for (int k = 0; k < 5; ++k) nodes[k] = n5[k], weights[k] = w5[k];
-  }
-  for (int k = 0; k < g; ++k) {
-    x[k] = (nodes[k] + DD(1.0)) * 0.5;
-    w[k] = weights[k] * 0.5;
-  }
-}
 
 /// The ten integral tables of reference_sums() again, in double-double from pieces built in
 /// double-double (the long double ones carry ≈ 1e-18 of their size after the cancellations of
@@ -318,7 +307,7 @@ std::vector<DoubleDoubleMatrix> reference_sums_double_double(int first_pair, int
   constexpr int n = Ws4Basis::size, kMaxPoints = 25;
   const int q = g * g;
   DD gx[5], gw[5];
-  gauss_legendre_unit_double_double(g, gx, gw);
+  gauss_legendre_unit(g, gx, gw);
   // The fan triangles in a fixed number of chunks, summed separately (in parallel) and then added
   // in chunk order: the same sums whatever the number of threads.
   constexpr int kChunks = 8;
