@@ -1,4 +1,5 @@
 #include "config/expression_vector_math.hpp"
+#include "config/cpu_dispatch.hpp"
 
 #include <immintrin.h>
 
@@ -85,12 +86,7 @@ __attribute__((target("avx2"))) void avx2(const double* a, const double* b, doub
   }
 }
 
-bool has_avx2() {
-  static const bool yes = __builtin_cpu_supports("avx2");
-  return yes;
-}
-
-#define IGA_MVEC_ENTRY1(f) {#f, has_avx2() ? &avx1<_ZGVdN4v_##f> : &sse1<_ZGVbN2v_##f>}
+#define IGA_MVEC_ENTRY1(f) {#f, cpu_has_avx2() ? &avx1<_ZGVdN4v_##f> : &sse1<_ZGVbN2v_##f>}
 
 }  // namespace
 
@@ -104,7 +100,7 @@ ArrayFunction1 array_function(const std::string& name) {
   return it == table.end() ? nullptr : it->second;
 }
 
-ArrayFunction2 array_pow() { return has_avx2() ? &avx2<_ZGVdN4vv_pow> : &sse2<_ZGVbN2vv_pow>; }
-ArrayFunction2 array_atan2() { return has_avx2() ? &avx2<_ZGVdN4vv_atan2> : &sse2<_ZGVbN2vv_atan2>; }
+ArrayFunction2 array_pow() { return cpu_has_avx2() ? &avx2<_ZGVdN4vv_pow> : &sse2<_ZGVbN2vv_pow>; }
+ArrayFunction2 array_atan2() { return cpu_has_avx2() ? &avx2<_ZGVdN4vv_atan2> : &sse2<_ZGVbN2vv_atan2>; }
 
 }  // namespace iga::expression_detail

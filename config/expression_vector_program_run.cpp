@@ -131,7 +131,8 @@ template <bool kFused>
 }
 
 // Compiled twice, the AVX2 body chosen at load time where the CPU has it: the arithmetic loops
-// then run four points per instruction instead of two. No contraction here (the build's rule).
+// then run four points per instruction instead of two. Products and sums round separately here
+// unless the whole build targets FMA (then cpu_has_avx2_fma() is false and this copy is the one).
 IGA_AVX2_CLONES
 void execute_separate(const std::vector<Instruction>& code, const double* x, const double* y, int count,
                       double* work) {
@@ -148,11 +149,6 @@ __attribute__((target("avx2,fma"))) void execute_fused(const std::vector<Instruc
 
 /// Results up to this many are stored by store_transposed.
 constexpr int kMaxTransposed = 64;
-
-bool cpu_has_avx2() {
-  static const bool has = __builtin_cpu_supports("avx2");
-  return has;
-}
 
 /// values[i + k * stride] = rows[i][k] for i < m, k < count: the results of a block turned to the
 /// layout of values (a point's functions together). Four functions of four points are transposed

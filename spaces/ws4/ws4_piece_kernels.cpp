@@ -5,16 +5,11 @@
 #include <stdexcept>
 #include <type_traits>
 
+#include "config/cpu_dispatch.hpp"
 #include "spaces/ws4/poly4.hpp"
 
-/// Three copies of each kernel: baseline, AVX2 + FMA (x86-64-v3) and AVX-512 (x86-64-v4). The
-/// project's IGA_AVX2_CLONES (config/cpu_dispatch.hpp) has no FMA in its AVX2 copy, and Horner's
-/// rule is a chain of multiply-adds. Clang builds (fuzz, sanitizers) need no speed: one copy.
-#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
-#define WS4_KERNEL_CLONES __attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")))
-#else
-#define WS4_KERNEL_CLONES
-#endif
+// Three copies of each kernel (IGA_X86_64_V3_V4_CLONES): Horner's rule is a chain of
+// multiply-adds, which the AVX2 copy of IGA_AVX2_CLONES would run without FMA.
 // The vector helpers below pass and return vector types by value; they are always inlined, so
 // GCC's note that their calling convention differs between the copies concerns no call.
 #if defined(__GNUC__) && !defined(__clang__)
@@ -173,7 +168,6 @@ WS4_INLINE V4 sum_lanes(V4 a, V4 b, V4 c, V4 d) {
   return __builtin_shufflevector(ab, cd, 0, 1, 4, 5) + __builtin_shufflevector(ab, cd, 2, 3, 6, 7);
 }
 
-/// out[0 .. 4 NB) = Σ_m moments[m] row m of a 15 x (4 NB) block (NB vectors of accumulators).
 /// u_h on K regions of one orbit: each piece of the representative is loaded once and serves
 /// the K regions (their functions permuted), so the table is read once per orbit, not per region;
 /// 4 K independent chains of multiply-adds.
@@ -250,7 +244,7 @@ WS4_INLINE void member_transposed(const Ws4PieceTable& t, const int* regions, co
 
 }  // namespace
 
-WS4_KERNEL_CLONES
+IGA_X86_64_V3_V4_CLONES
 void orbit_polynomials(const Ws4PieceTable& table, const int* regions, const int* slots, int members, const double* b,
                        double* values, int stride) {
   for (int first = 0; first < members; first += kMembers) {
@@ -262,7 +256,7 @@ void orbit_polynomials(const Ws4PieceTable& table, const int* regions, const int
   }
 }
 
-WS4_KERNEL_CLONES
+IGA_X86_64_V3_V4_CLONES
 void orbit_transposed(const Ws4PieceTable& table, const int* regions, const int* slots, int members,
                       const double* moments, double* b) {
   if (table.max_width > kMaxWidth) throw std::logic_error("orbit_transposed: more active functions than expected");
@@ -275,7 +269,7 @@ void orbit_transposed(const Ws4PieceTable& table, const int* regions, const int*
   }
 }
 
-WS4_KERNEL_CLONES
+IGA_X86_64_V3_V4_CLONES
 void derivative_polynomials(const double* g, int order, double* coefficients) {
   double* c = coefficients;
   const double *g00 = g, *g10 = g + kSlots, *g01 = g + 2 * kSlots, *g11 = g + 3 * kSlots;
@@ -287,7 +281,7 @@ void derivative_polynomials(const double* g, int order, double* coefficients) {
   derive<2>(c + dy_row * kSlots, g01, g11, c + dyy_row * kSlots);
 }
 
-WS4_KERNEL_CLONES
+IGA_X86_64_V3_V4_CLONES
 void evaluate_run(const double* coefficients, int slot, int order, const double* x, const double* y, int count,
                   double* const* out) {
   const double* c = coefficients + slot;
@@ -298,7 +292,7 @@ void evaluate_run(const double* coefficients, int slot, int order, const double*
   }
 }
 
-WS4_KERNEL_CLONES
+IGA_X86_64_V3_V4_CLONES
 void add_moments(const double* x, const double* y, const double* w, int count, double* moments) {
   // Four points at a time, one partial sum per monomial and lane; the lanes are added four
   // monomials at a time (sum_lanes), the last of the 16 being zero.
@@ -313,7 +307,7 @@ void add_moments(const double* x, const double* y, const double* w, int count, d
   for (int k = whole; k < count; ++k) accumulate_moments(x[k], y[k], w[k], moments);
 }
 
-WS4_KERNEL_CLONES
+IGA_X86_64_V3_V4_CLONES
 void affine_points(const Eigen::Matrix2d& j, const Point2& p0, const double* __restrict xi,
                    const double* __restrict eta, int count, double* __restrict x) {
   // A plain loop: the compiler interleaves the two coordinates with the shuffles of each target
@@ -325,7 +319,7 @@ void affine_points(const Eigen::Matrix2d& j, const Point2& p0, const double* __r
   }
 }
 
-WS4_KERNEL_CLONES
+IGA_X86_64_V3_V4_CLONES
 void repeat_matrix(const Eigen::Matrix2d& j, int count, double* out) {
   const V4 m = {j(0, 0), j(1, 0), j(0, 1), j(1, 1)};  // column-major, as Eigen stores it
   for (int k = 0; k < count; ++k) store(out + 4 * k, m);

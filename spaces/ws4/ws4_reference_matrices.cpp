@@ -415,6 +415,10 @@ DoubleDoubleMatrix transposed(const DoubleDoubleMatrix& m) {
   return t;
 }
 
+/// The group of reference matrices `form` uses: 0 the mass matrix, 1 the gradient ones, 2 the Hessian
+/// ones (bilaplace and hessian forms).
+int group_of(BilinearForm form) { return form == BilinearForm::mass ? 0 : form == BilinearForm::laplace ? 1 : 2; }
+
 /// The double-double reference matrices of one group of kPairs, built on first use: 0 the mass
 /// matrix, 1 the gradient ones, 2 the Hessian ones (the other members are left empty).
 const Ws4ReferenceMatricesDoubleDouble& reference_group_double_double(int group) {
@@ -495,8 +499,7 @@ void combine(const std::vector<std::pair<DoubleDouble, const DoubleDoubleMatrix*
 /// Element matrix of `form` on the triangle of `jacobian` in the B-basis, in double-double.
 void form_matrix_double_double(BilinearForm form, const Eigen::Matrix2d& jac, DoubleDoubleMatrix& k) {
   // Only the group of reference matrices this form uses (each built on first use).
-  const Ws4ReferenceMatricesDoubleDouble& r = reference_group_double_double(
-      form == BilinearForm::mass ? 0 : form == BilinearForm::laplace ? 1 : 2);
+  const Ws4ReferenceMatricesDoubleDouble& r = reference_group_double_double(group_of(form));
   using dd_detail::two_prod;
   // det J exactly, and M = adj(J) adj(J)ᵀ = det² J⁻¹J⁻ᵀ (entries of adj(J) are entries of J).
   const DoubleDouble det = two_prod(jac(0, 0), jac(1, 1)) - two_prod(jac(0, 1), jac(1, 0));
@@ -539,7 +542,7 @@ void form_matrix_double_double(BilinearForm form, const Eigen::Matrix2d& jac, Do
 }  // namespace
 
 void prepare_reference_matrices_double_double(BilinearForm form) {
-  reference_group_double_double(form == BilinearForm::mass ? 0 : form == BilinearForm::laplace ? 1 : 2);
+  reference_group_double_double(group_of(form));
 }
 
 void ws4_element_matrix_double_double(BilinearForm form, const Eigen::Matrix2d& jacobian, const Eigen::MatrixXd& c,

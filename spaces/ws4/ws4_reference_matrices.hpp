@@ -39,6 +39,8 @@ struct Ws4ReferenceMatricesDoubleDouble {
   DoubleDoubleMatrix mass;
   DoubleDoubleMatrix grad[2][2];
   DoubleDoubleMatrix hess[3][3];
+  /// All three groups (for tests; element matrices build only the group of their form, see
+  /// prepare_reference_matrices_double_double).
   static const Ws4ReferenceMatricesDoubleDouble& get();
 };
 

@@ -32,7 +32,7 @@ struct ShapeClasses {
 ShapeClasses group_by_shape(const std::vector<ElementDofGeometry>& translated);
 
 /// Double-double element matrices of the classes shared by several elements, built for all classes
-/// at once (build_all) or on first use (get); thread-safe. Classes of one element are not kept: on
+/// at once (build_all, before an element loop); thread-safe. Classes of one element are not kept: on
 /// an unstructured mesh every element is its own class, and caching would only hold a 41 kB matrix
 /// per element.
 class ElementMatrixCache {
@@ -63,24 +63,14 @@ class ElementMatrixCache {
       if (fresh[c] && !entries_[slot(c, form)]) entries_[slot(c, form)] = std::move(fresh[c]);
   }
 
-  /// local = the matrix of `form` for class `cls`; `compute` fills it when not cached.
+  /// local = the matrix of `form` for class `cls`: the cached one after build_all, else compute's
+  /// (the same matrix bit for bit: every element of a class has the same J and extraction).
   template <class Compute>
   void get(int cls, BilinearForm form, DoubleDoubleMatrix& local, Compute&& compute) const {
-    if (class_size_[cls] < 2) return compute(local);
-    std::shared_ptr<const DoubleDoubleMatrix> hit;
-    {
-      std::lock_guard<std::mutex> lock(mutex_);
-      hit = entries_[slot(cls, form)];
-    }
-    if (hit) {  // copied outside the lock: the other threads copy theirs meanwhile
-      local = *hit;
-      return;
-    }
-    auto fresh = std::make_shared<DoubleDoubleMatrix>();
-    compute(*fresh);
-    local = *fresh;
-    std::lock_guard<std::mutex> lock(mutex_);
-    if (!entries_[slot(cls, form)]) entries_[slot(cls, form)] = std::move(fresh);
+    if (const DoubleDoubleMatrix* cached = find(cls, form))
+      local = *cached;
+    else
+      compute(local);
   }
 
  private:

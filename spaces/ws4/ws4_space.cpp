@@ -71,7 +71,7 @@ class Ws4Space::Ws4Evaluator final : public Space::Evaluator {
     pieces_.evaluate_function(element, rule, coefficients, flags, geometry, out);
   }
 
-  /// Geometry only; integrate_values works from the monomial tables of the rule.
+  /// Geometry only; integrate_values then takes the moments of each region from the points.
   void evaluate_geometry(int element, const QuadratureRule& rule, PointValues& out) override {
     pieces_.evaluate_geometry(element, rule, out);
   }

@@ -374,7 +374,7 @@ TEST(Expression, BatchVectorFunctionsMatchScalarOnes) {
   for (const std::string& t : texts) fs.push_back(parse(t));
   fs.push_back(parse("log(x-5)"));
   const FunctionBatch batch(fs);
-  const int q = 64 + 67;  // one full block, then 67 = 16 * 4 + 3
+  const int q = 128 + 3;  // one full block of VectorProgram::kBlock = 128 points, then a remainder of 3
   Eigen::Matrix2Xd points(2, q);
   for (int k = 0; k < q; ++k) points.col(k) << 1.8 * k / q - 0.9, 0.95 - 1.7 * k / q;
   Eigen::MatrixXd v;

@@ -18,7 +18,6 @@
 #include "spaces/ws4/ws4_basis.hpp"
 #include "tests/spaces/ws4/ws4_test_meshes.hpp"
 #include "tests/support/test_support.hpp"
-#include "tests/support/test_support.hpp"
 
 namespace iga::ws4 {
 namespace {
