@@ -14,7 +14,6 @@
 /// which gives the jets at its T-junctions; edges are processed in the mesh's dependency order.
 
 #include <Eigen/Core>
-#include <Eigen/SparseCore>
 #include <vector>
 
 #include "spaces/tmesh/tmesh.hpp"

@@ -11,7 +11,6 @@
 #include <Eigen/Core>
 #include <array>
 #include <cstdint>
-#include <map>
 #include <string>
 #include <tuple>
 #include <vector>

@@ -566,7 +566,6 @@ void TMeshSpace::normalize_basis() {
     }
 }
 
-int TMeshSpace::extra_points() const { return extra_degree_; }
 
 int non_polynomial_extra_degree(double wh) {
   // A Gauss rule exact to degree 2n + 1 + e leaves the part of B_i B_k beyond that degree, whose
@@ -602,7 +601,7 @@ void TMeshSpace::cell_box(int cell, Point2& lo, Point2& hi) const {
 }
 
 RulePtr TMeshSpace::quadrature(int, int degree) const {
-  degree = std::max(degree, 0) + extra_points();
+  degree = std::max(degree, 0) + extra_degree_;
   std::lock_guard<std::mutex> lock(rule_mutex_);
   RulePtr& r = cell_rules_[degree];
   if (!r) r = std::make_shared<const QuadratureRule>(tensor_gauss(degree));
@@ -610,7 +609,7 @@ RulePtr TMeshSpace::quadrature(int, int degree) const {
 }
 
 RulePtr TMeshSpace::edge_quadrature(int, int edge, int degree) const {
-  degree = std::max(degree, 0) + extra_points();
+  degree = std::max(degree, 0) + extra_degree_;
   std::lock_guard<std::mutex> lock(rule_mutex_);
   RulePtr& r = edge_rules_[{edge, degree}];
   if (!r) r = std::make_shared<const QuadratureRule>(edge_rule(CellShape::quadrilateral, edge, gauss_legendre_for_degree(degree)));

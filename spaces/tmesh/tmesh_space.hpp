@@ -23,8 +23,8 @@
 namespace iga {
 
 /// Degree a Gauss rule needs beyond the polynomial degree of the integrand for trigonometric or
-/// hyperbolic sections with largest w h = `wh` to stay exact to round-off: the smallest even e with
-/// (w h)^(e+1) / (e+1)! <= 1e-17, at most 16; 0 for wh = 0 (polynomial sections).
+/// hyperbolic sections with largest w h = `wh` to stay exact to round-off: the smallest even e >= 2
+/// with (w h)^(e+1) / (e+1)! <= 1e-17, at most 16; 0 for wh = 0 (polynomial sections).
 int non_polynomial_extra_degree(double wh);
 
 class TMeshSpace final : public Space {
@@ -95,7 +95,6 @@ class TMeshSpace final : public Space {
 
  private:
   class TMeshEvaluator;
-  int extra_points() const;
   /// Scale every global function to largest Bernstein coefficient 1 (the Hermite DOFs stay the
   /// construction; only the basis is rescaled, so dimension and span are unchanged).
   void normalize_basis();
