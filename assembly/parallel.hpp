@@ -1,14 +1,13 @@
 #pragma once
 /// @file
-/// When a loop is worth a thread team. Below the threshold, the fork/join and barrier costs exceed
-/// the work — badly so on a machine busy with other processes, where waiting threads lose their
-/// time slices. Every OpenMP region of assembly/ uses `#pragma omp parallel if (worth_threads(n))`.
+/// Threads in assembly/: every OpenMP region uses `#pragma omp parallel if (worth_threads(n))`
+/// (config/worth_threads.hpp), and Eigen stays serial inside them.
 
 #include <Eigen/Core>
 
-namespace iga {
+#include "config/worth_threads.hpp"
 
-inline bool worth_threads(long items) { return items >= 512; }
+namespace iga {
 
 /// Eigen's products stay on the calling thread. Our element loops are the parallel level; below
 /// worth_threads they run serially on purpose, and Eigen would otherwise start its own OpenMP

@@ -1,4 +1,5 @@
 #include "solver/data_finiteness.hpp"
+#include "config/worth_threads.hpp"
 
 #include <climits>
 #include <algorithm>
@@ -51,7 +52,7 @@ Finding first_non_finite(const Space& space, const std::vector<Datum>& data, int
   for (int i = 0; i < items; ++i) offset[i + 1] = offset[i] + item(i).second->size();
   Eigen::Matrix2Xd points(2, offset[items]);
   std::vector<int> owner(offset[items]);
-#pragma omp parallel if (items >= 512)
+#pragma omp parallel if (worth_threads(items))
   {
     auto evaluator = space.make_evaluator();
     PointValues geometry;

@@ -1,4 +1,5 @@
 #include "spaces/g1/g1_basis.hpp"
+#include "config/worth_threads.hpp"
 
 #include <Eigen/Dense>
 #include <algorithm>
@@ -123,10 +124,6 @@ Eigen::MatrixXd vertex_targets(const Eigen::MatrixXd& ur, const Eigen::VectorXd&
   out.middleCols(col, k2.cols()) = k1 * k2;
   return out;
 }
-
-/// Loops over vertices or edges take a thread team only when there are enough of them (the same
-/// threshold as assembly/parallel.hpp, which spaces/ may not include).
-bool worth_local_threads(long items) { return items >= 512; }
 
 /// Throws IncompleteBasis with the first nonempty message (lowest entity index: deterministic
 /// whatever the number of threads).
@@ -340,7 +337,7 @@ G1Basis build_g1_basis(const PatchMesh& mesh, const std::vector<EdgeGluing>& glu
   const EdgeCollocation collocation(k);
   std::vector<EdgeLocal> local(mesh.num_edges());
   std::vector<std::string> errors(mesh.num_edges());
-#pragma omp parallel for schedule(dynamic, 16) if (worth_local_threads(mesh.num_edges()))
+#pragma omp parallel for schedule(dynamic, 16) if (worth_threads(mesh.num_edges()))
   for (int e = 0; e < mesh.num_edges(); ++e) {
     const MeshEdge& me = mesh.edge(e);
     EdgeLocal& l = local[e];
@@ -372,7 +369,7 @@ G1Basis build_g1_basis(const PatchMesh& mesh, const std::vector<EdgeGluing>& glu
   // (the basis does not depend on the number of threads).
   std::vector<std::vector<std::vector<FaceCoefficient>>> vertex_functions(mesh.num_vertices());
   errors.assign(mesh.num_vertices(), {});
-#pragma omp parallel for schedule(dynamic, 16) if (worth_local_threads(mesh.num_vertices()))
+#pragma omp parallel for schedule(dynamic, 16) if (worth_threads(mesh.num_vertices()))
   for (int v = 0; v < mesh.num_vertices(); ++v) {
     if (mesh.fan(v).face.empty()) continue;
     try {

@@ -1,4 +1,5 @@
 #include "spaces/tmesh/hermite_extraction.hpp"
+#include "config/worth_threads.hpp"
 
 #include <Eigen/LU>
 #include <algorithm>
@@ -24,9 +25,6 @@ using tmesh_detail::FormRef;
 using tmesh_detail::LocalForms;
 using tmesh_detail::positions_in;
 using tmesh_detail::subtract_scaled;
-
-/// Threads pay off from a few hundred cells or edges on (fork/join costs more below).
-bool worth_threads(long items) { return items >= 512; }
 
 /// A function of the edge space V_e along a composite edge, T(x) = sum_m tau_m L^{-m} phi_m(x) in
 /// the G-basis of order `order` (n for d_e = 2; n-2 with pi_rho = 0, i.e. x^m/m!, for d_e = 0):

@@ -1,4 +1,5 @@
 #include "spaces/tmesh/tmesh_space.hpp"
+#include "config/worth_threads.hpp"
 
 #include <algorithm>
 #include <atomic>
@@ -548,7 +549,7 @@ void TMeshSpace::normalize_basis() {
   std::vector<std::size_t> first(nc + 1, 0);
   for (int c = 0; c < nc; ++c) first[c + 1] = first[c] + extraction_.dofs[c].size();
   std::vector<double> row_max(first[nc]);
-#pragma omp parallel for schedule(static) if (nc >= 512)
+#pragma omp parallel for schedule(static) if (worth_threads(nc))
   for (int c = 0; c < nc; ++c)
     for (std::size_t a = 0; a < extraction_.dofs[c].size(); ++a)
       row_max[first[c] + a] = extraction_.matrix[c].row(static_cast<Eigen::Index>(a)).cwiseAbs().maxCoeff();
@@ -558,7 +559,7 @@ void TMeshSpace::normalize_basis() {
       double& s = scale[extraction_.dofs[c][a]];
       s = std::max(s, row_max[first[c] + a]);
     }
-#pragma omp parallel for schedule(static) if (nc >= 512)
+#pragma omp parallel for schedule(static) if (worth_threads(nc))
   for (int c = 0; c < nc; ++c)
     for (std::size_t a = 0; a < extraction_.dofs[c].size(); ++a) {
       const double s = scale[extraction_.dofs[c][a]];
