@@ -13,6 +13,12 @@ namespace iga {
 
 namespace {
 
+/// A cell's section pair must name two of the `count` section spaces.
+void check_section_indices(int s, int t, std::size_t count) {
+  if (s < 0 || t < 0 || s >= int(count) || t >= int(count))
+    throw std::invalid_argument("T-mesh cell refers to an unknown section space");
+}
+
 /// Lattice units per base cell: room for 24 dyadic refinements.
 constexpr std::int64_t kBase = std::int64_t(1) << 24;
 
@@ -137,8 +143,7 @@ TMesh::TMesh(std::vector<TCell> cells, std::vector<SectionSpec> sections, Eigen:
   bounds_[1] = bounds_[3] = INT64_MIN;
   for (const TCell& c : cells_) {
     if (!(c.x0 < c.x1 && c.y0 < c.y1)) throw std::invalid_argument("T-mesh cell with empty interior");
-    if (c.section_s < 0 || c.section_t < 0 || c.section_s >= int(sections_.size()) || c.section_t >= int(sections_.size()))
-      throw std::invalid_argument("T-mesh cell refers to an unknown section space");
+    check_section_indices(c.section_s, c.section_t, sections_.size());
     bounds_[0] = std::min(bounds_[0], c.x0);
     bounds_[1] = std::max(bounds_[1], c.x1);
     bounds_[2] = std::min(bounds_[2], c.y0);
@@ -417,8 +422,7 @@ TMesh TMesh::with_sections(const std::vector<std::array<int, 2>>& cell_sections,
   out.sections_ = std::move(sections);
   for (std::size_t c = 0; c < cells_.size(); ++c) {
     const auto [s, t] = cell_sections[c];
-    if (s < 0 || t < 0 || s >= int(out.sections_.size()) || t >= int(out.sections_.size()))
-      throw std::invalid_argument("T-mesh cell refers to an unknown section space");
+    check_section_indices(s, t, out.sections_.size());
     out.cells_[c].section_s = s;
     out.cells_[c].section_t = t;
   }
