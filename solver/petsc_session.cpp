@@ -10,6 +10,7 @@
 
 #ifdef IGA_WITH_PETSC
 #include <petscsys.h>
+#include <unistd.h>
 #endif
 
 namespace iga {
@@ -110,7 +111,8 @@ std::string home_options_file() {
   if (const char* home = std::getenv("HOME"); home && *home) {
     std::error_code ec;
     const std::filesystem::path file = std::filesystem::path(home) / ".petscrc";
-    if (std::filesystem::is_regular_file(file, ec)) return file.string();
+    // PETSc fails on a named file it cannot read, where it skipped an unreadable ~/.petscrc.
+    if (std::filesystem::is_regular_file(file, ec) && ::access(file.c_str(), R_OK) == 0) return file.string();
   }
   return "/dev/null";
 }
