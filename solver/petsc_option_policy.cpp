@@ -329,7 +329,8 @@ std::string shown(const std::string& word) {
 [[noreturn]] void refuse_name(const std::string& name) {
   std::vector<std::string> candidates;
   for (const Rule& r : rules()) candidates.push_back(std::string("-").append(r.name));
-  const std::string near = nearest_word(lower(name), candidates);
+  // No suggestion for a long word: it is no near miss, and the distances would cost time.
+  const std::string near = name.size() <= 64 ? nearest_word(lower(name), candidates) : std::string();
   throw InputError(shown(name) +
                    " is not an option a config may set: a config sets solver-tuning options only (Krylov "
                    "method, preconditioner, tolerances, GAMG, hypre and MUMPS parameters, monitors to standard "
