@@ -146,8 +146,8 @@ const std::vector<Rule>& rules() {
         {"pc_gamg_use_sa_esteig", Kind::boolean},
         {"pc_gamg_eigenvalues", Kind::reals},
         {"pc_gamg_rank_reduction_factors", Kind::integers, 1, 1e6},
-        // hypre
-        {"pc_hypre_type", Kind::choice, 0, 0, {"boomeramg", "pilut", "parasails", "euclid"}},
+        // hypre: BoomerAMG only. Euclid (also as a BoomerAMG smoother) reads a file ./database.
+        {"pc_hypre_type", Kind::choice, 0, 0, {"boomeramg"}},
         {"pc_hypre_boomeramg_strong_threshold", Kind::real, 0, 1},
         {"pc_hypre_boomeramg_max_levels", Kind::integer, 2, 100},
         {"pc_hypre_boomeramg_max_iter", Kind::integer, 1, 1000},
@@ -173,7 +173,7 @@ const std::vector<Rule>& rules() {
         {"pc_hypre_boomeramg_relax_weight_all", Kind::real},
         {"pc_hypre_boomeramg_outer_relax_weight_all", Kind::real},
         {"pc_hypre_boomeramg_measure_type", Kind::choice, 0, 0, {"local", "global"}},
-        {"pc_hypre_boomeramg_smooth_type", Kind::choice, 0, 0, {"Schwarz-smoothers", "Pilut", "ParaSails", "Euclid"}},
+        {"pc_hypre_boomeramg_smooth_type", Kind::choice, 0, 0, {"Schwarz-smoothers", "Pilut", "ParaSails"}},
         {"pc_hypre_boomeramg_smooth_num_levels", Kind::integer, 0, 100},
         {"pc_hypre_boomeramg_cycle_type", Kind::choice, 0, 0, {"V", "W"}},
         {"pc_hypre_boomeramg_max_coarse_size", Kind::integer, 1, 1e9},

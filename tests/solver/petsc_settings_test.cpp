@@ -157,6 +157,8 @@ TEST(ConfigPetscOptions, ValuesAreCheckedAgainstTheOptionsType) {
   expect("-pc_type nonsense", "-pc_type takes one of none, jacobi,");
   expect("-ksp_type ../../x", "-ksp_type takes one of cg, gmres,");
   expect("-pc_factor_mat_solver_type superlu_dist", "one of petsc, mumps");
+  expect("-pc_hypre_type euclid", "-pc_hypre_type takes one of boomeramg, not 'euclid'");  // reads ./database
+  expect("-pc_hypre_boomeramg_smooth_type Euclid", "not 'Euclid'");
   expect("-ksp_gmres_restart 100000", "-ksp_gmres_restart takes an integer in [1, 1000]");
   expect("-pc_gamg_threshold 0.1,abc", "-pc_gamg_threshold takes finite numbers separated by commas");
   expect("-pc_gamg_threshold 0.1,", "-pc_gamg_threshold takes finite numbers");
