@@ -20,7 +20,8 @@ struct PetscSettings {
   double rtol = 1e-12;         ///< relative residual decrease, in the KSP's default norm (preconditioned for CG)
   int max_iterations = 10000;  ///< a KSP still unconverged after this many is a numerical failure
   std::string options;         ///< "-name value ..." added to the PETSc options (the command line wins);
-                               ///< checked by parse_config_petsc_options when parsed
+                               ///< the allow-list of petsc_option_policy.hpp, checked when the config is
+                               ///< parsed and again before PETSc gets them (also when set in code)
   std::string options_where;   ///< "FILE:LINE:COL: solver.options" for errors PETSc finds in them
 };
 
