@@ -10,8 +10,9 @@ if(IGA_FUZZ)
                       -fno-omit-frame-pointer -g -O1)
   add_link_options(-fsanitize=address,undefined)
 
-  # target -> the layers it links; problem_fuzz compiles the one solver file it exercises instead
-  # of linking the whole solver (and with it spaces, assembly, Gmsh meshing).
+  # target -> the layers it links; problem_fuzz and petsc_options_fuzz compile the one solver file
+  # they exercise instead of linking the whole solver (and with it spaces, assembly, Gmsh meshing,
+  # PETSc).
   set(IGA_FUZZ_LAYERS_config_node_fuzz iga_config)
   set(IGA_FUZZ_LAYERS_expression_fuzz iga_config)
   set(IGA_FUZZ_LAYERS_problem_fuzz iga_config)
@@ -19,6 +20,8 @@ if(IGA_FUZZ)
   set(IGA_FUZZ_LAYERS_obj_mesh_fuzz iga_mesh)
   set(IGA_FUZZ_LAYERS_off_mesh_fuzz iga_mesh)
   set(IGA_FUZZ_LAYERS_gismo_xml_fuzz iga_mesh)
+  set(IGA_FUZZ_LAYERS_petsc_options_fuzz iga_config)
+  set(IGA_FUZZ_SOURCES_petsc_options_fuzz ${CMAKE_CURRENT_SOURCE_DIR}/solver/petsc_option_policy.cpp)
 
   file(GLOB IGA_FUZZ_SOURCES CONFIGURE_DEPENDS ${CMAKE_CURRENT_SOURCE_DIR}/fuzz/*_fuzz.cpp)
   set(IGA_FUZZ_TARGETS "")

@@ -1,7 +1,8 @@
 #include "solver/petsc_session.hpp"
 
-#include <cstdlib>
 #include <cctype>
+#include <cstdlib>
+#include <filesystem>
 #include <iostream>
 #include <stdexcept>
 
@@ -9,6 +10,7 @@
 
 #ifdef IGA_WITH_PETSC
 #include <petscsys.h>
+#include <unistd.h>
 #endif
 
 namespace iga {
@@ -102,13 +104,36 @@ bool petsc_up() {
   return up == PETSC_TRUE;
 }
 
+/// The options file PETSc reads first (below PETSC_OPTIONS and the command line): the user's
+/// ~/.petscrc if there is one, else /dev/null. Never empty: PETSc reads the file on rank 0 and
+/// broadcasts it, a collective call that every rank must make (an empty name would skip it).
+std::string home_options_file() {
+  if (const char* home = std::getenv("HOME"); home && *home) {
+    std::error_code ec;
+    const std::filesystem::path file = std::filesystem::path(home) / ".petscrc";
+    // PETSc fails on a named file it cannot read, where it skipped an unreadable ~/.petscrc.
+    if (std::filesystem::is_regular_file(file, ec) && ::access(file.c_str(), R_OK) == 0) return file.string();
+  }
+  return "/dev/null";
+}
+
+/// PETSc reads ~/.petscrc, ./.petscrc and ./petscrc unless -skip_petscrc is given: a file beside a
+/// downloaded config could then set any option (-log_view :FILE writes a file). -skip_petscrc
+/// first (a later -skip_petscrc of the user still decides), and the home file, the user's own,
+/// given as PETSc's options file, which it reads with the precedence it would have had.
 void initialise_with_pending_arguments() {
+  static std::string skip = "-skip_petscrc";
+  static std::string home_file;
+  home_file = home_options_file();
+  if (pending.words.empty()) pending.words.push_back("iga-run");
   pending.argv.clear();
-  for (std::string& w : pending.words) pending.argv.push_back(w.data());
+  pending.argv.push_back(pending.words[0].data());
+  pending.argv.push_back(skip.data());
+  for (std::size_t i = 1; i < pending.words.size(); ++i) pending.argv.push_back(pending.words[i].data());
   pending.argv.push_back(nullptr);
-  int argc = static_cast<int>(pending.words.size());
+  int argc = static_cast<int>(pending.argv.size()) - 1;
   char** argv = pending.argv.data();
-  if (PetscInitialize(&argc, &argv, nullptr, nullptr) != 0) throw std::runtime_error("PETSc failed to initialise");
+  if (PetscInitialize(&argc, &argv, home_file.c_str(), nullptr) != 0) throw std::runtime_error("PETSc failed to initialise");
   // PETSc's signal handlers would turn a closed pipe (iga-run ... | head) into a crash report.
   PetscPopSignalHandler();
 }

@@ -13,7 +13,9 @@ namespace iga {
 /// Takes the PETSc options out of argv, leaving iga-run's own arguments for the command-line parser
 /// (split_petsc_arguments), and initialises PETSc (and MPI) with them and PETSC_OPTIONS: at once
 /// when launched by mpirun, else when the first PETSc solve asks (ensure_petsc_initialised), so a
-/// serial run with another solver never starts MPI. On destruction, finalises PETSc, first
+/// serial run with another solver never starts MPI. PETSc reads the user's ~/.petscrc but never a
+/// .petscrc or petscrc of the working directory (a folder of downloaded inputs). On destruction,
+/// finalises PETSc, first
 /// reporting (on rank 0) every option that nothing used: PETSc ignores a misspelt option silently.
 class PetscSession {
  public:

@@ -1,7 +1,6 @@
 #include "solver/petsc_settings.hpp"
 
-#include <algorithm>
-#include <cctype>
+#include "solver/petsc_option_policy.hpp"
 
 namespace iga {
 
@@ -55,20 +54,9 @@ void parse_solver_settings(const ConfigNode& node, Pde pde, SolverKind& kind, Pe
   }
   if (auto options = node.find("options")) {
     petsc.options = options->as_string();
-    // Each word that is not a value must name an option: PETSc would silently take "ksp_monitor".
-    bool after_name = false;  // a word after a name may be its value
-    std::size_t pos = 0;
-    while (pos < petsc.options.size()) {
-      const std::size_t start = petsc.options.find_first_not_of(" \t\n", pos);
-      if (start == std::string::npos) break;
-      const std::size_t end = std::min(petsc.options.find_first_of(" \t\n", start), petsc.options.size());
-      const std::string word = petsc.options.substr(start, end - start);
-      const bool is_name = word.size() > 1 && word[0] == '-' && std::isalpha(static_cast<unsigned char>(word[1]));
-      if (!is_name && !after_name)
-        options->fail("'" + word + "' is not a PETSc option name (options are written -name [value], e.g. \"-ksp_monitor\")");
-      after_name = is_name;
-      pos = end;
-    }
+    petsc.options_where = options->where();
+    // Only the allow-list of solver-tuning options, with typed values (petsc_option_policy.hpp).
+    options->guard([&] { return parse_config_petsc_options(petsc.options); });
   }
 }
 

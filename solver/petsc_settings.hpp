@@ -19,7 +19,10 @@ struct PetscSettings {
   std::string pc = "gamg";     ///< gamg | hypre | mumps | cholesky | ilu
   double rtol = 1e-12;         ///< relative residual decrease, in the KSP's default norm (preconditioned for CG)
   int max_iterations = 10000;  ///< a KSP still unconverged after this many is a numerical failure
-  std::string options;         ///< "-name value ..." added to the PETSc options (the command line wins)
+  std::string options;         ///< "-name value ..." added to the PETSc options (the command line wins);
+                               ///< the allow-list of petsc_option_policy.hpp, checked when the config is
+                               ///< parsed and again before PETSc gets them (also when set in code)
+  std::string options_where;   ///< "FILE:LINE:COL: solver.options" for errors PETSc finds in them
 };
 
 /// The defaults for a PDE: CG preconditioned by algebraic multigrid (GAMG) for second-order
@@ -29,7 +32,8 @@ PetscSettings default_petsc_settings(Pde pde);
 
 /// Parse `solver:` ({type, ksp, pc, rtol, max_iterations, options}) into `kind` and `petsc`.
 /// PETSc keys without `type: petsc`, `type: petsc` in a build without PETSc, and combinations that
-/// cannot work (preonly with an iterative preconditioner) are InputErrors naming the key.
+/// cannot work (preonly with an iterative preconditioner) are InputErrors naming the key, and so is
+/// an option in `options` that a config may not set or a value of the wrong type.
 void parse_solver_settings(const ConfigNode& node, Pde pde, SolverKind& kind, PetscSettings& petsc);
 
 /// True when this program was built with PETSc (IGA_WITH_PETSC).

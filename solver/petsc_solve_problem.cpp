@@ -10,7 +10,6 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <iterator>
 #include <memory>
 #include <sstream>
 #include <type_traits>
@@ -22,6 +21,7 @@
 #include "solver/boundary_edge_kinds.hpp"
 #include "solver/linear_solver.hpp"
 #include "solver/petsc_extended_residual.hpp"
+#include "solver/petsc_option_policy.hpp"
 #include "solver/petsc_partition.hpp"
 #include "solver/petsc_session.hpp"
 
@@ -32,8 +32,39 @@ namespace {
 using Clock = std::chrono::steady_clock;
 double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
+/// PETSc's message for the error it last raised ("Input string abc has no integer value").
+std::string petsc_message(PetscErrorCode code) {
+  const char* text = nullptr;
+  char* specific = nullptr;
+  PetscErrorMessage(code, &text, &specific);
+  if (specific && *specific) return specific;
+  return text ? text : "error " + std::to_string(code);
+}
+
 void check(PetscErrorCode code, const char* what) {
-  if (code != 0) throw std::runtime_error(std::string("PETSc failed in ") + what + " (error " + std::to_string(code) + ")");
+  if (code != 0)
+    throw std::runtime_error(std::string("PETSc failed in ") + what + " (error " + std::to_string(code) +
+                             "): " + petsc_message(code));
+}
+
+/// While alive, a PETSc error returns its code without PETSc printing its "[0]PETSC ERROR" banner:
+/// the calls made meanwhile fail on option values, which iga-run reports itself as input errors.
+class QuietPetscErrors {
+ public:
+  QuietPetscErrors() { PetscPushErrorHandler(PetscReturnErrorHandler, nullptr); }
+  ~QuietPetscErrors() { PetscPopErrorHandler(); }
+  QuietPetscErrors(const QuietPetscErrors&) = delete;
+  QuietPetscErrors& operator=(const QuietPetscErrors&) = delete;
+};
+
+/// An error PETSc raised on the options: named at solver.options when the config gave some (the
+/// command line and PETSC_OPTIONS may have set the option instead; both are named).
+InputError options_error(const PetscSettings& s, const std::string& step, PetscErrorCode code) {
+  const std::string where = s.options.empty()
+                                ? std::string("PETSc options (command line or PETSC_OPTIONS)")
+                                : (s.options_where.empty() ? std::string("solver.options") : s.options_where) +
+                                      " (or the PETSc options of the command line or PETSC_OPTIONS)";
+  return InputError(where + ": " + step + ": " + petsc_message(code));
 }
 
 BoundaryField boundary_field(const SymbolicFunction& f) {
@@ -91,18 +122,13 @@ struct PetscObjects {
   }
 };
 
-/// The config's extra options, each unless the command line or PETSC_OPTIONS already set it.
+/// The config's extra options (already checked by parse_config_petsc_options when the config was
+/// read), each unless the command line or PETSC_OPTIONS already set it.
 void insert_config_options(const std::string& options) {
-  std::istringstream in(options);
-  std::vector<std::string> words{std::istream_iterator<std::string>(in), std::istream_iterator<std::string>()};
-  for (std::size_t i = 0; i < words.size(); ++i) {
-    const std::string name = words[i];
-    std::string value;
-    if (i + 1 < words.size() && !(words[i + 1][0] == '-' && std::isalpha(static_cast<unsigned char>(words[i + 1][1]))))
-      value = words[++i];
+  for (const PetscOption& o : parse_config_petsc_options(options)) {
     PetscBool set = PETSC_FALSE;
-    check(PetscOptionsHasName(nullptr, nullptr, name.c_str(), &set), "PetscOptionsHasName");
-    if (!set) check(PetscOptionsSetValue(nullptr, name.c_str(), value.empty() ? nullptr : value.c_str()), "PetscOptionsSetValue");
+    check(PetscOptionsHasName(nullptr, nullptr, o.name.c_str(), &set), "PetscOptionsHasName");
+    if (!set) check(PetscOptionsSetValue(nullptr, o.name.c_str(), o.value ? o.value->c_str() : nullptr), "PetscOptionsSetValue");
   }
 }
 
@@ -127,7 +153,9 @@ void configure_ksp(KSP ksp, const PetscSettings& s, int ranks) {
   check(KSPSetTolerances(ksp, s.rtol, PETSC_DEFAULT, PETSC_DEFAULT, s.max_iterations), "KSPSetTolerances");
   check(KSPSetResidualHistory(ksp, nullptr, PETSC_DECIDE, PETSC_TRUE), "KSPSetResidualHistory");
   insert_config_options(s.options);
-  check(KSPSetFromOptions(ksp), "KSPSetFromOptions");  // the command line and PETSC_OPTIONS win
+  QuietPetscErrors quiet;
+  const PetscErrorCode code = KSPSetFromOptions(ksp);  // the command line and PETSC_OPTIONS win
+  if (code != 0) throw options_error(s, "PETSc refused an option", code);
 }
 
 std::string describe(KSP ksp) {
@@ -360,10 +388,22 @@ DiscreteSolution solve_problem_petsc(const Space& space, const ProblemSpec& prob
   t0 = Clock::now();
   check(KSPCreate(comm, &p.ksp), "KSPCreate");
   check(KSPSetOperators(p.ksp, p.A, p.A), "KSPSetOperators");
-  configure_ksp(p.ksp, settings, ranks);
+  // Every rank has the same options (the command line, PETSC_OPTIONS and ~/.petscrc reach all
+  // ranks from rank 0), so an option PETSc refuses fails on all ranks together.
+  on_every_rank([&] { configure_ksp(p.ksp, settings, ranks); });
   const std::string method = describe(p.ksp);
   say("solving with PETSc " + method);
-  check(KSPSetUp(p.ksp), "KSPSetUp");
+  {
+    // Options PETSc reads only when it builds the preconditioner (a factorization package that
+    // cannot do this factorization, say) fail here. Not shared across ranks: a failure here may
+    // be one rank's, and the others are then ended (end_ranks_after_failure).
+    QuietPetscErrors quiet;
+    const PetscErrorCode code = KSPSetUp(p.ksp);
+    if (code == PETSC_ERR_MEM) throw std::runtime_error("PETSc ran out of memory setting up " + method);
+    if (code != 0 && !settings.options.empty())
+      throw options_error(settings, "PETSc could not set up " + method, code);
+    check(code, "KSPSetUp");
+  }
   out.solve.t_factorize = seconds_since(t0);
   const auto t1 = Clock::now();
   check(KSPSolve(p.ksp, p.b, p.x), "KSPSolve");

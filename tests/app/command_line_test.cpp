@@ -1,6 +1,7 @@
 /// @file
 /// The command line beyond running one config: --list, check, --threads, --help, the error prefix
-/// of command-line mistakes, and several configs compared in one run.
+/// of command-line mistakes, several configs compared in one run, and the PETSc options files read
+/// at start-up (the user's ~/.petscrc, never one of the working directory).
 
 #include <gtest/gtest.h>
 
@@ -11,6 +12,9 @@
 #include <sstream>
 #include <string>
 
+#include <sys/wait.h>
+
+#include "solver/petsc_settings.hpp"
 #include "spaces/space_factory.hpp"
 #include "tests/support/run_iga.hpp"
 #include "tests/support/scratch_files.hpp"
@@ -99,6 +103,34 @@ TEST(CommandLine, SeveralConfigsAreOneComparison) {
   EXPECT_NE(csv.find("\nbspline-p3,1,"), std::string::npos) << csv;
   EXPECT_NE(r.out.find("DOFs and time"), std::string::npos) << r.out;
   EXPECT_GT(fs::file_size(out / "comparison.svg"), 1000u);
+}
+
+TEST(CommandLine, PetscReadsTheHomePetscrcButNeverTheWorkingDirectorys) {
+  if (!iga::petsc_available()) GTEST_SKIP() << "built without PETSc";
+  // A folder of downloaded inputs: a config and options files that would write files there and
+  // read /etc/passwd. The user's home holds a harmless ~/.petscrc that must still work.
+  const fs::path dir = iga::test::scratch_folder() / "downloaded", home = iga::test::scratch_folder() / "home";
+  fs::remove_all(dir);
+  fs::remove_all(home);
+  fs::create_directories(dir);
+  fs::create_directories(home);
+  std::ofstream(dir / "petsc.yaml") << kGood << "solver: {type: petsc}\n";
+  std::ofstream(dir / ".petscrc") << "-log_view :" << (dir / "log.txt").string() << "\n-history "
+                                  << (dir / "history.txt").string() << "\n";
+  std::ofstream(dir / "petscrc") << "-malloc_dump " << (dir / "dump.txt").string() << "\n-options_file /etc/passwd\n";
+  std::ofstream(home / ".petscrc") << "-ksp_converged_reason\n";
+  const fs::path out = iga::test::scratch_folder() / "petscrc-stdout.txt", err = iga::test::scratch_folder() / "petscrc-stderr.txt";
+  const std::string cmd = "cd " + dir.string() + " && env -u PETSC_OPTIONS HOME=" + home.string() + " " + IGA_RUN_BINARY +
+                          " --quiet petsc.yaml --output results > " + out.string() + " 2> " + err.string();
+  const int status = std::system(cmd.c_str());
+  const std::string stdout_text = slurp(out), stderr_text = slurp(err);
+  ASSERT_TRUE(WIFEXITED(status)) << stderr_text;
+  EXPECT_EQ(WEXITSTATUS(status), 0) << stderr_text;
+  EXPECT_TRUE(fs::exists(dir / "results" / "convergence.csv")) << stderr_text;
+  EXPECT_NE(stdout_text.find("Linear solve converged due to"), std::string::npos) << "~/.petscrc not read:\n" << stdout_text;
+  for (const char* file : {"log.txt", "history.txt", "dump.txt"})
+    EXPECT_FALSE(fs::exists(dir / file)) << file << ": an options file of the working directory was read";
+  EXPECT_EQ(stderr_text.find("root:"), std::string::npos) << stderr_text;
 }
 
 }  // namespace

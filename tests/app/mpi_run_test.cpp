@@ -1,7 +1,8 @@
 // `mpirun -np 2 iga-run config.yaml` as a user runs it: one shipped config per space solved with
 // PETSc on two ranks writes the convergence table of the serial CHOLMOD run and a .pvtu whose two
-// pieces VTK reads back as the serial run's grid, and a failure on the ranks ends every rank with
-// the right exit code (no hang).
+// pieces VTK reads back as the serial run's grid, a failure on the ranks ends every rank with
+// the right exit code (no hang), a config's PETSc options are held to the allow-list, and options
+// files of the working directory are never read.
 
 #include <gtest/gtest.h>
 #include <sys/wait.h>
@@ -45,11 +46,12 @@ std::string slurp(const fs::path& p) {
 }
 
 /// Run iga-run with `args`, under `mpirun -np ranks` when ranks > 0 (as root too: CI runs as root;
-/// oversubscribed: CI machines may have one core).
-RunResult run(int ranks, const std::string& args) {
+/// oversubscribed: CI machines may have one core), in `folder` if given.
+RunResult run(int ranks, const std::string& args, const fs::path& folder = {}) {
   const fs::path err = iga::test::scratch_folder() / "stderr.txt";
   std::string launcher;
-  if (ranks > 0) launcher = std::string(IGA_MPIEXEC) + " --allow-run-as-root --oversubscribe -np " + std::to_string(ranks) + " ";
+  if (!folder.empty()) launcher = "cd " + folder.string() + " && ";
+  if (ranks > 0) launcher += std::string(IGA_MPIEXEC) + " --allow-run-as-root --oversubscribe -np " + std::to_string(ranks) + " ";
   const std::string cmd = launcher + IGA_RUN_BINARY + " " + args + " >/dev/null 2>" + err.string();
   const int status = std::system(cmd.c_str());
   return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(err)};
@@ -210,12 +212,58 @@ TEST(TwoRanksFailures, AnOutputErrorOfRankZeroReachesTheOtherRank) {
 
 TEST(TwoRanksFailures, AnUnusedPetscOptionIsReported) {
   if (!iga::petsc_available()) GTEST_SKIP() << "built without PETSc";
-  const fs::path cfg = config_with_solver("bspline-poisson", "{type: petsc, options: \"-ksp_monitr\"}", "unused");
+  // A hypre parameter with GAMG: allowed in a config, but nothing reads it.
+  const fs::path cfg =
+      config_with_solver("bspline-poisson", "{type: petsc, options: \"-pc_hypre_boomeramg_max_iter 2\"}", "unused");
   const RunResult r = run(2, cfg.string() + " --quiet --levels 1 -pc_gamg_thresold 0.1 --output " +
                                  (iga::test::scratch_folder() / "u").string());
   EXPECT_EQ(r.exit_code, 0) << r.err;
-  EXPECT_NE(r.err.find("PETSc option -ksp_monitr was not used"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("PETSc option -pc_hypre_boomeramg_max_iter 2 was not used"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("PETSc option -pc_gamg_thresold 0.1 was not used"), std::string::npos) << r.err;
+}
+
+TEST(TwoRanksFailures, AConfigOptionThatWritesAFileIsRefusedOnEveryRankBeforeAnyWork) {
+  if (!iga::petsc_available()) GTEST_SKIP() << "built without PETSc";
+  const fs::path log = iga::test::scratch_folder() / "log_view.txt";
+  const fs::path cfg =
+      config_with_solver("bspline-poisson", "{type: petsc, options: \"-log_view :" + log.string() + "\"}", "log-view");
+  const RunResult r = run(2, cfg.string() + " --quiet --levels 1 --output " + (iga::test::scratch_folder() / "l").string());
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_NE(r.err.find("solver.options: -log_view is not an option a config may set"), std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find("PETSC ERROR"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(log));
+  EXPECT_FALSE(fs::exists(iga::test::scratch_folder() / "l"));
+}
+
+TEST(TwoRanksFailures, AnOptionPetscRefusesWhenSettingUpIsAnInputErrorWithoutPetscsBanner) {
+  if (!iga::petsc_available()) GTEST_SKIP() << "built without PETSc";
+  // Allowed, but PETSc's incomplete Cholesky is sequential: PETSc finds out when it sets it up.
+  const fs::path cfg = config_with_solver("bspline-poisson", "{type: petsc, options: \"-pc_type icc\"}", "icc");
+  const RunResult r = run(2, cfg.string() + " --quiet --levels 1 --output " + (iga::test::scratch_folder() / "i").string());
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_NE(r.err.find("solver.options"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("PETSc could not set up cg + icc: Could not locate a solver type for factorization type ICC"),
+            std::string::npos)
+      << r.err;
+  EXPECT_EQ(r.err.find("PETSC ERROR"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(iga::test::scratch_folder() / "i"));
+}
+
+TEST(TwoRanksPetscrc, OptionsFilesOfTheWorkingDirectoryAreNotRead) {
+  if (!iga::petsc_available()) GTEST_SKIP() << "built without PETSc";
+  // Under mpirun PETSc starts before the config is read: the files would act on every run.
+  const fs::path dir = iga::test::scratch_folder() / "downloaded";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const fs::path cfg = config_with_solver("bspline-poisson", "{type: petsc}", "petscrc");
+  std::ofstream(dir / ".petscrc") << "-log_view :" << (dir / "log.txt").string() << "\n-history "
+                                  << (dir / "history.txt").string() << "\n";
+  std::ofstream(dir / "petscrc") << "-malloc_dump " << (dir / "dump.txt").string() << "\n";
+  const RunResult r = run(2, cfg.string() + " --quiet --levels 1 --output " + (dir / "results").string(), dir);
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_TRUE(fs::exists(dir / "results" / "convergence.csv")) << r.err;
+  for (const char* file : {"log.txt", "history.txt", "dump.txt"})
+    EXPECT_FALSE(fs::exists(dir / file)) << file << ": an options file of the working directory was read";
 }
 
 }  // namespace

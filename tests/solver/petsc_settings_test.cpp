@@ -1,7 +1,13 @@
-// The solver: section: defaults per PDE, PETSc keys only with type petsc, refused combinations.
+// The solver: section: defaults per PDE, PETSc keys only with type petsc, refused combinations;
+// and the allow-list of PETSc options a config may set (solver.options), with typed values.
 
 #include <gtest/gtest.h>
 
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "solver/petsc_option_policy.hpp"
 #include "solver/petsc_settings.hpp"
 #include "tests/support/input_error.hpp"
 
@@ -63,7 +69,7 @@ TEST(SolverSettings, ImpossibleCombinationsAndValuesAreRefusedAtTheirKey) {
   EXPECT_NE(msg.find("solver.rtol"), std::string::npos) << msg;
   msg = test::input_error([] { parse("solver: {type: petsc, max_iterations: 0}"); });
   EXPECT_NE(msg.find("solver.max_iterations"), std::string::npos) << msg;
-  msg = test::input_error([] { parse("solver: {type: petsc, options: \"-ksp_monitor 1 2\"}"); });
+  msg = test::input_error([] { parse("solver: {type: petsc, options: \"-ksp_max_it 1 2\"}"); });
   EXPECT_NE(msg.find("'2' is not a PETSc option name"), std::string::npos) << msg;
   msg = test::input_error([] { parse("solver: {type: petsc}", Pde::laplace_beltrami); });
   EXPECT_NE(msg.find("laplace_beltrami"), std::string::npos) << msg;
@@ -73,6 +79,125 @@ TEST(SolverSettings, PetscIsRefusedAsInputWhenNotBuiltIn) {
   if (petsc_available()) GTEST_SKIP() << "built with PETSc";
   const std::string msg = test::input_error([] { parse("solver: {type: petsc}"); });
   EXPECT_NE(msg.find("without PETSc"), std::string::npos) << msg;
+}
+
+/// The message of the InputError parse_config_petsc_options throws for `options`.
+std::string refusal(const std::string& options) {
+  return test::input_error([&] { parse_config_petsc_options(options); });
+}
+
+TEST(ConfigPetscOptions, SolverTuningOptionsPassWithTheirValues) {
+  const std::vector<PetscOption> o = parse_config_petsc_options(
+      "-ksp_type gmres -ksp_rtol 1e-8 -ksp_atol 0 -ksp_max_it 200 -ksp_gmres_restart 50 -pc_type gamg\n"
+      "\t-pc_gamg_threshold 0.02,0.01 -pc_gamg_agg_nsmooths 1 -pc_gamg_repartition true -pc_mg_levels 4 "
+      "-pc_hypre_boomeramg_strong_threshold 0.5 -pc_hypre_boomeramg_coarsen_type hmis -mat_mumps_icntl_14 50 "
+      "-mat_mumps_cntl_1 0.01 -ksp_monitor -ksp_converged_reason -ksp_view :stdout -ksp_monitor_true_residual "
+      "ascii:stdout -ksp_initial_guess_nonzero -sub_pc_type ilu -sub_pc_factor_levels 1 -mg_levels_ksp_type "
+      "chebyshev -mg_levels_ksp_max_it 2 -mg_coarse_pc_type lu -KSP_Norm_Type unpreconditioned -ksp_richardson_scale -0.5");
+  ASSERT_EQ(o.size(), 26u);
+  EXPECT_EQ(o[0].name, "-ksp_type");
+  EXPECT_EQ(o[0].value, "gmres");
+  EXPECT_EQ(o[6].value, "0.02,0.01");
+  EXPECT_EQ(o[14].name, "-ksp_monitor");
+  EXPECT_FALSE(o[14].value.has_value());
+  EXPECT_EQ(o[16].value, ":stdout");
+  EXPECT_EQ(o[25].value, "-0.5");  // a negative number is a value, not a name
+  EXPECT_TRUE(parse_config_petsc_options("").empty());
+  EXPECT_TRUE(parse_config_petsc_options("  \n ").empty());
+}
+
+TEST(ConfigPetscOptions, OptionsThatTouchFilesDebuggersOrSignalsAreRefusedByName) {
+  for (const char* option :
+       {"-log_view", "-log_view :/tmp/log.txt", "-log_all", "-log_trace /tmp/t", "-malloc_dump /tmp/x",
+        "-malloc_debug", "-malloc_view", "-options_file /etc/passwd", "-options_file_yaml f.yaml",
+        "-prefix_push ksp_", "-history /tmp/h", "-on_error_attach_debugger", "-start_in_debugger",
+        "-debugger_ranks 0", "-debugger_pause 10", "-no_signal_handler", "-on_error_abort", "-info",
+        "-viewer_binary_filename /tmp/b", "-mat_view binary:/tmp/m", "-vec_view", "-ksp_view_mat",
+        "-ksp_view_rhs", "-pc_mg_dump_binary", "-ksp_monitor_python f.py", "-ksp_monitor_lg_range",
+        "-draw_pause 5", "-saws_port 8080", "-help", "-version", "-options_left", "-LOG_VIEW",
+        "-mat_mumps_icntl_1 10", "-mat_mumps_icntl_3 7", "-mat_mumps_icntl_22 1", "-mat_mumps_icntl_014 5",
+        "-mat_mumps_cntl_6 1", "-sub_pc_gamg_type agg", "-ksp_type=cg", "-pc_type_forced gamg"}) {
+    const std::string msg = refusal(option);
+    const std::string name = std::string(option).substr(0, std::string(option).find(' '));
+    EXPECT_NE(msg.find(name + " is not an option a config may set"), std::string::npos) << option << ": " << msg;
+    EXPECT_NE(msg.find("command line or in PETSC_OPTIONS"), std::string::npos) << msg;
+  }
+  // A refused option after allowed ones is still found.
+  EXPECT_NE(refusal("-ksp_monitor -ksp_rtol 1e-6 -log_view").find("-log_view is not"), std::string::npos);
+  // A near miss of an allowed name is suggested.
+  EXPECT_NE(refusal("-ksp_montor").find("did you mean -ksp_monitor?"), std::string::npos) << refusal("-ksp_montor");
+}
+
+TEST(ConfigPetscOptions, MonitorsAndViewsPrintToStandardOutputOnly) {
+  for (const char* option : {"-ksp_monitor mon.txt", "-ksp_monitor /tmp/mon.txt", "-ksp_view ascii:v.txt",
+                             "-ksp_view :v.txt", "-ksp_converged_reason ascii:stdout:ascii_info_detail",
+                             "-ksp_view binary", "-ksp_view binary:m", "-ksp_view draw", "-ksp_view socket",
+                             "-ksp_view saws", "-ksp_monitor stdout", "-ksp_monitor :stderr", "-sub_ksp_view x"}) {
+    const std::string msg = refusal(option);
+    const std::string name = std::string(option).substr(0, std::string(option).find(' '));
+    EXPECT_NE(msg.find(name + " prints to standard output only"), std::string::npos) << option << ": " << msg;
+  }
+}
+
+TEST(ConfigPetscOptions, ValuesAreCheckedAgainstTheOptionsType) {
+  const auto expect = [](const std::string& options, const std::string& text) {
+    const std::string msg = refusal(options);
+    EXPECT_NE(msg.find(text), std::string::npos) << options << ": " << msg;
+  };
+  expect("-ksp_max_it abc", "-ksp_max_it takes an integer in [0, 1000000000], not 'abc'");
+  expect("-ksp_max_it 1.5", "-ksp_max_it takes an integer");
+  expect("-ksp_max_it", "-ksp_max_it needs a value: an integer");
+  expect("-ksp_max_it -ksp_monitor", "-ksp_max_it needs a value");
+  expect("-ksp_max_it 99999999999999999999", "-ksp_max_it takes an integer");
+  expect("-ksp_rtol xyz", "-ksp_rtol takes a finite number in [0, 1], not 'xyz'");
+  expect("-ksp_rtol nan", "-ksp_rtol takes a finite number");
+  expect("-ksp_rtol inf", "-ksp_rtol takes a finite number");
+  expect("-ksp_rtol 2", "-ksp_rtol takes a finite number in [0, 1]");
+  expect("-ksp_rtol 0x1p-3", "-ksp_rtol takes a finite number");
+  expect("-pc_type nonsense", "-pc_type takes one of none, jacobi,");
+  expect("-ksp_type ../../x", "-ksp_type takes one of cg, gmres,");
+  expect("-pc_factor_mat_solver_type superlu_dist", "one of petsc, mumps");
+  expect("-pc_hypre_type euclid", "-pc_hypre_type takes one of boomeramg, not 'euclid'");  // reads ./database
+  expect("-pc_hypre_boomeramg_smooth_type Euclid", "not 'Euclid'");
+  expect("-ksp_gmres_restart 100000", "-ksp_gmres_restart takes an integer in [1, 1000]");
+  expect("-pc_gamg_threshold 0.1,abc", "-pc_gamg_threshold takes finite numbers separated by commas");
+  expect("-pc_gamg_threshold 0.1,", "-pc_gamg_threshold takes finite numbers");
+  expect("-ksp_initial_guess_nonzero maybe", "-ksp_initial_guess_nonzero takes no value or a boolean");
+  expect("-mat_mumps_icntl_7 x", "-mat_mumps_icntl_7 takes an integer");
+  expect("ksp_monitor", "'ksp_monitor' is not a PETSc option name");
+  expect("-ksp_rtol 1e-6 1e-7", "'1e-7' is not a PETSc option name");
+  expect("-ksp_rtol 1e-6 -ksp_rtol 1e-7", "-ksp_rtol is given twice");
+  expect("-ksp_monitor -KSP_MONITOR", "-KSP_MONITOR is given twice");
+  // Choices compare as PETSc compares them, without case.
+  EXPECT_EQ(parse_config_petsc_options("-pc_type GAMG -pc_hypre_boomeramg_relax_type_all sor/jacobi").size(), 2u);
+  EXPECT_EQ(parse_config_petsc_options("-ksp_initial_guess_nonzero FALSE -ksp_rtol +1e-3").size(), 2u);
+}
+
+TEST(ConfigPetscOptions, ConfigErrorsNameTheFilePlaceAndTheOption) {
+  if (!petsc_available()) GTEST_SKIP() << "built without PETSc";
+  for (const auto& [options, name] : {std::pair{"-log_view :/tmp/x.txt", "-log_view"},
+                                      std::pair{"-ksp_max_it abc", "-ksp_max_it"},
+                                      std::pair{"-ksp_view ascii:v.txt", "-ksp_view"}}) {
+    const std::string msg = test::input_error(
+        [&] { parse("solver:\n  type: petsc\n  options: \"" + std::string(options) + "\"\n"); });
+    EXPECT_NE(msg.find("s.yaml:3:"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("solver.options"), std::string::npos) << msg;
+    EXPECT_NE(msg.find(name), std::string::npos) << msg;
+  }
+  const Parsed ok = parse("solver:\n  type: petsc\n  options: \"-ksp_monitor -pc_gamg_threshold 0.05\"\n");
+  EXPECT_EQ(ok.petsc.options, "-ksp_monitor -pc_gamg_threshold 0.05");
+  EXPECT_NE(ok.petsc.options_where.find("s.yaml:3:"), std::string::npos) << ok.petsc.options_where;
+}
+
+TEST(ConfigPetscOptions, TheAllowListIsDocumented) {
+  std::ifstream in(std::filesystem::path(IGA_SOURCE_DIR) / "docs/parallel.md");
+  std::stringstream text;
+  text << in.rdbuf();
+  const std::string doc = text.str();
+  for (const std::string& name : config_petsc_option_names())
+    EXPECT_NE(doc.find("`" + name + "`"), std::string::npos) << name << " is not listed in docs/parallel.md";
+  for (const std::string& prefix : config_petsc_option_prefixes())
+    EXPECT_NE(doc.find("`-" + prefix + "`"), std::string::npos) << prefix << " is not listed in docs/parallel.md";
 }
 
 }  // namespace

@@ -109,5 +109,21 @@ TEST(PetscSolve, UnconvergedKrylovMethodIsANumericalErrorWithTheReason) {
   }
 }
 
+TEST(PetscSolve, OptionsSetInCodeAreHeldToTheAllowListToo) {
+  if (!petsc_available()) GTEST_SKIP() << "built without PETSc";
+  const ConfigNode root = ConfigNode::load_file(std::string(IGA_SOURCE_DIR) + "/configs/bspline-poisson.yaml");
+  const ProblemSpec problem = parse_problem(root["problem"]);
+  const SpacePtr space = make_space(root["domain"], root["space"], 1);
+  PetscSettings petsc = default_petsc_settings(problem.pde);
+  petsc.options = "-ksp_rtol 1e-10 -log_view :/proc/iga-run-test-log.txt";  // bypasses parse_solver_settings
+  try {
+    solve_problem(*space, problem, SolverKind::petsc, {}, petsc);
+    FAIL() << "expected an InputError";
+  } catch (const InputError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("-log_view is not an option a config may set"), std::string::npos) << what;
+  }
+}
+
 }  // namespace
 }  // namespace iga
