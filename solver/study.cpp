@@ -91,7 +91,7 @@ StudySettings parse_study(const ConfigNode& root, const std::string& config_path
     s.output_dir = output_override;
     output_place = "--output";
   }
-  check_output_directory(s.output_dir, output_place);
+  check_output_directory(s.output_dir, output_place, {config_path});
   // Domain, space and boundary part names are validated on the coarsest space (cheap), so that
   // every input error surfaces before the study starts; what it asks for is checked first.
   check_space_request(space_node, s.limits);
