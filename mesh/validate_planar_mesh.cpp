@@ -6,6 +6,7 @@
 
 #include "config/config_node.hpp"
 #include "config/errors.hpp"
+#include "config/utf8.hpp"
 
 namespace iga {
 
@@ -157,7 +158,11 @@ void check_referenced_vertices(const PlanarMesh& mesh) {
 }
 
 void check_boundary_groups(const PlanarMesh& mesh, const std::map<Edge, EdgeUse>& uses) {
-  for (const auto& [name, edges] : mesh.boundary_groups)
+  for (const auto& [name, edges] : mesh.boundary_groups) {
+    // Group names become boundary part names in messages, VTK files and summary.json.
+    if (const auto bad = invalid_utf8_offset(name))
+      reject(mesh, "a boundary group name is not UTF-8 text (" + describe_byte(name, *bad) + " at byte " +
+                       std::to_string(*bad + 1) + " of the name)");
     for (const Edge& e : edges) {
       const bool known = e[0] >= 0 && e[0] < num_vertices(mesh) && e[1] >= 0 && e[1] < num_vertices(mesh);
       if (!known) reject(mesh, "boundary group '" + name + "' refers to a vertex that does not exist");
@@ -166,6 +171,7 @@ void check_boundary_groups(const PlanarMesh& mesh, const std::map<Edge, EdgeUse>
         reject(mesh, "boundary group '" + name + "' has " + describe_edge(mesh, e) +
                          ", which is not a boundary edge of the mesh");
     }
+  }
 }
 
 }  // namespace

@@ -28,7 +28,7 @@ inline constexpr double mesh_tolerance = 1e-10;
 /// vertices; an edge of more than two cells (non-manifold); two cells traversing an edge in the
 /// same direction (they overlap: the mesh folds over itself); a vertex where the boundary touches
 /// itself (more than two boundary edges); an unreferenced vertex; a boundary group edge that is not
-/// a boundary edge of the mesh.
+/// a boundary edge of the mesh; a boundary group name that is not UTF-8.
 void validate_planar_mesh(const PlanarMesh& mesh, const AllowedCells& allowed = {});
 
 }  // namespace iga
