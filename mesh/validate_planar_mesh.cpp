@@ -79,6 +79,30 @@ void check_cell_shapes(const PlanarMesh& mesh) {
   }
 }
 
+/// Cells that are valid but so thin that the spaces built on them are singular in floating point
+/// (their boundary traces dependent, their systems unsolvable): a corner's cross product below
+/// mesh_shape_tolerance x (longest edge)². Checked after the topology, whose messages say more.
+void check_cell_quality(const PlanarMesh& mesh) {
+  for (int c = 0; c < num_cells(mesh); ++c) {
+    const std::vector<int>& cell = mesh.cells[c];
+    const std::size_t n = cell.size();
+    const double h = longest_edge(mesh, c);
+    double shortest = h;
+    for (std::size_t k = 0; k < n; ++k)
+      shortest = std::min(shortest, (mesh.vertices[cell[(k + 1) % n]] - mesh.vertices[cell[k]]).norm());
+    for (std::size_t k = 0; k < n; ++k) {
+      const Eigen::Vector2d& p = mesh.vertices[cell[k]];
+      const double ratio = cross(mesh.vertices[cell[(k + 1) % n]] - p, mesh.vertices[cell[(k + n - 1) % n]] - p) / (h * h);
+      if (ratio < mesh_shape_tolerance)
+        reject(mesh, describe_cell(mesh, c) + " is nearly degenerate at corner " + describe_point(p) +
+                         ": its edges there span " + format_number(ratio) + " x (longest edge)², less than " +
+                         format_number(mesh_shape_tolerance) + " (shortest edge " + format_number(shortest) +
+                         ", longest " + format_number(h) +
+                         "); a cell this thin or with vertices this close makes the space singular in floating point");
+    }
+  }
+}
+
 void check_coincident_vertices(const PlanarMesh& mesh) {
   if (mesh.vertices.empty()) return;
   Eigen::Vector2d lo = mesh.vertices[0], hi = lo;
@@ -185,6 +209,7 @@ void validate_planar_mesh(const PlanarMesh& mesh, const AllowedCells& allowed) {
   check_edges_and_boundary(mesh, uses);
   check_referenced_vertices(mesh);
   check_boundary_groups(mesh, uses);
+  check_cell_quality(mesh);
 }
 
 }  // namespace iga
