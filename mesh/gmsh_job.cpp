@@ -81,6 +81,31 @@ double model_diagonal() {
   return std::hypot(x1 - x0, y1 - y0, z1 - z0);
 }
 
+/// Refuses an entity of dimension `dim` (volumes for surfaces in 3D, surfaces for planar meshes)
+/// that is flat: its bounding box thinner than 1e-6 of its largest extent in some direction (a
+/// solid dilated to zero thickness, a planar surface squeezed onto a line). Gmsh does not fail on
+/// those: it meshes the surfaces that fold onto each other until the time limit.
+void check_flat_entities(const GmshJob& job, int dim) {
+  gmsh::vectorpair entities;
+  gmsh::model::getEntities(entities, dim);
+  const int directions = dim == 3 ? 3 : 2;  // a planar surface is flat in z by nature
+  for (const auto& [d, tag] : entities) {
+    double lo[3], hi[3];
+    gmsh::model::getBoundingBox(d, tag, lo[0], lo[1], lo[2], hi[0], hi[1], hi[2]);
+    double largest = 0.0, smallest = std::numeric_limits<double>::infinity();
+    for (int k = 0; k < directions; ++k) {
+      largest = std::max(largest, hi[k] - lo[k]);
+      smallest = std::min(smallest, hi[k] - lo[k]);
+    }
+    if (largest > 0.0 && !(smallest > 1e-6 * largest))
+      throw InputError(job.source + ": " + (dim == 3 ? "volume " : "surface ") + std::to_string(tag) +
+                       " is flat (its bounding box is " + format_number(hi[0] - lo[0]) + " x " +
+                       format_number(hi[1] - lo[1]) + (dim == 3 ? " x " + format_number(hi[2] - lo[2]) : "") +
+                       "): a shape dilated or scaled to zero thickness has no " + (dim == 3 ? "surface" : "area") +
+                       " to mesh");
+  }
+}
+
 /// How far the estimate below may exceed the element limit before a script is refused: the
 /// bounding box overstates the area (4/pi for a disc, 2 for a triangle, more for a thin strip
 /// across the box), and a mesh is refused only when it is clearly too fine.
@@ -128,6 +153,7 @@ SurfaceMeshFile run_gmsh_surface_job_here(const GmshJob& job) {
         check_element_estimate(surface_box_area_3d(), job.mesh_size, job.limits, job.source);
         gmsh::option::setNumber("Mesh.MeshSizeMax", job.mesh_size);
       }
+      check_flat_entities(job, 3);
       check_script_sizes(job, surface_box_area_3d());
       gmsh::model::mesh::generate(2);
     }
@@ -147,7 +173,10 @@ PlanarMesh run_gmsh_job_here(const GmshJob& job) {
         check_element_estimate(surface_box_area(), job.mesh_size, job.limits, job.source);
         gmsh::option::setNumber("Mesh.MeshSizeMax", job.mesh_size);
       }
-      if (job.kind == GmshJob::mesh_geo) check_script_sizes(job, surface_box_area());
+      if (job.kind == GmshJob::mesh_geo) {
+        check_flat_entities(job, 2);
+        check_script_sizes(job, surface_box_area());
+      }
     }
     if (job.kind != GmshJob::read_msh) {
       if (job.recombine) gmsh::option::setNumber("Mesh.RecombineAll", 1);

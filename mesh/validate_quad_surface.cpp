@@ -25,7 +25,9 @@ std::string face_name(const QuadSurfaceFile& mesh, std::size_t f) {
 }
 
 std::string point_text(const Eigen::Vector3d& x) {
-  return "(" + format_number(x.x()) + ", " + format_number(x.y()) + ", " + format_number(x.z()) + ")";
+  std::string s("(");  // appended, not "(" + string: GCC 12 warns wrongly (-Wrestrict) about that
+  s += format_number(x.x()) + ", " + format_number(x.y()) + ", " + format_number(x.z()) + ")";
+  return s;
 }
 
 void check_faces(const QuadSurfaceFile& mesh) {
