@@ -121,6 +121,7 @@ constexpr double kScriptEstimateSafety = 8.0;
 /// transfinite counts only make a mesh finer; the time limit remains their backstop. A size the
 /// static pass cannot evaluate counts as unbounded, so the estimate never refuses on a guess.
 void check_script_sizes(const GmshJob& job, double box_area) {
+  if (!(box_area > 0.0)) return;  // no surface: nothing to mesh (reported after meshing, as for any script)
   std::vector<std::filesystem::path> roots(job.readable_folders.begin(), job.readable_folders.end());
   double point_size = geo_script_largest_point_size(job.path, roots, job.limits);
   double from_points = 1.0, lo = 0.0, hi = 0.0, factor = 1.0;
