@@ -24,6 +24,7 @@
 #include "output/report.hpp"
 #include "output/staged_directory.hpp"
 #include "output/study_outputs.hpp"
+#include "solver/output_location.hpp"
 #include "solver/petsc_session.hpp"
 #include "solver/study.hpp"
 
@@ -46,16 +47,18 @@ ProgressSink progress_sink(bool quiet) {
 }
 
 /// Checked before the study, not after it, and reported where the location came from.
-void check_output(const std::string& directory, const std::string& output, const ConfigNode* root) {
+void check_output(const std::string& directory, const std::string& output, const ConfigNode* root,
+                  const std::vector<std::string>& config_paths) {
+  std::string place = "the default output directory";
+  if (!output.empty()) {
+    place = "--output";
+  } else if (const auto out = root ? root->find("output") : std::nullopt) {
+    if (const auto dir = out->find("directory")) place = dir->where();
+  }
+  check_output_not_above(directory, place, config_paths);
   try {
     check_output_location(directory);
   } catch (const InputError& e) {
-    std::string place = "the default output directory";
-    if (!output.empty()) {
-      place = "--output";
-    } else if (const auto out = root ? root->find("output") : std::nullopt) {
-      if (const auto dir = out->find("directory")) place = dir->where();
-    }
     throw InputError(place + ": " + e.what());
   }
 }
@@ -64,7 +67,7 @@ void check_output(const std::string& directory, const std::string& output, const
 int run_geometry_config(const ConfigNode& root, const std::string& config_path, const std::string& output, int levels,
                         const ProgressSink& progress) {
   const GeometryStudySettings settings = parse_geometry_study(root, config_path, levels, output);
-  check_output(settings.output_dir, output, &root);
+  check_output(settings.output_dir, output, &root, {config_path});
   StagedDirectory staged(settings.output_dir);
   const std::vector<GeometryLevel> rows = run_geometry_study_with_files(settings, staged.path(), progress);
   staged.commit();
@@ -147,7 +150,7 @@ int run_configs(const std::vector<std::string>& paths, const std::string& output
   const std::string directory = single || !output.empty() || paths.size() == 1 ? studies.front().second.output_dir
                                                                                : "results/comparison";
   on_every_rank([&] {
-    if (is_root_rank()) check_output(directory, output, paths.size() == 1 ? &studies.front().second.root : nullptr);
+    if (is_root_rank()) check_output(directory, output, paths.size() == 1 ? &studies.front().second.root : nullptr, paths);
   });
   if (!is_root_rank()) {  // takes part in the distributed solves, writes only its VTK pieces
     for (const auto& study : studies) run_study_with_vtk(study.second, shared_output_directory(""), progress);

@@ -22,6 +22,7 @@ if(IGA_FUZZ)
   set(IGA_FUZZ_LAYERS_gismo_xml_fuzz iga_mesh)
   set(IGA_FUZZ_LAYERS_petsc_options_fuzz iga_config)
   set(IGA_FUZZ_SOURCES_petsc_options_fuzz ${CMAKE_CURRENT_SOURCE_DIR}/solver/petsc_option_policy.cpp)
+  set(IGA_FUZZ_LAYERS_surface_mesh_fuzz iga_geometry iga_mesh)
 
   file(GLOB IGA_FUZZ_SOURCES CONFIGURE_DEPENDS ${CMAKE_CURRENT_SOURCE_DIR}/fuzz/*_fuzz.cpp)
   set(IGA_FUZZ_TARGETS "")

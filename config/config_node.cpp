@@ -10,6 +10,8 @@
 #include <set>
 #include <sstream>
 
+#include "config/utf8.hpp"
+
 namespace iga {
 
 namespace {
@@ -92,6 +94,39 @@ void declare(std::map<std::string, std::set<std::string>> DeclaredConfig::*table
   (registry.declared.*table)[schema].insert(words.begin(), words.end());
 }
 
+/// The first key or value under `node` whose text is not UTF-8, and its key path.
+std::optional<std::pair<YAML::Node, std::string>> find_text_not_utf8(const YAML::Node& node, const std::string& path) {
+  if (node.IsScalar()) {
+    if (invalid_utf8_offset(node.Scalar())) return std::make_pair(node, path);
+  } else if (node.IsSequence()) {
+    for (std::size_t i = 0; i < node.size(); ++i)
+      if (auto bad = find_text_not_utf8(node[i], path + "[" + std::to_string(i) + "]")) return bad;
+  } else if (node.IsMap()) {
+    for (const auto& kv : node) {
+      const std::string key = kv.first.IsScalar() ? kv.first.Scalar() : std::string("?");
+      const std::string child = path.empty() ? key : path + "." + key;
+      if (auto bad = find_text_not_utf8(kv.first, path)) return bad;  // the key itself, at its map
+      if (auto bad = find_text_not_utf8(kv.second, child)) return bad;
+    }
+  }
+  return std::nullopt;
+}
+
+/// "LINE:COL" (1-based, columns in bytes) of byte `offset` of `text`.
+std::string line_and_column(const std::string& text, std::size_t offset) {
+  const auto line = 1 + std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(offset), '\n');
+  const std::size_t start = offset == 0 ? std::string::npos : text.rfind('\n', offset - 1);
+  const std::size_t column = start == std::string::npos ? offset + 1 : offset - start;
+  return std::to_string(line) + ":" + std::to_string(column);
+}
+
+/// Whether `text` starts with a UTF-16 or UTF-32 byte order mark (yaml-cpp decodes those to UTF-8).
+bool has_wide_byte_order_mark(const std::string& text) {
+  const auto starts = [&](std::string_view prefix) { return text.compare(0, prefix.size(), prefix) == 0; };
+  using namespace std::string_view_literals;
+  return starts("\xFE\xFF"sv) || starts("\xFF\xFE"sv) || starts("\x00\x00\xFE\xFF"sv);
+}
+
 }  // namespace
 
 ConfigNode::ConfigNode(YAML::Node node, std::string path, std::shared_ptr<const std::string> file,
@@ -101,14 +136,39 @@ ConfigNode::ConfigNode(YAML::Node node, std::string path, std::shared_ptr<const 
 ConfigNode ConfigNode::root() const { return ConfigNode(*root_, "", file_, root_); }
 
 ConfigNode ConfigNode::load_string(const std::string& text, const std::string& name) {
+  // Text that is not UTF-8 would pass through yaml-cpp into messages, VTK files and summary.json
+  // (whose writer throws on it, after the study): refused here, at the first such key or value.
+  const std::size_t bad =
+      has_wide_byte_order_mark(text) ? std::string::npos : invalid_utf8_offset(text).value_or(std::string::npos);
+  const auto place = [&](std::size_t offset) {  // "c.yaml:3:7: "
+    return name + ":" + line_and_column(text, offset) + ": ";
+  };
+  const auto what = [&](std::size_t offset) { return describe_byte(text, offset) + " is not UTF-8 (a config is UTF-8 text)"; };
+  std::shared_ptr<const YAML::Node> root;
   try {
-    auto root = std::make_shared<const YAML::Node>(YAML::Load(text));
-    return ConfigNode(*root, "", shared_name(name), root);
+    root = std::make_shared<const YAML::Node>(YAML::Load(text));
   } catch (const YAML::ParserException& e) {
+    if (bad != std::string::npos) throw InputError(place(bad) + what(bad));
     throw InputError(location(name, e.mark) + ": YAML syntax error: " + e.msg);
   } catch (const YAML::Exception& e) {
+    if (bad != std::string::npos) throw InputError(place(bad) + what(bad));
     throw InputError(location(name, e.mark) + ": cannot read YAML: " + e.msg);
   }
+  if (bad != std::string::npos) {
+    std::size_t offset = bad;
+    std::string path;
+    if (const auto found = find_text_not_utf8(*root, "")) {
+      // yaml-cpp counts positions in bytes of UTF-8 input: the bad byte is at or after the node's start.
+      const YAML::Mark mark = found->first.Mark();
+      if (mark.pos >= 0 && static_cast<std::size_t>(mark.pos) < text.size())
+        if (const auto at = invalid_utf8_offset(std::string_view(text).substr(static_cast<std::size_t>(mark.pos))))
+          offset = static_cast<std::size_t>(mark.pos) + *at;
+      path = found->second;
+    }
+    // FILE:LINE:COL of the byte itself, then the key path of the text that holds it (if any).
+    throw InputError(place(offset) + (path.empty() ? "" : path + ": ") + what(offset));
+  }
+  return ConfigNode(*root, "", shared_name(name), root);
 }
 
 ConfigNode ConfigNode::load_file(const std::string& filename) {

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
+#include <limits>
 #include <map>
 #include <optional>
 #include <set>
@@ -363,6 +364,9 @@ class ScriptChecker {
             !allowed_fields.count(t[close + 2].s))
           refuse(script, head, "the Field type '" + t[close + 2].s + "' is not allowed");
       }
+      if (head.s == "Point") point_size(script, i, end);
+      if (head.s == "MeshSize" || (head.s == "Characteristic" && i + 1 < end && is(t[i + 1], "Length")))
+        size_assignment(script, i, end);
       track_assignment(script, i, end);
       return;
     }
@@ -374,6 +378,92 @@ class ScriptChecker {
         return;
       }
     refuse(script, head, "it is neither an assignment nor a geometry or mesh statement");
+  }
+
+  /// The value of `[begin, end)` as a mesh size: +inf when it cannot be evaluated here (a loop
+  /// variable, a function call) or is not a positive number, i.e. "no bound known".
+  double size_value(const std::vector<Token>& t, std::size_t begin, std::size_t end) const {
+    const auto v = ConstantExpression(t, begin, end, values_).value();
+    return v && *v > 0.0 && std::isfinite(*v) ? *v : std::numeric_limits<double>::infinity();
+  }
+
+  /// Positions of the top-level commas in tokens (open, close).
+  static std::vector<std::size_t> top_level_commas(const std::vector<Token>& t, std::size_t open, std::size_t close) {
+    std::vector<std::size_t> commas;
+    int depth = 0;
+    for (std::size_t k = open + 1; k < close; ++k) {
+      if (t[k].kind != Token::punct) continue;
+      if (t[k].s == "(" || t[k].s == "[" || t[k].s == "{") ++depth;
+      if (t[k].s == ")" || t[k].s == "]" || t[k].s == "}") --depth;
+      if (depth == 0 && t[k].s == ",") commas.push_back(k);
+    }
+    return commas;
+  }
+
+  /// The point ids of a list `{1, 2, a:b}` (tokens open..close), or nullopt when an item cannot be
+  /// evaluated here or a range is long (it is then counted as unknown points).
+  std::optional<std::vector<double>> id_list(const std::vector<Token>& t, std::size_t open, std::size_t close) const {
+    std::vector<std::size_t> cuts = top_level_commas(t, open, close);
+    cuts.insert(cuts.begin(), open);
+    cuts.push_back(close);
+    std::vector<double> ids;
+    for (std::size_t p = 0; p + 1 < cuts.size(); ++p) {
+      std::size_t colon = cuts[p + 1];
+      for (std::size_t k = cuts[p] + 1; k < cuts[p + 1]; ++k)
+        if (is(t[k], ":")) colon = std::min(colon, k);
+      const auto first = ConstantExpression(t, cuts[p] + 1, colon, values_).value();
+      if (!first) return std::nullopt;
+      if (colon == cuts[p + 1]) {
+        ids.push_back(*first);
+        continue;
+      }
+      const auto last = ConstantExpression(t, colon + 1, cuts[p + 1], values_).value();
+      if (!last || !(*last - *first >= 0.0 && *last - *first < 1e4)) return std::nullopt;
+      for (double id = *first; id <= *last; ++id) ids.push_back(id);
+    }
+    return ids;
+  }
+
+  /// `Point(n) = {x, y, z, lc};`: point n gets size lc (+inf without lc: no size of its own,
+  /// Gmsh takes the model's there). A point whose id cannot be evaluated counts in `untracked_size`.
+  void point_size(const Script& script, std::size_t i, std::size_t end) {
+    const auto& t = script.tokens;
+    if (i + 1 >= end || !is(t[i + 1], "(")) return;
+    const std::size_t id_close = matching(t, i + 1);
+    if (id_close + 2 >= end || !is(t[id_close + 1], "=") || !is(t[id_close + 2], "{"))
+      return;  // `Point{5} In Surface{1};` gives no size
+    const std::size_t open = id_close + 2;
+    const std::size_t close = std::min(matching(t, open), end);
+    const std::vector<std::size_t> commas = top_level_commas(t, open, close);
+    const double lc = commas.size() == 3 ? size_value(t, commas[2] + 1, close) : std::numeric_limits<double>::infinity();
+    if (const auto id = ConstantExpression(t, i + 2, id_close, values_).value())
+      point_sizes_[*id] = lc;
+    else
+      untracked_size_ = std::max(untracked_size_, lc);
+  }
+
+  /// `MeshSize {points} = lc;` and `Characteristic Length {points} = lc;` replace the sizes of
+  /// the listed points (of every point it may name when the list cannot be evaluated here).
+  void size_assignment(const Script& script, std::size_t i, std::size_t end) {
+    const auto& t = script.tokens;
+    std::size_t open = i + 1;
+    while (open < end && !is(t[open], "{")) ++open;
+    if (open >= end) return;
+    const std::size_t close = matching(t, open);
+    if (close + 1 >= end || !is(t[close + 1], "=")) return;
+    const double lc = size_value(t, close + 2, end);
+    const auto ids = id_list(t, open, close);
+    if (!ids) {
+      untracked_size_ = std::max(untracked_size_, lc);
+      return;
+    }
+    for (double id : *ids) {
+      const auto it = point_sizes_.find(id);
+      if (it != point_sizes_.end())
+        it->second = lc;
+      else
+        untracked_size_ = std::max(untracked_size_, lc);  // a point made by an extrusion or a copy
+    }
   }
 
   /// Remembers `name = <constant>;` for loop bounds; forgets a name assigned anything else.
@@ -470,7 +560,18 @@ class ScriptChecker {
  public:
   std::vector<fs::path> checked_;
 
+  /// The largest size a point has at the end of the script (0 without points; +inf when one is
+  /// unknown).
+  double largest_point_size() const {
+    double largest = untracked_size_;
+    for (const auto& [id, lc] : point_sizes_) largest = std::max(largest, lc);
+    return largest;
+  }
+
  private:
+  std::map<double, double> point_sizes_;  ///< point id -> its size (+inf: none or unknown)
+  double untracked_size_ = 0.0;           ///< largest size of points whose id is not known here
+
   std::map<std::string, double> values_;
 };
 
@@ -485,6 +586,23 @@ std::vector<fs::path> check_geo_script(const fs::path& file, const std::vector<f
   const fs::path options = file.string() + ".opt";
   if (std::error_code ec; fs::exists(options, ec)) checker.check(options, stack);
   return checker.checked_;
+}
+
+double geo_script_largest_point_size(const fs::path& file, const std::vector<fs::path>& include_roots,
+                                     const MeshLimits& limits) {
+  ScriptChecker checker(include_roots, limits);
+  std::vector<fs::path> stack = {fs::weakly_canonical(file)};
+  try {
+    checker.check(file, stack);
+    const fs::path options = file.string() + ".opt";
+    if (std::error_code ec; fs::exists(options, ec)) checker.check(options, stack);
+  } catch (const InputError&) {
+    // Not this function's verdict (check_geo_script gives it; the Gmsh worker's own tests run
+    // refused scripts on purpose): no bound is known.
+    return std::numeric_limits<double>::infinity();
+  }
+  const double largest = checker.largest_point_size();
+  return largest > 0.0 ? largest : std::numeric_limits<double>::infinity();
 }
 
 }  // namespace iga

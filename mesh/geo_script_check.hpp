@@ -30,4 +30,13 @@ std::vector<std::filesystem::path> check_geo_script(const std::filesystem::path&
                                                     const std::vector<std::filesystem::path>& include_roots,
                                                     const MeshLimits& limits = {});
 
+/// The largest mesh size the script gives a point (`Point(n) = {x, y, z, lc}`, `MeshSize {..} = lc`,
+/// `Characteristic Length {..} = lc`, in the script, its Includes and its option file), read by
+/// the same static pass as check_geo_script. +inf when there is no bound: no point has a size, a
+/// point has none, a size cannot be evaluated before Gmsh runs (a loop variable, a function call),
+/// or the pass refuses the script. The element estimate before meshing uses it.
+double geo_script_largest_point_size(const std::filesystem::path& file,
+                                     const std::vector<std::filesystem::path>& include_roots,
+                                     const MeshLimits& limits = {});
+
 }  // namespace iga

@@ -14,6 +14,7 @@
 
 #include "config/config_node.hpp"
 #include "config/errors.hpp"
+#include "config/utf8.hpp"
 
 namespace iga {
 
@@ -222,6 +223,10 @@ GismoMultiPatch parse_gismo_xml(const std::string& text, const std::string& path
   if (text.size() > limits.max_bytes)
     throw InputError(path + ": " + std::to_string(text.size()) + " bytes, more than the limit of " +
                      std::to_string(limits.max_bytes) + " for a geometry file");
+  // XML is UTF-8 here (tinyxml2 reads no other encoding); the boundary names reach outputs.
+  if (const auto bad = invalid_utf8_offset(text))
+    throw InputError(path + ":" + std::to_string(1 + std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(*bad), '\n')) +
+                     ": " + describe_byte(text, *bad) + " is not UTF-8 (a G+Smo file is UTF-8 text)");
   GismoMultiPatch mp;
   mp.source = path;
   tinyxml2::XMLDocument doc(true, tinyxml2::PRESERVE_WHITESPACE);

@@ -11,7 +11,8 @@ namespace iga {
 
 struct MeshLimits {
   /// Largest number of 2D elements a mesh may have: a .msh file's element count, or the estimate
-  /// area / (sqrt(3)/4 h²) for a .geo meshed with `mesh_size` h or a polygon, checked before meshing.
+  /// area / (sqrt(3)/4 h²) for a .geo meshed with `mesh_size` h or a polygon, checked before meshing
+  /// (a .geo's own sizes are refused above 8 times this: gmsh_job.cpp says why).
   double max_elements = 2e6;
   /// Wall-clock and CPU time of one Gmsh run (open and mesh), in seconds.
   double seconds = 120.0;

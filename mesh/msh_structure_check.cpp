@@ -11,6 +11,7 @@
 
 #include "config/config_node.hpp"
 #include "config/errors.hpp"
+#include "config/utf8.hpp"
 
 namespace iga {
 
@@ -293,6 +294,9 @@ class MshChecker {
       integer(t[1], "physical tag");
       if (t[2].front() != '"' || t.back().back() != '"' || (t.size() == 3 && t[2].size() < 2))
         fail("the physical name must be in double quotes");
+      for (const std::string& word : t)  // names reach messages, VTK files and summary.json
+        if (const auto bad = invalid_utf8_offset(word))
+          fail("the physical name is not UTF-8 text (" + describe_byte(word, *bad) + ")");
     }
     expect_end("PhysicalNames");
   }

@@ -6,6 +6,7 @@
 
 #include "config/config_node.hpp"
 #include "config/errors.hpp"
+#include "config/utf8.hpp"
 
 namespace iga {
 
@@ -74,6 +75,30 @@ void check_cell_shapes(const PlanarMesh& mesh) {
       if (det <= mesh_tolerance * h * h)
         reject(mesh, describe_cell(mesh, c) + " is folded or not convex at corner " + describe_point(p) +
                          " (bilinear Jacobian " + format_number(det) + " <= 0)");
+    }
+  }
+}
+
+/// Cells that are valid but so thin that the spaces built on them are singular in floating point
+/// (their boundary traces dependent, their systems unsolvable): a corner's cross product below
+/// mesh_shape_tolerance x (longest edge)². Checked after the topology, whose messages say more.
+void check_cell_quality(const PlanarMesh& mesh) {
+  for (int c = 0; c < num_cells(mesh); ++c) {
+    const std::vector<int>& cell = mesh.cells[c];
+    const std::size_t n = cell.size();
+    const double h = longest_edge(mesh, c);
+    double shortest = h;
+    for (std::size_t k = 0; k < n; ++k)
+      shortest = std::min(shortest, (mesh.vertices[cell[(k + 1) % n]] - mesh.vertices[cell[k]]).norm());
+    for (std::size_t k = 0; k < n; ++k) {
+      const Eigen::Vector2d& p = mesh.vertices[cell[k]];
+      const double ratio = cross(mesh.vertices[cell[(k + 1) % n]] - p, mesh.vertices[cell[(k + n - 1) % n]] - p) / (h * h);
+      if (ratio < mesh_shape_tolerance)
+        reject(mesh, describe_cell(mesh, c) + " is nearly degenerate at corner " + describe_point(p) +
+                         ": its edges there span " + format_number(ratio) + " x (longest edge)², less than " +
+                         format_number(mesh_shape_tolerance) + " (shortest edge " + format_number(shortest) +
+                         ", longest " + format_number(h) +
+                         "); a cell this thin or with vertices this close makes the space singular in floating point");
     }
   }
 }
@@ -157,7 +182,11 @@ void check_referenced_vertices(const PlanarMesh& mesh) {
 }
 
 void check_boundary_groups(const PlanarMesh& mesh, const std::map<Edge, EdgeUse>& uses) {
-  for (const auto& [name, edges] : mesh.boundary_groups)
+  for (const auto& [name, edges] : mesh.boundary_groups) {
+    // Group names become boundary part names in messages, VTK files and summary.json.
+    if (const auto bad = invalid_utf8_offset(name))
+      reject(mesh, "a boundary group name is not UTF-8 text (" + describe_byte(name, *bad) + " at byte " +
+                       std::to_string(*bad + 1) + " of the name)");
     for (const Edge& e : edges) {
       const bool known = e[0] >= 0 && e[0] < num_vertices(mesh) && e[1] >= 0 && e[1] < num_vertices(mesh);
       if (!known) reject(mesh, "boundary group '" + name + "' refers to a vertex that does not exist");
@@ -166,6 +195,7 @@ void check_boundary_groups(const PlanarMesh& mesh, const std::map<Edge, EdgeUse>
         reject(mesh, "boundary group '" + name + "' has " + describe_edge(mesh, e) +
                          ", which is not a boundary edge of the mesh");
     }
+  }
 }
 
 }  // namespace
@@ -179,6 +209,7 @@ void validate_planar_mesh(const PlanarMesh& mesh, const AllowedCells& allowed) {
   check_edges_and_boundary(mesh, uses);
   check_referenced_vertices(mesh);
   check_boundary_groups(mesh, uses);
+  check_cell_quality(mesh);
 }
 
 }  // namespace iga

@@ -91,7 +91,7 @@ void write_summary(const GeometryStudySettings& settings, const std::vector<Geom
   }
   j["levels"] = levels;
   std::ofstream out(filename);
-  out << j.dump(2) << "\n";
+  out << j.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) << "\n";  // never throws on bytes that are not UTF-8
   if (!out) throw std::runtime_error("cannot write " + filename);
 }
 

@@ -347,7 +347,9 @@ std::string summary_json(const StudySettings& settings, const StudyResult& resul
   j["t_vtk"] = result.t_vtk;
   // The whole run as its caller measured it (reading the config to the last file), else the phases' sum.
   j["total_seconds"] = result.total_seconds > 0 ? result.total_seconds : total;
-  return j.dump(2);
+  // Text was checked to be UTF-8 where it was read; a path from the command line (a file name is
+  // bytes) may still not be: replaced, never an exception after the study.
+  return j.dump(2, ' ', false, nlohmann::json::error_handler_t::replace);
 }
 
 void write_summary_json(const StudySettings& settings, const StudyResult& result, const std::string& filename) {

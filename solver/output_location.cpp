@@ -12,7 +12,41 @@ namespace iga {
 
 namespace fs = std::filesystem;
 
-void check_output_directory(const std::string& path, const std::string& place) {
+namespace {
+
+/// Whether `outer` is `inner` or one of its ancestors (both absolute, links resolved).
+bool encloses(const fs::path& outer, const fs::path& inner) {
+  const auto trimmed = [](fs::path p) {  // "/a/b/" -> "/a/b": a trailing separator names the same folder
+    p = p.lexically_normal();
+    return !p.has_filename() && p.has_relative_path() ? p.parent_path() : p;
+  };
+  const fs::path rel = trimmed(inner).lexically_relative(trimmed(outer));
+  return !rel.empty() && *rel.begin() != "..";
+}
+
+}  // namespace
+
+void check_output_not_above(const std::string& path, const std::string& place,
+                            const std::vector<std::string>& config_paths) {
+  std::error_code ec;
+  const fs::path target = fs::weakly_canonical(fs::absolute(path, ec), ec);
+  if (ec || target.empty()) return;  // check_output_directory names an unresolvable path
+  const auto refuse = [&](const std::string& what) {
+    throw InputError(place + ": output directory '" + path + "' is " + what +
+                     ": the results replace the output directory as a whole; give a folder of their own, such as "
+                     "results/NAME");
+  };
+  if (const fs::path cwd = fs::current_path(ec); !ec && encloses(target, fs::weakly_canonical(cwd, ec)))
+    refuse("the working directory or a folder above it");
+  for (const std::string& config : config_paths) {
+    const fs::path folder = fs::weakly_canonical(fs::absolute(config, ec).parent_path(), ec);
+    if (!ec && encloses(target, folder)) refuse("the folder of the config '" + config + "' or a folder above it");
+  }
+}
+
+void check_output_directory(const std::string& path, const std::string& place,
+                            const std::vector<std::string>& config_paths) {
+  check_output_not_above(path, place, config_paths);
   const auto fail = [&](const std::string& why) {
     throw InputError(place + ": output directory '" + path + "' " + why);
   };

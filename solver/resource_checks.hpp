@@ -4,6 +4,7 @@
 /// before the coarsest space is built, every level's estimated size before the study starts (from
 /// the coarsest space) and each level's actual size before it is assembled.
 
+#include <optional>
 #include <string>
 
 #include "config/config_node.hpp"
@@ -54,6 +55,19 @@ double estimated_memory_bytes(const SpaceSize& size, const MemoryModel& model = 
 /// limits.max_degree and the elements `space.elements` asks for (a count per direction, or one for
 /// both) against limits.max_elements. InputError at the key otherwise.
 void check_space_request(const ConfigNode& space, const ResourceLimits& limits);
+
+/// Level `level` of a B-spline space (`space.type: bspline`) from its request alone, or nullopt
+/// for other spaces: [nx, ny] elements of degree p and regularity r (defaults [2, 2], r = p - 1)
+/// halved `level` times give nx ny 4^level elements, prod_d (n_d 2^level (p - r) + r + 1) DOFs (open
+/// knot vectors; a domain patch's own interior knots add a few) and (p + 1)^4 entries per element.
+std::optional<SpaceSize> requested_bspline_size(const ConfigNode& space, int level);
+
+/// Before anything is built: every uniform level of a space whose size follows from its request
+/// (requested_bspline_size) against the limits, as check_size; InputError at `blame` (the levels
+/// key) naming `levels_name` ("--levels" or "refinement.levels"). Nothing for other spaces: their
+/// levels are estimated from the built level 0.
+void check_requested_levels(const ConfigNode& space, int levels, const ResourceLimits& limits,
+                            const ConfigNode& blame, const std::string& levels_name, const MemoryModel& model);
 
 /// InputError at `node` when `size` exceeds limits.max_elements, max_dofs or max_memory_gb (the
 /// memory of `model`, per rank); `what` says which level ("level 3 (estimated from level 0)").

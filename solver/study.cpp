@@ -91,10 +91,20 @@ StudySettings parse_study(const ConfigNode& root, const std::string& config_path
     s.output_dir = output_override;
     output_place = "--output";
   }
-  check_output_directory(s.output_dir, output_place);
+  check_output_directory(s.output_dir, output_place, {config_path});
   // Domain, space and boundary part names are validated on the coarsest space (cheap), so that
   // every input error surfaces before the study starts; what it asks for is checked first.
   check_space_request(space_node, s.limits);
+  {  // Uniform levels whose size follows from the request are checked before level 0 is built.
+    const auto refinement = root.find("refinement");
+    const auto levels_node = refinement && refinement->is_map() ? refinement->find("levels") : std::nullopt;
+    const auto type = refinement && refinement->is_map() ? refinement->find("type") : std::nullopt;
+    const bool adaptive = type && type->is_scalar() && type->as_string() == "adaptive";
+    const int levels = levels_override > 0 ? levels_override : levels_node ? levels_node->as_int() : s.levels;
+    if (!adaptive && levels >= 1 && levels <= 12)
+      check_requested_levels(space_node, levels, s.limits, levels_node && levels_override <= 0 ? *levels_node : space_node,
+                             levels_override > 0 ? "--levels" : "refinement.levels", memory_model(s.solver, s.petsc));
+  }
   const auto t_coarse = Clock::now();
   const SpacePtr coarse = make_space(domain_node, space_node, 0);
   s.level0 = coarse;

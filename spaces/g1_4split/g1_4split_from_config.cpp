@@ -6,6 +6,7 @@
 #include "config/errors.hpp"
 #include "mesh/mesh_file_from_config.hpp"
 #include "mesh/read_quad_surface_mesh.hpp"
+#include "mesh/validate_quad_surface.hpp"
 #include "spaces/g1/multipatch_domains.hpp"
 #include "spaces/g1/patch_mesh_from_file.hpp"
 #include "spaces/g1_4split/g1_4split_meshes.hpp"
@@ -56,7 +57,11 @@ std::pair<QuadTopology, std::vector<Eigen::Vector3d>> surface_mesh(const ConfigN
   const ConfigNode node = domain["file"];
   std::filesystem::path path = node.as_string();
   if (path.is_relative()) path = std::filesystem::path(node.file()).parent_path() / path;
-  const QuadSurfaceFile read = node.guard([&] { return read_quad_surface_mesh(path.string()); });
+  const QuadSurfaceFile read = node.guard([&] {
+    QuadSurfaceFile file = read_quad_surface_mesh(path.string());
+    validate_quad_surface(file);  // degenerate, folded, repeated faces: named here, not as a failed solve
+    return file;
+  });
   QuadTopology topology =
       node.guard([&] { return QuadTopology(static_cast<int>(read.points.size()), read.quads, read.source); });
   for (int v = 0; v < topology.num_vertices(); ++v)

@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 
 #include "config/errors.hpp"
 #include "mesh/read_mesh_file.hpp"
@@ -127,6 +128,31 @@ TEST(GeoScriptCheck, GeometryScriptsPass) {
                          "Point(103) = {0.5, 0.5, 0, h}; Point{103} In Surface{1};\n"
                          "Delete { Point{100}; }\n");
   EXPECT_NO_THROW(check_geo_script(path, {test::scratch_folder()}));
+}
+
+/// geo_script_largest_point_size of a script written to the scratch folder.
+double largest_size(const std::string& name, const std::string& text) {
+  return geo_script_largest_point_size(test::scratch_file(name, text), {test::scratch_folder()});
+}
+
+TEST(GeoScriptSizes, TheLargestPointSizeAtTheEndOfTheScript) {
+  const double inf = std::numeric_limits<double>::infinity();
+  EXPECT_EQ(largest_size("s1.geo", "Point(1) = {0, 0, 0, 0.1};\nPoint(2) = {1, 0, 0, 0.25};\n"), 0.25);
+  EXPECT_EQ(largest_size("s2.geo", "lc = 1e-3 / 4;\nPoint(1) = {0, 0, 0, lc};\nPoint(2) = {1, 0, 0, 2 * lc};\n"), 5e-4);
+  // MeshSize and Characteristic Length replace the sizes of the points they list (ids and ranges).
+  EXPECT_EQ(largest_size("s3.geo", "Point(1) = {0, 0, 0, 0.5};\nPoint(2) = {1, 0, 0, 0.5};\nMeshSize {1, 2} = 1e-7;\n"), 1e-7);
+  EXPECT_EQ(largest_size("s4.geo", "Point(1) = {0, 0, 0, 0.5};\nPoint(2) = {1, 0, 0, 0.5};\n"
+                                   "Characteristic Length {1:2} = 1e-6;\n"), 1e-6);
+  EXPECT_EQ(largest_size("s5.geo", "Point(1) = {0, 0, 0, 0.5};\nPoint(2) = {1, 0, 0, 0.5};\nMeshSize {1} = 1e-6;\n"), 0.5);
+  // A point whose id is a loop's keeps its size in the bound; one without a size, or with a size
+  // not evaluated here (a function call), means no bound.
+  EXPECT_EQ(largest_size("s6.geo", "For i In {1:3}\n  Point(i) = {i, 0, 0, 0.2};\nEndFor\n"), 0.2);
+  EXPECT_EQ(largest_size("s7.geo", "Point(1) = {0, 0, 0, 0.1};\nPoint(2) = {1, 0, 0};\n"), inf);
+  EXPECT_EQ(largest_size("s8.geo", "Point(1) = {0, 0, 0, Sqrt(2) / 10};\n"), inf);
+  EXPECT_EQ(largest_size("s9.geo", "SetFactory(\"OpenCASCADE\");\nRectangle(1) = {0, 0, 0, 1, 1};\n"), inf);
+  // The option file "<file>.opt" runs after the script.
+  test::scratch_file("s10.geo.opt", "MeshSize {1} = 1e-9;\n");
+  EXPECT_EQ(largest_size("s10.geo", "Point(1) = {0, 0, 0, 0.5};\n"), 1e-9);
 }
 
 TEST(GeoScriptCheck, IncludesAreCheckedInTurn) {

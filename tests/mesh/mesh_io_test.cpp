@@ -349,5 +349,40 @@ TEST(MeshIo, ValidationRejectsBadMeshesNamingTheCell) {
   EXPECT_NO_THROW(validate_planar_mesh(mesh_of(square, {{0, 1, 2}, {0, 2, 3}})));
 }
 
+TEST(MeshIo, NearlyDegenerateCellsAreRejectedAtAnyScale) {
+  using V = Eigen::Vector2d;
+  // A 1 x 0.005 rectangle (aspect ratio 200) and a triangle whose apex is 0.004 above its base:
+  // valid cells, but thinner than mesh_shape_tolerance; the same at 1e6 and 1e-6 times the size.
+  for (const double scale : {1.0, 1e6, 1e-6}) {
+    const auto at = [&](double x, double y) { return V(scale * x, scale * y); };
+    std::string m = validation_error(mesh_of({at(0, 0), at(1, 0), at(1, 0.005), at(0, 0.005)}, {{0, 1, 2, 3}}));
+    EXPECT_NE(m.find("cell 0 (quadrilateral"), std::string::npos) << m;
+    EXPECT_NE(m.find("is nearly degenerate at corner"), std::string::npos) << m;
+    EXPECT_NE(m.find("span 0.005 x (longest edge)², less than 0.01"), std::string::npos) << m;
+    m = validation_error(mesh_of({at(0, 0), at(1, 0), at(0.5, 0.004)}, {{0, 1, 2}}));
+    EXPECT_NE(m.find("cell 0 (triangle"), std::string::npos) << m;
+    EXPECT_NE(m.find("span 0.004 x (longest edge)²"), std::string::npos) << m;
+    // Aspect ratio 50 and a right triangle pass.
+    EXPECT_NO_THROW(validate_planar_mesh(mesh_of({at(0, 0), at(1, 0), at(1, 0.02), at(0, 0.02)}, {{0, 1, 2, 3}})));
+    EXPECT_NO_THROW(validate_planar_mesh(mesh_of({at(0, 0), at(1, 0), at(0, 1)}, {{0, 1, 2}})));
+  }
+  // Two vertices of a cell almost together (a hundredth of a percent of the cell apart).
+  const std::string m = validation_error(
+      mesh_of({V(0, 0), V(1, 0), V(1, 1), V(1e-4, 1), V(0, 1)}, {{0, 1, 2, 3}, {0, 3, 4}}));
+  EXPECT_NE(m.find("cell 1 (triangle (0, 0), (0.0001, 1), (0, 1)) is nearly degenerate"), std::string::npos) << m;
+  EXPECT_NE(m.find("shortest edge 0.0001"), std::string::npos) << m;
+}
+
+TEST(MeshIo, BoundaryGroupNamesMustBeUtf8) {
+  using V = Eigen::Vector2d;
+  PlanarMesh m = mesh_of({V(0, 0), V(1, 0), V(1, 1), V(0, 1)}, {{0, 1, 2}, {0, 2, 3}});
+  m.boundary_groups["bottom"] = {{0, 1}};
+  m.boundary_groups["l\xE9" "ft"] = {{3, 0}};
+  EXPECT_EQ(validation_error(m), "test.obj: a boundary group name is not UTF-8 text (byte 0xE9 at byte 2 of the name)");
+  m.boundary_groups.erase("l\xE9" "ft");
+  m.boundary_groups["l\xC3\xA9" "ft"] = {{3, 0}};  // the same name in UTF-8
+  EXPECT_NO_THROW(validate_planar_mesh(m));
+}
+
 }  // namespace
 }  // namespace iga

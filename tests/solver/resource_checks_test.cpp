@@ -1,5 +1,6 @@
 /// The limits applied to a study: requests refused before the coarsest space is built, levels
-/// estimated from level 0 before the study, with messages naming the key to raise.
+/// estimated from the request (B-splines) or from level 0 before the study, with messages naming
+/// the key to raise.
 #include "solver/resource_checks.hpp"
 
 #include <gtest/gtest.h>
@@ -45,7 +46,9 @@ TEST(ResourceChecks, LevelsAreEstimatedFromLevelZero) {
   const std::string base = "space: {type: bspline, degree: 2, elements: [2, 2]}\n";
   EXPECT_EQ(study_error(base + "refinement: {levels: 10}\n"), "");
   const std::string m = study_error(base + "refinement: {levels: 11}\n");
-  EXPECT_EQ(m.rfind("run.yaml:4:22: refinement.levels: level 10 (estimated from level 0) has ", 0), 0u) << m;
+  // A B-spline space's levels follow from its request: checked before level 0 is built.
+  EXPECT_EQ(m.rfind("run.yaml:4:22: refinement.levels: level 10 of refinement.levels 11 (from space.elements and "
+                    "space.degree) has ", 0), 0u) << m;
   EXPECT_NE(m.find("limits.max_elements"), std::string::npos) << m;
   EXPECT_EQ(study_error(base + "refinement: {levels: 11}\nlimits: {max_elements: 1e7, max_dofs: 2e7, max_memory_gb: 1e3}\n"), "");
   // Degrees of freedom and memory have their own keys.
@@ -53,8 +56,32 @@ TEST(ResourceChecks, LevelsAreEstimatedFromLevelZero) {
             std::string::npos);
   EXPECT_NE(study_error(base + "refinement: {levels: 4}\nlimits: {max_memory_gb: 1e-6}\n").find("limits.max_memory_gb"),
             std::string::npos);
-  // The command line's --levels is blamed on the space (no config key holds it).
-  EXPECT_EQ(study_error(base, 11).rfind("run.yaml:3:8: space: level 10", 0), 0u) << study_error(base, 11);
+  // The command line's --levels is blamed on the space (no config key holds it), and named.
+  EXPECT_EQ(study_error(base, 11).rfind("run.yaml:3:8: space: level 10 of --levels 11", 0), 0u) << study_error(base, 11);
+  // Other spaces: estimated from the built level 0.
+  const std::string t = study_error("space: {type: tmesh, section: poly, n: 3, regularity: 1, elements: [2, 2]}\n"
+                                    "refinement: {levels: 11}\n");
+  EXPECT_EQ(t.rfind("run.yaml:4:22: refinement.levels: level ", 0), 0u) << t;
+  EXPECT_NE(t.find(" (estimated from level 0) has "), std::string::npos) << t;
+}
+
+TEST(ResourceChecks, RequestedBsplineSizesAreTheBuiltOnes) {
+  // The closed form against the built spaces, levels 0 to 2, with and without reduced regularity.
+  for (const char* space : {"space: {type: bspline, degree: 2, elements: [3, 2]}\n",
+                            "space: {type: bspline, degree: 3, regularity: 1, elements: [2, 5]}\n",
+                            "space: {type: bspline, degree: 1}\n"}) {
+    const ConfigNode root = ConfigNode::load_string(std::string(kBase) + space);
+    for (int level = 0; level <= 2; ++level) {
+      const SpaceSize built = measure(*make_space(root["domain"], root["space"], level));
+      const auto requested = requested_bspline_size(root["space"], level);
+      ASSERT_TRUE(requested) << space;
+      EXPECT_EQ(requested->elements, built.elements) << space << level;
+      EXPECT_EQ(requested->dofs, built.dofs) << space << level;
+      EXPECT_EQ(requested->element_entries, built.element_entries) << space << level;
+    }
+  }
+  const ConfigNode other = ConfigNode::load_string(std::string(kBase) + "space: {type: ws4}\n");
+  EXPECT_FALSE(requested_bspline_size(other["space"], 1));
 }
 
 TEST(ResourceChecks, IterativePetscSolvesAreEstimatedWithoutAFactor) {
