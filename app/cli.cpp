@@ -55,12 +55,8 @@ void check_output(const std::string& directory, const std::string& output, const
   } else if (const auto out = root ? root->find("output") : std::nullopt) {
     if (const auto dir = out->find("directory")) place = dir->where();
   }
-  check_output_not_above(directory, place, config_paths);
-  try {
-    check_output_location(directory);
-  } catch (const InputError& e) {
-    throw InputError(place + ": " + e.what());
-  }
+  if (output.empty() && place != "the default output directory") check_config_output_directory(directory, place);
+  check_output_directory(directory, place, config_paths);
 }
 
 /// A geometry study (a `study` section): the surface itself, no PDE.

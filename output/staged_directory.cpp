@@ -3,6 +3,7 @@
 #include <unistd.h>
 
 #include "config/errors.hpp"
+#include "solver/output_location.hpp"
 
 #include <filesystem>
 #include <random>
@@ -30,27 +31,6 @@ std::string hidden_sibling(const fs::path& target, const char* tag) {
 
 }  // namespace
 
-void check_output_location(const std::string& final_path) {
-  const fs::path target = fs::absolute(final_path);
-  std::error_code ec;
-  if (fs::exists(target, ec) && !fs::is_directory(target, ec))
-    throw InputError("output directory '" + final_path + "' exists and is not a directory");
-  fs::path ancestor = target.parent_path();
-  while (!ancestor.empty() && !fs::exists(ancestor, ec) && ancestor != ancestor.parent_path())
-    ancestor = ancestor.parent_path();
-  if (!fs::is_directory(ancestor, ec))
-    throw InputError("output directory '" + final_path + "': '" + ancestor.string() + "' is not a directory");
-  if (::access(ancestor.c_str(), W_OK) != 0)
-    throw InputError("output directory '" + final_path + "': '" + ancestor.string() + "' is not writable");
-  // Permission bits do not tell everything (root passes access(), /proc refuses new entries, a
-  // read-only mount, a full disk): create and remove a probe directory where commit() will write.
-  const fs::path probe = ancestor / hidden_sibling(target, ".probe-");
-  if (!fs::create_directory(probe, ec) || ec)
-    throw InputError("output directory '" + final_path + "': cannot create a directory in '" + ancestor.string() +
-                     "'" + (ec ? ": " + ec.message() : std::string()));
-  fs::remove(probe, ec);
-}
-
 StagedDirectory::StagedDirectory(std::string final_path) : final_(std::move(final_path)) {
   // Staging lives in the system temp directory so that a failed run creates nothing beside the
   // final path (not even its parent folders).
@@ -70,6 +50,10 @@ StagedDirectory::~StagedDirectory() {
 
 void StagedDirectory::commit() {
   const fs::path target = fs::absolute(final_);
+  // Checked before the study too; again here, since the folder may have changed during the run.
+  if (!replaceable_output_directory(final_))
+    throw std::runtime_error("output directory '" + final_ + "' is no longer empty or an earlier result of iga-run; "
+                             "it was left untouched (the results are not written)");
   if (target.has_parent_path()) fs::create_directories(target.parent_path());
   // Move next to the target first (a rename when the temp dir is on the same file system, else a
   // copy: hundreds of MB of VTK files are not copied for nothing), then swap by renames, which are

@@ -8,11 +8,6 @@
 
 namespace iga {
 
-/// Throw InputError unless `final_path` can become a results directory: the nearest existing
-/// ancestor must be a directory in which a (probe) directory can be created (checked before a
-/// study starts, not after it).
-void check_output_location(const std::string& final_path);
-
 class StagedDirectory {
  public:
   /// Creates the private staging directory; InputError if the temporary directory is unusable.
@@ -23,7 +18,8 @@ class StagedDirectory {
 
   /// Where to write now.
   const std::string& path() const { return staging_; }
-  /// Move the staged outputs to the final path. Throws std::runtime_error on failure.
+  /// Move the staged outputs to the final path, replacing an earlier result there (never a folder
+  /// that is not one: solver/output_location.hpp). Throws std::runtime_error on failure.
   void commit();
 
  private:

@@ -26,6 +26,30 @@ bool encloses(const fs::path& outer, const fs::path& inner) {
 
 }  // namespace
 
+bool replaceable_output_directory(const std::string& path) {
+  std::error_code ec;
+  const fs::path target = fs::absolute(path, ec);
+  if (ec || !fs::is_directory(target, ec)) return true;  // nothing there (a file is refused elsewhere)
+  if (fs::is_empty(target, ec) && !ec) return true;
+  return fs::is_regular_file(target / "summary.json", ec) || fs::is_regular_file(target / "comparison.csv", ec);
+}
+
+void check_config_output_directory(const std::string& path, const std::string& place) {
+  const auto refuse = [&](const std::string& why) {
+    throw InputError(place + ": output directory '" + path + "' " + why +
+                     ": a config writes only inside the working directory (give a relative path such as "
+                     "results/NAME, or choose the place with --output)");
+  };
+  const fs::path given(path);
+  if (given.is_absolute()) refuse("is an absolute path");
+  std::error_code ec;
+  const fs::path cwd = fs::weakly_canonical(fs::current_path(ec), ec);
+  if (ec) return;  // an unusable working directory is reported by check_output_directory
+  const fs::path target = fs::weakly_canonical(cwd / given, ec);
+  const fs::path rel = target.lexically_relative(cwd);
+  if (ec || rel.empty() || *rel.begin() == "..") refuse("leads outside the working directory");
+}
+
 void check_output_not_above(const std::string& path, const std::string& place,
                             const std::vector<std::string>& config_paths) {
   std::error_code ec;
@@ -54,6 +78,9 @@ void check_output_directory(const std::string& path, const std::string& place,
   const fs::path target = fs::absolute(path, ec);
   if (ec) fail("cannot be resolved: " + ec.message());
   if (fs::exists(target, ec) && !fs::is_directory(target, ec)) fail("exists and is not a directory");
+  if (!replaceable_output_directory(path))
+    fail("exists and is not an earlier result of iga-run (no summary.json or comparison.csv in it): the results "
+         "replace the directory as a whole and would delete its files; remove it or choose another");
   fs::path ancestor = target.parent_path();
   while (!ancestor.empty() && !fs::exists(ancestor, ec) && ancestor != ancestor.parent_path())
     ancestor = ancestor.parent_path();

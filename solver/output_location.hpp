@@ -11,11 +11,23 @@ namespace iga {
 
 /// Throw InputError "<place>: output directory '<path>' ..." unless `path` can become a results
 /// directory: it is a directory or does not exist, and its nearest existing ancestor is a directory
-/// in which a (probe) directory can be created. `place` names where the path came from
+/// in which a (probe) directory can be created, and what is there may be replaced
+/// (replaceable_output_directory). `place` names where the path came from
 /// ("--output", "case.yaml:7:14: output.directory", "the default output directory").
 /// Also refuses what check_output_not_above refuses for `config_paths`.
 void check_output_directory(const std::string& path, const std::string& place,
                             const std::vector<std::string>& config_paths = {});
+
+/// Whether results may replace what is at `path`: nothing, an empty folder, or an earlier result of
+/// iga-run (a folder holding summary.json or comparison.csv). Anything else is somebody's folder,
+/// and replacing it as a whole would delete their files.
+bool replaceable_output_directory(const std::string& path);
+
+/// Throw InputError "<place>: output directory '<path>' ..." unless `path`, taken from a config's
+/// `output.directory`, is a relative path that stays inside the working directory (links of its
+/// existing part resolved). A config comes from other people and writes only below the folder the
+/// user runs in; the command line's --output is the user's own and may go anywhere.
+void check_config_output_directory(const std::string& path, const std::string& place);
 
 /// Throw InputError "<place>: output directory '<path>' is the working directory ..." (or "holds
 /// the config FILE") when `path` is the working directory, the folder of one of `config_paths`, or

@@ -90,6 +90,8 @@ StudySettings parse_study(const ConfigNode& root, const std::string& config_path
   if (!output_override.empty()) {
     s.output_dir = output_override;
     output_place = "--output";
+  } else if (output_place != "the default output directory") {
+    check_config_output_directory(s.output_dir, output_place);
   }
   check_output_directory(s.output_dir, output_place, {config_path});
   // Domain, space and boundary part names are validated on the coarsest space (cheap), so that

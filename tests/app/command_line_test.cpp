@@ -23,6 +23,7 @@ namespace {
 
 using iga::test::RunResult;
 using iga::test::run_iga;
+using iga::test::run_iga_in;
 using iga::test::slurp;
 using iga::test::write_config;
 
@@ -48,8 +49,8 @@ TEST(CommandLine, HelpShowsTheCommands) {
 
 TEST(CommandLine, CheckValidatesWithoutWriting) {
   const fs::path out = iga::test::scratch_folder() / "check-out";
-  const fs::path good = write_config("check-good.yaml", std::string(kGood) + "output: {directory: " + out.string() + "}\n");
-  RunResult r = run_iga("check " + good.string());
+  const fs::path good = write_config("check-good.yaml", std::string(kGood) + "output: {directory: check-out}\n");
+  RunResult r = run_iga_in(iga::test::scratch_folder(), "check " + good.string());
   EXPECT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.out.find(": ok (bspline-p2; poisson, 2 levels)"), std::string::npos) << r.out;
   EXPECT_FALSE(fs::exists(out));

@@ -28,6 +28,7 @@ namespace {
 
 using iga::test::RunResult;
 using iga::test::run_iga;
+using iga::test::run_iga_in;
 using iga::test::slurp;
 using iga::test::write_config;
 
@@ -178,13 +179,14 @@ INSTANTIATE_TEST_SUITE_P(EndToEnd, ShippedConfig, ::testing::ValuesIn(shipped_co
                          });
 
 TEST(EndToEnd, GoodConfigWritesToConfiguredDirectory) {
+  // A config's output.directory is relative to the working directory (and stays inside it).
   const fs::path out = scratch_dir() / "good-out";
-  const fs::path cfg = write_config("good.yaml", std::string(kGood) + "output: {directory: " + out.string() + "}\n");
-  const RunResult r = run_iga(cfg.string() + " --quiet");
+  const fs::path cfg = write_config("good.yaml", std::string(kGood) + "output: {directory: good-out}\n");
+  const RunResult r = run_iga_in(scratch_dir(), cfg.string() + " --quiet");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_TRUE(fs::exists(out / "convergence.csv"));
   // A second run replaces the results in place.
-  ASSERT_EQ(run_iga(cfg.string() + " --quiet --levels 1").exit_code, 0);
+  ASSERT_EQ(run_iga_in(scratch_dir(), cfg.string() + " --quiet --levels 1").exit_code, 0);
   const std::string csv = slurp(out / "convergence.csv");
   EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 2);
 }

@@ -8,6 +8,7 @@
 #include <unistd.h>
 
 #include <filesystem>
+#include <fstream>
 #include <string>
 
 #include "config/errors.hpp"
@@ -74,6 +75,61 @@ TEST(OutputLocation, SymbolicLinksAreResolved) {
   // A config reached through a link: its real folder counts.
   EXPECT_NE(refusal(run, "configs", {"to_configs/a.yaml"}).find("is the folder of the config"), std::string::npos);
   EXPECT_EQ(refusal(run, "to_configs/results", {"configs/a.yaml"}), "");
+}
+
+/// The message of check_config_output_directory for `path`, run from `cwd`, or "" when it passes.
+std::string config_refusal(const fs::path& cwd, const std::string& path) {
+  const fs::path before = fs::current_path();
+  fs::current_path(cwd);
+  std::string message;
+  try {
+    check_config_output_directory(path, "c.yaml:9:22: output.directory");
+  } catch (const InputError& e) {
+    message = e.what();
+  }
+  fs::current_path(before);
+  return message;
+}
+
+TEST(OutputLocation, AConfigWritesOnlyInsideTheWorkingDirectory) {
+  const fs::path run = test::scratch_folder() / "run4";
+  fs::create_directories(run / "sub");
+  fs::remove(run / "out_link");
+  fs::remove(run / "in_link");
+  fs::create_directory_symlink(run.parent_path(), run / "out_link");
+  fs::create_directory_symlink(run / "sub", run / "in_link");
+  EXPECT_EQ(config_refusal(run, "/tmp/results"),
+            "c.yaml:9:22: output.directory: output directory '/tmp/results' is an absolute path: a config writes "
+            "only inside the working directory (give a relative path such as results/NAME, or choose the place with "
+            "--output)");
+  for (const char* path : {"../results", "results/../../x", "sub/../../x", "out_link/results", "out_link"})
+    EXPECT_NE(config_refusal(run, path).find("' leads outside the working directory"), std::string::npos) << path;
+  for (const char* path : {"results", "results/a/b", "sub/../results", "in_link/results", "./results"})
+    EXPECT_EQ(config_refusal(run, path), "") << path;
+}
+
+TEST(OutputLocation, OnlyEmptyFoldersAndEarlierResultsAreReplaced) {
+  const fs::path run = test::scratch_folder() / "run5";
+  fs::remove_all(run);
+  fs::create_directories(run / "empty");
+  fs::create_directories(run / "theirs");
+  std::ofstream(run / "theirs" / "thesis.tex") << "x";
+  fs::create_directories(run / "study");
+  std::ofstream(run / "study" / "summary.json") << "{}";
+  fs::create_directories(run / "comparison");
+  std::ofstream(run / "comparison" / "comparison.csv") << "";
+  EXPECT_TRUE(replaceable_output_directory((run / "missing").string()));
+  EXPECT_TRUE(replaceable_output_directory((run / "empty").string()));
+  EXPECT_TRUE(replaceable_output_directory((run / "study").string()));
+  EXPECT_TRUE(replaceable_output_directory((run / "comparison").string()));
+  EXPECT_FALSE(replaceable_output_directory((run / "theirs").string()));
+  try {
+    check_output_directory((run / "theirs").string(), "--output");
+    ADD_FAILURE() << "a folder that is not a result was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("exists and is not an earlier result of iga-run"), std::string::npos) << e.what();
+  }
+  EXPECT_TRUE(fs::exists(run / "theirs" / "thesis.tex"));
 }
 
 }  // namespace

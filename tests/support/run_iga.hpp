@@ -26,13 +26,18 @@ inline std::string slurp(const std::filesystem::path& p) {
   return s.str();
 }
 
-/// `iga-run ARGS`, through the shell (ARGS may hold redirections or quotes).
-inline RunResult run_iga(const std::string& args) {
+/// `iga-run ARGS` run from the folder `cwd` (the test's own when empty), through the shell (ARGS
+/// may hold redirections or quotes). A config's relative output.directory is below `cwd`.
+inline RunResult run_iga_in(const std::filesystem::path& cwd, const std::string& args) {
   const std::filesystem::path out = scratch_folder() / "stdout.txt", err = scratch_folder() / "stderr.txt";
-  const std::string cmd = std::string(IGA_RUN_BINARY) + " " + args + " > " + out.string() + " 2> " + err.string();
+  const std::string cd = cwd.empty() ? "" : "cd '" + cwd.string() + "' && ";
+  const std::string cmd = cd + std::string(IGA_RUN_BINARY) + " " + args + " > " + out.string() + " 2> " + err.string();
   const int status = std::system(cmd.c_str());
   return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(out), slurp(err)};
 }
+
+/// `iga-run ARGS` from the test's working directory.
+inline RunResult run_iga(const std::string& args) { return run_iga_in({}, args); }
 
 inline std::filesystem::path write_config(const std::string& name, const std::string& text) {
   const std::filesystem::path p = scratch_folder() / name;
