@@ -95,11 +95,16 @@ class ElementSubsetView final : public Space {
 };
 
 /// VTK's MPI controller on the world communicator PETSc runs on, initialised once (MPI itself was
-/// initialised by PETSc). Never destroyed: its destructor would call MPI after PETSc finalised it.
+/// initialised by PETSc). Released just before PETSc finalises MPI: Finalize(1) frees the
+/// communicators VTK duplicated without finalising MPI, which stays PETSc's.
 vtkMPIController* vtk_controller() {
   static vtkMPIController* controller = [] {
     vtkMPIController* c = vtkMPIController::New();
     c->Initialize(nullptr, nullptr, 1);
+    before_mpi_finalize([c] {
+      c->Finalize(1);
+      c->Delete();
+    });
     return c;
   }();
   return controller;

@@ -14,6 +14,11 @@
 
 namespace iga {
 
+/// The most Krylov iterations a config may ask for (`solver.max_iterations`, `-ksp_max_it`): a
+/// solve that needs more does not converge in any useful sense, and a config must not make a run
+/// that hangs for hours.
+inline constexpr int kMaxIterations = 100000;
+
 /// One option of `solver.options`: its name as written ("-ksp_rtol") and its value, if any.
 struct PetscOption {
   std::string name;

@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <iostream>
 #include <stdexcept>
+#include <vector>
 
 #include "config/errors.hpp"
 
@@ -161,6 +162,21 @@ PetscSession::PetscSession(int& argc, char** argv) {
   argv[argc] = nullptr;
 }
 
+namespace {
+std::vector<std::function<void()>> releases_before_finalize;
+
+void finalize_petsc() {
+  while (!releases_before_finalize.empty()) {
+    const std::function<void()> release = std::move(releases_before_finalize.back());
+    releases_before_finalize.pop_back();
+    release();
+  }
+  PetscFinalize();
+}
+}  // namespace
+
+void before_mpi_finalize(std::function<void()> release) { releases_before_finalize.push_back(std::move(release)); }
+
 PetscSession::~PetscSession() {
   if (!petsc_up()) {
     if (pending.words.size() > 1)
@@ -168,7 +184,7 @@ PetscSession::~PetscSession() {
     return;
   }
   report_unused_options();
-  PetscFinalize();
+  finalize_petsc();
 }
 
 int mpi_rank() {
@@ -239,7 +255,7 @@ int end_ranks_after_failure(int code) {
 void ensure_petsc_initialised() {
   if (petsc_up()) return;
   initialise_with_pending_arguments();
-  if (!pending.session) std::atexit([] { PetscFinalize(); });  // a program without a session (tests)
+  if (!pending.session) std::atexit(finalize_petsc);  // a program without a session (tests)
 }
 
 #else  // without PETSc: one rank, nothing to initialise
@@ -253,6 +269,7 @@ std::string broadcast_from_root(const std::string& text) { return text; }
 bool failure_shared_by_all_ranks() { return false; }
 int end_ranks_after_failure(int code) { return code; }
 void ensure_petsc_initialised() {}
+void before_mpi_finalize(std::function<void()>) {}
 
 #endif
 

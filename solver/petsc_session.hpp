@@ -54,6 +54,11 @@ bool failure_shared_by_all_ranks();
 /// ended with `code` (MPI_Abort, mpirun's exit code).
 int end_ranks_after_failure(int code);
 
+/// Run `release` just before PETSc finalises MPI, last registered first: objects of other libraries
+/// that hold MPI resources (VTK's controller and its duplicated communicator) must give them back
+/// while MPI still runs. Without PETSc, MPI never runs and `release` is never called.
+void before_mpi_finalize(std::function<void()> release);
+
 /// Make sure PETSc is initialised: with the session's PETSc options, or without options in programs
 /// that created no session (tests calling the library; finalised at exit then).
 void ensure_petsc_initialised();

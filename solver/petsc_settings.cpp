@@ -50,7 +50,8 @@ void parse_solver_settings(const ConfigNode& node, Pde pde, SolverKind& kind, Pe
   }
   if (auto it = node.find("max_iterations")) {
     petsc.max_iterations = it->as_int();
-    if (petsc.max_iterations < 1) it->fail("max_iterations must be positive");
+    if (petsc.max_iterations < 1 || petsc.max_iterations > kMaxIterations)
+      it->fail("max_iterations must be between 1 and " + std::to_string(kMaxIterations));
   }
   if (auto options = node.find("options")) {
     petsc.options = options->as_string();
