@@ -5,6 +5,7 @@
 #include <charconv>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <set>
 #include <string_view>
 
@@ -32,15 +33,24 @@ enum class Kind {
 struct Rule {
   std::string_view name;  ///< lower case, without the leading '-'
   Kind kind;
-  double lo = -kInf, hi = kInf;
+  double lo = -kInf, hi = kInf;  ///< for reals and integers: each number's range
   std::vector<std::string_view> choices = {};
   bool prefixable = false;  ///< a KSP or PC option: also with sub_, mg_levels_, mg_coarse_
+  /// The upper bound with a prefix: an inner solve runs once per outer iteration (or per block,
+  /// per smoothing step), so its iteration count multiplies the work of the whole solve.
+  double inner_hi = kInf;
 };
 
 const std::vector<std::string_view> kPrefixes = {"sub_", "mg_levels_", "mg_coarse_"};
 
-/// Upper bounds keep sizes PETSc allocates from (Krylov bases, fill levels, MUMPS workspace)
-/// within reason; the address-space limit of the program is the backstop.
+/// The memory estimate that guards a run (solver/resource_checks.cpp) knows the config's `pc:` key
+/// only, and nothing else limits what a solve may allocate (no address-space limit on the program).
+/// So the options must not turn an iterative preconditioner into a factorization or into one
+/// whose memory grows with a value: no factorization types (a factorization is chosen with `pc:`),
+/// no multigrid level counts (one level makes the coarse solve a factorization of the whole
+/// matrix; hypre's is dense), and small bounds on the sizes PETSc allocates from (Krylov bases,
+/// fill, block counts, coarse grid sizes, MUMPS workspace) and on the counts that multiply the
+/// work of every iteration (sweeps, inner iterations, cycles).
 const std::vector<Rule>& rules() {
   static const std::vector<Rule> list = [] {
     const std::vector<std::string_view> hypre_relax = {
@@ -56,22 +66,23 @@ const std::vector<Rule>& rules() {
         {"ksp_rtol", Kind::real, 0, 1, {}, true},
         {"ksp_atol", Kind::real, 0, kInf, {}, true},
         {"ksp_divtol", Kind::real, 0, kInf, {}, true},
-        {"ksp_max_it", Kind::integer, 0, kMaxIterations, {}, true},
-        {"ksp_min_it", Kind::integer, 0, kMaxIterations, {}, true},
+        {"ksp_max_it", Kind::integer, 0, kMaxIterations, {}, true, 100},
+        {"ksp_min_it", Kind::integer, 0, kMaxIterations, {}, true, 100},
         {"ksp_norm_type", Kind::choice, 0, 0, {"none", "preconditioned", "unpreconditioned", "natural"}, true},
-        {"ksp_pc_side", Kind::choice, 0, 0, {"left", "right", "symmetric"}, true},
+        // No symmetric side: few pairs support it, and PETSc crashes on some (gmres + eisenstat).
+        {"ksp_pc_side", Kind::choice, 0, 0, {"left", "right"}, true},
         {"ksp_initial_guess_nonzero", Kind::boolean, 0, 0, {}, true},
-        {"ksp_gmres_restart", Kind::integer, 1, 1000, {}, true},
+        {"ksp_gmres_restart", Kind::integer, 1, 200, {}, true},
         {"ksp_gmres_modifiedgramschmidt", Kind::boolean, 0, 0, {}, true},
         {"ksp_gmres_classicalgramschmidt", Kind::boolean, 0, 0, {}, true},
         {"ksp_gmres_cgs_refinement_type", Kind::choice, 0, 0, {"refine_never", "refine_ifneeded", "refine_always"}, true},
-        {"ksp_lgmres_augment", Kind::integer, 0, 100, {}, true},
+        {"ksp_lgmres_augment", Kind::integer, 0, 30, {}, true},
         {"ksp_bcgsl_ell", Kind::integer, 1, 20, {}, true},
         {"ksp_richardson_scale", Kind::real, -kInf, kInf, {}, true},
         {"ksp_richardson_self_scale", Kind::boolean, 0, 0, {}, true},
-        {"ksp_chebyshev_eigenvalues", Kind::reals, 0, 0, {}, true},
-        {"ksp_chebyshev_esteig", Kind::reals, 0, 0, {}, true},
-        {"ksp_chebyshev_esteig_steps", Kind::integer, 1, 1000, {}, true},
+        {"ksp_chebyshev_eigenvalues", Kind::reals, -kInf, kInf, {}, true},
+        {"ksp_chebyshev_esteig", Kind::reals, -kInf, kInf, {}, true},
+        {"ksp_chebyshev_esteig_steps", Kind::integer, 1, 100, {}, true},
         {"ksp_diagonal_scale", Kind::boolean, 0, 0, {}, true},
         {"ksp_diagonal_scale_fix", Kind::boolean, 0, 0, {}, true},
         // monitors and views: standard output only
@@ -86,15 +97,16 @@ const std::vector<Rule>& rules() {
         {"ksp_converged_rate", Kind::viewer, 0, 0, {}, true},
         {"ksp_view", Kind::viewer, 0, 0, {}, true},
         {"ksp_view_pre", Kind::viewer, 0, 0, {}, true},
-        // preconditioner
+        // preconditioner: no lu, cholesky or icc, also not for blocks or the coarse solve (above)
         {"pc_type", Kind::choice, 0, 0,
-         {"none", "jacobi", "pbjacobi", "bjacobi", "asm", "sor", "eisenstat", "ilu", "icc", "lu", "cholesky", "gamg",
-          "hypre"},
-         true},
+         {"none", "jacobi", "pbjacobi", "bjacobi", "asm", "sor", "eisenstat", "ilu", "gamg", "hypre"}, true},
         {"pc_factor_mat_solver_type", Kind::choice, 0, 0, {"petsc", "mumps"}, true},
-        {"pc_factor_levels", Kind::integer, 0, 20, {}, true},
-        {"pc_factor_fill", Kind::real, 1, 100, {}, true},
-        {"pc_factor_mat_ordering_type", Kind::choice, 0, 0, {"natural", "nd", "1wd", "rcm", "qmd", "rowlength"}, true},
+        // ILU(k) keeps about as much memory as the matrix for small k only.
+        {"pc_factor_levels", Kind::integer, 0, 3, {}, true},
+        {"pc_factor_fill", Kind::real, 1, 10, {}, true},
+        // The fill-reducing orderings only: a banded one (natural, rcm, ...) gives the factor of
+        // `pc: cholesky` far more fill than the memory estimate assumes.
+        {"pc_factor_mat_ordering_type", Kind::choice, 0, 0, {"nd", "qmd"}, true},
         {"pc_factor_shift_type", Kind::choice, 0, 0, {"none", "nonzero", "positive_definite", "inblocks"}, true},
         {"pc_factor_shift_amount", Kind::real, 0, kInf, {}, true},
         {"pc_factor_zeropivot", Kind::real, 0, kInf, {}, true},
@@ -102,19 +114,20 @@ const std::vector<Rule>& rules() {
         {"pc_factor_reuse_ordering", Kind::boolean, 0, 0, {}, true},
         {"pc_factor_reuse_fill", Kind::boolean, 0, 0, {}, true},
         {"pc_factor_pivot_in_blocks", Kind::boolean, 0, 0, {}, true},
-        {"pc_factor_in_place", Kind::boolean, 0, 0, {}, true},
         {"pc_jacobi_type", Kind::choice, 0, 0, {"diagonal", "rowmax", "rowsum"}, true},
         {"pc_jacobi_abs", Kind::boolean, 0, 0, {}, true},
         {"pc_jacobi_fixdiagonal", Kind::boolean, 0, 0, {}, true},
-        {"pc_bjacobi_blocks", Kind::integer, 1, 1e6, {}, true},
-        {"pc_bjacobi_local_blocks", Kind::integer, 1, 1e6, {}, true},
-        {"pc_asm_overlap", Kind::integer, 0, 100, {}, true},
+        // Every block is a matrix, a KSP and a PC of its own (100000 blocks of 25 unknowns took 3 GB);
+        // each overlap layer widens every block by a stencil.
+        {"pc_bjacobi_blocks", Kind::integer, 1, 1024, {}, true},
+        {"pc_bjacobi_local_blocks", Kind::integer, 1, 1024, {}, true},
+        {"pc_asm_overlap", Kind::integer, 0, 2, {}, true},
         {"pc_asm_type", Kind::choice, 0, 0, {"basic", "restrict", "interpolate", "none"}, true},
         {"pc_asm_local_type", Kind::choice, 0, 0, {"additive", "multiplicative"}, true},
-        {"pc_asm_blocks", Kind::integer, 1, 1e6, {}, true},
+        {"pc_asm_blocks", Kind::integer, 1, 1024, {}, true},
         {"pc_sor_omega", Kind::real, 0, 2, {}, true},
-        {"pc_sor_its", Kind::integer, 1, 1000, {}, true},
-        {"pc_sor_lits", Kind::integer, 1, 1000, {}, true},
+        {"pc_sor_its", Kind::integer, 1, 20, {}, true},
+        {"pc_sor_lits", Kind::integer, 1, 20, {}, true},
         {"pc_sor_symmetric", Kind::boolean, 0, 0, {}, true},
         {"pc_sor_forward", Kind::boolean, 0, 0, {}, true},
         {"pc_sor_backward", Kind::boolean, 0, 0, {}, true},
@@ -122,20 +135,23 @@ const std::vector<Rule>& rules() {
         {"pc_sor_local_forward", Kind::boolean, 0, 0, {}, true},
         {"pc_sor_local_backward", Kind::boolean, 0, 0, {}, true},
         {"pc_sor_diagonal_shift", Kind::real, -kInf, kInf, {}, true},
-        // multigrid (GAMG is PETSc's multigrid with algebraic coarse spaces)
-        {"pc_mg_levels", Kind::integer, 1, 30},
+        // multigrid (GAMG is PETSc's multigrid with algebraic coarse spaces); the coarse solve is a
+        // factorization, so the levels are GAMG's choice and the coarse size is small
+        // (no -pc_mg_levels: one level would factor the whole matrix).
         {"pc_mg_cycle_type", Kind::choice, 0, 0, {"v", "w"}},
         {"pc_mg_type", Kind::choice, 0, 0, {"multiplicative", "additive", "full", "kaskade"}},
         {"pc_mg_galerkin", Kind::choice, 0, 0, {"both", "pmat", "mat", "none", "external"}},
-        {"pc_mg_multiplicative_cycles", Kind::integer, 1, 100},
+        {"pc_mg_multiplicative_cycles", Kind::integer, 1, 10},
         {"pc_mg_distinct_smoothup", Kind::boolean},
         {"pc_gamg_type", Kind::choice, 0, 0, {"agg", "geo", "classical"}},
-        {"pc_gamg_agg_nsmooths", Kind::integer, 0, 10},
-        {"pc_gamg_threshold", Kind::reals},
-        {"pc_gamg_threshold_scale", Kind::real, 0, kInf},
-        {"pc_gamg_square_graph", Kind::integer, 0, 100},
-        {"pc_gamg_aggressive_coarsening", Kind::integer, 0, 100},
-        {"pc_gamg_coarse_eq_limit", Kind::integer, 1, 1e9},
+        {"pc_gamg_agg_nsmooths", Kind::integer, 0, 2},  // each smoothing widens the interpolation
+        // A high threshold drops the couplings aggregation needs: coarsening stalls and the coarse
+        // factorization gets the size of the matrix.
+        {"pc_gamg_threshold", Kind::reals, -1, 0.1},
+        {"pc_gamg_threshold_scale", Kind::real, 0, 1},
+        {"pc_gamg_square_graph", Kind::integer, 0, 2},  // a squared graph has far more entries
+        {"pc_gamg_aggressive_coarsening", Kind::integer, 0, 2},
+        {"pc_gamg_coarse_eq_limit", Kind::integer, 1, 10000},
         {"pc_gamg_process_eq_limit", Kind::integer, 1, 1e9},
         {"pc_gamg_repartition", Kind::boolean},
         {"pc_gamg_reuse_interpolation", Kind::boolean},
@@ -147,10 +163,13 @@ const std::vector<Rule>& rules() {
         {"pc_gamg_eigenvalues", Kind::reals},
         {"pc_gamg_rank_reduction_factors", Kind::integers, 1, 1e6},
         // hypre: BoomerAMG only. Euclid (also as a BoomerAMG smoother) reads a file ./database.
+        // Its coarsest level is solved by dense Gaussian elimination: no -max_levels, a small
+        // coarse size. The options for systems of PDEs (nodal coarsening, number of functions,
+        // vector interpolation) are left out: our problems are scalar, and hypre crashes on a
+        // matrix whose size is no multiple of the number of functions.
         {"pc_hypre_type", Kind::choice, 0, 0, {"boomeramg"}},
         {"pc_hypre_boomeramg_strong_threshold", Kind::real, 0, 1},
-        {"pc_hypre_boomeramg_max_levels", Kind::integer, 2, 100},
-        {"pc_hypre_boomeramg_max_iter", Kind::integer, 1, 1000},
+        {"pc_hypre_boomeramg_max_iter", Kind::integer, 1, 10},
         {"pc_hypre_boomeramg_tol", Kind::real, 0, kInf},
         {"pc_hypre_boomeramg_truncfactor", Kind::real, 0, 1},
         {"pc_hypre_boomeramg_p_max", Kind::integer, 0, 1000},
@@ -166,21 +185,18 @@ const std::vector<Rule>& rules() {
         {"pc_hypre_boomeramg_relax_type_down", Kind::choice, 0, 0, hypre_relax},
         {"pc_hypre_boomeramg_relax_type_up", Kind::choice, 0, 0, hypre_relax},
         {"pc_hypre_boomeramg_relax_type_coarse", Kind::choice, 0, 0, hypre_relax},
-        {"pc_hypre_boomeramg_grid_sweeps_all", Kind::integer, 1, 100},
-        {"pc_hypre_boomeramg_grid_sweeps_down", Kind::integer, 1, 100},
-        {"pc_hypre_boomeramg_grid_sweeps_up", Kind::integer, 1, 100},
-        {"pc_hypre_boomeramg_grid_sweeps_coarse", Kind::integer, 1, 100},
+        {"pc_hypre_boomeramg_grid_sweeps_all", Kind::integer, 1, 20},
+        {"pc_hypre_boomeramg_grid_sweeps_down", Kind::integer, 1, 20},
+        {"pc_hypre_boomeramg_grid_sweeps_up", Kind::integer, 1, 20},
+        {"pc_hypre_boomeramg_grid_sweeps_coarse", Kind::integer, 1, 20},
         {"pc_hypre_boomeramg_relax_weight_all", Kind::real},
         {"pc_hypre_boomeramg_outer_relax_weight_all", Kind::real},
         {"pc_hypre_boomeramg_measure_type", Kind::choice, 0, 0, {"local", "global"}},
         {"pc_hypre_boomeramg_smooth_type", Kind::choice, 0, 0, {"Schwarz-smoothers", "Pilut", "ParaSails"}},
-        {"pc_hypre_boomeramg_smooth_num_levels", Kind::integer, 0, 100},
+        {"pc_hypre_boomeramg_smooth_num_levels", Kind::integer, 0, 25},
         {"pc_hypre_boomeramg_cycle_type", Kind::choice, 0, 0, {"V", "W"}},
-        {"pc_hypre_boomeramg_max_coarse_size", Kind::integer, 1, 1e9},
-        {"pc_hypre_boomeramg_min_coarse_size", Kind::integer, 1, 1e9},
-        {"pc_hypre_boomeramg_nodal_coarsen", Kind::integer, 0, 6},
-        {"pc_hypre_boomeramg_vec_interp_variant", Kind::integer, 0, 3},
-        {"pc_hypre_boomeramg_numfunctions", Kind::integer, 1, 100},
+        {"pc_hypre_boomeramg_max_coarse_size", Kind::integer, 1, 1000},
+        {"pc_hypre_boomeramg_min_coarse_size", Kind::integer, 1, 1000},
         {"pc_hypre_boomeramg_no_cf", Kind::boolean},
         {"pc_hypre_boomeramg_keeptranspose", Kind::boolean},
         {"pc_hypre_boomeramg_restriction_type", Kind::integer, 0, 2},
@@ -190,11 +206,18 @@ const std::vector<Rule>& rules() {
   return list;
 }
 
-/// MUMPS control parameters a config may set: ICNTL(1-3) are Fortran output units (a unit other
-/// than 6 writes a file fort.N), ICNTL(22) is out-of-core factorization into files, and the
-/// others PETSc sets itself (distribution, Schur complement, right-hand sides) are left out.
-const std::set<int> kMumpsIcntl = {4, 6, 7, 8, 10, 11, 12, 13, 14, 23, 24, 27, 28, 29, 35, 36, 37, 38};
-const std::set<int> kMumpsCntl = {1, 2, 3, 4, 5, 7};
+/// MUMPS control parameters a config may set, with their ranges. Left out: ICNTL(1-3), Fortran
+/// output units (a unit other than 6 writes a file fort.N); ICNTL(22), out-of-core factorization
+/// into files; ICNTL(23), the working memory MUMPS allocates; ICNTL(28-29), parallel analysis
+/// (it needs ParMETIS or PT-Scotch, which the installed MUMPS may lack); and those PETSc sets
+/// itself (distribution, Schur complement, right-hand sides). ICNTL(14), the percentage of extra
+/// workspace, is allocated from; each of the ICNTL(10) steps of iterative refinement is a solve.
+const std::map<int, std::pair<double, double>> kMumpsIcntl = {
+    {4, {0, 4}},   {6, {0, 7}},  {7, {0, 7}},  {8, {-2, 77}}, {10, {-10, 10}}, {11, {0, 2}},    {12, {0, 3}},
+    {13, {-1, 1}}, {14, {0, 100}}, {24, {0, 1}}, {27, {-512, 512}}, {35, {0, 3}}, {36, {0, 1}}, {37, {0, 1}},
+    {38, {0, 1000}}};
+const std::map<int, std::pair<double, double>> kMumpsCntl = {{1, {0, 1}}, {2, {0, 1}}, {3, {-1e6, 1e6}},
+                                                             {4, {-1, 1e6}}, {5, {0, 1e6}}, {7, {0, 1}}};
 
 std::string lower(std::string_view s) {
   std::string out(s);
@@ -215,8 +238,11 @@ std::optional<Rule> find_rule(const std::string& name) {
   for (std::string_view prefix : kPrefixes)
     if (name.compare(0, prefix.size(), prefix) == 0) {
       const std::string rest = name.substr(prefix.size());
-      for (const Rule& r : rules())
-        if (r.prefixable && r.name == rest) return r;
+      for (Rule r : rules())
+        if (r.prefixable && r.name == rest) {
+          r.hi = std::min(r.hi, r.inner_hi);
+          return r;
+        }
     }
   for (const auto& [family, allowed, kind] :
        {std::tuple{std::string_view("mat_mumps_icntl_"), &kMumpsIcntl, Kind::integer},
@@ -226,8 +252,9 @@ std::optional<Rule> find_rule(const std::string& name) {
     if (digits.empty() || digits.size() > 2 || digits[0] == '0' ||
         !std::all_of(digits.begin(), digits.end(), [](char c) { return std::isdigit(static_cast<unsigned char>(c)); }))
       return std::nullopt;
-    if (!allowed->count(std::stoi(digits))) return std::nullopt;
-    return Rule{"", kind, kind == Kind::integer ? -1e6 : 0.0, 1e6};
+    const auto range = allowed->find(std::stoi(digits));
+    if (range == allowed->end()) return std::nullopt;
+    return Rule{"", kind, range->second.first, range->second.second};
   }
   return std::nullopt;
 }
@@ -276,7 +303,7 @@ std::string expected(const Rule& r) {
     case Kind::viewer: return "no value (it prints to standard output), or :stdout";
     case Kind::integer: return "an integer" + range_text(r);
     case Kind::real: return "a finite number" + range_text(r);
-    case Kind::reals: return "finite numbers separated by commas";
+    case Kind::reals: return "finite numbers" + range_text(r) + " separated by commas";
     case Kind::integers: return "integers" + range_text(r) + " separated by commas";
     case Kind::choice: {
       std::string text = "one of";
@@ -303,7 +330,7 @@ bool value_fits(const Rule& r, const std::optional<std::string>& value) {
     case Kind::reals: {
       if (!value) return false;
       const auto parts = split_commas(*value);
-      return std::all_of(parts.begin(), parts.end(), [&](std::string_view p) { return to_real(p).has_value(); });
+      return std::all_of(parts.begin(), parts.end(), [&](std::string_view p) { return in_range(to_real(p)); });
     }
     case Kind::integers: {
       if (!value) return false;

@@ -48,7 +48,8 @@ void check(PetscErrorCode code, const char* what) {
 }
 
 /// While alive, a PETSc error returns its code without PETSc printing its "[0]PETSC ERROR" banner:
-/// the calls made meanwhile fail on option values, which iga-run reports itself as input errors.
+/// the calls made meanwhile (setting up, solving, destroying) may fail on option values, and
+/// iga-run reports every failure itself, in one line with PETSc's message.
 class QuietPetscErrors {
  public:
   QuietPetscErrors() { PetscPushErrorHandler(PetscReturnErrorHandler, nullptr); }
@@ -59,12 +60,26 @@ class QuietPetscErrors {
 
 /// An error PETSc raised on the options: named at solver.options when the config gave some (the
 /// command line and PETSC_OPTIONS may have set the option instead; both are named).
+std::string options_place(const PetscSettings& s) {
+  return s.options.empty() ? std::string("PETSc options (command line or PETSC_OPTIONS)")
+                           : (s.options_where.empty() ? std::string("solver.options") : s.options_where) +
+                                 " (or the PETSc options of the command line or PETSC_OPTIONS)";
+}
+
 InputError options_error(const PetscSettings& s, const std::string& step, PetscErrorCode code) {
-  const std::string where = s.options.empty()
-                                ? std::string("PETSc options (command line or PETSC_OPTIONS)")
-                                : (s.options_where.empty() ? std::string("solver.options") : s.options_where) +
-                                      " (or the PETSc options of the command line or PETSC_OPTIONS)";
-  return InputError(where + ": " + step + ": " + petsc_message(code));
+  return InputError(options_place(s) + ": " + step + ": " + petsc_message(code));
+}
+
+/// KSPSolve without PETSc's banner. An error PETSc raises in the solve, when the config gave
+/// options, comes from them (the solver of the config's own keys has no such error): an input
+/// error naming solver.options. Without options it is iga-run's or PETSc's failure (exit 1).
+void solve_quietly(KSP ksp, Vec b, Vec x, const PetscSettings& s, const std::string& method) {
+  QuietPetscErrors quiet;
+  const PetscErrorCode code = KSPSolve(ksp, b, x);
+  if (code == 0) return;
+  if (code == PETSC_ERR_MEM) throw std::runtime_error("PETSc ran out of memory solving with " + method);
+  if (!s.options.empty()) throw options_error(s, "PETSc failed solving with " + method, code);
+  check(code, "KSPSolve");
 }
 
 BoundaryField boundary_field(const SymbolicFunction& f) {
@@ -113,6 +128,9 @@ struct PetscObjects {
   KSP ksp = nullptr;
   VecScatter to_all = nullptr;
   ~PetscObjects() {
+    // A destroy may raise an error too (hypre checks some options only then); it would print its
+    // banner while the error already on its way is reported. Destroying frees what it can anyway.
+    QuietPetscErrors quiet;
     VecScatterDestroy(&to_all);
     KSPDestroy(&ksp);
     VecDestroy(&all);
@@ -171,6 +189,31 @@ std::string describe(KSP ksp) {
   return text;
 }
 
+/// Why the preconditioner failed, the same on every rank (collective): PETSc's reason, worst over
+/// the ranks, and MUMPS's INFOG(1), INFOG(2) when MUMPS factored. Sets `zero_pivot` when the
+/// factorization met a zero pivot, a property of the matrix as much as of the options.
+std::string pc_failure(KSP ksp, bool& zero_pivot) {
+  QuietPetscErrors quiet;  // PCFactorGetMatrix refuses a PC that is no factorization
+  PC pc;
+  KSPGetPC(ksp, &pc);
+  PCFailedReason local = PC_NOERROR;
+  PCGetFailedReasonRank(pc, &local);
+  int worst = static_cast<int>(local);
+  MPI_Allreduce(MPI_IN_PLACE, &worst, 1, MPI_INT, MPI_MAX, PetscObjectComm(reinterpret_cast<PetscObject>(ksp)));
+  const auto reason = static_cast<PCFailedReason>(worst);
+  zero_pivot = reason == PC_FACTOR_STRUCT_ZEROPIVOT || reason == PC_FACTOR_NUMERIC_ZEROPIVOT;
+  std::string text = reason == PC_NOERROR ? std::string("PC_FAILED") : std::string(PCFailedReasons[reason]);
+  MatSolverType solver = nullptr;
+  Mat factor = nullptr;
+  PetscInt infog1 = 0, infog2 = 0;
+  if (PCFactorGetMatSolverType(pc, &solver) == 0 && solver && std::string(solver) == MATSOLVERMUMPS &&
+      PCFactorGetMatrix(pc, &factor) == 0 && MatMumpsGetInfog(factor, 1, &infog1) == 0 &&
+      MatMumpsGetInfog(factor, 2, &infog2) == 0 && infog1 < 0)
+    text += "; MUMPS INFOG(1) = " + std::to_string(infog1) + ", INFOG(2) = " + std::to_string(infog2) +
+            (infog1 == -13 ? ", an allocation failed" : "");
+  return text;
+}
+
 /// "DIVERGED_ITS after 50 iterations; last residual norms 1.2e-3, 1.1e-3, 1.0e-3 (‖b‖ = 2.5)".
 std::string failure_text(KSP ksp, KSPConvergedReason reason, double bnorm) {
   PetscInt its = 0, n = 0;
@@ -192,7 +235,7 @@ std::string failure_text(KSP ksp, KSPConvergedReason reason, double bnorm) {
 /// corrections K⁻¹ r, r from the extended-precision residual, while each is smaller than the last;
 /// stop once one shrinks by less than 4x (round-off reached) or drops below ε ‖x‖. Returns the
 /// number of corrections applied. Collective.
-int refine_solution(PetscObjects& p, ExtendedResidual& residual) {
+int refine_solution(PetscObjects& p, ExtendedResidual& residual, const PetscSettings& s, const std::string& method) {
   Vec r = nullptr, d = nullptr;
   check(VecDuplicate(p.x, &r), "VecDuplicate");
   check(VecDuplicate(p.x, &d), "VecDuplicate");
@@ -210,7 +253,7 @@ int refine_solution(PetscObjects& p, ExtendedResidual& residual) {
     check(VecGetArray(r, &rv), "VecGetArray");
     std::copy(mine.begin(), mine.end(), rv);
     check(VecRestoreArray(r, &rv), "VecRestoreArray");
-    check(KSPSolve(p.ksp, r, d), "KSPSolve");
+    solve_quietly(p.ksp, r, d, s, method);
     KSPConvergedReason reason;
     check(KSPGetConvergedReason(p.ksp, &reason), "KSPGetConvergedReason");
     check(VecNorm(d, NORM_2, &size), "VecNorm");
@@ -406,7 +449,7 @@ DiscreteSolution solve_problem_petsc(const Space& space, const ProblemSpec& prob
   }
   out.solve.t_factorize = seconds_since(t0);
   const auto t1 = Clock::now();
-  check(KSPSolve(p.ksp, p.b, p.x), "KSPSolve");
+  solve_quietly(p.ksp, p.b, p.x, settings, method);
   out.solve.t_solve = seconds_since(t1);
   KSPConvergedReason reason;
   PetscInt its = 0;
@@ -414,11 +457,22 @@ DiscreteSolution solve_problem_petsc(const Space& space, const ProblemSpec& prob
   check(KSPGetIterationNumber(p.ksp, &its), "KSPGetIterationNumber");
   PetscReal bnorm = 0, rnorm = 0;
   check(VecNorm(p.b, NORM_2, &bnorm), "VecNorm");
+  if (reason == KSP_DIVERGED_PC_FAILED) {
+    // The config's own solver keys are sized by the memory check; options are not, and they can
+    // ask a factorization for what it cannot do (a workspace too large, parallel analysis that
+    // is not installed). So with options a failed preconditioner is theirs (exit 2); only a zero
+    // pivot may be the matrix's own (exit 1, naming the options as a possible cause).
+    bool zero_pivot = false;
+    const std::string why = "the preconditioner of PETSc " + method + " failed (" + pc_failure(p.ksp, zero_pivot) + ")";
+    if (settings.options.empty()) throw NumericalError(why + " (choose another solver.pc)");
+    if (zero_pivot) throw NumericalError(why + "; " + options_place(settings) + " may be the cause");
+    throw InputError(options_place(settings) + ": " + why + ", most likely because of these options");
+  }
   if (reason < 0)
     throw NumericalError("PETSc " + method + " did not converge: " + failure_text(p.ksp, reason, bnorm) +
                          " (raise solver.rtol or solver.max_iterations, or choose another solver.pc)");
   check(VecScatterCreateToAll(p.x, &p.to_all, &p.all), "VecScatterCreateToAll");
-  if (extended) out.solve.refinement_steps = refine_solution(p, *extended);
+  if (extended) out.solve.refinement_steps = refine_solution(p, *extended, settings, method);
   // The true residual ‖b − A x‖ / ‖b‖, whatever norm the KSP tested.
   Vec residual;
   check(VecDuplicate(p.b, &residual), "VecDuplicate");

@@ -92,11 +92,11 @@ std::string refusal(const std::string& options) {
 TEST(ConfigPetscOptions, SolverTuningOptionsPassWithTheirValues) {
   const std::vector<PetscOption> o = parse_config_petsc_options(
       "-ksp_type gmres -ksp_rtol 1e-8 -ksp_atol 0 -ksp_max_it 200 -ksp_gmres_restart 50 -pc_type gamg\n"
-      "\t-pc_gamg_threshold 0.02,0.01 -pc_gamg_agg_nsmooths 1 -pc_gamg_repartition true -pc_mg_levels 4 "
+      "\t-pc_gamg_threshold 0.02,0.01 -pc_gamg_agg_nsmooths 1 -pc_gamg_repartition true -pc_gamg_coarse_eq_limit 100 "
       "-pc_hypre_boomeramg_strong_threshold 0.5 -pc_hypre_boomeramg_coarsen_type hmis -mat_mumps_icntl_14 50 "
       "-mat_mumps_cntl_1 0.01 -ksp_monitor -ksp_converged_reason -ksp_view :stdout -ksp_monitor_true_residual "
       "ascii:stdout -ksp_initial_guess_nonzero -sub_pc_type ilu -sub_pc_factor_levels 1 -mg_levels_ksp_type "
-      "chebyshev -mg_levels_ksp_max_it 2 -mg_coarse_pc_type lu -KSP_Norm_Type unpreconditioned -ksp_richardson_scale -0.5");
+      "chebyshev -mg_levels_ksp_max_it 2 -mg_coarse_pc_type jacobi -KSP_Norm_Type unpreconditioned -ksp_richardson_scale -0.5");
   ASSERT_EQ(o.size(), 26u);
   EXPECT_EQ(o[0].name, "-ksp_type");
   EXPECT_EQ(o[0].value, "gmres");
@@ -163,8 +163,8 @@ TEST(ConfigPetscOptions, ValuesAreCheckedAgainstTheOptionsType) {
   expect("-pc_factor_mat_solver_type superlu_dist", "one of petsc, mumps");
   expect("-pc_hypre_type euclid", "-pc_hypre_type takes one of boomeramg, not 'euclid'");  // reads ./database
   expect("-pc_hypre_boomeramg_smooth_type Euclid", "not 'Euclid'");
-  expect("-ksp_gmres_restart 100000", "-ksp_gmres_restart takes an integer in [1, 1000]");
-  expect("-pc_gamg_threshold 0.1,abc", "-pc_gamg_threshold takes finite numbers separated by commas");
+  expect("-ksp_gmres_restart 100000", "-ksp_gmres_restart takes an integer in [1, 200]");
+  expect("-pc_gamg_threshold 0.1,abc", "-pc_gamg_threshold takes finite numbers in [-1, 0.1] separated by commas");
   expect("-pc_gamg_threshold 0.1,", "-pc_gamg_threshold takes finite numbers");
   expect("-ksp_initial_guess_nonzero maybe", "-ksp_initial_guess_nonzero takes no value or a boolean");
   expect("-mat_mumps_icntl_7 x", "-mat_mumps_icntl_7 takes an integer");
@@ -175,6 +175,76 @@ TEST(ConfigPetscOptions, ValuesAreCheckedAgainstTheOptionsType) {
   // Choices compare as PETSc compares them, without case.
   EXPECT_EQ(parse_config_petsc_options("-pc_type GAMG -pc_hypre_boomeramg_relax_type_all sor/jacobi").size(), 2u);
   EXPECT_EQ(parse_config_petsc_options("-ksp_initial_guess_nonzero FALSE -ksp_rtol +1e-3").size(), 2u);
+}
+
+TEST(ConfigPetscOptions, OptionsForSystemsOfPdesAreRefused) {
+  // hypre crashes (SIGSEGV) when the number of unknowns is no multiple of numfunctions.
+  for (const char* option : {"-pc_hypre_boomeramg_nodal_coarsen 1", "-pc_hypre_boomeramg_numfunctions 2",
+                             "-pc_hypre_boomeramg_vec_interp_variant 3"}) {
+    const std::string name = std::string(option).substr(0, std::string(option).find(' '));
+    EXPECT_NE(refusal(option).find(name + " is not an option a config may set"), std::string::npos) << refusal(option);
+  }
+}
+
+TEST(ConfigPetscOptions, OptionsCannotMakeAFactorizationOrGrowMemoryAndWorkWithAValue) {
+  // The memory check knows solver.pc only: no factorization by option, under any prefix.
+  for (const char* option : {"-pc_type lu", "-pc_type cholesky", "-pc_type icc", "-sub_pc_type lu",
+                             "-mg_coarse_pc_type cholesky", "-mg_levels_pc_type icc", "-PC_TYPE LU"}) {
+    const std::string msg = refusal(option);
+    EXPECT_NE(msg.find("takes one of none, jacobi, pbjacobi, bjacobi, asm, sor, eisenstat, ilu, gamg, hypre, not"),
+              std::string::npos)
+        << option << ": " << msg;
+  }
+  // Options that size an allocation or make a factorization out of multigrid, or break the
+  // matrix iga-run still needs (in-place factorization), or need libraries that may be missing.
+  for (const char* option : {"-mat_mumps_icntl_23 100000", "-mat_mumps_icntl_28 2", "-mat_mumps_icntl_29 2",
+                             "-pc_mg_levels 1", "-pc_hypre_boomeramg_max_levels 2", "-pc_factor_in_place",
+                             "-sub_pc_factor_in_place"}) {
+    const std::string name = std::string(option).substr(0, std::string(option).find(' '));
+    EXPECT_NE(refusal(option).find(name + " is not an option a config may set"), std::string::npos) << refusal(option);
+  }
+  const auto expect = [](const std::string& options, const std::string& text) {
+    const std::string msg = refusal(options);
+    EXPECT_NE(msg.find(text), std::string::npos) << options << ": " << msg;
+  };
+  expect("-pc_factor_levels 4", "-pc_factor_levels takes an integer in [0, 3], not '4'");
+  expect("-sub_pc_factor_levels 20", "-sub_pc_factor_levels takes an integer in [0, 3]");
+  expect("-pc_factor_fill 11", "-pc_factor_fill takes a finite number in [1, 10]");
+  expect("-sub_pc_factor_fill 100", "-sub_pc_factor_fill takes a finite number in [1, 10]");
+  expect("-pc_factor_mat_ordering_type natural", "-pc_factor_mat_ordering_type takes one of nd, qmd");
+  expect("-pc_asm_blocks 100000", "-pc_asm_blocks takes an integer in [1, 1024], not '100000'");
+  expect("-pc_bjacobi_blocks 1025", "-pc_bjacobi_blocks takes an integer in [1, 1024]");
+  expect("-pc_bjacobi_local_blocks 5000", "-pc_bjacobi_local_blocks takes an integer in [1, 1024]");
+  expect("-pc_asm_overlap 3", "-pc_asm_overlap takes an integer in [0, 2]");
+  expect("-ksp_gmres_restart 1000", "-ksp_gmres_restart takes an integer in [1, 200], not '1000'");
+  expect("-ksp_lgmres_augment 31", "-ksp_lgmres_augment takes an integer in [0, 30]");
+  expect("-mat_mumps_icntl_14 1000000", "-mat_mumps_icntl_14 takes an integer in [0, 100], not '1000000'");
+  expect("-mat_mumps_icntl_10 -1000000", "-mat_mumps_icntl_10 takes an integer in [-10, 10], not '-1000000'");
+  expect("-mat_mumps_icntl_10 11", "-mat_mumps_icntl_10 takes an integer in [-10, 10]");
+  expect("-mat_mumps_icntl_4 5", "-mat_mumps_icntl_4 takes an integer in [0, 4]");
+  expect("-mat_mumps_cntl_1 2", "-mat_mumps_cntl_1 takes a finite number in [0, 1]");
+  expect("-pc_gamg_coarse_eq_limit 1000000000", "-pc_gamg_coarse_eq_limit takes an integer in [1, 10000]");
+  expect("-pc_gamg_threshold 0.01,0.5", "-pc_gamg_threshold takes finite numbers in [-1, 0.1] separated by commas");
+  expect("-pc_gamg_agg_nsmooths 3", "-pc_gamg_agg_nsmooths takes an integer in [0, 2]");
+  expect("-pc_gamg_square_graph 100", "-pc_gamg_square_graph takes an integer in [0, 2]");
+  expect("-pc_hypre_boomeramg_max_coarse_size 1000000000", "takes an integer in [1, 1000]");
+  expect("-pc_hypre_boomeramg_min_coarse_size 1000000000", "takes an integer in [1, 1000]");
+  // Counts that multiply the work of every iteration.
+  expect("-pc_sor_its 21", "-pc_sor_its takes an integer in [1, 20]");
+  expect("-pc_sor_lits 1000", "-pc_sor_lits takes an integer in [1, 20]");
+  expect("-pc_hypre_boomeramg_max_iter 11", "takes an integer in [1, 10]");
+  expect("-pc_hypre_boomeramg_grid_sweeps_all 21", "takes an integer in [1, 20]");
+  expect("-pc_mg_multiplicative_cycles 11", "takes an integer in [1, 10]");
+  expect("-mg_levels_ksp_max_it 101", "-mg_levels_ksp_max_it takes an integer in [0, 100]");
+  expect("-sub_ksp_max_it 100000", "-sub_ksp_max_it takes an integer in [0, 100]");
+  expect("-ksp_pc_side symmetric", "-ksp_pc_side takes one of left, right");  // gmres + eisenstat crashes
+  // The bounds themselves pass; the outer solve keeps the full iteration limit.
+  EXPECT_EQ(parse_config_petsc_options("-sub_pc_type ilu -sub_pc_factor_levels 3 -sub_pc_factor_fill 10 "
+                                       "-pc_asm_blocks 1024 -ksp_gmres_restart 200 -mat_mumps_icntl_14 100 "
+                                       "-mat_mumps_icntl_10 -10 -mg_levels_ksp_max_it 100 -ksp_max_it 100000 "
+                                       "-ksp_chebyshev_eigenvalues 0.1,2.5")
+                .size(),
+            10u);
 }
 
 TEST(ConfigPetscOptions, ConfigErrorsNameTheFilePlaceAndTheOption) {
