@@ -237,12 +237,12 @@ TEST(TwoRanksFailures, AConfigOptionThatWritesAFileIsRefusedOnEveryRankBeforeAny
 
 TEST(TwoRanksFailures, AnOptionPetscRefusesWhenSettingUpIsAnInputErrorWithoutPetscsBanner) {
   if (!iga::petsc_available()) GTEST_SKIP() << "built without PETSc";
-  // Allowed, but PETSc's incomplete Cholesky is sequential: PETSc finds out when it sets it up.
-  const fs::path cfg = config_with_solver("bspline-poisson", "{type: petsc, options: \"-pc_type icc\"}", "icc");
+  // Allowed, but PETSc's own ILU is sequential: PETSc finds out when it sets it up.
+  const fs::path cfg = config_with_solver("bspline-poisson", "{type: petsc, options: \"-pc_type ilu\"}", "ilu");
   const RunResult r = run(2, cfg.string() + " --quiet --levels 1 --output " + (iga::test::scratch_folder() / "i").string());
   EXPECT_EQ(r.exit_code, 2) << r.err;
   EXPECT_NE(r.err.find("solver.options"), std::string::npos) << r.err;
-  EXPECT_NE(r.err.find("PETSc could not set up cg + icc: Could not locate a solver type for factorization type ICC"),
+  EXPECT_NE(r.err.find("PETSc could not set up cg + ilu: Could not locate a solver type for factorization type ILU"),
             std::string::npos)
       << r.err;
   EXPECT_EQ(r.err.find("PETSC ERROR"), std::string::npos) << r.err;
