@@ -130,10 +130,10 @@ bool has_wide_byte_order_mark(const std::string& text) {
 }  // namespace
 
 ConfigNode::ConfigNode(YAML::Node node, std::string path, std::shared_ptr<const std::string> file,
-                       std::shared_ptr<const YAML::Node> root)
-    : node_(std::move(node)), path_(std::move(path)), file_(std::move(file)), root_(std::move(root)) {}
+                       std::shared_ptr<const YAML::Node> root, bool from_file)
+    : node_(std::move(node)), path_(std::move(path)), file_(std::move(file)), root_(std::move(root)), from_file_(from_file) {}
 
-ConfigNode ConfigNode::root() const { return ConfigNode(*root_, "", file_, root_); }
+ConfigNode ConfigNode::root() const { return ConfigNode(*root_, "", file_, root_, from_file_); }
 
 ConfigNode ConfigNode::load_string(const std::string& text, const std::string& name) {
   // Text that is not UTF-8 would pass through yaml-cpp into messages, VTK files and summary.json
@@ -168,7 +168,7 @@ ConfigNode ConfigNode::load_string(const std::string& text, const std::string& n
     // FILE:LINE:COL of the byte itself, then the key path of the text that holds it (if any).
     throw InputError(place(offset) + (path.empty() ? "" : path + ": ") + what(offset));
   }
-  return ConfigNode(*root, "", shared_name(name), root);
+  return ConfigNode(*root, "", shared_name(name), root, false);
 }
 
 ConfigNode ConfigNode::load_file(const std::string& filename) {
@@ -191,7 +191,9 @@ ConfigNode ConfigNode::load_file(const std::string& filename) {
   text.resize(static_cast<size_t>(in.gcount()));
   if (text.size() > kMaxConfigBytes)
     throw InputError(filename + ": file exceeds " + std::to_string(kMaxConfigBytes) + " bytes");
-  return load_string(text, filename);
+  ConfigNode root = load_string(text, filename);
+  root.from_file_ = true;
+  return root;
 }
 
 std::string ConfigNode::where() const {
@@ -215,7 +217,7 @@ std::optional<ConfigNode> ConfigNode::find(const std::string& key) const {
   // Iterate instead of node_[key]: we also need the key's own mark.
   for (const auto& kv : node_) {
     if (!kv.first.IsScalar() || kv.first.Scalar() != key) continue;
-    ConfigNode child(kv.second, path_.empty() ? key : path_ + "." + key, file_, root_);
+    ConfigNode child(kv.second, path_.empty() ? key : path_ + "." + key, file_, root_, from_file_);
     child.key_mark_ = kv.first.Mark();
     return child;
   }
@@ -236,7 +238,7 @@ std::vector<ConfigNode> ConfigNode::items() const {
   std::vector<ConfigNode> out;
   out.reserve(node_.size());
   for (size_t i = 0; i < node_.size(); ++i)
-    out.push_back(ConfigNode(node_[i], path_ + "[" + std::to_string(i) + "]", file_, root_));
+    out.push_back(ConfigNode(node_[i], path_ + "[" + std::to_string(i) + "]", file_, root_, from_file_));
   return out;
 }
 

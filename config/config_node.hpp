@@ -85,14 +85,18 @@ class ConfigNode {
 
   const YAML::Node& yaml() const { return node_; }
   const std::string& file() const { return *file_; }
+  /// Whether the config was read by load_file: file() is then a real file, whose folder is the
+  /// only place the files the config names may be read from (see config/config_file_path.hpp).
+  bool from_file() const { return from_file_; }
 
  private:
   ConfigNode(YAML::Node node, std::string path, std::shared_ptr<const std::string> file,
-             std::shared_ptr<const YAML::Node> root);
+             std::shared_ptr<const YAML::Node> root, bool from_file);
   YAML::Node node_;
   std::string path_;
   std::shared_ptr<const std::string> file_;
   std::shared_ptr<const YAML::Node> root_;
+  bool from_file_ = false;
   YAML::Mark key_mark_ = YAML::Mark::null_mark();  ///< of the key; an empty value has no place of its own
 };
 

@@ -3,6 +3,7 @@
 #include <cctype>
 #include <filesystem>
 
+#include "config/config_file_path.hpp"
 #include "geometry/builtin_surface_meshes.hpp"
 
 namespace iga {
@@ -54,10 +55,9 @@ TriangleSurfaceMesh surface_mesh_from_config(const ConfigNode& domain, int study
     normal_choices = {"exact", "estimated", "fan"};
   } else {
     const ConfigNode node = domain["file"];
-    std::filesystem::path path = node.as_string();
-    if (path.is_relative()) path = std::filesystem::path(node.file()).parent_path() / path;
+    const std::filesystem::path path = resolve_config_file(node);
     SurfaceFileOptions options;
-    options.config_folder = std::filesystem::path(node.file()).parent_path().string();
+    options.config_folder = config_folder(node).string();
     if (const auto size = domain.find("mesh_size")) {
       options.mesh_size = size->as_double();
       if (!(options.mesh_size > 0.0)) size->fail("mesh_size must be > 0");

@@ -14,6 +14,7 @@
 
 #include "config/config_node.hpp"
 #include "config/errors.hpp"
+#include "config/text_excerpt.hpp"
 
 namespace iga {
 
@@ -275,6 +276,28 @@ class ScriptChecker {
     for (const auto& r : roots) roots_.push_back(fs::weakly_canonical(r));
   }
 
+  /// The top-level script and "<file>.opt" (Gmsh also runs it when it opens <file>: a script in
+  /// the same language) are read only inside the roots, like Includes: a link beside the mesh
+  /// that points out of its folders is refused before it is read (the Gmsh worker could not read
+  /// it either). A name that does not exist is left to tokenize ("cannot read").
+  void check_confined(const fs::path& file, std::vector<fs::path>& stack) {
+    std::error_code ec;
+    if (fs::exists(fs::symlink_status(file, ec))) {
+      const fs::path real = fs::weakly_canonical(file, ec);
+      if (ec || !fs::exists(real, ec)) throw InputError(file.string() + ": is a link to a file that does not exist");
+      if (!inside_roots(real))
+        throw InputError(file.string() + ": is outside the folder of the config and the mesh file (links resolved)");
+    }
+    check(file, stack);
+  }
+
+  /// check_confined on `file` and on "<file>.opt" when there is one.
+  void check_with_options(const fs::path& file, std::vector<fs::path>& stack) {
+    check_confined(file, stack);
+    const fs::path options = file.string() + ".opt";
+    if (std::error_code ec; fs::exists(fs::symlink_status(options, ec))) check_confined(options, stack);
+  }
+
   void check(const fs::path& file, std::vector<fs::path>& stack) {
     const Script script = tokenize(file);
     checked_.push_back(file);
@@ -282,7 +305,7 @@ class ScriptChecker {
     for (const Token& token : t)
       if (token.kind == Token::word)
         if (const auto it = refused_words.find(token.s); it != refused_words.end())
-          script.fail(token.line, "'" + token.s + "' is not allowed in a mesh script (it " + it->second +
+          script.fail(token.line, quoted_excerpt(token.s) + " is not allowed in a mesh script (it " + it->second +
                                       "); only geometry and mesh statements are");
     for (std::size_t i = 0; i < t.size();) {
       const Token& head = t[i];
@@ -290,7 +313,7 @@ class ScriptChecker {
         ++i;
         continue;
       }
-      if (head.kind != Token::word) script.fail(head.line, "a statement cannot start with '" + head.s + "'");
+      if (head.kind != Token::word) script.fail(head.line, "a statement cannot start with " + quoted_excerpt(head.s));
       if (head.s == "For") {
         i = for_header(script, i);
         continue;
@@ -325,7 +348,7 @@ class ScriptChecker {
           break;
         }
       }
-      if (end >= t.size()) script.fail(head.line, "the statement '" + head.s + " ...' does not end with ';'");
+      if (end >= t.size()) script.fail(head.line, "the statement " + quoted_excerpt(head.s + " ...") + " does not end with ';'");
       if (after_brace) ++end;  // the brace belongs to the statement
       statement(script, i, end, stack);
       i = after_brace ? end : end + 1;
@@ -334,7 +357,7 @@ class ScriptChecker {
 
  private:
   [[noreturn]] void refuse(const Script& s, const Token& head, const std::string& why) const {
-    s.fail(head.line, "the statement '" + head.s + " ...' is not allowed in a mesh script: " + why);
+    s.fail(head.line, "the statement " + quoted_excerpt(head.s + " ...") + " is not allowed in a mesh script: " + why);
   }
 
   void statement(const Script& script, std::size_t i, std::size_t end, std::vector<fs::path>& stack) {
@@ -362,7 +385,7 @@ class ScriptChecker {
         const std::size_t close = matching(t, i + 1);
         if (close + 2 < end && is(t[close + 1], "=") && t[close + 2].kind == Token::word &&
             !allowed_fields.count(t[close + 2].s))
-          refuse(script, head, "the Field type '" + t[close + 2].s + "' is not allowed");
+          refuse(script, head, "the Field type " + quoted_excerpt(t[close + 2].s) + " is not allowed");
       }
       if (head.s == "Point") point_size(script, i, end);
       if (head.s == "MeshSize" || (head.s == "Characteristic" && i + 1 < end && is(t[i + 1], "Length")))
@@ -479,6 +502,16 @@ class ScriptChecker {
     values_.erase(t[i].s);
   }
 
+  /// Whether `real` (links resolved) lies below one of the folders Includes may read from.
+  bool inside_roots(const fs::path& real) const {
+    bool inside = false;
+    for (const auto& root : roots_) {
+      const auto rel = real.lexically_relative(root);
+      inside = inside || (!rel.empty() && *rel.begin() != ".." && *rel.begin() != ".");
+    }
+    return inside;
+  }
+
   void include(const Script& script, std::size_t i, std::size_t end, std::vector<fs::path>& stack) {
     const auto& t = script.tokens;
     const Token& head = t[i];
@@ -487,15 +520,10 @@ class ScriptChecker {
     if (target.is_relative()) target = script.file.parent_path() / target;
     std::error_code ec;
     const fs::path real = fs::weakly_canonical(target, ec);
-    bool inside = false;
-    for (const auto& root : roots_) {
-      const auto rel = real.lexically_relative(root);
-      inside = inside || (!ec && !rel.empty() && *rel.begin() != "..");
-    }
-    if (!inside) refuse(script, head, "'" + t[i + 1].s + "' is outside the folder of the config and the mesh file");
-    if (!fs::is_regular_file(real, ec)) refuse(script, head, "'" + t[i + 1].s + "' is not a readable file");
+    if (ec || !inside_roots(real)) refuse(script, head, quoted_excerpt(t[i + 1].s) + " is outside the folder of the config and the mesh file");
+    if (!fs::is_regular_file(real, ec)) refuse(script, head, quoted_excerpt(t[i + 1].s) + " is not a readable file");
     for (const auto& open : stack)
-      if (open == real) refuse(script, head, "'" + t[i + 1].s + "' includes itself (a cycle of Includes)");
+      if (open == real) refuse(script, head, quoted_excerpt(t[i + 1].s) + " includes itself (a cycle of Includes)");
     if (stack.size() > 16) refuse(script, head, "Includes nest more than 16 deep");
     stack.push_back(real);
     check(real, stack);
@@ -581,10 +609,7 @@ std::vector<fs::path> check_geo_script(const fs::path& file, const std::vector<f
                                        const MeshLimits& limits) {
   ScriptChecker checker(include_roots, limits);
   std::vector<fs::path> stack = {fs::weakly_canonical(file)};
-  checker.check(file, stack);
-  // Gmsh also runs "<file>.opt" when it opens <file>: it is a script in the same language.
-  const fs::path options = file.string() + ".opt";
-  if (std::error_code ec; fs::exists(options, ec)) checker.check(options, stack);
+  checker.check_with_options(file, stack);
   return checker.checked_;
 }
 
@@ -593,9 +618,7 @@ double geo_script_largest_point_size(const fs::path& file, const std::vector<fs:
   ScriptChecker checker(include_roots, limits);
   std::vector<fs::path> stack = {fs::weakly_canonical(file)};
   try {
-    checker.check(file, stack);
-    const fs::path options = file.string() + ".opt";
-    if (std::error_code ec; fs::exists(options, ec)) checker.check(options, stack);
+    checker.check_with_options(file, stack);
   } catch (const InputError&) {
     // Not this function's verdict (check_geo_script gives it; the Gmsh worker's own tests run
     // refused scripts on purpose): no bound is known.

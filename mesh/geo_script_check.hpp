@@ -25,6 +25,8 @@ namespace iga {
 ///    to more than limits.max_loop_iterations iterations, a zero step, or non-finite bounds.
 /// Unreadable files and unterminated strings or comments are refused as well. The option file
 /// "<file>.opt", which Gmsh runs when it opens <file>, is checked the same way when it exists.
+/// The script and its option file, links resolved, must lie inside one of `include_roots` too (a
+/// link beside the mesh pointing elsewhere is refused before it is read).
 /// Returns every file checked (the script, its Includes, the option file): what Gmsh will read.
 std::vector<std::filesystem::path> check_geo_script(const std::filesystem::path& file,
                                                     const std::vector<std::filesystem::path>& include_roots,

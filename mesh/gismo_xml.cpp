@@ -15,6 +15,7 @@
 #include "config/config_node.hpp"
 #include "config/errors.hpp"
 #include "config/utf8.hpp"
+#include "config/text_excerpt.hpp"
 
 namespace iga {
 
@@ -25,7 +26,7 @@ namespace {
 
 /// Messages name the file and the element: "3p.xml:12: <coefs>: ...".
 [[noreturn]] void fail_at(const std::string& source, const XMLElement* e, const std::string& message) {
-  throw InputError(source + ":" + std::to_string(e->GetLineNum()) + ": <" + e->Name() + ">: " + message);
+  throw InputError(source + ":" + std::to_string(e->GetLineNum()) + ": <" + printable_excerpt(e->Name()) + ">: " + message);
 }
 
 /// Everything that is not an element, text or comment: a DTD (<!DOCTYPE ...>, where entities and
@@ -52,8 +53,8 @@ std::vector<double> numbers(const std::string& source, const XMLElement* e, cons
   for (const std::string& t : tokens(text)) {
     double x = 0.0;
     const auto [end, ec] = std::from_chars(t.data(), t.data() + t.size(), x);
-    if (ec != std::errc() || end != t.data() + t.size()) fail_at(source, e, "'" + t + "' is not a number");
-    if (!std::isfinite(x)) fail_at(source, e, "'" + t + "' is not finite");
+    if (ec != std::errc() || end != t.data() + t.size()) fail_at(source, e, quoted_excerpt(t) + " is not a number");
+    if (!std::isfinite(x)) fail_at(source, e, quoted_excerpt(t) + " is not finite");
     out.push_back(x);
   }
   return out;
@@ -91,7 +92,7 @@ const XMLElement* child(const std::string& source, const XMLElement* parent, con
 void read_tensor_basis(const std::string& source, const XMLElement* basis, GismoPatch& p, const GismoXmlLimits& limits) {
   bool seen[2] = {false, false};
   for (const XMLElement* b = basis->FirstChildElement("Basis"); b; b = b->NextSiblingElement("Basis")) {
-    if (type_of(b) != "BSplineBasis") fail_at(source, b, "type '" + type_of(b) + "' inside a tensor basis (expected BSplineBasis)");
+    if (type_of(b) != "BSplineBasis") fail_at(source, b, "type " + quoted_excerpt(type_of(b)) + " inside a tensor basis (expected BSplineBasis)");
     const int d = int_attribute(source, b, "index");
     if (d < 0 || d > 1) fail_at(source, b, "index " + std::to_string(d) + " (a surface patch has directions 0 and 1)");
     if (seen[d]) fail_at(source, b, "a second basis for direction " + std::to_string(d));
@@ -121,7 +122,7 @@ GismoPatch read_patch(const std::string& source, const XMLElement* g, const Gism
   p.line = g->GetLineNum();
   if (g->Attribute("id")) p.id = int_attribute(source, g, "id");
   if (p.type != "TensorBSpline2" && p.type != "TensorNurbs2")
-    fail_at(source, g, "type '" + p.type + "' is not supported (supported: TensorBSpline2, TensorNurbs2)");
+    fail_at(source, g, "type " + quoted_excerpt(p.type) + " is not supported (supported: TensorBSpline2, TensorNurbs2)");
   const bool rational = p.type == "TensorNurbs2";
   const XMLElement* basis = child(source, g, "Basis", rational ? "TensorNurbsBasis2" : "TensorBSplineBasis2");
   const XMLElement* weights = nullptr;
@@ -162,7 +163,7 @@ std::vector<int> patch_ids(const std::string& source, const XMLElement* patches,
   const std::string type = type_of(patches);
   const std::vector<int> v = integers(source, patches, limits);
   if (type == "id_index") return v;
-  if (type != "id_range") fail_at(source, patches, "type '" + type + "' (supported: id_range, id_index)");
+  if (type != "id_range") fail_at(source, patches, "type " + quoted_excerpt(type) + " (supported: id_range, id_index)");
   if (v.size() != 2 || v[1] < v[0]) fail_at(source, patches, "an id_range needs two ids, first <= last");
   if (static_cast<long>(v[1]) - v[0] >= limits.max_patches)
     fail_at(source, patches, "more than " + std::to_string(limits.max_patches) + " patches");

@@ -8,6 +8,7 @@
 #include "config/errors.hpp"
 #include "mesh/gmsh_model_nodes.hpp"
 #include "mesh/planar_coordinates.hpp"
+#include "config/text_excerpt.hpp"
 
 namespace iga {
 
@@ -33,7 +34,7 @@ std::map<std::string, std::vector<std::array<std::size_t, 2>>> physical_curves(c
       gmsh::model::mesh::getElements(types, element_tags, node_tags, 1, entity);
       for (std::size_t t = 0; t < types.size(); ++t) {
         if (types[t] != gmsh_line2)
-          throw InputError(source + ": physical curve '" + name + "' has elements of type " +
+          throw InputError(source + ": physical curve " + quoted_excerpt(name) + " has elements of type " +
                            gmsh_element_type_name(types[t]) + "; only 2-node lines are supported (Mesh.ElementOrder 1)");
         for (std::size_t k = 0; k + 1 < node_tags[t].size(); k += 2)
           edges.push_back({node_tags[t][k], node_tags[t][k + 1]});
@@ -82,7 +83,7 @@ PlanarMesh planar_mesh_from_gmsh_model(const std::string& source) {
     for (const auto& edge : edges) {
       const auto a = vertex_of.find(edge[0]), b = vertex_of.find(edge[1]);
       if (a == vertex_of.end() || b == vertex_of.end())
-        throw InputError(source + ": physical curve '" + name + "' has a line element whose node " +
+        throw InputError(source + ": physical curve " + quoted_excerpt(name) + " has a line element whose node " +
                          std::to_string(a == vertex_of.end() ? edge[0] : edge[1]) + " belongs to no 2D cell");
       mesh.boundary_groups[name].push_back({a->second, b->second});
     }

@@ -3,6 +3,7 @@
 #include <gmsh.h>
 
 #include "config/errors.hpp"
+#include "config/text_excerpt.hpp"
 
 namespace iga {
 
@@ -11,7 +12,7 @@ std::string gmsh_element_type_name(int type) {
   int dim = 0, order = 0, nodes = 0, primary = 0;
   std::vector<double> local;
   gmsh::model::mesh::getElementProperties(type, name, dim, order, nodes, local, primary);
-  return "'" + name + "' (Gmsh type " + std::to_string(type) + ")";
+  return quoted_excerpt(name) + " (Gmsh type " + std::to_string(type) + ")";
 }
 
 GmshUsedNodes gmsh_used_nodes(const std::vector<std::size_t>& used, const std::string& source,

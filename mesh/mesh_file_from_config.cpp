@@ -3,6 +3,7 @@
 #include <cctype>
 #include <string>
 
+#include "config/config_file_path.hpp"
 #include "config/resource_limits.hpp"
 
 namespace iga {
@@ -16,10 +17,8 @@ MeshLimits mesh_limits(const ConfigNode& node) {
 MeshFileRequest mesh_file_request(const ConfigNode& domain) {
   MeshFileRequest request;
   const ConfigNode file = domain["file"];
-  request.path = file.as_string();
-  const std::filesystem::path config_folder = std::filesystem::path(file.file()).parent_path();
-  if (request.path.is_relative()) request.path = config_folder / request.path;
-  request.options.config_folder = config_folder.empty() ? "." : config_folder.string();
+  request.path = resolve_config_file(file);
+  request.options.config_folder = config_folder(file).string();
   std::string extension = request.path.extension().string();
   for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
   // Named at the config key here; read_mesh_file would refuse them too, but at the file.

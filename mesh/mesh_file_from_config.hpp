@@ -12,12 +12,13 @@
 namespace iga {
 
 struct MeshFileRequest {
-  std::filesystem::path path;  ///< a relative `file` is taken relative to the config file's folder
+  std::filesystem::path path;  ///< resolve_config_file of `file`: inside the config file's folder
   MeshFileOptions options;
 };
 
-/// Reads `file`, `mesh_size` and `recombine` from `domain` (options.config_folder: the config
-/// file's folder, where a .geo's Includes may also read); `mesh_size` and `recombine` on a file
+/// Reads `file`, `mesh_size` and `recombine` from `domain` (path: resolve_config_file, so a file
+/// outside a config file's folder is refused at `file`; options.config_folder: the config file's
+/// folder, where a .geo's Includes may also read); `mesh_size` and `recombine` on a file
 /// that is not `.geo` (case-insensitive) are rejected at their key, as is mesh_size <= 0.
 /// options.limits as mesh_limits(domain).
 MeshFileRequest mesh_file_request(const ConfigNode& domain);

@@ -12,6 +12,7 @@
 #include "config/config_node.hpp"
 #include "config/errors.hpp"
 #include "config/utf8.hpp"
+#include "config/text_excerpt.hpp"
 
 namespace iga {
 
@@ -42,7 +43,7 @@ class MshChecker {
     if (!next(t) || t.size() != 3) fail("expected 'version file-type data-size' after $MeshFormat");
     version_ = t[0];
     if (t[1] == "1") fail("binary .msh files are not supported; save the mesh as ASCII (Mesh.Binary = 0)");
-    if (t[1] != "0") fail("file-type must be 0 (ASCII), got '" + t[1] + "'");
+    if (t[1] != "0") fail("file-type must be 0 (ASCII), got " + quoted_excerpt(t[1]));
     if (version_ == "4.1")
       v4_ = true;
     else if (version_ != "2.2" && version_ != "2.1" && version_ != "2.0" && version_ != "2")
@@ -50,9 +51,9 @@ class MshChecker {
     expect_end("MeshFormat");
     while (next(t)) {
       if (t[0].empty() || t[0][0] != '$' || t.size() != 1)
-        fail("expected a section header '$Name', got '" + t[0] + "'");
+        fail("expected a section header '$Name', got " + quoted_excerpt(t[0]));
       const std::string name = t[0].substr(1);
-      if (name.rfind("End", 0) == 0) fail("'" + t[0] + "' closes no open section");
+      if (name.rfind("End", 0) == 0) fail(quoted_excerpt(t[0]) + " closes no open section");
       if (!seen_.insert(name).second) fail("a second $" + name + " section");
       if (name == "Nodes")
         v4_ ? nodes_v4() : nodes_v2();
@@ -106,7 +107,7 @@ class MshChecker {
   }
   void need(std::vector<std::string>& t, const std::string& what) {
     if (!next(t)) fail_at_end("the file ends inside " + what);
-    if (t[0][0] == '$') fail("expected " + what + ", got '" + t[0] + "'");
+    if (t[0][0] == '$') fail("expected " + what + ", got " + quoted_excerpt(t[0]));
   }
   void expect_end(const std::string& name) {
     std::vector<std::string> t;
@@ -125,7 +126,7 @@ class MshChecker {
     long long i = 0;
     const auto [end, error] = std::from_chars(token.data(), token.data() + token.size(), i);
     if (error != std::errc() || end != token.data() + token.size())
-      fail(std::string("expected ") + what + " (an integer), got '" + token + "'");
+      fail(std::string("expected ") + what + " (an integer), got " + quoted_excerpt(token));
     return i;
   }
   long long count(const std::string& token, const char* what, double limit) const {
@@ -143,8 +144,8 @@ class MshChecker {
   double coordinate(const std::string& token) const {
     double x = 0.0;
     const auto [end, error] = std::from_chars(token.data(), token.data() + token.size(), x);
-    if (error != std::errc() || end != token.data() + token.size()) fail("expected a coordinate, got '" + token + "'");
-    if (!std::isfinite(x)) fail("coordinate '" + token + "' is not finite");
+    if (error != std::errc() || end != token.data() + token.size()) fail("expected a coordinate, got " + quoted_excerpt(token));
+    if (!std::isfinite(x)) fail("coordinate " + quoted_excerpt(token) + " is not finite");
     return x;
   }
   /// Header counts (nodes, all elements including lines and points) are refused beyond this.

@@ -9,6 +9,7 @@
 #include "config/errors.hpp"
 #include "mesh/off_records.hpp"
 #include "mesh/text_line_reader.hpp"
+#include "config/text_excerpt.hpp"
 
 namespace iga {
 
@@ -40,7 +41,7 @@ QuadSurfaceFile read_obj_quad_surface(std::istream& in, const std::string& sourc
       mesh.quads.push_back(quad);
       mesh.quad_lines.push_back(reader.line);
     } else if (!ignored.count(t[0])) {
-      reader.fail("unknown OBJ statement '" + t[0] + "' (expected v, f, or one of vn vt vp o g s l usemtl mtllib)");
+      reader.fail("unknown OBJ statement " + quoted_excerpt(t[0]) + " (expected v, f, or one of vn vt vp o g s l usemtl mtllib)");
     }
   }
   if (mesh.quads.empty()) reader.fail("no faces");

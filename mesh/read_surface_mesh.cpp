@@ -16,6 +16,7 @@
 #include "mesh/stl_structure_check.hpp"
 #include "mesh/off_records.hpp"
 #include "mesh/text_line_reader.hpp"
+#include "config/text_excerpt.hpp"
 
 namespace iga {
 
@@ -105,7 +106,7 @@ SurfaceMeshFile read_obj_surface(std::istream& in, const std::string& source) {
       mesh.triangles.push_back(tri);
       mesh.triangle_lines.push_back(reader.line);
     } else if (!ignored.count(t[0])) {
-      reader.fail("unknown OBJ statement '" + t[0] + "' (expected v, vn, f, or one of vt vp o g s l usemtl mtllib)");
+      reader.fail("unknown OBJ statement " + quoted_excerpt(t[0]) + " (expected v, vn, f, or one of vt vp o g s l usemtl mtllib)");
     }
   }
   if (every_corner_has_normal && !mesh.triangles.empty()) {

@@ -10,6 +10,7 @@
 #include "mesh/off_records.hpp"
 #include "mesh/text_line_reader.hpp"
 #include "mesh/planar_coordinates.hpp"
+#include "config/text_excerpt.hpp"
 
 namespace iga {
 
@@ -50,7 +51,7 @@ PlanarMesh read_obj_mesh(std::istream& in, const std::string& source) {
       mesh.cells.push_back(std::move(cell));
       mesh.cell_origins.push_back("line " + std::to_string(reader.line));
     } else if (!ignored.count(t[0])) {
-      reader.fail("unknown OBJ statement '" + t[0] + "' (expected v, f, or one of vt vn vp o g s l usemtl mtllib)");
+      reader.fail("unknown OBJ statement " + quoted_excerpt(t[0]) + " (expected v, f, or one of vt vn vp o g s l usemtl mtllib)");
     }
   }
   mesh.vertices = planar_coordinates(points, point_origins, source);

@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "config/errors.hpp"
+#include "config/text_excerpt.hpp"
 
 namespace iga {
 
@@ -31,15 +32,15 @@ bool TextLineReader::next(std::vector<std::string>& tokens) {
 double TextLineReader::number(const std::string& token) const {
   double x = 0.0;
   const auto [end, error] = std::from_chars(token.data(), token.data() + token.size(), x);
-  if (error != std::errc() || end != token.data() + token.size()) fail("expected a number, got '" + token + "'");
-  if (!std::isfinite(x)) fail("the coordinate '" + token + "' is not finite");
+  if (error != std::errc() || end != token.data() + token.size()) fail("expected a number, got " + quoted_excerpt(token));
+  if (!std::isfinite(x)) fail("the coordinate " + quoted_excerpt(token) + " is not finite");
   return x;
 }
 
 long TextLineReader::integer(const std::string& token) const {
   long i = 0;
   const auto [end, error] = std::from_chars(token.data(), token.data() + token.size(), i);
-  if (error != std::errc() || end != token.data() + token.size()) fail("expected an integer, got '" + token + "'");
+  if (error != std::errc() || end != token.data() + token.size()) fail("expected an integer, got " + quoted_excerpt(token));
   return i;
 }
 

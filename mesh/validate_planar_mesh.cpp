@@ -7,6 +7,7 @@
 #include "config/config_node.hpp"
 #include "config/errors.hpp"
 #include "config/utf8.hpp"
+#include "config/text_excerpt.hpp"
 
 namespace iga {
 
@@ -189,10 +190,10 @@ void check_boundary_groups(const PlanarMesh& mesh, const std::map<Edge, EdgeUse>
                        std::to_string(*bad + 1) + " of the name)");
     for (const Edge& e : edges) {
       const bool known = e[0] >= 0 && e[0] < num_vertices(mesh) && e[1] >= 0 && e[1] < num_vertices(mesh);
-      if (!known) reject(mesh, "boundary group '" + name + "' refers to a vertex that does not exist");
+      if (!known) reject(mesh, "boundary group " + quoted_excerpt(name) + " refers to a vertex that does not exist");
       const auto it = uses.find({std::min(e[0], e[1]), std::max(e[0], e[1])});
       if (it == uses.end() || it->second.cells.size() != 1)
-        reject(mesh, "boundary group '" + name + "' has " + describe_edge(mesh, e) +
+        reject(mesh, "boundary group " + quoted_excerpt(name) + " has " + describe_edge(mesh, e) +
                          ", which is not a boundary edge of the mesh");
     }
   }

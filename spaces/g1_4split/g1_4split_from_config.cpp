@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <filesystem>
 
+#include "config/config_file_path.hpp"
 #include "config/errors.hpp"
 #include "mesh/mesh_file_from_config.hpp"
 #include "mesh/read_quad_surface_mesh.hpp"
@@ -55,8 +56,7 @@ std::pair<QuadTopology, std::vector<Eigen::Vector3d>> surface_mesh(const ConfigN
     return {split_tetrahedron_topology(), split_tetrahedron_vertices()};
   }
   const ConfigNode node = domain["file"];
-  std::filesystem::path path = node.as_string();
-  if (path.is_relative()) path = std::filesystem::path(node.file()).parent_path() / path;
+  const std::filesystem::path path = resolve_config_file(node);
   const QuadSurfaceFile read = node.guard([&] {
     QuadSurfaceFile file = read_quad_surface_mesh(path.string());
     validate_quad_surface(file);  // degenerate, folded, repeated faces: named here, not as a failed solve

@@ -73,6 +73,7 @@ std::string file_content(const YAML::Node& spec) {
 struct Case {
   std::string group, name, what;
   std::map<std::string, std::string> files;  ///< file name (relative to the case folder) -> content
+  std::map<std::string, std::string> links;  ///< symbolic link (relative to the case folder) -> its target
   std::vector<std::string> args;             ///< command line after the program name
   int exit_code = 2;
   int timeout_seconds = kTimeoutSeconds;
@@ -116,7 +117,12 @@ std::vector<Case> load_catalogue() {
       c.what = node["what"] ? node["what"].as<std::string>() : "";
       if (node["config"]) c.files["case.yaml"] = file_content(node["config"]);
       if (node["files"])
-        for (const auto& kv : node["files"]) c.files[kv.first.as<std::string>()] = file_content(kv.second);
+        for (const auto& kv : node["files"]) {
+          if (kv.second.IsMap() && kv.second["link"])  // a symbolic link beside the config
+            c.links[kv.first.as<std::string>()] = kv.second["link"].as<std::string>();
+          else
+            c.files[kv.first.as<std::string>()] = file_content(kv.second);
+        }
       c.args = {"--quiet"};  // first, so that no option of the case can take it as its value
       const auto args = node["args"] ? strings(node["args"]) : std::vector<std::string>{"case.yaml"};
       c.args.insert(c.args.end(), args.begin(), args.end());
@@ -262,6 +268,10 @@ TEST_P(BadInput, Run) {
   for (const auto& [name, content] : c.files) {
     fs::create_directories((dir / name).parent_path());
     std::ofstream(dir / name, std::ios::binary) << substituted(content, values);
+  }
+  for (const auto& [name, target] : c.links) {
+    fs::create_directories((dir / name).parent_path());
+    fs::create_symlink(substituted(target, values), dir / name);
   }
   std::vector<std::string> args;
   for (const auto& a : c.args) args.push_back(substituted(a, values));
