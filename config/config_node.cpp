@@ -103,19 +103,24 @@ std::optional<std::size_t> bad_text_offset(std::string_view text) {
 }
 
 /// The first key or value under `node` whose text has a byte a config may not hold (bad_text_offset;
-/// a double-quoted "\0" puts one there without the file holding it), and its key path.
-std::optional<std::pair<YAML::Node, std::string>> find_bad_text(const YAML::Node& node, const std::string& path) {
+/// a double-quoted "\0" puts one there without the file holding it), and its key path. A collection
+/// is walked once, at its first path: an alias repeats its anchor's node (same start), and walking
+/// it again would be exponential for nested aliases and endless for a node that contains itself.
+std::optional<std::pair<YAML::Node, std::string>> find_bad_text(const YAML::Node& node, const std::string& path,
+                                                                std::set<int>& walked) {
   if (node.IsScalar()) {
     if (bad_text_offset(node.Scalar())) return std::make_pair(node, path);
-  } else if (node.IsSequence()) {
-    for (std::size_t i = 0; i < node.size(); ++i)
-      if (auto bad = find_bad_text(node[i], path + "[" + std::to_string(i) + "]")) return bad;
-  } else if (node.IsMap()) {
-    for (const auto& kv : node) {
-      const std::string key = kv.first.IsScalar() ? kv.first.Scalar() : std::string("?");
-      const std::string child = path.empty() ? key : path + "." + key;
-      if (auto bad = find_bad_text(kv.first, path)) return bad;  // the key itself, at its map
-      if (auto bad = find_bad_text(kv.second, child)) return bad;
+  } else if ((node.IsSequence() || node.IsMap()) && walked.insert(node.Mark().pos).second) {
+    if (node.IsSequence()) {
+      for (std::size_t i = 0; i < node.size(); ++i)
+        if (auto bad = find_bad_text(node[i], path + "[" + std::to_string(i) + "]", walked)) return bad;
+    } else {
+      for (const auto& kv : node) {
+        const std::string key = kv.first.IsScalar() ? kv.first.Scalar() : std::string("?");
+        const std::string child = path.empty() ? key : path + "." + key;
+        if (auto bad = find_bad_text(kv.first, path, walked)) return bad;  // the key itself, at its map
+        if (auto bad = find_bad_text(kv.second, child, walked)) return bad;
+      }
     }
   }
   return std::nullopt;
@@ -168,7 +173,8 @@ ConfigNode ConfigNode::load_string(const std::string& text, const std::string& n
     if (bad != std::string::npos) throw InputError(place(bad) + what(bad));
     throw InputError(location(name, e.mark) + ": cannot read YAML: " + e.msg);
   }
-  const auto found = find_bad_text(*root, "");
+  std::set<int> walked;
+  const auto found = find_bad_text(*root, "", walked);
   if (bad != std::string::npos) {
     std::size_t offset = bad;
     std::string path;
