@@ -92,7 +92,7 @@ TEST(Utf8, ControlCharactersAreRefusedWithTheirPlace) {
   EXPECT_NE(load_error("names: [\"x\", \"\\e[31m\"]\n").find("c.yaml:1:14: names[1]: byte 0x1B, byte 1 of the text"),
             std::string::npos);
   // Aliases are walked once: a map holding itself, and an escape after it.
-  EXPECT_NE(load_error("a: &x {b: *x, c: [*x, \"\\x01\"]}\n").find("c.yaml:1:22: a.c[1]: byte 0x01, byte 1 of"),
+  EXPECT_NE(load_error("a: &x {b: *x, c: [*x, \"\\x01\"]}\n").find("c.yaml:1:23: a.c[1]: byte 0x01, byte 1 of"),
             std::string::npos);
   // Tabs, line breaks (also as escapes) and block scalars stay.
   EXPECT_EQ(load_error("a: \"x\\ty\\nz\"\r\nb: |\n  one\n  two\n"), "");
