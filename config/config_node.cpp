@@ -94,22 +94,43 @@ void declare(std::map<std::string, std::set<std::string>> DeclaredConfig::*table
   (registry.declared.*table)[schema].insert(words.begin(), words.end());
 }
 
-/// The first key or value under `node` whose text is not UTF-8, and its key path.
-std::optional<std::pair<YAML::Node, std::string>> find_text_not_utf8(const YAML::Node& node, const std::string& path) {
+/// Offset of the first byte of `text` a config may not hold: one that is not UTF-8, or a control
+/// character other than tab, line feed and carriage return.
+std::optional<std::size_t> bad_text_offset(std::string_view text) {
+  const auto utf8 = invalid_utf8_offset(text), control = control_character_offset(text);
+  if (utf8 && control) return std::min(*utf8, *control);
+  return utf8 ? utf8 : control;
+}
+
+/// The first key or value under `node` whose text has a byte a config may not hold (bad_text_offset;
+/// a double-quoted "\0" puts one there without the file holding it), and its key path. A collection
+/// is walked once, at its first path: an alias repeats its anchor's node (same start), and walking
+/// it again would be exponential for nested aliases and endless for a node that contains itself.
+std::optional<std::pair<YAML::Node, std::string>> find_bad_text(const YAML::Node& node, const std::string& path,
+                                                                std::set<int>& walked) {
   if (node.IsScalar()) {
-    if (invalid_utf8_offset(node.Scalar())) return std::make_pair(node, path);
-  } else if (node.IsSequence()) {
-    for (std::size_t i = 0; i < node.size(); ++i)
-      if (auto bad = find_text_not_utf8(node[i], path + "[" + std::to_string(i) + "]")) return bad;
-  } else if (node.IsMap()) {
-    for (const auto& kv : node) {
-      const std::string key = kv.first.IsScalar() ? kv.first.Scalar() : std::string("?");
-      const std::string child = path.empty() ? key : path + "." + key;
-      if (auto bad = find_text_not_utf8(kv.first, path)) return bad;  // the key itself, at its map
-      if (auto bad = find_text_not_utf8(kv.second, child)) return bad;
+    if (bad_text_offset(node.Scalar())) return std::make_pair(node, path);
+  } else if ((node.IsSequence() || node.IsMap()) && walked.insert(node.Mark().pos).second) {
+    if (node.IsSequence()) {
+      for (std::size_t i = 0; i < node.size(); ++i)
+        if (auto bad = find_bad_text(node[i], path + "[" + std::to_string(i) + "]", walked)) return bad;
+    } else {
+      for (const auto& kv : node) {
+        const std::string key = kv.first.IsScalar() ? kv.first.Scalar() : std::string("?");
+        const std::string child = path.empty() ? key : path + "." + key;
+        if (auto bad = find_bad_text(kv.first, path, walked)) return bad;  // the key itself, at its map
+        if (auto bad = find_bad_text(kv.second, child, walked)) return bad;
+      }
     }
   }
   return std::nullopt;
+}
+
+/// Why byte `offset` of `text` (found by bad_text_offset) may not be in a config: " is ...".
+std::string why_bad(std::string_view text, std::size_t offset) {
+  if (static_cast<unsigned char>(text[offset]) < 0x20)
+    return " is a control character (a config is text: tab, line feed and carriage return are the only ones allowed)";
+  return " is not UTF-8 (a config is UTF-8 text)";
 }
 
 /// "LINE:COL" (1-based, columns in bytes) of byte `offset` of `text`.
@@ -118,13 +139,6 @@ std::string line_and_column(const std::string& text, std::size_t offset) {
   const std::size_t start = offset == 0 ? std::string::npos : text.rfind('\n', offset - 1);
   const std::size_t column = start == std::string::npos ? offset + 1 : offset - start;
   return std::to_string(line) + ":" + std::to_string(column);
-}
-
-/// Whether `text` starts with a UTF-16 or UTF-32 byte order mark (yaml-cpp decodes those to UTF-8).
-bool has_wide_byte_order_mark(const std::string& text) {
-  const auto starts = [&](std::string_view prefix) { return text.compare(0, prefix.size(), prefix) == 0; };
-  using namespace std::string_view_literals;
-  return starts("\xFE\xFF"sv) || starts("\xFF\xFE"sv) || starts("\x00\x00\xFE\xFF"sv);
 }
 
 }  // namespace
@@ -136,14 +150,19 @@ ConfigNode::ConfigNode(YAML::Node node, std::string path, std::shared_ptr<const 
 ConfigNode ConfigNode::root() const { return ConfigNode(*root_, "", file_, root_, from_file_); }
 
 ConfigNode ConfigNode::load_string(const std::string& text, const std::string& name) {
-  // Text that is not UTF-8 would pass through yaml-cpp into messages, VTK files and summary.json
-  // (whose writer throws on it, after the study): refused here, at the first such key or value.
-  const std::size_t bad =
-      has_wide_byte_order_mark(text) ? std::string::npos : invalid_utf8_offset(text).value_or(std::string::npos);
   const auto place = [&](std::size_t offset) {  // "c.yaml:3:7: "
     return name + ":" + line_and_column(text, offset) + ": ";
   };
-  const auto what = [&](std::size_t offset) { return describe_byte(text, offset) + " is not UTF-8 (a config is UTF-8 text)"; };
+  // yaml-cpp would decode UTF-16 and UTF-32 text without checking its code points (a surrogate or
+  // U+110000 would reach folder names): such a file is refused as a whole.
+  if (const auto encoding = wide_byte_order_mark(text))
+    throw InputError(place(0) + "the file starts with the byte-order mark of " + *encoding +
+                     ": it is not UTF-8 text (a config is UTF-8 text; save it as UTF-8)");
+  // Text that is not UTF-8 would pass through yaml-cpp into messages, VTK files and summary.json
+  // (whose writer throws on it, after the study), and a NUL cuts a path short where it is used:
+  // refused here, at the first such key or value.
+  const std::size_t bad = bad_text_offset(text).value_or(std::string::npos);
+  const auto what = [&](std::size_t offset) { return describe_byte(text, offset) + why_bad(text, offset); };
   std::shared_ptr<const YAML::Node> root;
   try {
     root = std::make_shared<const YAML::Node>(YAML::Load(text));
@@ -154,19 +173,28 @@ ConfigNode ConfigNode::load_string(const std::string& text, const std::string& n
     if (bad != std::string::npos) throw InputError(place(bad) + what(bad));
     throw InputError(location(name, e.mark) + ": cannot read YAML: " + e.msg);
   }
+  std::set<int> walked;
+  const auto found = find_bad_text(*root, "", walked);
   if (bad != std::string::npos) {
     std::size_t offset = bad;
     std::string path;
-    if (const auto found = find_text_not_utf8(*root, "")) {
+    if (found) {
       // yaml-cpp counts positions in bytes of UTF-8 input: the bad byte is at or after the node's start.
       const YAML::Mark mark = found->first.Mark();
       if (mark.pos >= 0 && static_cast<std::size_t>(mark.pos) < text.size())
-        if (const auto at = invalid_utf8_offset(std::string_view(text).substr(static_cast<std::size_t>(mark.pos))))
+        if (const auto at = bad_text_offset(std::string_view(text).substr(static_cast<std::size_t>(mark.pos))))
           offset = static_cast<std::size_t>(mark.pos) + *at;
       path = found->second;
     }
     // FILE:LINE:COL of the byte itself, then the key path of the text that holds it (if any).
     throw InputError(place(offset) + (path.empty() ? "" : path + ": ") + what(offset));
+  }
+  if (found) {  // written as an escape ("\0", "\x01"): the text's own place and key path
+    const std::string& scalar = found->first.Scalar();
+    const std::size_t at = *bad_text_offset(scalar);
+    throw InputError(location(name, found->first.Mark()) + ": " + (found->second.empty() ? "" : found->second + ": ") +
+                     describe_byte(scalar, at) + ", byte " + std::to_string(at + 1) + " of the text (written as an escape)," +
+                     why_bad(scalar, at));
   }
   return ConfigNode(*root, "", shared_name(name), root, false);
 }

@@ -37,6 +37,24 @@ std::optional<std::size_t> invalid_utf8_offset(std::string_view text) {
   return std::nullopt;
 }
 
+std::optional<std::size_t> control_character_offset(std::string_view text) {
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    const unsigned char c = static_cast<unsigned char>(text[i]);
+    if (c < 0x20 && c != '\t' && c != '\n' && c != '\r') return i;
+  }
+  return std::nullopt;
+}
+
+std::optional<std::string> wide_byte_order_mark(std::string_view text) {
+  using namespace std::string_view_literals;
+  // UTF-32LE's mark starts with UTF-16LE's: the longer ones are tried first.
+  if (text.starts_with("\x00\x00\xFE\xFF"sv)) return "UTF-32BE";
+  if (text.starts_with("\xFF\xFE\x00\x00"sv)) return "UTF-32LE";
+  if (text.starts_with("\xFE\xFF"sv)) return "UTF-16BE";
+  if (text.starts_with("\xFF\xFE"sv)) return "UTF-16LE";
+  return std::nullopt;
+}
+
 std::string describe_byte(std::string_view text, std::size_t offset) {
   char hex[8];
   std::snprintf(hex, sizeof hex, "0x%02X", static_cast<unsigned>(static_cast<unsigned char>(text[offset])));

@@ -17,6 +17,14 @@ namespace iga {
 /// U+10FFFF, bytes C0, C1, F5..FF), or nullopt when the whole text is UTF-8.
 std::optional<std::size_t> invalid_utf8_offset(std::string_view text);
 
+/// Offset of the first C0 control character of `text` other than tab, line feed and carriage
+/// return (NUL among them: a path or name holding one is cut short where it is used), or nullopt.
+std::optional<std::size_t> control_character_offset(std::string_view text);
+
+/// The encoding a byte-order mark at the start of `text` names when it is not UTF-8's ("UTF-16LE",
+/// "UTF-32BE", ...), or nullopt (no mark, or UTF-8's).
+std::optional<std::string> wide_byte_order_mark(std::string_view text);
+
 /// "byte 0xFF": the byte of `text` at `offset`, for messages.
 std::string describe_byte(std::string_view text, std::size_t offset);
 

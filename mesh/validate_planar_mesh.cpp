@@ -8,6 +8,7 @@
 #include "config/errors.hpp"
 #include "config/utf8.hpp"
 #include "config/text_excerpt.hpp"
+#include "mesh/coincident_points.hpp"
 
 namespace iga {
 
@@ -111,20 +112,12 @@ void check_coincident_vertices(const PlanarMesh& mesh) {
     lo = lo.cwiseMin(x);
     hi = hi.cwiseMax(x);
   }
+  std::vector<int> ids(mesh.vertices.size());
+  std::iota(ids.begin(), ids.end(), 0);
   const double eps = mesh_tolerance * (hi - lo).norm();
-  std::vector<int> order(mesh.vertices.size());
-  std::iota(order.begin(), order.end(), 0);
-  std::sort(order.begin(), order.end(), [&](int a, int b) { return mesh.vertices[a].x() < mesh.vertices[b].x(); });
-  for (std::size_t i = 0; i < order.size(); ++i)
-    for (std::size_t j = i + 1; j < order.size(); ++j) {
-      const Eigen::Vector2d &a = mesh.vertices[order[i]], &b = mesh.vertices[order[j]];
-      if (b.x() - a.x() > eps) break;
-      if (std::abs(b.y() - a.y()) <= eps) {
-        const int u = std::min(order[i], order[j]), w = std::max(order[i], order[j]);
-        reject(mesh, describe_vertex(mesh, u) + " and vertex " + std::to_string(w) +
-                         " coincide; merge duplicate nodes (cells meeting there are not connected)");
-      }
-    }
+  if (const auto pair = find_coincident_points(mesh.vertices, ids, eps, Closeness::every_coordinate))
+    reject(mesh, describe_vertex(mesh, pair->first) + " and vertex " + std::to_string(pair->second) +
+                     " coincide; merge duplicate nodes (cells meeting there are not connected)");
 }
 
 std::string describe_edge(const PlanarMesh& mesh, const Edge& e) {

@@ -7,6 +7,7 @@
 
 #include "config/config_node.hpp"
 #include "config/errors.hpp"
+#include "mesh/coincident_points.hpp"
 #include "mesh/validate_planar_mesh.hpp"
 
 namespace iga {
@@ -76,16 +77,10 @@ void check_coincident_vertices(const QuadSurfaceFile& mesh) {
   Eigen::Vector3d lo = mesh.points[used[0]], hi = lo;
   for (int v : used) lo = lo.cwiseMin(mesh.points[v]), hi = hi.cwiseMax(mesh.points[v]);
   const double eps = mesh_tolerance * (hi - lo).norm();
-  std::sort(used.begin(), used.end(), [&](int a, int b) { return mesh.points[a].x() < mesh.points[b].x(); });
-  for (std::size_t i = 0; i < used.size(); ++i)
-    for (std::size_t j = i + 1; j < used.size(); ++j) {
-      const Eigen::Vector3d &a = mesh.points[used[i]], &b = mesh.points[used[j]];
-      if (b.x() - a.x() > eps) break;
-      if ((b - a).norm() <= eps)
-        reject(mesh, "vertices " + std::to_string(std::min(used[i], used[j]) + 1) + " and " +
-                         std::to_string(std::max(used[i], used[j]) + 1) + " coincide at " + point_text(a) +
-                         "; merge them (faces meeting there are not connected)");
-    }
+  if (const auto pair = find_coincident_points(mesh.points, used, eps, Closeness::distance))
+    reject(mesh, "vertices " + std::to_string(pair->first + 1) + " and " + std::to_string(pair->second + 1) +
+                     " coincide at " + point_text(mesh.points[pair->first]) +
+                     "; merge them (faces meeting there are not connected)");
 }
 
 void check_edges(const QuadSurfaceFile& mesh) {

@@ -24,7 +24,51 @@ bool encloses(const fs::path& outer, const fs::path& inner) {
   return !rel.empty() && *rel.begin() != "..";
 }
 
+/// Room the last name needs beyond its own length: the results are moved in beside it as
+/// ".NAME.incoming-PID-RANDOM" (output/staged_directory.cpp), at most this many bytes more.
+constexpr std::size_t sibling_room = 32;
+
 }  // namespace
+
+void check_output_path_form(const std::string& path, const std::string& place) {
+  const auto fail = [&](const std::string& why) {
+    throw InputError(place + ": output directory '" + (path.size() > 80 ? path.substr(0, 80) + "..." : path) + "' " +
+                     why);
+  };
+  std::error_code ec;
+  const fs::path target = fs::absolute(path, ec);
+  if (ec) fail("cannot be resolved: " + ec.message());
+  // Refused here, not by the system after the study: a result file inside needs room too.
+  if (target.native().size() > max_output_path_bytes)
+    fail("is too long: " + std::to_string(target.native().size()) + " bytes as an absolute path, at most " +
+         std::to_string(max_output_path_bytes));
+  const fs::path normal = target.lexically_normal();
+  for (auto it = normal.begin(); it != normal.end(); ++it) {
+    const std::size_t size = it->native().size();
+    if (size > max_output_name_bytes)
+      fail("has a name of " + std::to_string(size) + " bytes ('" + it->native().substr(0, 40) + "...'); a name has at most " +
+           std::to_string(max_output_name_bytes));
+  }
+  const std::size_t last = normal.has_filename() ? normal.filename().native().size() : 0;
+  if (last > max_output_name_bytes - sibling_room)
+    fail("ends in a name of " + std::to_string(last) + " bytes; the output directory's own name has at most " +
+         std::to_string(max_output_name_bytes - sibling_room) + " (the results move in under a longer one)");
+  // A dangling link on the way would be taken for a folder still to be made, and fail (or lead
+  // elsewhere) only when the results are moved in, after the study.
+  fs::path prefix;
+  for (const fs::path& part : target) {
+    prefix /= part;
+    const fs::file_status link = fs::symlink_status(prefix, ec);
+    if (ec || !fs::exists(link)) break;  // the rest is still to be made
+    if (!fs::is_symlink(link)) continue;
+    if (!fs::exists(fs::status(prefix, ec))) {
+      const fs::path to = fs::read_symlink(prefix, ec);
+      fail("goes through the symbolic link '" + prefix.string() + "'" +
+           (to.empty() ? std::string() : " (to '" + to.string() + "')") +
+           ", which leads nowhere: its target does not exist (or the links loop)");
+    }
+  }
+}
 
 bool replaceable_output_directory(const std::string& path) {
   std::error_code ec;
@@ -42,6 +86,7 @@ void check_config_output_directory(const std::string& path, const std::string& p
   };
   const fs::path given(path);
   if (given.is_absolute()) refuse("is an absolute path");
+  check_output_path_form(path, place);
   std::error_code ec;
   const fs::path cwd = fs::weakly_canonical(fs::current_path(ec), ec);
   if (ec) return;  // an unusable working directory is reported by check_output_directory
@@ -70,6 +115,7 @@ void check_output_not_above(const std::string& path, const std::string& place,
 
 void check_output_directory(const std::string& path, const std::string& place,
                             const std::vector<std::string>& config_paths) {
+  check_output_path_form(path, place);
   check_output_not_above(path, place, config_paths);
   const auto fail = [&](const std::string& why) {
     throw InputError(place + ": output directory '" + path + "' " + why);

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "solver/petsc_session.hpp"
+#include "spaces/space_factory.hpp"
 
 namespace iga {
 
@@ -21,7 +22,7 @@ SpaceSize measure(const Space& space) {
 
 SpaceSize uniform_estimate(const SpaceSize& level0, int level) {
   const double growth = std::pow(4.0, level);
-  return {level0.elements * growth, level0.dofs * growth, level0.element_entries * growth};
+  return {level0.elements * growth, level0.dofs * growth, level0.element_entries * growth, level0.build_bytes * growth};
 }
 
 MemoryModel memory_model(SolverKind kind, const PetscSettings& petsc) {
@@ -31,8 +32,9 @@ MemoryModel memory_model(SolverKind kind, const PetscSettings& petsc) {
 
 double estimated_memory_bytes(const SpaceSize& size, const MemoryModel& model) {
   const double ranks = std::max(1, model.ranks);
-  if (model.factorization) return 8.5 * size.element_entries * std::log2(std::max(2.0, size.dofs)) / ranks;
-  return 400.0 * size.dofs + 7.0 * size.element_entries / ranks;
+  if (model.factorization)
+    return size.build_bytes + 8.5 * size.element_entries * std::log2(std::max(2.0, size.dofs)) / ranks;
+  return size.build_bytes + 400.0 * size.dofs + 7.0 * size.element_entries / ranks;
 }
 
 void check_space_request(const ConfigNode& space, const ResourceLimits& limits) {
@@ -73,16 +75,25 @@ std::optional<SpaceSize> requested_bspline_size(const ConfigNode& space, int lev
   return size;
 }
 
-void check_requested_levels(const ConfigNode& space, int levels, const ResourceLimits& limits,
+void check_requested_levels(const ConfigNode& domain, const ConfigNode& space, int levels, const ResourceLimits& limits,
                             const ConfigNode& blame, const std::string& levels_name, const MemoryModel& model) {
-  for (int level = 0; level < levels; ++level) {
-    const auto size = requested_bspline_size(space, level);
-    if (!size) return;
-    check_size(*size, limits, level == 0 ? space : blame,
-               level == 0 ? "level 0 (from space.elements and space.degree)"
-                          : "level " + std::to_string(level) + " of " + levels_name + " " + std::to_string(levels) +
-                                " (from space.elements and space.degree)",
-               model);
+  const auto which = [&](int level, const std::string& basis) {
+    return (level == 0 ? std::string("level 0") : "level " + std::to_string(level) + " of " + levels_name + " " +
+                                                      std::to_string(levels)) +
+           " (from " + basis + ")";
+  };
+  if (requested_bspline_size(space, 0)) {
+    for (int level = 0; level < levels; ++level)
+      check_size(*requested_bspline_size(space, level), limits, level == 0 ? space : blame,
+                 which(level, "space.elements and space.degree"), model);
+    return;
+  }
+  const std::vector<SpaceRequestSize> sizes = requested_space_sizes(domain, space, levels);
+  for (std::size_t level = 0; level < sizes.size(); ++level) {
+    const SpaceRequestSize& r = sizes[level];
+    const ConfigNode& node = level > 0 ? blame : r.blame ? *r.blame : space;
+    check_size({r.elements, r.dofs, r.element_entries, r.build_bytes}, limits, node,
+               which(static_cast<int>(level), r.basis), model);
   }
 }
 
@@ -98,7 +109,8 @@ void check_size(const SpaceSize& size, const ResourceLimits& limits, const Confi
   if (gb > limits.max_memory_gb) {
     char buf[32];
     std::snprintf(buf, sizeof buf, "%.3g", gb);
-    const std::string parts = model.factorization ? "matrix and factor" : "matrix and preconditioner";
+    const std::string parts = std::string(size.build_bytes > 0 ? "the space, " : "") +
+                              (model.factorization ? "matrix and factor" : "matrix and preconditioner");
     const std::string per_rank = model.ranks > 1 ? ", per rank of " + std::to_string(model.ranks) : "";
     node.fail(what + " needs about " + buf + " GB (" + parts + per_rank + "), more than limits.max_memory_gb = " +
               format_number(limits.max_memory_gb) + how_to_raise("max_memory_gb"));

@@ -19,6 +19,7 @@ struct SpaceSize {
   double elements = 0;
   double dofs = 0;
   double element_entries = 0;  ///< Σ over elements of (active functions)²: bounds the matrix nonzeros
+  double build_bytes = 0;      ///< what the space itself takes, when estimated before it is built
 };
 
 /// Exact size of a built space (one pass over the elements' active functions).
@@ -40,7 +41,8 @@ struct MemoryModel {
 /// solver factorizes; `ranks` is this run's number of MPI ranks.
 MemoryModel memory_model(SolverKind kind, const PetscSettings& petsc);
 
-/// Bytes a level of this size needs (per rank), an estimate, not a bound.
+/// Bytes a level of this size needs (per rank), an estimate, not a bound: size.build_bytes (the
+/// space, on every rank) and the solve's.
 /// With a factorization: 8.5 bytes per element entry times log2(dofs) (nested dissection's fill
 /// grows like N log N), divided over the ranks. Calibrated on a B-spline study (264 196 DOFs,
 /// quadratic: 2.4 GB measured, 3.2 GB estimated).
@@ -63,10 +65,12 @@ void check_space_request(const ConfigNode& space, const ResourceLimits& limits);
 std::optional<SpaceSize> requested_bspline_size(const ConfigNode& space, int level);
 
 /// Before anything is built: every uniform level of a space whose size follows from its request
-/// (requested_bspline_size) against the limits, as check_size; InputError at `blame` (the levels
-/// key) naming `levels_name` ("--levels" or "refinement.levels"). Nothing for other spaces: their
-/// levels are estimated from the built level 0.
-void check_requested_levels(const ConfigNode& space, int levels, const ResourceLimits& limits,
+/// (requested_bspline_size, or requested_space_sizes of the space factory: a g1_4split surface from
+/// a file) against the limits, as check_size; InputError at the space (or the key the estimate
+/// names, such as domain.file) for level 0 and at `blame` (the levels key) naming `levels_name`
+/// ("--levels" or "refinement.levels") for the others. Nothing for other spaces: their levels are
+/// estimated from the built level 0.
+void check_requested_levels(const ConfigNode& domain, const ConfigNode& space, int levels, const ResourceLimits& limits,
                             const ConfigNode& blame, const std::string& levels_name, const MemoryModel& model);
 
 /// InputError at `node` when `size` exceeds limits.max_elements, max_dofs or max_memory_gb (the

@@ -103,8 +103,8 @@ StudySettings parse_study(const ConfigNode& root, const std::string& config_path
     const auto type = refinement && refinement->is_map() ? refinement->find("type") : std::nullopt;
     const bool adaptive = type && type->is_scalar() && type->as_string() == "adaptive";
     const int levels = levels_override > 0 ? levels_override : levels_node ? levels_node->as_int() : s.levels;
-    if (!adaptive && levels >= 1 && levels <= 12)
-      check_requested_levels(space_node, levels, s.limits, levels_node && levels_override <= 0 ? *levels_node : space_node,
+    if (levels >= 1 && levels <= (adaptive ? 40 : 12))  // adaptive levels follow the solutions: level 0 only
+      check_requested_levels(domain_node, space_node, adaptive ? 1 : levels, s.limits, levels_node && levels_override <= 0 ? *levels_node : space_node,
                              levels_override > 0 ? "--levels" : "refinement.levels", memory_model(s.solver, s.petsc));
   }
   const auto t_coarse = Clock::now();

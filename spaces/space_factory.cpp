@@ -22,4 +22,11 @@ SpacePtr make_space(const ConfigNode& domain, const ConfigNode& space, int level
   space["type"].fail("unsupported space type '" + type + "'");
 }
 
+std::vector<SpaceRequestSize> requested_space_sizes(const ConfigNode& domain, const ConfigNode& space, int levels) {
+  const auto type = space.is_map() ? space.find("type") : std::nullopt;
+  if (type && type->is_scalar() && type->as_string() == "g1_4split")
+    return g1_4split_requested_sizes(domain, space, levels);
+  return {};
+}
+
 }  // namespace iga

@@ -7,6 +7,7 @@
 
 #include "config/config_node.hpp"
 #include "spaces/space.hpp"
+#include "spaces/space_request_size.hpp"
 
 namespace iga {
 
@@ -19,5 +20,10 @@ std::vector<std::string> space_types();
 /// of building them again; the caller owns it, the new space keeps what it shares alive.
 /// Throws InputError naming the config place for anything it cannot build.
 SpacePtr make_space(const ConfigNode& domain, const ConfigNode& space, int level, const Space* coarser = nullptr);
+
+/// Levels 0 .. levels - 1 of the space, estimated from the request alone (a g1_4split surface from
+/// a file: the file's face, edge and vertex counts, read without building anything), or empty for
+/// a space without such an estimate or a request the builder will refuse anyway.
+std::vector<SpaceRequestSize> requested_space_sizes(const ConfigNode& domain, const ConfigNode& space, int levels);
 
 }  // namespace iga

@@ -44,6 +44,9 @@ SpacePtr build_or_name_the_separable_degree(const G14Options& o, const ConfigNod
   }
 }
 
+/// The file of `domain.file`, relative to the config's folder and confined to it (resolve_config_file).
+std::filesystem::path surface_file(const ConfigNode& node) { return resolve_config_file(node); }
+
 /// A closed quad surface in 3D: a built-in (cube, split_tetrahedron) or a quad .obj/.off file.
 std::pair<QuadTopology, std::vector<Eigen::Vector3d>> surface_mesh(const ConfigNode& domain) {
   domain.check_keys({"type", "mesh", "file"});
@@ -56,7 +59,7 @@ std::pair<QuadTopology, std::vector<Eigen::Vector3d>> surface_mesh(const ConfigN
     return {split_tetrahedron_topology(), split_tetrahedron_vertices()};
   }
   const ConfigNode node = domain["file"];
-  const std::filesystem::path path = resolve_config_file(node);
+  const std::filesystem::path path = surface_file(node);
   const QuadSurfaceFile read = node.guard([&] {
     QuadSurfaceFile file = read_quad_surface_mesh(path.string());
     validate_quad_surface(file);  // degenerate, folded, repeated faces: named here, not as a failed solve
@@ -95,6 +98,55 @@ PatchMesh domain_mesh(const ConfigNode& domain) {
 }
 
 }  // namespace
+
+std::vector<SpaceRequestSize> g1_4split_requested_sizes(const ConfigNode& domain, const ConfigNode& space, int levels) {
+  try {
+    const auto type = domain.is_map() ? domain.find("type") : std::nullopt;
+    const auto file = domain.is_map() ? domain.find("file") : std::nullopt;
+    const auto degree = space.find("degree");
+    if (!type || !type->is_scalar() || type->as_string() != "surface" || !file || !file->is_scalar() || !degree ||
+        !degree->is_scalar())
+      return {};
+    const double k = degree->as_int();
+    const auto regularity = space.find("regularity");
+    const double r = regularity ? regularity->as_int() : 1;
+    if (k < 3 || k > 10 || r < 1 || 2 * k - r < 4) return {};
+    // Reading the file is cheap (its size is capped); the space built on it is not.
+    const QuadSurfaceFile read = read_quad_surface_mesh(surface_file(*file).string());
+    std::vector<std::pair<int, int>> edges;
+    std::vector<int> used;
+    for (const auto& q : read.quads)
+      for (int c = 0; c < 4; ++c) {
+        edges.emplace_back(std::min(q[c], q[(c + 1) % 4]), std::max(q[c], q[(c + 1) % 4]));
+        used.push_back(q[c]);
+      }
+    std::sort(edges.begin(), edges.end());
+    std::sort(used.begin(), used.end());
+    double faces = static_cast<double>(read.quads.size());
+    double num_edges = static_cast<double>(std::unique(edges.begin(), edges.end()) - edges.begin());
+    double vertices = static_cast<double>(std::unique(used.begin(), used.end()) - used.begin());
+    const double inner = (2 * k - r - 3) * (2 * k - r - 3) + 4, per_edge = 4 * k - 2 * r - 6;
+    const double active = inner + 4 * per_edge + 16, coefficients = (2 * k - r + 1) * (2 * k - r + 1);
+    std::vector<SpaceRequestSize> sizes;
+    for (int level = 0; level < levels; ++level) {
+      SpaceRequestSize size;
+      size.elements = faces;
+      size.dofs = faces * inner + num_edges * per_edge + 4 * vertices;
+      size.element_entries = faces * active * active;
+      size.build_bytes = 64.0 * coefficients * coefficients * faces;
+      size.basis = "the " + std::to_string(read.quads.size()) + " faces of domain.file and space.degree";
+      size.blame = *file;
+      sizes.push_back(size);
+      // One split: a new vertex on every edge and in every face; every edge halved, four new per face.
+      vertices += num_edges + faces;
+      num_edges = 2 * num_edges + 4 * faces;
+      faces *= 4;
+    }
+    return sizes;
+  } catch (const InputError&) {
+    return {};  // the builder reports it, in its own order
+  }
+}
 
 SpacePtr make_g1_4split_space(const ConfigNode& domain, const ConfigNode& space, int level) {
   space.check_keys({"type", "degree", "regularity", "blending", "refinement"});

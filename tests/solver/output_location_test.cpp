@@ -19,6 +19,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
+std::string config_refusal(const fs::path& cwd, const std::string& path);
+
 /// The message of check_output_not_above for `path`, run from `cwd`, or "" when it passes.
 std::string refusal(const fs::path& cwd, const std::string& path, const std::vector<std::string>& configs) {
   const fs::path before = fs::current_path();
@@ -130,6 +132,68 @@ TEST(OutputLocation, OnlyEmptyFoldersAndEarlierResultsAreReplaced) {
     EXPECT_NE(std::string(e.what()).find("exists and is not an earlier result of iga-run"), std::string::npos) << e.what();
   }
   EXPECT_TRUE(fs::exists(run / "theirs" / "thesis.tex"));
+}
+
+/// The message of check_output_directory for `path`, run from `cwd`, or "" when it passes.
+std::string output_refusal(const fs::path& cwd, const std::string& path) {
+  const fs::path before = fs::current_path();
+  fs::current_path(cwd);
+  std::string message;
+  try {
+    check_output_directory(path, "--output");
+  } catch (const InputError& e) {
+    message = e.what();
+  }
+  fs::current_path(before);
+  return message;
+}
+
+TEST(OutputLocation, DanglingLinksOnTheWayAreRefused) {
+  const fs::path run = test::scratch_folder() / "run6";
+  fs::remove_all(run);
+  fs::create_directories(run / "real");
+  fs::create_directory_symlink("../outside/new", run / "out");
+  fs::create_directory_symlink("missing", run / "lnk");
+  fs::create_directory_symlink("loop_b", run / "loop_a");
+  fs::create_directory_symlink("loop_a", run / "loop_b");
+  fs::create_directory_symlink("real", run / "good");
+  EXPECT_EQ(output_refusal(run, "out"), "--output: output directory 'out' goes through the symbolic link '" +
+                                            (run / "out").string() +
+                                            "' (to '../outside/new'), which leads nowhere: its target does not "
+                                            "exist (or the links loop)");
+  for (const char* path : {"lnk/res", "lnk/../res", "loop_a", "loop_b/x"})
+    EXPECT_NE(output_refusal(run, path).find("which leads nowhere"), std::string::npos) << path;
+  // From a config too, before the question whether it leads outside.
+  EXPECT_NE(config_refusal(run, "out").find("c.yaml:9:22: output.directory: output directory 'out' goes through the "
+                                            "symbolic link"),
+            std::string::npos);
+  for (const char* path : {"good", "good/res", "real/a/b", "new"}) EXPECT_EQ(output_refusal(run, path), "") << path;
+  EXPECT_FALSE(fs::exists(run / "outside"));
+}
+
+TEST(OutputLocation, OverlongPathsAndNamesAreRefusedForWhatTheyAre) {
+  const fs::path run = test::scratch_folder() / "run7";
+  fs::create_directories(run);
+  std::string deep;
+  while (deep.size() < 3900) deep += "abcdefghij/";
+  EXPECT_NE(output_refusal(run, deep).find("--output: output directory 'abcdefghij/abcdefghij/"), std::string::npos);
+  EXPECT_NE(output_refusal(run, deep).find("...' is too long: "), std::string::npos) << output_refusal(run, deep);
+  EXPECT_NE(output_refusal(run, deep).find(" bytes as an absolute path, at most 2048"), std::string::npos);
+  EXPECT_NE(config_refusal(run, deep).find("is too long"), std::string::npos);
+  EXPECT_FALSE(fs::exists(run / "abcdefghij"));  // nothing made on the way
+
+  const std::string long_name(300, 'n');
+  EXPECT_NE(config_refusal(run, long_name).find("c.yaml:9:22: output.directory: output directory 'nnn"),
+            std::string::npos);
+  EXPECT_NE(config_refusal(run, long_name + "/x").find("has a name of 300 bytes ('nnnn"), std::string::npos);
+  EXPECT_NE(config_refusal(run, long_name + "/x").find("'); a name has at most 255"), std::string::npos);
+  EXPECT_EQ(config_refusal(run, long_name).find("leads outside"), std::string::npos);
+  // The output directory's own name leaves room for the name it moves in under.
+  EXPECT_NE(output_refusal(run, std::string(230, 'n')).find("ends in a name of 230 bytes; the output directory's own "
+                                                            "name has at most 223"),
+            std::string::npos);
+  EXPECT_EQ(output_refusal(run, std::string(223, 'n')), "");
+  EXPECT_EQ(output_refusal(run, std::string(255, 'n') + "/results"), "");
 }
 
 }  // namespace

@@ -5,10 +5,13 @@
 
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <cmath>
+#include <sstream>
 
 #include "solver/study.hpp"
 #include "spaces/space_factory.hpp"
+#include "tests/support/scratch_files.hpp"
 
 namespace iga {
 namespace {
@@ -123,6 +126,76 @@ TEST(ResourceChecks, MeasureCountsElementEntries) {
   const SpaceSize l2 = uniform_estimate(s, 2);
   EXPECT_EQ(l2.elements, 96.0);
   EXPECT_GE(l2.dofs, 14.0 * 10.0);  // the estimate bounds the true level-2 dimension from above
+}
+
+/// An n x n grid of quads on a slightly curved sheet, as an .obj file in the scratch folder.
+std::string quad_grid_obj(int n) {
+  std::ostringstream obj;
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i) obj << "v " << double(i) / n << " " << double(j) / n << " " << 0.1 * i * i / (n * n) << "\n";
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      const int a = j * (n + 1) + i + 1;
+      obj << "f " << a << " " << a + 1 << " " << a + n + 2 << " " << a + n + 1 << "\n";
+    }
+  return test::scratch_file("grid" + std::to_string(n) + ".obj", obj.str());
+}
+
+ConfigNode surface_config(int n, const std::string& rest = "") {
+  quad_grid_obj(n);
+  return ConfigNode::load_string("problem: {pde: laplace_beltrami, exact: \"x*y\", boundary: {all: dirichlet}}\n"
+                                 "domain: {type: surface, file: grid" + std::to_string(n) + ".obj}\n"
+                                 "space: {type: g1_4split, degree: 5}\n" + rest,
+                                 (test::scratch_folder() / "surface.yaml").string());
+}
+
+TEST(ResourceChecks, SurfaceFilesAreEstimatedFromTheirFaces) {
+  // Against the built space: as many elements, at least as many DOFs and entries, not far more
+  // (6 x 6 faces: 2644 DOFs estimated, 2500 built).
+  const ConfigNode root = surface_config(6);
+  const auto sizes = requested_space_sizes(root["domain"], root["space"], 2);
+  ASSERT_EQ(sizes.size(), 2u);
+  for (int level = 0; level < 2; ++level) {
+    const SpaceSize built = measure(*make_space(root["domain"], root["space"], level));
+    EXPECT_EQ(sizes[level].elements, built.elements) << level;
+    EXPECT_GE(sizes[level].dofs, built.dofs) << level;
+    EXPECT_LE(sizes[level].dofs, 1.2 * built.dofs) << level;
+    EXPECT_GE(sizes[level].element_entries, built.element_entries) << level;
+    EXPECT_LE(sizes[level].element_entries, 1.2 * built.element_entries) << level;
+    EXPECT_EQ(sizes[level].build_bytes, 64.0 * 1e4 * built.elements) << level;  // (2k - r + 1)^4 = 10^4
+  }
+  // Other domains and spaces: no estimate.
+  const ConfigNode cube = ConfigNode::load_string("domain: {type: surface, mesh: cube}\nspace: {type: g1_4split, degree: 5}\n");
+  EXPECT_TRUE(requested_space_sizes(cube["domain"], cube["space"], 2).empty());
+}
+
+TEST(ResourceChecks, ALargeSurfaceFileIsRefusedBeforeLevelZero) {
+  // 6400 faces at degree 5: about 4 GB to build level 0 (3.2 GB measured, after 70 s), and more to
+  // factorize its matrix.
+  const auto start = std::chrono::steady_clock::now();
+  std::string m;
+  try {
+    parse_study(surface_config(80, "limits: {max_memory_gb: 2}\n"), "surface.yaml", 0, "");
+  } catch (const InputError& e) {
+    m = e.what();
+  }
+  EXPECT_NE(m.find("surface.yaml:2:31: domain.file: level 0 (from the 6400 faces of domain.file and space.degree) "
+                   "needs about "),
+            std::string::npos)
+      << m;
+  EXPECT_NE(m.find(" GB (the space, matrix and factor), more than limits.max_memory_gb = 2"), std::string::npos) << m;
+  // Requested levels: blamed on --levels.
+  try {
+    parse_study(surface_config(80, "limits: {max_memory_gb: 1e3}\n"), "surface.yaml", 4, "");
+    m.clear();
+  } catch (const InputError& e) {
+    m = e.what();
+  }
+  EXPECT_NE(m.find("surface.yaml:3:8: space: level 2 of --levels 4 (from the 6400 faces of domain.file and "
+                   "space.degree) has "), std::string::npos)
+      << m;
+  EXPECT_NE(m.find("more than limits.max_dofs"), std::string::npos) << m;
+  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 5.0);
 }
 
 }  // namespace
