@@ -19,7 +19,7 @@ TEST(TextExcerpt, ShortPrintableTextIsQuotedAsItIs) {
 
 TEST(TextExcerpt, LongTextIsCutAndControlBytesReplaced) {
   EXPECT_EQ(quoted_excerpt(std::string(1000, 'a')), "'" + std::string(kMaxExcerptBytes, 'a') + "'...");
-  EXPECT_EQ(quoted_excerpt("a\x1b[2Jb\r\n\0c\x7f\xff"s), "'a?[2Jb???c??'");
+  EXPECT_EQ(quoted_excerpt("a\x1b[2Jb\r\n\0c\x7f\xff"s), "'a?[2Jb???c?\?'");
   EXPECT_EQ(printable_excerpt("<tag\x07>"), "<tag?>");
   EXPECT_EQ(printable_excerpt(std::string(50, 'x')), std::string(kMaxExcerptBytes, 'x') + "...");
 }

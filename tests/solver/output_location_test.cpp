@@ -21,18 +21,24 @@ namespace fs = std::filesystem;
 
 std::string config_refusal(const fs::path& cwd, const std::string& path);
 
-/// The message of check_output_not_above for `path`, run from `cwd`, or "" when it passes.
-std::string refusal(const fs::path& cwd, const std::string& path, const std::vector<std::string>& configs) {
+/// The message of `check()` run from `cwd`, or "" when it passes.
+template <class Check>
+std::string message_from(const fs::path& cwd, Check check) {
   const fs::path before = fs::current_path();
   fs::current_path(cwd);
   std::string message;
   try {
-    check_output_not_above(path, "--output", configs);
+    check();
   } catch (const InputError& e) {
     message = e.what();
   }
   fs::current_path(before);
   return message;
+}
+
+/// The message of check_output_not_above for `path`, run from `cwd`, or "" when it passes.
+std::string refusal(const fs::path& cwd, const std::string& path, const std::vector<std::string>& configs) {
+  return message_from(cwd, [&] { check_output_not_above(path, "--output", configs); });
 }
 
 TEST(OutputLocation, TheWorkingDirectoryAndFoldersAboveItAreRefused) {
@@ -81,16 +87,7 @@ TEST(OutputLocation, SymbolicLinksAreResolved) {
 
 /// The message of check_config_output_directory for `path`, run from `cwd`, or "" when it passes.
 std::string config_refusal(const fs::path& cwd, const std::string& path) {
-  const fs::path before = fs::current_path();
-  fs::current_path(cwd);
-  std::string message;
-  try {
-    check_config_output_directory(path, "c.yaml:9:22: output.directory");
-  } catch (const InputError& e) {
-    message = e.what();
-  }
-  fs::current_path(before);
-  return message;
+  return message_from(cwd, [&] { check_config_output_directory(path, "c.yaml:9:22: output.directory"); });
 }
 
 TEST(OutputLocation, AConfigWritesOnlyInsideTheWorkingDirectory) {
@@ -136,16 +133,7 @@ TEST(OutputLocation, OnlyEmptyFoldersAndEarlierResultsAreReplaced) {
 
 /// The message of check_output_directory for `path`, run from `cwd`, or "" when it passes.
 std::string output_refusal(const fs::path& cwd, const std::string& path) {
-  const fs::path before = fs::current_path();
-  fs::current_path(cwd);
-  std::string message;
-  try {
-    check_output_directory(path, "--output");
-  } catch (const InputError& e) {
-    message = e.what();
-  }
-  fs::current_path(before);
-  return message;
+  return message_from(cwd, [&] { check_output_directory(path, "--output"); });
 }
 
 TEST(OutputLocation, DanglingLinksOnTheWayAreRefused) {
