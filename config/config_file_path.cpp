@@ -8,20 +8,25 @@ namespace fs = std::filesystem;
 
 namespace {
 
-/// Whether `inner` lies strictly below `outer` (both canonical): compared component by component,
-/// so "/a/bc" is not below "/a/b".
-bool strictly_below(const fs::path& inner, const fs::path& outer) {
-  auto i = inner.begin();
-  for (auto o = outer.begin(); o != outer.end(); ++o, ++i) {
-    if (o->empty()) continue;  // a trailing separator of the folder
-    if (i == inner.end() || *i != *o) return false;
-  }
-  for (; i != inner.end(); ++i)
-    if (!i->empty()) return true;
-  return false;
+/// `inner` relative to `outer`, both normalised and without a trailing separator.
+fs::path relative_to(const fs::path& inner, const fs::path& outer) {
+  const auto trimmed = [](fs::path p) {  // "/a/b/" -> "/a/b"
+    p = p.lexically_normal();
+    return !p.has_filename() && p.has_relative_path() ? p.parent_path() : p;
+  };
+  return trimmed(inner).lexically_relative(trimmed(outer));
 }
 
 }  // namespace
+
+bool path_within(const fs::path& inner, const fs::path& outer) {
+  const fs::path rel = relative_to(inner, outer);
+  return !rel.empty() && *rel.begin() != "..";
+}
+
+bool path_strictly_within(const fs::path& inner, const fs::path& outer) {
+  return path_within(inner, outer) && relative_to(inner, outer) != ".";
+}
 
 fs::path config_folder(const ConfigNode& node) {
   const fs::path folder = fs::path(node.file()).parent_path();
@@ -45,7 +50,7 @@ fs::path resolve_config_file(const ConfigNode& key) {
   // Links resolved: a name inside the folder that is a link pointing out is outside too.
   const fs::path real = fs::weakly_canonical(path, ec);
   if (ec) key.fail("'" + name + "' cannot be resolved: " + ec.message());
-  if (!strictly_below(real, root)) key.fail(outside + ")");
+  if (!path_strictly_within(real, root)) key.fail(outside + ")");
   // weakly_canonical leaves a dangling link unresolved; what it would point to is unknown.
   if (fs::is_symlink(fs::symlink_status(path, ec)) && !fs::exists(path, ec))
     key.fail("'" + name + "' is a link to a file that does not exist");

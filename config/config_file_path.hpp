@@ -21,6 +21,14 @@ namespace iga {
 /// directory for the default "<string>"), and nothing is confined.
 std::filesystem::path resolve_config_file(const ConfigNode& key);
 
+/// Whether `inner` is `outer` or lies below it, compared by components after lexical normalisation
+/// ("/a/bc" is not below "/a/b"; a trailing separator names the same folder). Both should be
+/// absolute with links resolved (fs::canonical / weakly_canonical): this looks at names only.
+bool path_within(const std::filesystem::path& inner, const std::filesystem::path& outer);
+
+/// path_within, and not `outer` itself.
+bool path_strictly_within(const std::filesystem::path& inner, const std::filesystem::path& outer);
+
 /// The folder that files named in `node`'s config are taken relative to: the config file's
 /// folder, or the folder of the name given to load_string ("." when it has none).
 std::filesystem::path config_folder(const ConfigNode& node);

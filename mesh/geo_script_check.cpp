@@ -12,6 +12,7 @@
 #include <sstream>
 #include <string>
 
+#include "config/config_file_path.hpp"
 #include "config/config_node.hpp"
 #include "config/errors.hpp"
 #include "config/text_excerpt.hpp"
@@ -504,12 +505,8 @@ class ScriptChecker {
 
   /// Whether `real` (links resolved) lies below one of the folders Includes may read from.
   bool inside_roots(const fs::path& real) const {
-    bool inside = false;
-    for (const auto& root : roots_) {
-      const auto rel = real.lexically_relative(root);
-      inside = inside || (!rel.empty() && *rel.begin() != ".." && *rel.begin() != ".");
-    }
-    return inside;
+    return std::any_of(roots_.begin(), roots_.end(),
+                       [&](const fs::path& root) { return path_strictly_within(real, root); });
   }
 
   void include(const Script& script, std::size_t i, std::size_t end, std::vector<fs::path>& stack) {

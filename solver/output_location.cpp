@@ -6,6 +6,7 @@
 #include <random>
 #include <system_error>
 
+#include "config/config_file_path.hpp"
 #include "config/errors.hpp"
 
 namespace iga {
@@ -13,16 +14,6 @@ namespace iga {
 namespace fs = std::filesystem;
 
 namespace {
-
-/// Whether `outer` is `inner` or one of its ancestors (both absolute, links resolved).
-bool encloses(const fs::path& outer, const fs::path& inner) {
-  const auto trimmed = [](fs::path p) {  // "/a/b/" -> "/a/b": a trailing separator names the same folder
-    p = p.lexically_normal();
-    return !p.has_filename() && p.has_relative_path() ? p.parent_path() : p;
-  };
-  const fs::path rel = trimmed(inner).lexically_relative(trimmed(outer));
-  return !rel.empty() && *rel.begin() != "..";
-}
 
 /// Room the last name needs beyond its own length: the results are moved in beside it as
 /// ".NAME.incoming-PID-RANDOM" (output/staged_directory.cpp), at most this many bytes more.
@@ -91,8 +82,7 @@ void check_config_output_directory(const std::string& path, const std::string& p
   const fs::path cwd = fs::weakly_canonical(fs::current_path(ec), ec);
   if (ec) return;  // an unusable working directory is reported by check_output_directory
   const fs::path target = fs::weakly_canonical(cwd / given, ec);
-  const fs::path rel = target.lexically_relative(cwd);
-  if (ec || rel.empty() || *rel.begin() == "..") refuse("leads outside the working directory");
+  if (ec || !path_within(target, cwd)) refuse("leads outside the working directory");
 }
 
 void check_output_not_above(const std::string& path, const std::string& place,
@@ -105,11 +95,11 @@ void check_output_not_above(const std::string& path, const std::string& place,
                      ": the results replace the output directory as a whole; give a folder of their own, such as "
                      "results/NAME");
   };
-  if (const fs::path cwd = fs::current_path(ec); !ec && encloses(target, fs::weakly_canonical(cwd, ec)))
+  if (const fs::path cwd = fs::current_path(ec); !ec && path_within(fs::weakly_canonical(cwd, ec), target))
     refuse("the working directory or a folder above it");
   for (const std::string& config : config_paths) {
     const fs::path folder = fs::weakly_canonical(fs::absolute(config, ec).parent_path(), ec);
-    if (!ec && encloses(target, folder)) refuse("the folder of the config '" + config + "' or a folder above it");
+    if (!ec && path_within(folder, target)) refuse("the folder of the config '" + config + "' or a folder above it");
   }
 }
 
