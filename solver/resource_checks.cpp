@@ -56,25 +56,6 @@ void check_space_request(const ConfigNode& space, const ResourceLimits& limits) 
   }
 }
 
-std::optional<SpaceSize> requested_bspline_size(const ConfigNode& space, int level) {
-  const auto type = space.find("type");
-  const auto degree = space.find("degree");
-  if (!type || !type->is_scalar() || type->as_string() != "bspline" || !degree || !degree->is_scalar())
-    return std::nullopt;
-  const double p = degree->as_int();
-  const auto regularity = space.find("regularity");
-  const double r = regularity ? regularity->as_int() : p - 1;
-  std::vector<double> n = {2, 2};
-  if (const auto elements = space.find("elements")) n = elements->as_doubles();
-  if (p < 1 || r < 0 || r > p - 1 || n.size() != 2 || !(n[0] >= 1 && n[1] >= 1)) return std::nullopt;  // the builder says why
-  const double split = std::pow(2.0, level);
-  SpaceSize size;
-  size.elements = n[0] * n[1] * split * split;
-  size.dofs = (n[0] * split * (p - r) + r + 1) * (n[1] * split * (p - r) + r + 1);
-  size.element_entries = size.elements * std::pow(p + 1, 4);
-  return size;
-}
-
 void check_requested_levels(const ConfigNode& domain, const ConfigNode& space, int levels, const ResourceLimits& limits,
                             const ConfigNode& blame, const std::string& levels_name, const MemoryModel& model) {
   const auto which = [&](int level, const std::string& basis) {
@@ -82,12 +63,6 @@ void check_requested_levels(const ConfigNode& domain, const ConfigNode& space, i
                                                       std::to_string(levels)) +
            " (from " + basis + ")";
   };
-  if (requested_bspline_size(space, 0)) {
-    for (int level = 0; level < levels; ++level)
-      check_size(*requested_bspline_size(space, level), limits, level == 0 ? space : blame,
-                 which(level, "space.elements and space.degree"), model);
-    return;
-  }
   const std::vector<SpaceRequestSize> sizes = requested_space_sizes(domain, space, levels);
   for (std::size_t level = 0; level < sizes.size(); ++level) {
     const SpaceRequestSize& r = sizes[level];

@@ -58,15 +58,9 @@ double estimated_memory_bytes(const SpaceSize& size, const MemoryModel& model = 
 /// both) against limits.max_elements. InputError at the key otherwise.
 void check_space_request(const ConfigNode& space, const ResourceLimits& limits);
 
-/// Level `level` of a B-spline space (`space.type: bspline`) from its request alone, or nullopt
-/// for other spaces: [nx, ny] elements of degree p and regularity r (defaults [2, 2], r = p - 1)
-/// halved `level` times give nx ny 4^level elements, prod_d (n_d 2^level (p - r) + r + 1) DOFs (open
-/// knot vectors; a domain patch's own interior knots add a few) and (p + 1)^4 entries per element.
-std::optional<SpaceSize> requested_bspline_size(const ConfigNode& space, int level);
-
 /// Before anything is built: every uniform level of a space whose size follows from its request
-/// (requested_bspline_size, or requested_space_sizes of the space factory: a g1_4split surface from
-/// a file) against the limits, as check_size; InputError at the space (or the key the estimate
+/// (requested_space_sizes of the space factory: a B-spline space from its elements and degree, a
+/// g1_4split surface from a file) against the limits, as check_size; InputError at the space (or the key the estimate
 /// names, such as domain.file) for level 0 and at `blame` (the levels key) naming `levels_name`
 /// ("--levels" or "refinement.levels") for the others. Nothing for other spaces: their levels are
 /// estimated from the built level 0.

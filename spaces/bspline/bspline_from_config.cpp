@@ -1,6 +1,8 @@
 #include "config/config_node.hpp"
 #include "spaces/bspline/bspline_from_config.hpp"
 
+#include <cmath>
+
 #include <sstream>
 #include <stdexcept>
 
@@ -166,6 +168,28 @@ SpacePtr make_bspline_space(const ConfigNode& domain, const ConfigNode& space, i
     knots.push_back(kv);
   }
   return std::make_shared<const TensorBSplineSpace>(geometry, knots[0], knots[1]);
+}
+
+std::vector<SpaceRequestSize> bspline_requested_sizes(const ConfigNode& space, int levels) {
+  const auto degree = space.find("degree");
+  if (!degree || !degree->is_scalar()) return {};
+  const double p = degree->as_int();
+  const auto regularity = space.find("regularity");
+  const double r = regularity ? regularity->as_int() : p - 1;
+  std::vector<double> n = {2, 2};
+  if (const auto elements = space.find("elements")) n = elements->as_doubles();
+  if (p < 1 || r < 0 || r > p - 1 || n.size() != 2 || !(n[0] >= 1 && n[1] >= 1)) return {};  // the builder says why
+  std::vector<SpaceRequestSize> sizes;
+  for (int level = 0; level < levels; ++level) {
+    const double split = std::pow(2.0, level);
+    SpaceRequestSize size;
+    size.elements = n[0] * n[1] * split * split;
+    size.dofs = (n[0] * split * (p - r) + r + 1) * (n[1] * split * (p - r) + r + 1);
+    size.element_entries = size.elements * std::pow(p + 1, 4);
+    size.basis = "space.elements and space.degree";
+    sizes.push_back(size);
+  }
+  return sizes;
 }
 
 }  // namespace iga

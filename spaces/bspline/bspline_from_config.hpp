@@ -11,10 +11,12 @@
 /// Every error is an InputError naming the config place (exit code 2).
 
 #include <memory>
+#include <vector>
 
 #include "config/config_node.hpp"
 #include "spaces/bspline/patch_geometry.hpp"
 #include "spaces/space.hpp"
+#include "spaces/space_request_size.hpp"
 
 namespace iga {
 
@@ -27,5 +29,12 @@ std::shared_ptr<const PatchGeometry> make_patch_geometry(const ConfigNode& domai
 /// a multiple of the geometry's spans, which are subdivided uniformly (so the space's breakpoints
 /// contain the geometry's).
 SpacePtr make_bspline_space(const ConfigNode& domain, const ConfigNode& space, int level);
+
+/// Levels 0 .. levels-1 of a B-spline space from its request alone (empty when the request is not
+/// one the builder would take: it says why): [nx, ny] elements of degree p and regularity r
+/// (defaults [2, 2], r = p - 1) halved `level` times give nx ny 4^level elements,
+/// prod_d (n_d 2^level (p - r) + r + 1) DOFs (open knot vectors; a domain patch's own interior knots
+/// add a few) and (p + 1)^4 entries per element.
+std::vector<SpaceRequestSize> bspline_requested_sizes(const ConfigNode& space, int levels);
 
 }  // namespace iga

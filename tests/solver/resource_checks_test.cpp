@@ -76,15 +76,16 @@ TEST(ResourceChecks, RequestedBsplineSizesAreTheBuiltOnes) {
     const ConfigNode root = ConfigNode::load_string(std::string(kBase) + space);
     for (int level = 0; level <= 2; ++level) {
       const SpaceSize built = measure(*make_space(root["domain"], root["space"], level));
-      const auto requested = requested_bspline_size(root["space"], level);
-      ASSERT_TRUE(requested) << space;
-      EXPECT_EQ(requested->elements, built.elements) << space << level;
-      EXPECT_EQ(requested->dofs, built.dofs) << space << level;
-      EXPECT_EQ(requested->element_entries, built.element_entries) << space << level;
+      const auto sizes = requested_space_sizes(root["domain"], root["space"], level + 1);
+      ASSERT_EQ(sizes.size(), static_cast<std::size_t>(level + 1)) << space;
+      const SpaceRequestSize& requested = sizes[level];
+      EXPECT_EQ(requested.elements, built.elements) << space << level;
+      EXPECT_EQ(requested.dofs, built.dofs) << space << level;
+      EXPECT_EQ(requested.element_entries, built.element_entries) << space << level;
     }
   }
   const ConfigNode other = ConfigNode::load_string(std::string(kBase) + "space: {type: ws4}\n");
-  EXPECT_FALSE(requested_bspline_size(other["space"], 1));
+  EXPECT_TRUE(requested_space_sizes(other["domain"], other["space"], 1).empty());
 }
 
 TEST(ResourceChecks, IterativePetscSolvesAreEstimatedWithoutAFactor) {
