@@ -31,7 +31,7 @@
 #include <stdexcept>
 
 #include "config/progress.hpp"
-#include "output/lagrange_cells.hpp"
+#include "output/element_drawing.hpp"
 #include "output/point_merger.hpp"
 #include "spaces/space.hpp"
 
@@ -39,53 +39,12 @@ namespace iga {
 
 namespace {
 
-/// Sample points of one element: the reference points evaluated and the cells over them.
-struct ElementDrawing {
-  const QuadratureRule* rule = nullptr;
-  int cell_type = 0;                     ///< VTK type of every cell of the element
-  const std::vector<std::vector<int>>* cells = nullptr;  ///< local point indices per cell
-};
-
-/// The elements laid out as one list of (not yet merged) points: element e owns the unmerged
-/// points [offset[e], offset[e+1]).
-struct Layout {
-  std::vector<std::int64_t> offset;
-  std::vector<ElementDrawing> drawing;
-  /// Rules and cell lists by point coordinates. Evaluators may cache tables keyed by a rule's
-  /// address, so every distinct set of sample points gets one rule, alive for the whole write.
-  std::map<std::vector<double>, std::pair<std::shared_ptr<QuadratureRule>, std::vector<std::vector<int>>>> pieces;
-};
-
-/// The drawing whose points are `points` and cells `cells` (one rule per distinct point set).
-ElementDrawing drawing_of(Layout& layout, const std::vector<Point2>& points, std::vector<std::vector<int>> cells,
-                          int cell_type) {
-  std::vector<double> key;
-  key.reserve(2 * points.size() + 1);
-  key.push_back(cell_type);
-  for (const Point2& p : points) key.insert(key.end(), {p.x(), p.y()});
-  auto [it, inserted] = layout.pieces.try_emplace(std::move(key));
-  if (inserted) {
-    auto rule = std::make_shared<QuadratureRule>();
-    rule->points = points;
-    rule->weights.assign(points.size(), 0.0);
-    it->second = {std::move(rule), std::move(cells)};
-  }
-  return {it->second.first.get(), cell_type, &it->second.second};
-}
-
 vtkSmartPointer<vtkFloatArray> make_field(const std::string& name, int components, vtkIdType tuples) {
   auto a = vtkSmartPointer<vtkFloatArray>::New();
   a->SetName(name.c_str());
   a->SetNumberOfComponents(components);
   a->SetNumberOfTuples(tuples);
   return a;
-}
-
-/// True for a reference point on the boundary of its cell: the only points another element can share.
-bool on_cell_boundary(CellShape shape, const Point2& r) {
-  constexpr double eps = 1e-12;
-  if (r.x() < eps || r.y() < eps) return true;
-  return shape == CellShape::quadrilateral ? (r.x() > 1 - eps || r.y() > 1 - eps) : r.x() + r.y() > 1 - eps;
 }
 
 /// Write an unstructured grid with VTK's XML writer (compressed, appended binary); throws
@@ -104,65 +63,14 @@ bool write_solution_vtu(const Space& space, const Eigen::VectorXd& coefficients,
       throw std::invalid_argument("write_solution_vtu: cell field '" + name + "' has " + std::to_string(values.size()) +
                                   " values for " + std::to_string(space.num_elements()) + " elements");
   const int num_elements = space.num_elements();
-  const int order = space.degree();
-  const bool lagrange = options.lagrange && order >= 1 && order <= 10 && elements_are_polynomial(space, order);
-  // Elements that are not single polynomials (macro-elements, non-polynomial bases): Lagrange
-  // cells of the space's degree interpolating u_h on the element (or a subdivision of it): not
-  // exact, but far closer to the smooth u_h than linear sub-cells with many more points
-  // (tests/output/vtk_macro_fidelity_test.cpp, docs/outputs.md "VTK file sizes").
-  const bool subdivided = options.lagrange && !lagrange && order >= 1 && order <= 10 && options.divisions >= 1;
-  const bool high_order = lagrange || subdivided;
-
-  // Pass 1 (serial, cheap): what each element draws.
-  Layout layout;
-  layout.offset.assign(num_elements + 1, 0);
-  layout.drawing.resize(num_elements);
-  std::map<CellShape, ElementDrawing> lagrange_drawing;
-  for (int e = 0; e < num_elements; ++e) {
-    const CellShape shape = space.cell_shape(e);
-    ElementDrawing drawing;
-    if (lagrange) {
-      auto it = lagrange_drawing.find(shape);
-      if (it == lagrange_drawing.end()) {
-        const std::vector<Point2> nodes = lagrange_nodes(shape, order);
-        std::vector<int> all(nodes.size());
-        for (std::size_t k = 0; k < nodes.size(); ++k) all[k] = static_cast<int>(k);
-        it = lagrange_drawing.emplace(shape, drawing_of(layout, nodes, {all}, lagrange_cell_type(shape))).first;
-      }
-      drawing = it->second;
-    } else if (subdivided) {
-      auto it = lagrange_drawing.find(shape);
-      if (it == lagrange_drawing.end()) {
-        SubdividedLagrange cells = subdivided_lagrange(shape, order, options.divisions);
-        it = lagrange_drawing.emplace(shape, drawing_of(layout, cells.points, std::move(cells.cells),
-                                                        lagrange_cell_type(shape))).first;
-      }
-      drawing = it->second;
-    } else {
-      SampleCell sample = space.sample_cell(e, options.samples);
-      const auto num_points = static_cast<int>(sample.points.size());
-      int vertices = 0;
-      for (const std::vector<int>& cell : sample.cells) {
-        if ((cell.size() != 3 && cell.size() != 4) || (vertices && static_cast<int>(cell.size()) != vertices))
-          throw std::logic_error("write_solution_vtu: sample cells of element " + std::to_string(e) +
-                                 " are not all triangles or all quadrilaterals");
-        vertices = static_cast<int>(cell.size());
-        for (int v : cell)
-          if (v < 0 || v >= num_points)
-            throw std::logic_error("write_solution_vtu: sample cell of element " + std::to_string(e) +
-                                   " refers to point " + std::to_string(v));
-      }
-      drawing = drawing_of(layout, sample.points, std::move(sample.cells), vertices == 4 ? VTK_QUAD : VTK_TRIANGLE);
-    }
-    layout.drawing[e] = drawing;
-    layout.offset[e + 1] = layout.offset[e] + drawing.rule->size();
-  }
-  const std::int64_t unmerged = layout.offset[num_elements];
-
-  // Ticks: one per element in each of the two evaluation passes.
+  // Ticks: one per element in each of the two evaluation passes (the drawing's points, the fields).
   const ProgressPhase phase("writing VTK", 2 * static_cast<std::int64_t>(num_elements));
-  // Pass 2 (parallel): the physical points, not yet merged.
-  std::vector<double> xyz(3 * unmerged);
+  ElementDrawing drawing = draw_elements(space, options.lagrange, options.divisions, options.samples);
+  const std::int64_t unmerged = drawing.num_unmerged();
+  const std::vector<std::int64_t>& merged_id = drawing.merged_id;
+  const std::vector<char>& owner = drawing.owner;
+  std::vector<double>& xyz = drawing.xyz;
+  const auto num_points = static_cast<vtkIdType>(drawing.num_points);
   std::exception_ptr failure;
   auto keep_failure = [&failure] {
 #pragma omp critical(iga_vtk_failure)
@@ -177,65 +85,13 @@ bool write_solution_vtu(const Space& space, const Eigen::VectorXd& coefficients,
       return nullptr;
     }
   };
-#pragma omp parallel if (num_elements > 1)
-  {
-    const std::unique_ptr<Space::Evaluator> evaluator = make_evaluator();
-    PointValues geometry;
-#pragma omp for schedule(dynamic, 16)
-    for (int e = 0; e < num_elements; ++e) {
-      if (!evaluator) continue;
-      try {
-        progress_tick();
-        evaluator->evaluate_geometry(e, *layout.drawing[e].rule, geometry);
-        const std::int64_t first = layout.offset[e];
-        const int q = static_cast<int>(layout.offset[e + 1] - first);
-        if (geometry.num_points() != q)
-          throw std::logic_error("write_solution_vtu: element " + std::to_string(e) + " evaluated at " +
-                                 std::to_string(geometry.num_points()) + " points instead of " + std::to_string(q));
-        const bool ambient = geometry.x3.cols() == q;
-        for (int k = 0; k < q; ++k) {
-          double* x = &xyz[3 * (first + k)];
-          x[0] = geometry.x(0, k);
-          x[1] = geometry.x(1, k);
-          x[2] = ambient ? geometry.x3(2, k) : 0.0;
-        }
-      } catch (...) {
-        keep_failure();
-      }
-    }
-  }
-  if (failure) std::rethrow_exception(failure);
-
-  // Pass 3 (serial): merge coinciding points. Only points on an element's boundary can coincide
-  // with another element's, except inside linear sub-cells, whose pieces repeat their shared points.
-  Eigen::Vector3d lo = Eigen::Vector3d::Constant(std::numeric_limits<double>::max()), hi = -lo;
-  for (std::int64_t p = 0; p < unmerged; ++p)
-    for (int d = 0; d < 3; ++d) lo(d) = std::min(lo(d), xyz[3 * p + d]), hi(d) = std::max(hi(d), xyz[3 * p + d]);
-  const double diameter = unmerged > 0 ? (hi - lo).norm() : 1.0;
-  PointMerger merger(1e-9 * std::max(diameter, 1e-300), static_cast<std::size_t>(unmerged / 2));
-  std::vector<std::int64_t> merged_id(unmerged);
-  std::vector<char> owner(unmerged, 0);  // the first copy of a point writes its values
-  for (int e = 0; e < num_elements; ++e) {
-    const CellShape shape = space.cell_shape(e);
-    const QuadratureRule& rule = *layout.drawing[e].rule;
-    for (int k = 0; k < rule.size(); ++k) {
-      const std::int64_t p = layout.offset[e] + k;
-      bool inserted = true;
-      if (!high_order || on_cell_boundary(shape, rule.points[k]))
-        merged_id[p] = merger.insert(Eigen::Vector3d(xyz[3 * p], xyz[3 * p + 1], xyz[3 * p + 2]), inserted);
-      else
-        merged_id[p] = merger.append();  // an interior node belongs to this element alone
-      owner[p] = inserted;
-    }
-  }
-  const auto num_points = static_cast<vtkIdType>(merger.size());
 
   auto coordinates = make_field("Points", 3, num_points);
   for (std::int64_t p = 0; p < unmerged; ++p)
     if (owner[p]) coordinates->SetTypedTuple(merged_id[p], std::array<float, 3>{float(xyz[3 * p]), float(xyz[3 * p + 1]),
                                                                                  float(xyz[3 * p + 2])}.data());
 
-  // Pass 4 (parallel): the exact solution (and its derivatives, for the element errors) once per
+  // In parallel: the exact solution (and its derivatives, for the element errors) once per
   // distinct point, not once per element sharing it: these expressions are the costly part.
   const bool surface = space.ambient_dimension() == 3;
   const bool has_exact = surface ? static_cast<bool>(options.exact3) : static_cast<bool>(options.exact.u);
@@ -289,7 +145,7 @@ bool write_solution_vtu(const Space& space, const Eigen::VectorXd& coefficients,
   }
   std::vector<double>().swap(xyz);
 
-  // Pass 5 (parallel): the fields. Every merged point is written by its owner alone.
+  // In parallel: the fields. Every merged point is written by its owner alone.
   auto u = make_field("u", 1, num_points);
   auto grad_u = make_field("grad_u", 3, num_points);
   auto normals = make_field(surface ? "Normals" : "warp_normal", 3, num_points);
@@ -309,9 +165,9 @@ bool write_solution_vtu(const Space& space, const Eigen::VectorXd& coefficients,
       if (!evaluator) continue;
       try {
         progress_tick();
-        evaluator->evaluate_function(e, *layout.drawing[e].rule, coefficients, flags, geometry, uh);
-        const std::int64_t first = layout.offset[e];
-        const int q = static_cast<int>(layout.offset[e + 1] - first);
+        evaluator->evaluate_function(e, *drawing.rule[e], coefficients, flags, geometry, uh);
+        const std::int64_t first = drawing.offset[e];
+        const int q = static_cast<int>(drawing.offset[e + 1] - first);
         const bool ambient = geometry.x3.cols() == q;
         // Sampled errors of the element: the mean over its drawn points times its area (a map of
         // where the error is; the norms of the convergence table integrate with the error rule).
@@ -363,26 +219,15 @@ bool write_solution_vtu(const Space& space, const Eigen::VectorXd& coefficients,
   }
   if (failure) std::rethrow_exception(failure);
 
-  // Cells: one per Lagrange element, or the element's linear sub-cells.
-  vtkNew<vtkIdTypeArray> cell_offsets, connectivity;
-  vtkNew<vtkUnsignedCharArray> cell_types;
-  std::vector<int> cell_element;
-  cell_offsets->InsertNextValue(0);
-  for (int e = 0; e < num_elements; ++e)
-    for (const std::vector<int>& cell : *layout.drawing[e].cells) {
-      for (int v : cell) connectivity->InsertNextValue(merged_id[layout.offset[e] + v]);
-      cell_offsets->InsertNextValue(connectivity->GetNumberOfTuples());
-      cell_types->InsertNextValue(static_cast<unsigned char>(layout.drawing[e].cell_type));
-      cell_element.push_back(e);
-    }
+  const std::vector<int>& cell_element = drawing.cell_element;
   const auto num_cells = static_cast<vtkIdType>(cell_element.size());
   vtkNew<vtkUnstructuredGrid> grid;
   vtkNew<vtkPoints> points;
   points->SetData(coordinates);
   grid->SetPoints(points);
   vtkNew<vtkCellArray> cells;
-  cells->SetData(cell_offsets, connectivity);
-  grid->SetCells(cell_types, cells);
+  cells->SetData(drawing.cell_offsets, drawing.connectivity);
+  grid->SetCells(drawing.cell_types, cells);
   grid->GetPointData()->SetScalars(u);
   grid->GetPointData()->SetVectors(grad_u);
   if (surface)
@@ -407,7 +252,7 @@ bool write_solution_vtu(const Space& space, const Eigen::VectorXd& coefficients,
   if (has_hessian) cell_field("error_h2", element_h2);
   for (const auto& [name, values] : options.element_fields) cell_field(name, values);
   write_grid(grid, filename, options.compression);
-  return lagrange;
+  return drawing.lagrange;
 }
 
 void write_mesh_vtu(const Space& space, int samples, const std::string& filename, VtkCompression compression) {

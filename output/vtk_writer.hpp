@@ -2,11 +2,12 @@
 /// @file
 /// ParaView output through VTK's XML writers: one .vtu per level and a .pvd collection.
 ///
-/// Elements whose functions are single polynomials of the space's degree (lagrange_cells.hpp)
-/// become one VTK Lagrange triangle / quadrilateral of that degree each, sampled at its nodes; the
-/// others (macro-elements, polynomial only piece by piece, and non-polynomial bases) by Lagrange
-/// cells of that degree on a uniform subdivision of the element (or, asked for, by the linear
-/// sub-cells of Space::sample_cell). Points shared between elements are written once. Values
+/// How the elements are drawn is element_drawing.hpp's job: elements whose functions are single
+/// polynomials of the space's degree (lagrange_cells.hpp) become one VTK Lagrange triangle /
+/// quadrilateral of that degree each, sampled at its nodes; the others (macro-elements, polynomial
+/// only piece by piece, and non-polynomial bases) Lagrange cells of that degree on a uniform
+/// subdivision of the element (or, asked for, the linear sub-cells of Space::sample_cell). Points
+/// shared between elements are written once. This file evaluates the fields on that drawing. Values
 /// are computed in double precision and stored in single precision (7 digits, far below what a
 /// picture resolves; the error field is stored itself, not left to a difference of two rounded fields).
 
