@@ -82,29 +82,4 @@ SparseMatrix sparsity_pattern(const ElementDofTable& table, int dimension) {
   return A;
 }
 
-std::vector<std::vector<int>> colour_elements(const ElementDofTable& table, int dimension) {
-  std::vector<int> d_off, d_el;
-  elements_of_dofs(table, dimension, d_off, d_el);
-  const int ne = table.num_elements();
-  std::vector<int> colour(ne, -1);
-  std::vector<int> used_by;  // used_by[c] == e: colour c is taken by a neighbour of e
-  std::vector<std::vector<int>> groups;
-  for (int e = 0; e < ne; ++e) {
-    for (const int* d = table.begin(e); d != table.begin(e + 1); ++d)
-      for (int k = d_off[*d]; k < d_off[*d + 1]; ++k) {
-        const int c = colour[d_el[k]];
-        if (c >= 0) used_by[c] = e;
-      }
-    int c = 0;
-    while (c < static_cast<int>(groups.size()) && used_by[c] == e) ++c;
-    if (c == static_cast<int>(groups.size())) {
-      groups.emplace_back();
-      used_by.push_back(-1);
-    }
-    colour[e] = c;
-    groups[c].push_back(e);
-  }
-  return groups;
-}
-
 }  // namespace iga

@@ -1,7 +1,7 @@
 #pragma once
 /// @file
-/// What does not change while a space is used: the global indices active on every element, the
-/// sparsity pattern of its matrices and a colouring of the elements for lock-free parallel assembly.
+/// What does not change while a space is used: the global indices active on every element and the
+/// sparsity pattern of its matrices.
 
 #include <Eigen/SparseCore>
 #include <algorithm>
@@ -28,10 +28,6 @@ ElementDofTable collect_element_dofs(const Space& space);
 /// A compressed matrix with explicit zeros at every (i, j) such that functions i and j are active
 /// on a common element; inner indices sorted within each column.
 SparseMatrix sparsity_pattern(const ElementDofTable& table, int dimension);
-
-/// Groups of elements such that no two elements of a group share an active function: elements of
-/// one group can add into the same matrix concurrently without locks. Greedy, in element order.
-std::vector<std::vector<int>> colour_elements(const ElementDofTable& table, int dimension);
 
 /// Add the local matrix `local` (rows and columns in the order of `dofs`) into `values`, an array
 /// aligned with the value array of `pattern`, which must hold every entry (sparsity_pattern).

@@ -28,7 +28,7 @@ void BM_BuildSpace(benchmark::State& state) {
 void BM_Assemble(benchmark::State& state) {
   const auto space = make_space(static_cast<int>(state.range(0)));
   for (auto _ : state) {
-    const Assembler assembler(*space);  // pattern and colouring included
+    const Assembler assembler(*space);  // pattern included
     benchmark::DoNotOptimize(assembler.matrix(BilinearForm::bilaplace, 7));
   }
   state.counters["dofs"] = space->dimension();

@@ -5,7 +5,7 @@
 //
 //   BM_G1RefineMesh:  PatchMesh refined `level` times (the config path does this before the space)
 //   BM_G1BuildSpace:  G1Space on the refined mesh (gluing data, local null spaces, extraction)
-//   BM_G1Assemble:    Assembler (pattern + colouring) and the biharmonic matrix, quadrature degree
+//   BM_G1Assemble:    Assembler (pattern) and the biharmonic matrix, quadrature degree
 //                     2k + 3 as the solver uses on bilinear patches
 //   BM_G1Factorize:   CHOLMOD supernodal LLT of the clamped (reduced) matrix
 //
@@ -57,7 +57,7 @@ void BM_G1Assemble(benchmark::State& state) {
   const auto mesh = refined_mesh(domain_name(static_cast<int>(state.range(2))), static_cast<int>(state.range(0)));
   const G1Space space(mesh, static_cast<int>(state.range(1)));
   for (auto _ : state) {
-    const Assembler assembler(space);  // pattern and colouring included
+    const Assembler assembler(space);  // pattern included
     benchmark::DoNotOptimize(assembler.matrix(BilinearForm::bilaplace, quad_degree(space)));
   }
   state.counters["dofs"] = space.dimension();

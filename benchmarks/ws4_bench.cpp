@@ -37,7 +37,7 @@ void BM_Ws4BuildSpace(benchmark::State& state) {
 void BM_Ws4AssembleLaplace(benchmark::State& state) {
   const auto space = make_space(static_cast<int>(state.range(0)));
   for (auto _ : state) {
-    const Assembler assembler(*space);  // pattern and colouring included
+    const Assembler assembler(*space);  // pattern included
     benchmark::DoNotOptimize(assembler.matrix(BilinearForm::laplace, 8));
   }
   state.counters["dofs"] = space->dimension();

@@ -1,4 +1,4 @@
-// The generic assembler: colouring, pattern, symmetric matrices with the right kernels, and
+// The generic assembler: pattern, symmetric matrices with the right kernels, and
 // results independent of the number of threads.
 #include <gtest/gtest.h>
 #include <omp.h>
@@ -24,25 +24,6 @@ domain: {type: quarter_annulus, inner: 1, outer: 2}
 space: {type: bspline, degree: 2, regularity: 1, elements: [4, 3]}
 )yaml";
 }  // namespace
-
-TEST(Assembly, ColouringSeparatesElementsThatShareFunctions) {
-  const SpacePtr space = test::space_from_yaml(kCubic);
-  const ElementDofTable table = collect_element_dofs(*space);
-  const auto colours = colour_elements(table, space->dimension());
-  // Cubic C2 elements (i, j), (k, l) share a function iff |i-k| <= 3 and |j-l| <= 3: on 5x3
-  // elements, any 4 consecutive columns of all 3 rows conflict pairwise, so 12 colours are needed.
-  EXPECT_GE(colours.size(), 12u);
-  EXPECT_LE(colours.size(), 16u);
-  std::vector<int> seen(space->num_elements(), 0);
-  for (const auto& group : colours) {
-    std::set<int> used;
-    for (int e : group) {
-      ++seen[e];
-      for (const int* d = table.begin(e); d != table.begin(e + 1); ++d) EXPECT_TRUE(used.insert(*d).second);
-    }
-  }
-  for (int count : seen) EXPECT_EQ(count, 1);
-}
 
 TEST(Assembly, PatternHoldsEveryElementCoupling) {
   const SpacePtr space = test::space_from_yaml(kCubic);
@@ -119,7 +100,7 @@ TEST(Assembly, ResultDoesNotDependOnThreadCount) {
   const SparseMatrix A1 = assembler.matrix(BilinearForm::hessian, 6);
   omp_set_num_threads(2);
   const SparseMatrix A2 = assembler.matrix(BilinearForm::hessian, 6);
-  // Each entry receives at most one contribution per colour, in colour order: bitwise equal.
+  // Each entry receives its contributions in element order whatever the threads: bitwise equal.
   ASSERT_EQ(A1.nonZeros(), A2.nonZeros());
   for (int k = 0; k < A1.nonZeros(); ++k) ASSERT_EQ(A1.valuePtr()[k], A2.valuePtr()[k]);
 }
