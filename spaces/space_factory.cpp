@@ -11,6 +11,11 @@ namespace iga {
 
 std::vector<std::string> space_types() { return {"bspline", "ws4", "tmesh", "g1", "g1_4split", "surface"}; }
 
+std::vector<SpaceCatalogueEntry> space_catalogue() {
+  return {bspline_catalogue_entry(), ws4_catalogue_entry(),       tmesh_catalogue_entry(),
+          g1_catalogue_entry(),      g1_4split_catalogue_entry(), surface_catalogue_entry()};
+}
+
 SpacePtr make_space(const ConfigNode& domain, const ConfigNode& space, int level, const Space* coarser) {
   const std::string type = space["type"].as_choice(space_types());
   if (type == "bspline") return make_bspline_space(domain, space, level);

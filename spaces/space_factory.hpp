@@ -7,12 +7,17 @@
 
 #include "config/config_node.hpp"
 #include "spaces/space.hpp"
+#include "spaces/space_catalogue.hpp"
 #include "spaces/space_request_size.hpp"
 
 namespace iga {
 
 /// Config names of all spaces ("bspline", ...).
 std::vector<std::string> space_types();
+
+/// What every space type says of itself (spaces/space_catalogue.hpp), in the order of space_types():
+/// `iga-run --list` prints these.
+std::vector<SpaceCatalogueEntry> space_catalogue();
 
 /// Build the space named by space["type"] on `domain`, uniformly refined `level` times.
 /// `coarser`, when given, is a space built from the same two nodes at a lower level: the new space
