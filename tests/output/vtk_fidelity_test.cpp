@@ -146,8 +146,12 @@ TEST(VtkFidelity, SurfaceInThreeDimensionsHasUnitNormalsOfTheSphere) {
   ASSERT_EQ(space->ambient_dimension(), 3);
   const Eigen::VectorXd c = random_coefficients(space->dimension());
   const std::string file = (test::scratch_folder() / "sphere.vtu").string();
-  write_solution_vtu(*space, c, {}, file);
+  ASSERT_TRUE(write_solution_vtu(*space, c, {}, file));  // Bernstein triangles: single polynomials
   const auto grid = read_vtu(file);
+  // One quadratic Lagrange triangle per face of the level-1 icosphere (80 faces, 120 edges, 42
+  // vertices), nodes shared: 42 + 120 points, each once.
+  ASSERT_EQ(grid->GetNumberOfCells(), 80);
+  ASSERT_EQ(grid->GetNumberOfPoints(), 42 + 120);
   EXPECT_EQ(distinct_points(grid), static_cast<std::size_t>(grid->GetNumberOfPoints()));
   vtkDataArray* normals = grid->GetPointData()->GetNormals();
   ASSERT_NE(normals, nullptr);

@@ -18,6 +18,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <iterator>
 
 #include "output/vtk_writer.hpp"
 #include "spaces/point_location.hpp"
@@ -26,8 +27,14 @@
 namespace iga {
 namespace {
 
-/// Largest |drawn u − u_h| over points inside every cell of the file.
-double drawing_deviation(const std::string& file, const PointLocator& locator, const Eigen::VectorXd& c) {
+/// Four points inside every cell of a file, drawn value against u_h.
+struct Deviation {
+  double worst = 0;       ///< largest |drawn u − u_h|
+  vtkIdType cells = 0;    ///< cells in the file
+  vtkIdType compared = 0; ///< points where u_h was evaluated
+};
+
+Deviation drawing_deviation(const std::string& file, const PointLocator& locator, const Eigen::VectorXd& c) {
   vtkNew<vtkXMLUnstructuredGridReader> reader;
   reader->SetFileName(file.c_str());
   reader->Update();
@@ -38,7 +45,8 @@ double drawing_deviation(const std::string& file, const PointLocator& locator, c
   FunctionValues uh;
   QuadratureRule one;
   one.weights = {0.0};
-  double worst = 0;
+  Deviation out;
+  out.cells = grid->GetNumberOfCells();
   const double pcoords[4][3] = {{0.2, 0.3, 0}, {0.6, 0.2, 0}, {0.25, 0.25, 0}, {0.1, 0.7, 0}};
   std::vector<double> weights;
   for (vtkIdType k = 0; k < grid->GetNumberOfCells(); ++k) {
@@ -51,13 +59,14 @@ double drawing_deviation(const std::string& file, const PointLocator& locator, c
       double drawn = 0;
       for (vtkIdType i = 0; i < cell->GetNumberOfPoints(); ++i) drawn += weights[i] * u->GetTuple1(cell->GetPointId(i));
       const auto at = locator.locate(Point2(x[0], x[1]), *evaluator);
-      if (!at) continue;  // float coordinates a hair outside a curved boundary
+      if (!at) continue;  // not expected here: the points are well inside cells of straight-edged domains
       one.points = {at->reference};
       evaluator->evaluate_function(at->element, one, c, update_values, geometry, uh);
-      worst = std::max(worst, std::abs(drawn - uh.value(0)));
+      out.worst = std::max(out.worst, std::abs(drawn - uh.value(0)));
+      ++out.compared;
     }
   }
-  return worst;
+  return out;
 }
 
 void compare_drawings(const std::string& yaml, int level, const std::string& name) {
@@ -73,13 +82,23 @@ void compare_drawings(const std::string& yaml, int level, const std::string& nam
   EXPECT_FALSE(write_solution_vtu(*space, sol.coefficients, lagrange, a)) << "not single polynomials";
   write_solution_vtu(*space, sol.coefficients, linear, b);
   const PointLocator locator(space);
-  const double new_deviation = drawing_deviation(a, locator, sol.coefficients);
-  const double old_deviation = drawing_deviation(b, locator, sol.coefficients);
+  const Deviation drawn = drawing_deviation(a, locator, sol.coefficients);
+  const Deviation sampled = drawing_deviation(b, locator, sol.coefficients);
+  const double new_deviation = drawn.worst, old_deviation = sampled.worst;
+  // One Lagrange cell per element, Space::sample_cell's sub-cells for the linear drawing, and
+  // every one of the four points of every cell compared.
+  vtkIdType sub_cells = 0;
+  for (int e = 0; e < space->num_elements(); ++e) sub_cells += std::ssize(space->sample_cell(e, linear.samples).cells);
+  EXPECT_EQ(drawn.cells, space->num_elements());
+  EXPECT_EQ(sampled.cells, sub_cells);
+  EXPECT_EQ(drawn.compared, 4 * drawn.cells);
+  EXPECT_EQ(sampled.compared, 4 * sampled.cells);
   const auto size_a = std::filesystem::file_size(a), size_b = std::filesystem::file_size(b);
-  std::printf("%s level %d: %d elements; max |drawn - u_h|: Lagrange %.3e (%ju bytes), linear sub-cells "
-              "%.3e (%ju bytes)\n",
+  std::printf("%s level %d: %d elements; max |drawn - u_h|: Lagrange %.3e (%ju bytes, %lld points), linear "
+              "sub-cells %.3e (%ju bytes, %lld points)\n",
               name.c_str(), level, space->num_elements(), new_deviation, static_cast<std::uintmax_t>(size_a),
-              old_deviation, static_cast<std::uintmax_t>(size_b));
+              static_cast<long long>(drawn.compared), old_deviation, static_cast<std::uintmax_t>(size_b),
+              static_cast<long long>(sampled.compared));
   // At least as faithful (single-precision storage, 1e-6 of |u| ~ 1, is the common floor) ...
   EXPECT_LE(new_deviation, std::max(old_deviation, 1e-6));
   // ... and at most a third of the bytes.

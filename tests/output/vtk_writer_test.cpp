@@ -259,6 +259,9 @@ TEST_F(VtkWriterTest, ExactDataComeFromTheBatchWhenGiven) {
   const std::string file = path("batch.vtu");
   write_solution_vtu(space, space.interpolate(linear), options, file);
   const auto grid = read_vtu(file);
+  // The loops below see every point and cell: 4 Lagrange quadrilaterals of order 1 on 3 x 3 nodes.
+  ASSERT_EQ(grid->GetNumberOfPoints(), 9);
+  ASSERT_EQ(grid->GetNumberOfCells(), 4);
   vtkDataArray* exact = grid->GetPointData()->GetArray("u_exact");
   vtkDataArray* error = grid->GetPointData()->GetArray("error");
   ASSERT_NE(exact, nullptr);
