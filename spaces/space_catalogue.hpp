@@ -16,7 +16,7 @@ struct DomainFamily {
   std::string type;                   ///< the value of domain.type
   std::string keys;                   ///< the rest of the domain block, one short phrase
   std::string builtin_key;            ///< "name" or "mesh" when the family has built-in layouts, else empty
-  std::vector<std::string> builtins;  ///< every value domain.<builtin_key> accepts
+  std::vector<std::string> builtins;  ///< the values of domain.<builtin_key> the space is built on
 };
 
 struct SpaceCatalogueEntry {
