@@ -63,9 +63,12 @@ TEST(BernsteinPatches, AWrittenFileReadBackReproducesTheSurface) {
       EXPECT_LT((back.patches[n].control[corner] - s.mesh.points[back.vertices[n][a]]).norm(), 1e-14);
     }
   }
-  // Shared edges: the two patches of every interior edge give the same points at equal λ_i.
+  // Shared edges: the two patches of every interior edge give the same points at equal λ_i; the
+  // octahedron is closed, so that is all of its 12 edges.
+  int shared = 0;
   for (const SurfaceEdge& e : s.edges) {
     if (!e.interior()) continue;
+    ++shared;
     for (double lambda : {0.1, 0.5, 0.8}) {
       Eigen::Vector3d t = Eigen::Vector3d::Zero(), tbar = Eigen::Vector3d::Zero();
       for (int a = 0; a < 3; ++a) {
@@ -78,6 +81,7 @@ TEST(BernsteinPatches, AWrittenFileReadBackReproducesTheSurface) {
                 1e-13);
     }
   }
+  EXPECT_EQ(shared, 12);
 }
 
 TEST(BernsteinPatches, RoundTripIsBitExact) {
