@@ -180,15 +180,12 @@ ElementDrawing draw_elements(const Space& space, bool lagrange_asked, int divisi
   drawing.num_points = merger.size();
 
   // The cells: one per Lagrange element, or the element's sub-cells.
-  drawing.cell_offsets = vtkSmartPointer<vtkIdTypeArray>::New();
-  drawing.connectivity = vtkSmartPointer<vtkIdTypeArray>::New();
-  drawing.cell_types = vtkSmartPointer<vtkUnsignedCharArray>::New();
-  drawing.cell_offsets->InsertNextValue(0);
+  drawing.cell_offsets.push_back(0);
   for (int e = 0; e < num_elements; ++e)
     for (const std::vector<int>& cell : *pieces[e].cells) {
-      for (int v : cell) drawing.connectivity->InsertNextValue(drawing.merged_id[drawing.offset[e] + v]);
-      drawing.cell_offsets->InsertNextValue(drawing.connectivity->GetNumberOfTuples());
-      drawing.cell_types->InsertNextValue(static_cast<unsigned char>(pieces[e].cell_type));
+      for (int v : cell) drawing.connectivity.push_back(drawing.merged_id[drawing.offset[e] + v]);
+      drawing.cell_offsets.push_back(static_cast<std::int64_t>(drawing.connectivity.size()));
+      drawing.cell_types.push_back(static_cast<unsigned char>(pieces[e].cell_type));
       drawing.cell_element.push_back(e);
     }
   return drawing;

@@ -6,10 +6,6 @@
 /// them coincide (written once), and the VTK cells over the merged points. The fields drawn on it
 /// are the writer's job (vtk_writer.hpp).
 
-#include <vtkIdTypeArray.h>
-#include <vtkSmartPointer.h>
-#include <vtkUnsignedCharArray.h>
-
 #include <cstdint>
 #include <map>
 #include <memory>
@@ -35,9 +31,10 @@ struct ElementDrawing {
   std::vector<std::int64_t> merged_id;
   std::vector<char> owner;
   std::int64_t num_points = 0;  ///< points of the file (after merging)
-  /// The VTK cells over the merged points, in element order, and the element of each.
-  vtkSmartPointer<vtkIdTypeArray> cell_offsets, connectivity;
-  vtkSmartPointer<vtkUnsignedCharArray> cell_types;
+  /// The VTK cells over the merged points, in element order: cell c is of VTK type cell_types[c],
+  /// on the points connectivity[cell_offsets[c] .. cell_offsets[c+1]), and draws cell_element[c].
+  std::vector<std::int64_t> cell_offsets, connectivity;
+  std::vector<unsigned char> cell_types;
   std::vector<int> cell_element;
 
   std::int64_t num_unmerged() const { return offset.back(); }

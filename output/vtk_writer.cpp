@@ -19,6 +19,7 @@
 
 #include <Eigen/Geometry>
 #include <Eigen/LU>
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -226,8 +227,16 @@ bool write_solution_vtu(const Space& space, const Eigen::VectorXd& coefficients,
   points->SetData(coordinates);
   grid->SetPoints(points);
   vtkNew<vtkCellArray> cells;
-  cells->SetData(drawing.cell_offsets, drawing.connectivity);
-  grid->SetCells(drawing.cell_types, cells);
+  vtkNew<vtkIdTypeArray> cell_offsets, connectivity;
+  vtkNew<vtkUnsignedCharArray> cell_types;
+  cell_offsets->SetNumberOfValues(static_cast<vtkIdType>(drawing.cell_offsets.size()));
+  std::copy(drawing.cell_offsets.begin(), drawing.cell_offsets.end(), cell_offsets->GetPointer(0));
+  connectivity->SetNumberOfValues(static_cast<vtkIdType>(drawing.connectivity.size()));
+  std::copy(drawing.connectivity.begin(), drawing.connectivity.end(), connectivity->GetPointer(0));
+  cell_types->SetNumberOfValues(static_cast<vtkIdType>(drawing.cell_types.size()));
+  std::copy(drawing.cell_types.begin(), drawing.cell_types.end(), cell_types->GetPointer(0));
+  cells->SetData(cell_offsets, connectivity);
+  grid->SetCells(cell_types, cells);
   grid->GetPointData()->SetScalars(u);
   grid->GetPointData()->SetVectors(grad_u);
   if (surface)
