@@ -13,6 +13,9 @@ ReferenceBernstein reference_bernstein(int p, const QuadratureRule& points) {
   t.value.resize(n, q);
   t.dxi.resize(n, q);
   t.deta.resize(n, q);
+  t.dxixi.resize(n, q);
+  t.dxieta.resize(n, q);
+  t.detaeta.resize(n, q);
   std::array<double, 16> fact;
   fact[0] = 1;
   for (int k = 1; k <= p; ++k) fact[k] = fact[k - 1] * k;
@@ -32,6 +35,20 @@ ReferenceBernstein reference_bernstein(int p, const QuadratureRule& points) {
         t.value(i, k) = c * pw[0] * pw[1] * pw[2];
         t.dxi(i, k) = d[1] - d[0];
         t.deta(i, k) = d[2] - d[0];
+        // ∂²B/∂λ_s∂λ_t = c a_s (a_t − δ_st) λ^(a − e_s − e_t); with dλ/dξ = (−1, 1, 0) and
+        // dλ/dη = (−1, 0, 1): ∂ξξ = d11 − 2 d01 + d00, ∂ξη = d12 − d01 − d02 + d00, ∂ηη = d22 − 2 d02 + d00.
+        const auto dd = [&](int s, int r) {
+          std::array<int, 3> e = a;
+          --e[s];
+          --e[r];
+          if (e[0] < 0 || e[1] < 0 || e[2] < 0) return 0.0;
+          const double f = s == r ? a[s] * (a[s] - 1.0) : double(a[s]) * a[r];
+          return c * f * power(l[0], e[0]) * power(l[1], e[1]) * power(l[2], e[2]);
+        };
+        const double d00 = dd(0, 0), d01 = dd(0, 1), d02 = dd(0, 2), d11 = dd(1, 1), d12 = dd(1, 2), d22 = dd(2, 2);
+        t.dxixi(i, k) = d11 - 2 * d01 + d00;
+        t.dxieta(i, k) = d12 - d01 - d02 + d00;
+        t.detaeta(i, k) = d22 - 2 * d02 + d00;
       }
   }
   return t;

@@ -1,7 +1,7 @@
 #pragma once
 /// @file
 /// Bernstein polynomials of degree p on the reference triangle, λ = (1 − ξ − η, ξ, η), tabulated
-/// at the points of a rule (values and ξ, η derivatives; functions in bezier_index order).
+/// at the points of a rule (values, first and second ξ, η derivatives; functions in bezier_index order).
 
 #include <Eigen/Core>
 #include <map>
@@ -12,7 +12,8 @@
 namespace iga {
 
 struct ReferenceBernstein {
-  Eigen::MatrixXd value, dxi, deta;  ///< (p+1)(p+2)/2 x q
+  Eigen::MatrixXd value, dxi, deta;          ///< (p+1)(p+2)/2 x q
+  Eigen::MatrixXd dxixi, dxieta, detaeta;    ///< (p+1)(p+2)/2 x q
 };
 
 /// The table of degree `degree` at the points of `points`.
