@@ -20,6 +20,12 @@ namespace iga {
 /// √det(JᵀJ) = |J_ξ × J_η|: the area element of a map into R³.
 double surface_measure(const Eigen::Matrix<double, 3, 2>& jacobian);
 
+/// The unit normal x_ξ × x_η / |x_ξ × x_η| of a point of PointValues::jacobian3 (for the layers
+/// above spaces/, which do not include geometry/ directly).
+inline Eigen::Vector3d surface_normal(const Eigen::Matrix<double, 3, 2>& jacobian) {
+  return unit_normal(jacobian.col(0), jacobian.col(1));
+}
+
 /// out.x3, out.x (its (x, y) rows), out.jacobian3 from the jets at the q points (out.jacobian
 /// cleared), and with update_surface_curvature out.normal3 and out.mean_curvature.
 void take_surface_geometry(const std::vector<SurfaceJet>& jets, unsigned flags, PointValues& out);
