@@ -124,7 +124,7 @@ G14SurfaceSpace::G14SurfaceSpace(const QuadTopology& coarse, const std::vector<E
     for (int j = 0; j < 4; ++j)
       for (int s = 0; s < 4; ++s) {
         const Point2 uv = reference_edge_point(CellShape::quadrilateral, j, s / 4.0);
-        pts.push_back(surface_jet(surface_, f, uv.x(), uv.y())[0]);
+        pts.push_back(face_map_jet(surface_, f, uv.x(), uv.y())[0]);
       }
     for (const auto& p : pts)
       for (const auto& r : pts) mesh_size_ = std::max(mesh_size_, (p - r).norm());
@@ -186,7 +186,7 @@ std::optional<double> G14SurfaceSpace::max_gradient_jump(const Eigen::VectorXd& 
         const int j = side == 0 ? ie.edge_a : ie.edge_b;
         const double tt = side == 0 ? ie.a0 + t * (ie.a1 - ie.a0) : ie.b0 + t * (ie.b1 - ie.b0);
         const Point2 uv = reference_edge_point(CellShape::quadrilateral, j, tt);
-        const auto x = surface_jet(surface_, f, uv.x(), uv.y());
+        const auto x = face_map_jet(surface_, f, uv.x(), uv.y());
         const auto u = face_jet(b, faces[f], uv);
         Eigen::Matrix<double, 3, 2> J;
         J << x[1], x[2];

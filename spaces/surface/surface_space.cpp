@@ -115,7 +115,7 @@ class SurfaceEvaluator : public Space::Evaluator {
   void evaluate(int element, const QuadratureRule& points, unsigned flags, PointValues& out) override {
     if (flags & (update_laplacian_gradient | update_bilaplacian))
       throw std::logic_error("surface space: third and fourth derivatives on surfaces are not implemented");
-    const ReferenceBernstein& table = tables_.get(space_.degree(), points);
+    const ReferenceBernstein& table = tables_.get(space_.degree(), points, flags & update_hessians);
     const SurfaceBernsteinSpace::Element& el = space_.element(element);
     const BezierTriangle& patch = space_.surface().patches[el.patch];
     // The element map is the patch F composed with the affine map of the sub-triangle,
