@@ -8,7 +8,9 @@
 ///    (Jᵀ∇N = ∂N̂/∂ξ), second derivatives against central differences of gradients
 ///    (∇²N J = ∂∇N/∂ξ in the plane; on surfaces the covariant Hessian, H J = P ∂∇_ΓN/∂ξ);
 ///  - jumps of values and of gradients across interior edges (Space::interior_edges());
-///  - quadrature exactness of quadrature(e, d) on the monomials ξ^a η^b of degree ≤ d.
+///  - quadrature exactness of quadrature(e, d) on the monomials ξ^a η^b of degree ≤ d;
+///  - Evaluator::evaluate_function (a space's own contraction, or the default) against the
+///    contraction of evaluate's arrays with the same coefficients: values, gradients, Hessians.
 /// Derivative errors are relative, |error| / (|reference| + 1) per function; with step h a
 /// central difference errs by O(h²) (truncation) + O(ε/h) (round-off); both h and h/2 are measured,
 /// so that a test can ask for the factor 4 of a consistent derivative instead of a bound that
@@ -33,6 +35,7 @@ struct SpaceCheck {
   double value_jump = 0;          ///< max |[N_i]| over interior edges, relative to max |N_i|
   double gradient_jump = 0;       ///< max |[∇N_i]| over interior edges, relative to max |∇N_i|
   int edges_checked = 0;
+  double function_values = 0;     ///< max |evaluate_function − Σ c_i (evaluate)| / (|Σ|c_i| ...| + 1)
   double quadrature = 0;          ///< max |Q(ξ^a η^b) − ∫ ξ^a η^b| over degrees ≤ 2p
 };
 
@@ -95,6 +98,34 @@ inline SpaceCheck check_space(const Space& space, int stride = 1, double h = 1e-
           hess_fd = std::max(hess_fd, (HJ - P * dg).norm() / (HJ.norm() + 1));
         }
       }
+    // evaluate_function against Σ c_i N_i with coefficients c_i = sin(i + 1) (fixed, all sizes).
+    {
+      const RulePtr rule = space.quadrature(e, space.degree());
+      Eigen::VectorXd c(space.dimension());
+      for (int i = 0; i < c.size(); ++i) c(i) = std::sin(i + 1.0);
+      PointValues pv, geometry;
+      FunctionValues fv;
+      ev->evaluate(e, *rule, all, pv);
+      ev->evaluate_function(e, *rule, c, all, geometry, fv);
+      Eigen::VectorXd local(pv.num_functions());
+      for (int i = 0; i < pv.num_functions(); ++i) local(i) = c(pv.dofs[i]);
+      const bool surface = pv.dzz.size() > 0;
+      const std::vector<std::pair<const Eigen::MatrixXd*, const Eigen::VectorXd*>> arrays = {
+          {&pv.value, &fv.value}, {&pv.dx, &fv.dx},   {&pv.dy, &fv.dy},   {&pv.dxx, &fv.dxx},
+          {&pv.dxy, &fv.dxy},     {&pv.dyy, &fv.dyy}};
+      auto compare = [&](const Eigen::MatrixXd& table, const Eigen::VectorXd& got) {
+        const Eigen::VectorXd want = table.transpose() * local;
+        const double scale = (table.cwiseAbs().transpose() * local.cwiseAbs()).maxCoeff() + 1;
+        out.function_values = std::max(out.function_values, (want - got).cwiseAbs().maxCoeff() / scale);
+      };
+      for (const auto& [table, got] : arrays) compare(*table, *got);
+      if (surface) {
+        compare(pv.dz, fv.dz);
+        compare(pv.dxz, fv.dxz);
+        compare(pv.dyz, fv.dyz);
+        compare(pv.dzz, fv.dzz);
+      }
+    }
     // Quadrature: monomials of the reference coordinates up to degree 2p (per direction on squares).
     const int d = 2 * space.degree();
     const RulePtr rule = space.quadrature(e, d);
