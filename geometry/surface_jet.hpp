@@ -45,8 +45,4 @@ Eigen::Vector3d unit_normal(const Eigen::Vector3d& x_xi, const Eigen::Vector3d& 
 /// |x_ξ × x_η|: the area element.
 double area_element(const Eigen::Vector3d& x_xi, const Eigen::Vector3d& x_eta);
 
-/// Index of (a, b) in SurfaceJet::second and in the reference Hessian arrays: (0,0) → 0, (0,1) and
-/// (1,0) → 1, (1,1) → 2.
-inline int symmetric_index(int a, int b) { return a + b; }
-
 }  // namespace iga
