@@ -1,7 +1,6 @@
 #include "assembly/error_norms.hpp"
 #include "config/progress.hpp"
 
-#include <Eigen/Geometry>  // cross
 
 #include <array>
 #include <cmath>
@@ -9,6 +8,7 @@
 
 #include "assembly/parallel.hpp"
 #include "spaces/space.hpp"
+#include "spaces/surface_values.hpp"
 
 namespace iga {
 
@@ -101,8 +101,7 @@ ErrorNorms surface_error_norms(const Space& space, const Eigen::VectorXd& coeffi
           if (grad) {
             // The error of the surface gradient: the exact ambient gradient projected onto the
             // tangent plane, ∇_Γu = ∇u − (∇u·n) n.
-            const Eigen::Vector3d n =
-                geometry.jacobian3[k].col(0).cross(geometry.jacobian3[k].col(1)).normalized();
+            const Eigen::Vector3d n = surface_normal(geometry.jacobian3[k]);
             Eigen::Vector3d g(exact.ux(x), exact.uy(x), exact.uz(x));
             g -= g.dot(n) * n;
             const Eigen::Vector3d e3 = Eigen::Vector3d(uh.dx(k), uh.dy(k), uh.dz(k)) - g;

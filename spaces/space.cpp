@@ -69,6 +69,11 @@ void Space::Evaluator::evaluate_function(int element, const QuadratureRule& poin
     out.dxx.noalias() = geometry.dxx.transpose() * c;
     out.dxy.noalias() = geometry.dxy.transpose() * c;
     out.dyy.noalias() = geometry.dyy.transpose() * c;
+    if (geometry.dzz.size() > 0) {  // surfaces in 3D: the z row of the covariant Hessian
+      out.dxz.noalias() = geometry.dxz.transpose() * c;
+      out.dyz.noalias() = geometry.dyz.transpose() * c;
+      out.dzz.noalias() = geometry.dzz.transpose() * c;
+    }
   }
 }
 

@@ -3,6 +3,7 @@
 #include <Eigen/Geometry>
 #include <cmath>
 
+#include "geometry/surface_jet.hpp"
 #include "quadrature/quadrature_rule.hpp"
 
 namespace iga::rsd {
@@ -19,9 +20,10 @@ AreaVolume area_and_volume(const RsdSurface& surface, int quadrature_degree) {
   for (const auto& patch : surface.patches)
     for (int q = 0; q < rule.size(); ++q) {
       const SurfacePoint p = surface_point(patch, rule.points[q][0], rule.points[q][1]);
-      const Eigen::Vector3d normal = p.x_xi.cross(p.x_eta);
-      result.area += rule.weights[q] * normal.norm();
-      result.volume += rule.weights[q] * p.x.dot(normal) / 3.0;
+      // The oriented area vector x_ξ × x_η = √det G n of the patch map.
+      const double area = area_element(p.x_xi, p.x_eta);
+      result.area += rule.weights[q] * area;
+      result.volume += rule.weights[q] * p.x.dot(area * unit_normal(p.x_xi, p.x_eta)) / 3.0;
     }
   return result;
 }
@@ -35,7 +37,7 @@ SphereDeviation sphere_deviation(const RsdSurface& surface, const Eigen::Vector3
       for (int b = 0; a + b <= n; ++b) {
         const SurfacePoint p = surface_point(patch, double(a) / n, double(b) / n);
         radial(p.x);
-        const Eigen::Vector3d normal = p.x_xi.cross(p.x_eta), r = p.x - center;
+        const Eigen::Vector3d normal = unit_normal(p.x_xi, p.x_eta), r = p.x - center;
         const double angle = std::atan2(normal.cross(r).norm(), normal.dot(r));
         d.normal_degrees = std::max(d.normal_degrees, angle * 180.0 / M_PI);
       }

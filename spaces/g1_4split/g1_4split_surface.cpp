@@ -1,10 +1,10 @@
 #include "spaces/g1_4split/g1_4split_surface.hpp"
 
-#include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
 #include <map>
 
+#include "geometry/surface_jet.hpp"
 #include "spaces/g1_4split/face_function.hpp"
 #include "spaces/g1_4split/g1_4split_geometry.hpp"
 
@@ -45,7 +45,7 @@ G14Surface fit_surface(const QuadTopology& topology, const std::vector<SplitGlui
   return s;
 }
 
-std::array<Eigen::Vector3d, 3> surface_jet(const G14Surface& s, int face, double u, double v) {
+std::array<Eigen::Vector3d, 3> face_map_jet(const G14Surface& s, int face, double u, double v) {
   std::array<Eigen::Vector3d, 3> out;
   for (int d = 0; d < 3; ++d) {
     const auto j = face_jet(s.basis.bspline, s.coefficients[face][d], Point2(u, v));
@@ -66,8 +66,8 @@ double surface_normal_jump(const QuadTopology& t, const G14Surface& s, int sampl
         const QuadSide sd = edge.sides[side];
         const double sp = t.face(sd.face)[sd.local_edge] == edge.g0 ? tt : 1 - tt;
         const Point2 uv = reference_edge_point(CellShape::quadrilateral, sd.local_edge, sp);
-        const auto j = surface_jet(s, sd.face, uv.x(), uv.y());
-        normal[side] = j[1].cross(j[2]).normalized();
+        const auto j = face_map_jet(s, sd.face, uv.x(), uv.y());
+        normal[side] = unit_normal(j[1], j[2]);
       }
       worst = std::max(worst, std::min((normal[0] - normal[1]).norm(), (normal[0] + normal[1]).norm()));
     }
@@ -80,8 +80,8 @@ double surface_regularity(const G14Surface& s, int samples) {
   for (std::size_t f = 0; f < s.coefficients.size(); ++f)
     for (int j = 0; j <= samples; ++j)
       for (int i = 0; i <= samples; ++i) {
-        const auto jet = surface_jet(s, static_cast<int>(f), double(i) / samples, double(j) / samples);
-        const double a = jet[1].cross(jet[2]).norm();
+        const auto jet = face_map_jet(s, static_cast<int>(f), double(i) / samples, double(j) / samples);
+        const double a = area_element(jet[1], jet[2]);
         lo = std::min(lo, a);
         hi = std::max(hi, a);
       }

@@ -27,8 +27,8 @@ G14Surface fit_surface(const QuadTopology& topology, const std::vector<Eigen::Ve
 G14Surface fit_surface(const QuadTopology& topology, const std::vector<SplitGluing>& gluing,
                        const std::vector<Eigen::Vector3d>& vertices, int degree, int regularity);
 
-/// Point, d/du and d/dv of face f at (u, v).
-std::array<Eigen::Vector3d, 3> surface_jet(const G14Surface& s, int face, double u, double v);
+/// Point, d/du and d/dv of face f's map at (u, v) (the full jet: geometry/surface_jet.hpp).
+std::array<Eigen::Vector3d, 3> face_map_jet(const G14Surface& s, int face, double u, double v);
 
 /// G1 residual: the largest angle-free distance between the two faces' unit normals across every
 /// interior edge, min(|n0 - n1|, |n0 + n1|) (orientation-free), sampled at `samples` points per edge.

@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "config/errors.hpp"
+#include "geometry/surface_jet.hpp"
 #include "spaces/g1_4split/face_function.hpp"
 #include "spaces/g1_4split/g1_4split_geometry.hpp"
 #include "spaces/push_forward.hpp"
@@ -24,9 +25,8 @@ double face_fold_bound(const SplitBSpline& b, const std::array<Eigen::VectorXd, 
     du(d) = j(1);
     dv(d) = j(2);
   }
-  const Eigen::Vector3d c = du.cross(dv);
-  if (c.norm() == 0.0) return 0.0;
-  const Eigen::Vector3d e1 = du.normalized(), e2 = c.normalized().cross(e1);
+  if (area_element(du, dv) == 0.0) return 0.0;
+  const Eigen::Vector3d e1 = du.normalized(), e2 = unit_normal(du, dv).cross(e1);
   const Eigen::VectorXd p = e1(0) * xyz[0] + e1(1) * xyz[1] + e1(2) * xyz[2];
   const Eigen::VectorXd q = e2(0) * xyz[0] + e2(1) * xyz[1] + e2(2) * xyz[2];
   return certified_jacobian_bound(b, p, q);
@@ -39,60 +39,48 @@ class G14SurfaceSpace::Evaluator3 final : public Space::Evaluator {
   explicit Evaluator3(const G14SurfaceSpace& s) : space_(s), tables_(s.surface_.basis.bspline) {}
 
   void evaluate(int element, const QuadratureRule& rule, unsigned flags, PointValues& out) override {
-    if (flags & (update_hessians | update_laplacian_gradient | update_bilaplacian))
-      throw std::logic_error("g1_4split surface: second derivatives of functions on surfaces are not implemented");
+    if (flags & (update_laplacian_gradient | update_bilaplacian))
+      throw std::logic_error("g1_4split surface: third and fourth derivatives on surfaces are not implemented");
     const TensorTableCache::SixTables& t = tables_.at(rule);
     const G14Basis& basis = space_.surface_.basis;
-    const unsigned need = (flags & update_values ? update_values : 0u) | (flags & update_gradients ? update_gradients : 0u);
+    const unsigned need = flags & (update_values | update_gradients | update_hessians);
     extract_reference_derivatives(basis.extraction[element], t, need, ref_);
     out.dofs = basis.face_dofs[element];
     const int q = rule.size();
-    const bool curvature = flags & update_surface_curvature;
+    const bool second = flags & (update_surface_curvature | update_hessians);
+    // Rows of X[c]: coordinate c of the map and its ξ, η, ξξ, ξη, ηη derivatives (tables' order).
     Eigen::Matrix<double, 6, Eigen::Dynamic> X[3];
     for (int c = 0; c < 3; ++c) {
       X[c].resize(6, q);
       const Eigen::VectorXd& coef = space_.surface_.coefficients[element][c];
-      for (int d = 0; d < (curvature ? 6 : 3); ++d) X[c].row(d) = coef.transpose() * t[d];
+      for (int d = 0; d < (second ? 6 : 3); ++d) X[c].row(d) = coef.transpose() * t[d];
     }
-    out.x3.resize(3, q);
-    out.jacobian3.resize(q);
-    out.jacobian.clear();
-    if (curvature) {
-      out.normal3.resize(3, q);
-      out.mean_curvature.resize(q);
-    }
+    jets_.resize(q);
     for (int k = 0; k < q; ++k) {
-      Eigen::Matrix<double, 3, 2>& J = out.jacobian3[k];
+      Eigen::Vector3d x;
+      Eigen::Matrix<double, 3, 2> J;
+      std::array<Eigen::Vector3d, 3> dd;
       for (int c = 0; c < 3; ++c) {
-        out.x3(c, k) = X[c](0, k);
+        x(c) = X[c](0, k);
         J(c, 0) = X[c](1, k);
         J(c, 1) = X[c](2, k);
+        for (int ab = 0; ab < 3; ++ab) dd[ab](c) = X[c](3 + ab, k);
       }
-      if (curvature) {
-        // Second fundamental form B_ij = x_ij · n and H = −tr(G⁻¹B) = div_Γ n for this n (the
-        // sign of n does not matter to the problem: H ∂_n u is the same for −n).
-        const Eigen::Vector3d n = J.col(0).cross(J.col(1)).normalized();
-        Eigen::Vector3d xuu, xuv, xvv;
-        for (int c = 0; c < 3; ++c) {
-          xuu(c) = X[c](3, k);
-          xuv(c) = X[c](4, k);
-          xvv(c) = X[c](5, k);
-        }
-        Eigen::Matrix2d B;
-        B << xuu.dot(n), xuv.dot(n), xuv.dot(n), xvv.dot(n);
-        out.normal3.col(k) = n;
-        out.mean_curvature(k) = mean_curvature(J, B);
-      }
+      // The sign of n does not matter to the problems: H ∂_n u is the same for −n.
+      jets_[k] = second ? surface_jet(x, J, dd) : surface_jet(x, J);
     }
-    out.x = out.x3.topRows(2);
+    take_surface_geometry(jets_, flags, out);
     if (flags & update_values) out.value = ref_.value;
-    if (flags & update_gradients) complete_surface_gradients(ref_.dxi, ref_.deta, out);
+    if (flags & (update_gradients | update_hessians)) complete_surface_gradients(jets_, ref_.dxi, ref_.deta, out);
+    if (flags & update_hessians)
+      complete_surface_hessians(jets_, ref_.dxi, ref_.deta, {ref_.dxixi, ref_.dxieta, ref_.detaeta}, out);
   }
 
  private:
   const G14SurfaceSpace& space_;
   TensorTableCache tables_;
   ReferenceDerivatives ref_;
+  std::vector<SurfaceJet> jets_;
 };
 
 G14SurfaceSpace::G14SurfaceSpace(const QuadTopology& coarse, const std::vector<Eigen::Vector3d>& vertices,
@@ -136,7 +124,7 @@ G14SurfaceSpace::G14SurfaceSpace(const QuadTopology& coarse, const std::vector<E
     for (int j = 0; j < 4; ++j)
       for (int s = 0; s < 4; ++s) {
         const Point2 uv = reference_edge_point(CellShape::quadrilateral, j, s / 4.0);
-        pts.push_back(surface_jet(surface_, f, uv.x(), uv.y())[0]);
+        pts.push_back(face_map_jet(surface_, f, uv.x(), uv.y())[0]);
       }
     for (const auto& p : pts)
       for (const auto& r : pts) mesh_size_ = std::max(mesh_size_, (p - r).norm());
@@ -198,11 +186,11 @@ std::optional<double> G14SurfaceSpace::max_gradient_jump(const Eigen::VectorXd& 
         const int j = side == 0 ? ie.edge_a : ie.edge_b;
         const double tt = side == 0 ? ie.a0 + t * (ie.a1 - ie.a0) : ie.b0 + t * (ie.b1 - ie.b0);
         const Point2 uv = reference_edge_point(CellShape::quadrilateral, j, tt);
-        const auto x = surface_jet(surface_, f, uv.x(), uv.y());
+        const auto x = face_map_jet(surface_, f, uv.x(), uv.y());
         const auto u = face_jet(b, faces[f], uv);
         Eigen::Matrix<double, 3, 2> J;
         J << x[1], x[2];
-        grad[side] = J * (J.transpose() * J).inverse() * Eigen::Vector2d(u(1), u(2));
+        grad[side] = surface_jet(x[0], J).dual * Eigen::Vector2d(u(1), u(2));
       }
       worst = std::max(worst, (grad[0] - grad[1]).norm());
     }

@@ -1,8 +1,5 @@
 #include "spaces/surface/surface_space.hpp"
 
-#include <Eigen/Geometry>  // cross
-#include <Eigen/LU>
-
 #include <algorithm>
 #include <map>
 #include <stdexcept>
@@ -116,56 +113,48 @@ class SurfaceEvaluator : public Space::Evaluator {
   explicit SurfaceEvaluator(const SurfaceBernsteinSpace& space) : space_(space) {}
 
   void evaluate(int element, const QuadratureRule& points, unsigned flags, PointValues& out) override {
-    if (flags & (update_hessians | update_laplacian_gradient | update_bilaplacian))
-      throw std::logic_error("surface space: second derivatives on surfaces are not implemented");
-    const ReferenceBernstein& table = tables_.get(space_.degree(), points);
+    if (flags & (update_laplacian_gradient | update_bilaplacian))
+      throw std::logic_error("surface space: third and fourth derivatives on surfaces are not implemented");
+    const ReferenceBernstein& table = tables_.get(space_.degree(), points, flags & update_hessians);
     const SurfaceBernsteinSpace::Element& el = space_.element(element);
     const BezierTriangle& patch = space_.surface().patches[el.patch];
-    const Eigen::Vector3d dxi = el.corner[1] - el.corner[0], deta = el.corner[2] - el.corner[0];
-    const bool curvature = flags & update_surface_curvature;
+    // The element map is the patch F composed with the affine map of the sub-triangle,
+    // t = c0 + ξ (c1 − c0) + η (c2 − c0) in patch barycentrics: x_ξ = Σ_a ∂_aF u_a and
+    // x_ξη = Σ_ab ∂_abF u_a v_b with u = c1 − c0, v = c2 − c0.
+    const Eigen::Vector3d dir[2] = {el.corner[1] - el.corner[0], el.corner[2] - el.corner[0]};
+    const bool second = flags & (update_surface_curvature | update_hessians);
     const int q = points.size();
     space_.element_dofs(element, out.dofs);
-    out.x3.resize(3, q);
-    out.jacobian3.resize(q);
-    out.jacobian.clear();
-    if (curvature) {
-      out.normal3.resize(3, q);
-      out.mean_curvature.resize(q);
-    }
+    jets_.resize(q);
     for (int k = 0; k < q; ++k) {
       const Point2& r = points.points[k];
-      const Eigen::Vector3d t = el.corner[0] + r.x() * dxi + r.y() * deta;
-      const BezierJet jet = bezier_jet(patch, t, curvature);
-      out.x3.col(k) = jet.x;
-      Eigen::Matrix<double, 3, 2>& J = out.jacobian3[k];
-      J.col(0) = jet.d[0] * dxi(0) + jet.d[1] * dxi(1) + jet.d[2] * dxi(2);
-      J.col(1) = jet.d[0] * deta(0) + jet.d[1] * deta(1) + jet.d[2] * deta(2);
-      if (curvature) {
-        // Second fundamental form B_ij = F_ij · n and H = −tr(G⁻¹B) = div_Γ n (2 on the unit
-        // sphere with the outward normal).
-        const Eigen::Vector3d n = J.col(0).cross(J.col(1)).normalized();
-        const auto second = [&](const Eigen::Vector3d& u, const Eigen::Vector3d& v) {
-          Eigen::Vector3d s = Eigen::Vector3d::Zero();
-          for (int a = 0; a < 3; ++a)
-            for (int b = 0; b < 3; ++b) s += u(a) * v(b) * jet.dd[a][b];
-          return s.dot(n);
-        };
-        Eigen::Matrix2d B;
-        B(0, 0) = second(dxi, dxi);
-        B(0, 1) = B(1, 0) = second(dxi, deta);
-        B(1, 1) = second(deta, deta);
-        out.normal3.col(k) = n;
-        out.mean_curvature(k) = mean_curvature(J, B);
+      const Eigen::Vector3d t = el.corner[0] + r.x() * dir[0] + r.y() * dir[1];
+      const BezierJet jet = bezier_jet(patch, t, second);
+      Eigen::Matrix<double, 3, 2> J;
+      for (int c = 0; c < 2; ++c) J.col(c) = jet.d[0] * dir[c](0) + jet.d[1] * dir[c](1) + jet.d[2] * dir[c](2);
+      if (!second) {
+        jets_[k] = surface_jet(jet.x, J);
+        continue;
       }
+      const auto along = [&](const Eigen::Vector3d& u, const Eigen::Vector3d& v) {
+        Eigen::Vector3d s = Eigen::Vector3d::Zero();
+        for (int a = 0; a < 3; ++a)
+          for (int b = 0; b < 3; ++b) s += u(a) * v(b) * jet.dd[a][b];
+        return s;
+      };
+      jets_[k] = surface_jet(jet.x, J, {along(dir[0], dir[0]), along(dir[0], dir[1]), along(dir[1], dir[1])});
     }
-    out.x = out.x3.topRows(2);
+    take_surface_geometry(jets_, flags, out);
     if (flags & update_values) out.value = table.value;
-    if (flags & update_gradients) complete_surface_gradients(table.dxi, table.deta, out);
+    if (flags & (update_gradients | update_hessians)) complete_surface_gradients(jets_, table.dxi, table.deta, out);
+    if (flags & update_hessians)
+      complete_surface_hessians(jets_, table.dxi, table.deta, {table.dxixi, table.dxieta, table.detaeta}, out);
   }
 
  private:
   const SurfaceBernsteinSpace& space_;
   ReferenceBernsteinCache tables_;
+  std::vector<SurfaceJet> jets_;
 };
 
 }  // namespace

@@ -103,8 +103,8 @@ TEST(G14SurfaceSpace, NestedLevelsKeepTheSurface) {
   for (int f = 0; f < coarse.num_elements(); ++f)
     for (double u : {0.05, 0.2, 0.45})
       for (double v : {0.1, 0.3, 0.5}) {  // child 0 of face f covers [0, 1/2]² of f
-        const auto a = surface_jet(coarse.surface(), f, u, v)[0];
-        const auto b = surface_jet(fine.surface(), 4 * f, 2 * u, 2 * v)[0];
+        const auto a = face_map_jet(coarse.surface(), f, u, v)[0];
+        const auto b = face_map_jet(fine.surface(), 4 * f, 2 * u, 2 * v)[0];
         worst = std::max(worst, (a - b).norm());
       }
   EXPECT_LT(worst, 1e-13);
