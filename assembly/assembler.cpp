@@ -88,7 +88,41 @@ void scatter_owned_columns(const std::vector<int>& dofs, const Local& local, con
   }
 }
 
+/// Element e's matrix of `form` as the assembler sums it (Local: double or double-double): the
+/// space's shared closed form (returned in place), its own closed form, else quadrature on `ev`.
+/// `dofs` gets the rows' global indices (closed forms: element_dofs order, read from `table`).
+template <class Local>
+const Local* element_local(const Space& space, const ElementDofTable* table, int e, BilinearForm form, int quad_degree,
+                           ElementValues& ev, Local& local, std::vector<int>& dofs) {
+  const auto table_dofs = [&] {
+    if (table) dofs.assign(table->begin(e), table->begin(e + 1));
+    else space.element_dofs(e, dofs);
+  };
+  if (const Local* shared = shared_closed_form(space, e, form, &local)) {
+    table_dofs();
+    return shared;
+  }
+  if (closed_form(space, e, form, local)) {
+    table_dofs();
+    return &local;
+  }
+  ev.reinit(e, *space.quadrature(e, quad_degree));
+  quadrature_matrix(form, ev, local);
+  dofs = ev.dofs();
+  return &local;
+}
+
 }  // namespace
+
+void prepare_extended_element_matrices(const Space& space, BilinearForm form) {
+  prepare_closed_forms(space, form, static_cast<const DoubleDoubleMatrix*>(nullptr));
+}
+
+const DoubleDoubleMatrix& extended_element_matrix(const Space& space, int e, BilinearForm form, int quad_degree,
+                                                  ElementValues& ev, DoubleDoubleMatrix& scratch,
+                                                  std::vector<int>& dofs) {
+  return *element_local(space, nullptr, e, form, quad_degree, ev, scratch, dofs);
+}
 
 template <class Local, class Values>
 void Assembler::assemble(BilinearForm form, int quad_degree, Values values) const {
@@ -119,19 +153,8 @@ void Assembler::assemble(BilinearForm form, int quad_degree, Values values) cons
 #pragma omp for schedule(dynamic, 8)
       for (int e = first; e < last; ++e) {
         progress_tick();
-        Local& local = slots[e - first];
-        std::vector<int>& dofs = slot_dofs[e - first];
-        slot_matrix[e - first] = &local;
-        if (const Local* shared = shared_closed_form(space_, e, form, &local)) {
-          slot_matrix[e - first] = shared;
-          dofs.assign(table_.begin(e), table_.begin(e + 1));
-        } else if (closed_form(space_, e, form, local)) {
-          dofs.assign(table_.begin(e), table_.begin(e + 1));
-        } else {
-          ev.reinit(e, *space_.quadrature(e, quad_degree));
-          quadrature_matrix(form, ev, local);
-          dofs = ev.dofs();
-        }
+        slot_matrix[e - first] =
+            element_local(space_, &table_, e, form, quad_degree, ev, slots[e - first], slot_dofs[e - first]);
       }
       for (int e = first; e < last; ++e)
         scatter_owned_columns(slot_dofs[e - first], *slot_matrix[e - first], pattern_, values, own_first, own_last);

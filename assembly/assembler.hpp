@@ -52,4 +52,13 @@ class Assembler {
   int max_local_ = 0;  ///< most active functions on one element
 };
 
+/// One element's matrix of `form` in double-double, computed as matrix_extended computes it (the
+/// same kernel, for callers that assemble some elements themselves: a rank of a distributed solve).
+/// Returns `scratch` or a matrix the space shares; `dofs` gets the global indices of its rows.
+/// Call prepare_extended_element_matrices once first (not from threads).
+const DoubleDoubleMatrix& extended_element_matrix(const Space& space, int element, BilinearForm form, int quad_degree,
+                                                  ElementValues& ev, DoubleDoubleMatrix& scratch,
+                                                  std::vector<int>& dofs);
+void prepare_extended_element_matrices(const Space& space, BilinearForm form);
+
 }  // namespace iga
