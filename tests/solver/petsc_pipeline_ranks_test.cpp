@@ -1,12 +1,17 @@
-// Acceptance of the one pipeline's PETSc path: a WS4 clamped plate whose exact solution, a quartic
+// The PETSc path of the one pipeline on one and on two ranks.
+//
+// Acceptance: a WS4 clamped plate whose exact solution, a quartic
 // with inhomogeneous boundary data, lies in the space, solved through PETSc with MUMPS at 35 850
 // DOFs on one and on two ranks, is at round-off (relative L2 error ≤ 1e-13) as the serial solve is.
 // With the element matrices summed in long double (the PETSc path before the pipeline was one) the
 // plate's error grows like ε_ld h⁻⁴ instead (docs/known-limits.md: 9.8e-13 at 9 226 DOFs, ×16 per
 // level); the serial path sums in double-double, and so does the PETSc path now.
 //
-// The two-rank case starts this test program under mpirun (the case below with a rank count in
-// the environment), as a user starts iga-run.
+// Laplace–Beltrami without reaction on a closed surface (its load made orthogonal to constants,
+// one coefficient pinned, the mean shifted: sums over all ranks) gives the serial solution.
+//
+// The two-rank case starts this test program under mpirun (the cases ...OnTheRanksOfThisRun with a
+// rank count in the environment), as a user starts iga-run.
 
 #include <gtest/gtest.h>
 #include <sys/wait.h>
@@ -63,7 +68,41 @@ TEST(PetscWs4Plate, InSpaceQuarticAtRoundOffOnTheRanksOfThisRun) {
   EXPECT_LE(*serial.result.l2 / norm, 1e-13);
 }
 
-TEST(PetscWs4Plate, InSpaceQuarticAtRoundOffOnTwoRanks) {
+TEST(PetscSurface, LaplaceBeltramiGivesTheSerialSolutionOnTheRanksOfThisRun) {
+  if (!petsc_available()) GTEST_SKIP() << "built without PETSc";
+  // Closed without reaction (load orthogonal to constants, one coefficient pinned, mean shifted:
+  // sums over all ranks), and open with Dirichlet data on the boundary curve.
+  for (const char* yaml : {R"yaml(
+problem: {pde: laplace_beltrami, exact: "x*y + sin(z) + x", reaction: 0}
+domain: {type: surface, mesh: icosphere, level: 1}
+space: {type: surface, degree: 2}
+)yaml",
+                           R"yaml(
+problem: {pde: laplace_beltrami, exact: "x*y + sin(z) + x", boundary: {all: dirichlet}}
+domain: {type: surface, mesh: height_field}
+space: {type: surface, degree: 3}
+)yaml"}) {
+    SCOPED_TRACE(yaml);
+    const ProblemSpec problem = test::problem_from_yaml(yaml);
+    const SpacePtr space = test::space_from_yaml(yaml, 2);
+    PetscSettings petsc = default_petsc_settings(problem.pde);
+    petsc.ksp = "preonly";
+    petsc.pc = "mumps";
+    const DiscreteSolution p = solve_problem(*space, problem, SolverKind::petsc, {}, petsc);
+    ASSERT_EQ(mpi_size(), expected_ranks());
+    const DiscreteSolution serial = solve_problem(*space, problem, SolverKind::cholmod);
+    const double difference = (p.coefficients - serial.coefficients).norm() / serial.coefficients.norm();
+    std::printf("rank %d of %d: %d dofs, L2 %.6e (serial %.6e), coefficients differ by %.1e\n", mpi_rank(),
+                mpi_size(), space->dimension(), *p.result.l2, *serial.result.l2, difference);
+    EXPECT_EQ(p.result.free_dofs, serial.result.free_dofs);
+    // Two factorizations of one system conditioned like h⁻²: round-off apart.
+    EXPECT_LT(difference, 1e-12);
+    EXPECT_NEAR(*p.result.l2, *serial.result.l2, 1e-10 * *serial.result.l2);
+    EXPECT_NEAR(*p.result.h1, *serial.result.h1, 1e-10 * *serial.result.h1);
+  }
+}
+
+TEST(PetscPipeline, TheCasesAboveOnTwoRanks) {
   if (!petsc_available()) GTEST_SKIP() << "built without PETSc";
   if (expected_ranks() != 1) GTEST_SKIP() << "this is the run started by mpirun";
   // As root (CI) and oversubscribed (CI machines may have one core), as tests/app/mpi_run_test.cpp;
@@ -72,7 +111,7 @@ TEST(PetscWs4Plate, InSpaceQuarticAtRoundOffOnTwoRanks) {
   const std::string command =
       "for v in $(env | grep -o '^\\(OMPI\\|PMIX\\|OPAL\\)[A-Za-z0-9_]*'); do unset $v; done; "
       "IGA_PLATE_TEST_RANKS=2 mpirun --allow-run-as-root --oversubscribe -np 2 " +
-      std::filesystem::read_symlink("/proc/self/exe").string() + " --gtest_filter=PetscWs4Plate.InSpaceQuarticAtRoundOffOnTheRanksOfThisRun";
+      std::filesystem::read_symlink("/proc/self/exe").string() + " --gtest_filter=*OnTheRanksOfThisRun";
   const int status = std::system(command.c_str());
   ASSERT_TRUE(WIFEXITED(status));
   EXPECT_EQ(WEXITSTATUS(status), 0) << command;
