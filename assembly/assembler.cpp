@@ -241,26 +241,4 @@ Eigen::VectorXd Assembler::load(const BatchField& f, int quad_degree) const {
   return b;
 }
 
-Eigen::VectorXd Assembler::boundary_load(const std::vector<BoundaryEdge>& edges, const BoundaryField& g,
-                                         BoundaryTest test, int quad_degree) const {
-  // Boundary work is O(sqrt(elements)); it runs serially.
-  Eigen::VectorXd b = Eigen::VectorXd::Zero(space_.dimension());
-  const unsigned flags = test == BoundaryTest::value ? update_values : update_gradients;
-  ElementValues ev(space_, flags);
-  for (const BoundaryEdge& be : edges) {
-    ev.reinit_edge(be.element, be.local_edge, *space_.edge_quadrature(be.element, be.local_edge, quad_degree));
-    const PointValues& v = ev.values();
-    for (int k = 0; k < ev.num_points(); ++k) {
-      const Point2 n = ev.normal().col(k);
-      const double gw = g(v.x.col(k), n) * ev.jxw()(k);
-      for (int i = 0; i < ev.num_functions(); ++i) {
-        const double test_value =
-            test == BoundaryTest::value ? v.value(i, k) : v.dx(i, k) * n.x() + v.dy(i, k) * n.y();
-        b(ev.dofs()[i]) += gw * test_value;
-      }
-    }
-  }
-  return b;
-}
-
 }  // namespace iga

@@ -31,12 +31,6 @@ class Assembler {
   /// The same with f evaluated at all points of an element at once (row 0 of its values).
   Eigen::VectorXd load(const BatchField& f, int quad_degree) const;
 
-  /// What a boundary integral tests against.
-  enum class BoundaryTest { value, normal_derivative };
-  /// ∫_Γ g v ds (value) or ∫_Γ g ∂v/∂n ds (normal_derivative) over the given edges.
-  Eigen::VectorXd boundary_load(const std::vector<BoundaryEdge>& edges, const BoundaryField& g, BoundaryTest test,
-                                int quad_degree) const;
-
   const ElementDofTable& element_dofs() const { return table_; }
 
  private:
