@@ -368,18 +368,18 @@ void PetscBackend::assemble(const Formulation& f, const Constraints& c, const Ei
     Eigen::MatrixXd T;
     Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> K;
     // Tᵀ A T in double for the factorization; A itself, in double-double, for the residuals.
-    for_each_element_matrix(space_, mine_, f.terms(), f.quadrature_degree(),
-                            [&](int, const std::vector<int>& dofs, const DoubleDoubleMatrix& A_e) {
-                              extended_->add(dofs, A_e);
-                              basis->element(dofs, local, &T);
-                              if (local.empty()) return;
-                              // Coefficient-wise products: Eigen's blocked ones would start a thread team per element.
-                              K = T.transpose().lazyProduct(A_e.hi.lazyProduct(T));
-                              rows.resize(local.size());
-                              for (std::size_t i = 0; i < local.size(); ++i) rows[i] = layout_.global[local[i]];
-                              const PetscInt m = static_cast<PetscInt>(rows.size());
-                              check(MatSetValues(p.A, m, rows.data(), m, rows.data(), K.data(), ADD_VALUES), "MatSetValues");
-                            });
+    const auto add_element = [&](int, const std::vector<int>& dofs, const DoubleDoubleMatrix& A_e) {
+      extended_->add(dofs, A_e);
+      basis->element(dofs, local, &T);
+      if (local.empty()) return;
+      // Coefficient-wise products: Eigen's blocked ones would start a thread team per element.
+      K = T.transpose().lazyProduct(A_e.hi.lazyProduct(T));
+      rows.resize(local.size());
+      for (std::size_t i = 0; i < local.size(); ++i) rows[i] = layout_.global[local[i]];
+      const PetscInt m = static_cast<PetscInt>(rows.size());
+      check(MatSetValues(p.A, m, rows.data(), m, rows.data(), K.data(), ADD_VALUES), "MatSetValues");
+    };
+    for_each_element_matrix(space_, mine_, f.terms(), f.quadrature_degree(), add_element);
   });
   check(MatAssemblyBegin(p.A, MAT_FINAL_ASSEMBLY), "MatAssemblyBegin");
   check(MatAssemblyEnd(p.A, MAT_FINAL_ASSEMBLY), "MatAssemblyEnd");
