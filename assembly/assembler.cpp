@@ -88,7 +88,41 @@ void scatter_owned_columns(const std::vector<int>& dofs, const Local& local, con
   }
 }
 
+/// Element e's matrix of `form` as the assembler sums it (Local: double or double-double): the
+/// space's shared closed form (returned in place), its own closed form, else quadrature on `ev`.
+/// `dofs` gets the rows' global indices (closed forms: element_dofs order, read from `table`).
+template <class Local>
+const Local* element_local(const Space& space, const ElementDofTable* table, int e, BilinearForm form, int quad_degree,
+                           ElementValues& ev, Local& local, std::vector<int>& dofs) {
+  const auto table_dofs = [&] {
+    if (table) dofs.assign(table->begin(e), table->begin(e + 1));
+    else space.element_dofs(e, dofs);
+  };
+  if (const Local* shared = shared_closed_form(space, e, form, &local)) {
+    table_dofs();
+    return shared;
+  }
+  if (closed_form(space, e, form, local)) {
+    table_dofs();
+    return &local;
+  }
+  ev.reinit(e, *space.quadrature(e, quad_degree));
+  quadrature_matrix(form, ev, local);
+  dofs = ev.dofs();
+  return &local;
+}
+
 }  // namespace
+
+void prepare_extended_element_matrices(const Space& space, BilinearForm form) {
+  prepare_closed_forms(space, form, static_cast<const DoubleDoubleMatrix*>(nullptr));
+}
+
+const DoubleDoubleMatrix& extended_element_matrix(const Space& space, int e, BilinearForm form, int quad_degree,
+                                                  ElementValues& ev, DoubleDoubleMatrix& scratch,
+                                                  std::vector<int>& dofs) {
+  return *element_local(space, nullptr, e, form, quad_degree, ev, scratch, dofs);
+}
 
 template <class Local, class Values>
 void Assembler::assemble(BilinearForm form, int quad_degree, Values values) const {
@@ -119,19 +153,8 @@ void Assembler::assemble(BilinearForm form, int quad_degree, Values values) cons
 #pragma omp for schedule(dynamic, 8)
       for (int e = first; e < last; ++e) {
         progress_tick();
-        Local& local = slots[e - first];
-        std::vector<int>& dofs = slot_dofs[e - first];
-        slot_matrix[e - first] = &local;
-        if (const Local* shared = shared_closed_form(space_, e, form, &local)) {
-          slot_matrix[e - first] = shared;
-          dofs.assign(table_.begin(e), table_.begin(e + 1));
-        } else if (closed_form(space_, e, form, local)) {
-          dofs.assign(table_.begin(e), table_.begin(e + 1));
-        } else {
-          ev.reinit(e, *space_.quadrature(e, quad_degree));
-          quadrature_matrix(form, ev, local);
-          dofs = ev.dofs();
-        }
+        slot_matrix[e - first] =
+            element_local(space_, &table_, e, form, quad_degree, ev, slots[e - first], slot_dofs[e - first]);
       }
       for (int e = first; e < last; ++e)
         scatter_owned_columns(slot_dofs[e - first], *slot_matrix[e - first], pattern_, values, own_first, own_last);
@@ -215,28 +238,6 @@ Eigen::VectorXd Assembler::load(const BatchField& f, int quad_degree) const {
   }
   Eigen::VectorXd b = Eigen::VectorXd::Zero(space_.dimension());
   for (size_t k = 0; k < locals.size(); ++k) b(table_.dofs[k]) += locals[k];
-  return b;
-}
-
-Eigen::VectorXd Assembler::boundary_load(const std::vector<BoundaryEdge>& edges, const BoundaryField& g,
-                                         BoundaryTest test, int quad_degree) const {
-  // Boundary work is O(sqrt(elements)); it runs serially.
-  Eigen::VectorXd b = Eigen::VectorXd::Zero(space_.dimension());
-  const unsigned flags = test == BoundaryTest::value ? update_values : update_gradients;
-  ElementValues ev(space_, flags);
-  for (const BoundaryEdge& be : edges) {
-    ev.reinit_edge(be.element, be.local_edge, *space_.edge_quadrature(be.element, be.local_edge, quad_degree));
-    const PointValues& v = ev.values();
-    for (int k = 0; k < ev.num_points(); ++k) {
-      const Point2 n = ev.normal().col(k);
-      const double gw = g(v.x.col(k), n) * ev.jxw()(k);
-      for (int i = 0; i < ev.num_functions(); ++i) {
-        const double test_value =
-            test == BoundaryTest::value ? v.value(i, k) : v.dx(i, k) * n.x() + v.dy(i, k) * n.y();
-        b(ev.dofs()[i]) += gw * test_value;
-      }
-    }
-  }
   return b;
 }
 

@@ -31,12 +31,6 @@ class Assembler {
   /// The same with f evaluated at all points of an element at once (row 0 of its values).
   Eigen::VectorXd load(const BatchField& f, int quad_degree) const;
 
-  /// What a boundary integral tests against.
-  enum class BoundaryTest { value, normal_derivative };
-  /// ∫_Γ g v ds (value) or ∫_Γ g ∂v/∂n ds (normal_derivative) over the given edges.
-  Eigen::VectorXd boundary_load(const std::vector<BoundaryEdge>& edges, const BoundaryField& g, BoundaryTest test,
-                                int quad_degree) const;
-
   const ElementDofTable& element_dofs() const { return table_; }
 
  private:
@@ -51,5 +45,14 @@ class Assembler {
   SparseMatrix pattern_;
   int max_local_ = 0;  ///< most active functions on one element
 };
+
+/// One element's matrix of `form` in double-double, computed as matrix_extended computes it (the
+/// same kernel, for callers that assemble some elements themselves: a rank of a distributed solve).
+/// Returns `scratch` or a matrix the space shares; `dofs` gets the global indices of its rows.
+/// Call prepare_extended_element_matrices once first (not from threads).
+const DoubleDoubleMatrix& extended_element_matrix(const Space& space, int element, BilinearForm form, int quad_degree,
+                                                  ElementValues& ev, DoubleDoubleMatrix& scratch,
+                                                  std::vector<int>& dofs);
+void prepare_extended_element_matrices(const Space& space, BilinearForm form);
 
 }  // namespace iga

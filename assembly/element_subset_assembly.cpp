@@ -1,12 +1,11 @@
 #include "assembly/element_subset_assembly.hpp"
 
 #include <algorithm>
-#include <cmath>
 #include <memory>
 
+#include "assembly/assembler.hpp"
 #include "assembly/integrators.hpp"
 #include "assembly/parallel.hpp"
-#include "assembly/split_matrix.hpp"
 #include "spaces/element_values.hpp"
 
 namespace iga {
@@ -15,75 +14,76 @@ namespace {
 /// Elements computed in parallel before being handed on serially: large enough to keep threads
 /// busy, small enough that the stored element matrices stay a few megabytes.
 constexpr int batch_size = 512;
+}  // namespace
 
-struct ElementSystem {
-  std::vector<int> dofs;
-  Eigen::MatrixXd matrix;
-  Eigen::VectorXd load;
-  MatrixXld extended;
-};
-
-/// The element loop of both variants: `Extended` keeps the long double matrix.
-template <bool Extended, class Sink>
-void element_systems(const Space& space, const std::vector<int>& elements, BilinearForm form, const ScalarField& f,
-                     int quad_degree, const Sink& sink) {
+void for_each_element_matrix(const Space& space, const std::vector<int>& elements, const std::vector<FormTerm>& terms,
+                             int quad_degree, const ElementMatrixSink& sink) {
+  unsigned flags = 0;
+  for (const FormTerm& t : terms) {
+    prepare_extended_element_matrices(space, t.form);
+    flags |= flags_for(t.form);
+  }
   const int n = static_cast<int>(elements.size());
-  std::vector<ElementSystem> batch(std::min(n, batch_size));
+  std::vector<DoubleDoubleMatrix> slots(std::min(n, batch_size));
+  std::vector<const DoubleDoubleMatrix*> matrix(slots.size());
+  std::vector<std::vector<int>> dofs(slots.size());
 #pragma omp parallel if (worth_threads(n))
   {
-    // As in Assembler: a space's closed-form element matrix when it has one (no tabulation of the
-    // basis), and the load by the transposed evaluation Σ_q f(x_q) JxW_q N_i(x_q).
-    ElementValues ev(space, flags_for(form));
-    const std::unique_ptr<Space::Evaluator> evaluator = space.make_evaluator();
-    PointValues geometry;
-    Eigen::VectorXd jxw, fw;
+    ElementValues ev(space, flags);
+    DoubleDoubleMatrix term;
+    std::vector<int> term_dofs;
     for (int first = 0; first < n; first += batch_size) {
       const int m = std::min(batch_size, n - first);
 #pragma omp for schedule(dynamic, 8)
       for (int k = 0; k < m; ++k) {
         const int e = elements[first + k];
-        ElementSystem& s = batch[k];
-        const RulePtr rule = space.quadrature(e, quad_degree);  // keeps the rule alive
-        evaluator->evaluate_geometry(e, *rule, geometry);
-        integration_weights(*rule, geometry, jxw);
-        fw.resize(rule->size());
-        for (int q = 0; q < rule->size(); ++q) fw(q) = f(geometry.x.col(q)) * jxw(q);
-        evaluator->integrate_values(e, *rule, geometry, fw, s.load);
-        s.dofs = geometry.dofs;
-        // The extended closed form, rounded once: the one Assembler::matrix_extended uses (the
-        // double one of some spaces runs Eigen's threaded products per element, slow here).
-        if (space.closed_form_element_matrix_extended(e, form, s.extended)) {
-          if constexpr (!Extended) s.matrix = s.extended.cast<double>();
-        } else {
-          ev.reinit(e, *rule);
-          if constexpr (Extended)
-            element_matrix_extended(form, ev, s.extended);
-          else
-            element_matrix(form, ev, s.matrix);
+        matrix[k] = &extended_element_matrix(space, e, terms[0].form, quad_degree, ev, slots[k], dofs[k]);
+        if (terms.size() == 1 && terms[0].coefficient == 1.0) continue;
+        // Σ c · form in double-double; every term's rows come in the element's one order.
+        DoubleDoubleMatrix& sum = slots[k];
+        if (matrix[k] != &sum) sum = *matrix[k];
+        for (Eigen::Index j = 0; j < sum.cols(); ++j)
+          for (Eigen::Index i = 0; i < sum.rows(); ++i) sum.set(i, j, sum(i, j) * terms[0].coefficient);
+        for (std::size_t t = 1; t < terms.size(); ++t) {
+          const DoubleDoubleMatrix& a = extended_element_matrix(space, e, terms[t].form, quad_degree, ev, term, term_dofs);
+          for (Eigen::Index j = 0; j < sum.cols(); ++j)
+            for (Eigen::Index i = 0; i < sum.rows(); ++i) sum.set(i, j, sum(i, j) + a(i, j) * terms[t].coefficient);
         }
+        matrix[k] = &sum;
       }
 #pragma omp single
-      for (int k = 0; k < m; ++k) {
-        if constexpr (Extended)
-          sink(elements[first + k], batch[k].dofs, batch[k].extended, batch[k].load);
-        else
-          sink(elements[first + k], batch[k].dofs, batch[k].matrix, batch[k].load);
-      }
+      for (int k = 0; k < m; ++k) sink(elements[first + k], dofs[k], *matrix[k]);
       // implicit barrier: the batch is reused only after the sink has seen it
     }
   }
 }
 
-}  // namespace
-
-void for_each_element_system(const Space& space, const std::vector<int>& elements, BilinearForm form,
-                             const ScalarField& f, int quad_degree, const ElementSystemSink& sink) {
-  element_systems<false>(space, elements, form, f, quad_degree, sink);
-}
-
-void for_each_element_system_extended(const Space& space, const std::vector<int>& elements, BilinearForm form,
-                                      const ScalarField& f, int quad_degree, const ElementSystemSinkExtended& sink) {
-  element_systems<true>(space, elements, form, f, quad_degree, sink);
+Eigen::VectorXd subset_load(const Space& space, const std::vector<int>& elements, const ScalarField& f,
+                            int quad_degree) {
+  const int n = static_cast<int>(elements.size());
+  std::vector<Eigen::VectorXd> locals(n);
+  std::vector<std::vector<int>> dofs(n);
+#pragma omp parallel if (worth_threads(n))
+  {
+    const std::unique_ptr<Space::Evaluator> evaluator = space.make_evaluator();
+    PointValues geometry;
+    Eigen::VectorXd jxw, fw;
+#pragma omp for schedule(dynamic, 16)
+    for (int k = 0; k < n; ++k) {
+      const RulePtr rule = space.quadrature(elements[k], quad_degree);  // keeps the rule alive
+      evaluator->evaluate_geometry(elements[k], *rule, geometry);
+      integration_weights(*rule, geometry, jxw);
+      fw.resize(rule->size());
+      for (int q = 0; q < rule->size(); ++q) fw(q) = f(geometry.x.col(q)) * jxw(q);
+      evaluator->integrate_values(elements[k], *rule, geometry, fw, locals[k]);
+      dofs[k] = geometry.dofs;
+    }
+  }
+  // Added in the order given: the same sums whatever the number of threads.
+  Eigen::VectorXd b = Eigen::VectorXd::Zero(space.dimension());
+  for (int k = 0; k < n; ++k)
+    for (int i = 0; i < locals[k].size(); ++i) b(dofs[k][i]) += locals[k](i);
+  return b;
 }
 
 Eigen::VectorXd edge_load(const Space& space, const std::vector<BoundaryEdge>& edges, const BoundaryField& g,
@@ -116,47 +116,6 @@ std::vector<Point2> element_centres(const Space& space) {
     centres[e] = geometry.x * jxw / jxw.sum();
   }
   return centres;
-}
-
-SquaredErrors squared_errors_on_elements(const Space& space, const std::vector<int>& elements,
-                                         const Eigen::VectorXd& coefficients, const ExactSolution& exact,
-                                         int quad_degree) {
-  const bool grad = exact.has_gradient(), hess = exact.has_hessian();
-  const unsigned flags = update_values | (grad ? update_gradients : 0u) | (hess ? update_hessians : 0u);
-  const int n = static_cast<int>(elements.size());
-  double l2 = 0, h1 = 0, h2 = 0;
-#pragma omp parallel reduction(+ : l2, h1, h2) if (worth_threads(n))
-  {
-    const std::unique_ptr<Space::Evaluator> evaluator = space.make_evaluator();
-    PointValues geometry;
-    FunctionValues uh;
-    Eigen::VectorXd jxw;
-#pragma omp for schedule(dynamic, 16)
-    for (int k = 0; k < n; ++k) {
-      const int e = elements[k];
-      const RulePtr rule = space.quadrature(e, quad_degree);
-      evaluator->evaluate_function(e, *rule, coefficients, flags, geometry, uh);
-      integration_weights(*rule, geometry, jxw);
-      for (int q = 0; q < rule->size(); ++q) {
-        const Point2 x = geometry.x.col(q);
-        const double w = jxw(q);
-        l2 += w * std::pow(uh.value(q) - exact.u(x), 2);
-        if (grad) h1 += w * (std::pow(uh.dx(q) - exact.ux(x), 2) + std::pow(uh.dy(q) - exact.uy(x), 2));
-        if (hess)
-          h2 += w * (std::pow(uh.dxx(q) - exact.uxx(x), 2) + 2 * std::pow(uh.dxy(q) - exact.uxy(x), 2) +
-                     std::pow(uh.dyy(q) - exact.uyy(x), 2));
-      }
-    }
-  }
-  return {l2, h1, h2};
-}
-
-ErrorNorms error_norms_from_squares(const SquaredErrors& total, const ExactSolution& exact) {
-  ErrorNorms r;
-  r.l2 = std::sqrt(total.l2);
-  if (exact.has_gradient()) r.h1 = std::sqrt(total.h1);
-  if (exact.has_hessian()) r.h2 = std::sqrt(total.h2);
-  return r;
 }
 
 }  // namespace iga

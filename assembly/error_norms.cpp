@@ -19,9 +19,9 @@ namespace {
 /// array), then `add(geometry, uh, jxw, sums)` accumulates the element's squared errors.
 template <int N, class Add>
 std::array<double, N> sum_over_elements(const Space& space, const Eigen::VectorXd& coefficients, unsigned flags,
-                                        int quad_degree, Add&& add) {
+                                        int quad_degree, const std::vector<int>* elements, Add&& add) {
   keep_eigen_serial();
-  const int ne = space.num_elements();
+  const int ne = elements ? static_cast<int>(elements->size()) : space.num_elements();
   std::array<double, N> total{};
 #pragma omp parallel if (worth_threads(ne))
   {
@@ -31,8 +31,9 @@ std::array<double, N> sum_over_elements(const Space& space, const Eigen::VectorX
     Eigen::VectorXd jxw;
     std::array<double, N> sums{};
 #pragma omp for schedule(dynamic, 16) nowait
-    for (int e = 0; e < ne; ++e) {
+    for (int k = 0; k < ne; ++k) {
       progress_tick();
+      const int e = elements ? (*elements)[k] : k;
       const RulePtr rule_ptr = space.quadrature(e, quad_degree);  // keeps the rule alive
       const QuadratureRule& rule = *rule_ptr;
       evaluator->evaluate_function(e, rule, coefficients, flags, geometry, uh);
@@ -50,11 +51,11 @@ double square(double v) { return v * v; }
 }  // namespace
 
 ErrorNorms error_norms(const Space& space, const Eigen::VectorXd& coefficients, const ExactSolution& exact,
-                       int quad_degree) {
+                       int quad_degree, const std::vector<int>* elements) {
   const bool grad = exact.has_gradient(), hess = exact.has_hessian();
   const unsigned flags = update_values | (grad ? update_gradients : 0u) | (hess ? update_hessians : 0u);
   const auto sums = sum_over_elements<3>(
-      space, coefficients, flags, quad_degree,
+      space, coefficients, flags, quad_degree, elements,
       [&](const PointValues& geometry, const FunctionValues& uh, const Eigen::VectorXd& w, std::array<double, 3>& s) {
         const int q = static_cast<int>(w.size());
         // The exact solution and its derivatives, one row each (u, ux, uy, uxx, uxy, uyy).
@@ -89,11 +90,11 @@ ErrorNorms error_norms(const Space& space, const Eigen::VectorXd& coefficients, 
 }
 
 ErrorNorms surface_error_norms(const Space& space, const Eigen::VectorXd& coefficients,
-                               const SurfaceExactSolution& exact, int quad_degree) {
+                               const SurfaceExactSolution& exact, int quad_degree, const std::vector<int>* elements) {
   const bool grad = exact.has_gradient();
   const unsigned flags = update_values | (grad ? update_gradients : 0u);
   const auto sums = sum_over_elements<2>(
-      space, coefficients, flags, quad_degree,
+      space, coefficients, flags, quad_degree, elements,
       [&](const PointValues& geometry, const FunctionValues& uh, const Eigen::VectorXd& w, std::array<double, 2>& s) {
         for (int k = 0; k < w.size(); ++k) {
           const Eigen::Vector3d x = geometry.x3.col(k);

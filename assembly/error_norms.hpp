@@ -5,6 +5,7 @@
 
 #include <Eigen/Core>
 #include <optional>
+#include <vector>
 
 #include "assembly/fields.hpp"
 #include "spaces/space.hpp"
@@ -19,13 +20,15 @@ struct ErrorNorms {
 
 /// Integrate element by element with rules of degree `quad_degree` (use more than for assembly:
 /// an oscillating exact solution is under-resolved by the assembly rule on coarse meshes).
+/// `elements`, when given, restricts the integrals to those elements (a rank's share).
 ErrorNorms error_norms(const Space& space, const Eigen::VectorXd& coefficients, const ExactSolution& exact,
-                       int quad_degree);
+                       int quad_degree, const std::vector<int>* elements = nullptr);
 
 /// The same for a space on a surface in 3D (ambient_dimension() == 3): L2 error and the H1
 /// seminorm of the error's surface gradient, ∇_Γu = ∇u − (∇u·n) n.
 ErrorNorms surface_error_norms(const Space& space, const Eigen::VectorXd& coefficients,
-                               const SurfaceExactSolution& exact, int quad_degree);
+                               const SurfaceExactSolution& exact, int quad_degree,
+                               const std::vector<int>* elements = nullptr);
 
 
 }  // namespace iga

@@ -10,9 +10,10 @@
 
 namespace iga {
 
-Eigen::VectorXd surface_load(const Space& space, const SurfaceSource& f, int quad_degree) {
+Eigen::VectorXd surface_load(const Space& space, const SurfaceSource& f, int quad_degree,
+                             const std::vector<int>* elements) {
   if (space.ambient_dimension() != 3) throw std::logic_error("surface_load: the space is not on a surface in 3D");
-  const int ne = space.num_elements();
+  const int ne = elements ? static_cast<int>(elements->size()) : space.num_elements();
   // Each thread sums a fixed range of elements (static schedule) into its own vector, and the
   // vectors are added in thread order afterwards: the result does not depend on timing, and the
   // extra work is O(dofs) per thread against O(elements · points) for the integrals.
@@ -25,7 +26,8 @@ Eigen::VectorXd surface_load(const Space& space, const SurfaceSource& f, int qua
     ElementValues ev(space, update_values | update_surface_curvature);
     Eigen::VectorXd fw, local;
 #pragma omp for schedule(static)
-    for (int e = 0; e < ne; ++e) {
+    for (int k = 0; k < ne; ++k) {
+      const int e = elements ? (*elements)[k] : k;
       const RulePtr rule = space.quadrature(e, quad_degree);
       ev.reinit(e, *rule);
       const PointValues& v = ev.values();

@@ -4,6 +4,7 @@
 /// at each quadrature point (Laplace–Beltrami sources computed from an exact solution).
 
 #include <Eigen/Core>
+#include <vector>
 
 #include "assembly/fields.hpp"
 #include "spaces/space.hpp"
@@ -11,7 +12,9 @@
 namespace iga {
 
 /// b_i = ∫_Γ f(x, n, H) N_i dA over all elements, with rules of degree `quad_degree`. The space
-/// must have ambient_dimension() == 3 and fill normal3 and mean_curvature.
-Eigen::VectorXd surface_load(const Space& space, const SurfaceSource& f, int quad_degree);
+/// must have ambient_dimension() == 3 and fill normal3 and mean_curvature. `elements`, when
+/// given, restricts the sum to those elements (a rank's share).
+Eigen::VectorXd surface_load(const Space& space, const SurfaceSource& f, int quad_degree,
+                             const std::vector<int>* elements = nullptr);
 
 }  // namespace iga

@@ -34,8 +34,6 @@ void parse_solver_settings(const ConfigNode& node, Pde pde, SolverKind& kind, Pe
       if (auto k = node.find(key)) k->fail(std::string(key) + " is only used with solver.type: petsc");
     return;
   }
-  if (pde == Pde::laplace_beltrami)
-    node["type"].fail("solver.type: petsc is not yet available for laplace_beltrami (use cholmod)");
   petsc = default_petsc_settings(pde);
   if (auto ksp = node.find("ksp")) petsc.ksp = ksp->as_choice({"cg", "gmres", "preonly"});
   if (auto pc = node.find("pc")) petsc.pc = pc->as_choice({"gamg", "hypre", "mumps", "cholesky", "ilu"});

@@ -12,13 +12,11 @@
 #include <cstdio>
 #include <memory>
 #include <sstream>
-#include <type_traits>
 #include <unordered_map>
 
 #include "assembly/boundary_conditions.hpp"
 #include "assembly/element_subset_assembly.hpp"
 #include "assembly/sparsity.hpp"
-#include "solver/boundary_edge_kinds.hpp"
 #include "solver/linear_solver.hpp"
 #include "solver/petsc_extended_residual.hpp"
 #include "solver/petsc_option_policy.hpp"
@@ -80,10 +78,6 @@ void solve_quietly(KSP ksp, Vec b, Vec x, const PetscSettings& s, const std::str
   if (code == PETSC_ERR_MEM) throw std::runtime_error("PETSc ran out of memory solving with " + method);
   if (!s.options.empty()) throw options_error(s, "PETSc failed solving with " + method, code);
   check(code, "KSPSolve");
-}
-
-BoundaryField boundary_field(const SymbolicFunction& f) {
-  return [f](const Point2& x, const Point2&) { return f(x); };
 }
 
 /// The unknowns of the reduced system: free function k is unknown k (its position in
@@ -269,80 +263,91 @@ int refine_solution(PetscObjects& p, ExtendedResidual& residual, const PetscSett
   return steps;
 }
 
-}  // namespace
+/// PETSc over the MPI ranks: the elements are partitioned, each rank assembles its elements'
+/// matrices (the assembler's double-double kernel) with the essential conditions eliminated into a
+/// distributed AIJ matrix, keeps them in double-double for the right-hand side and the refinement
+/// residuals (ExtendedResidual), and the KSP of the settings solves.
+class PetscBackend final : public LinearBackend {
+ public:
+  PetscBackend(const Space& space, const PetscSettings& settings, const ProgressSink& say)
+      : space_(space), settings_(settings), rank_(mpi_rank()), ranks_(mpi_size()) {
+    on_every_rank([&] {
+      if (say)
+        say("partitioning " + std::to_string(space.num_elements()) + " elements over " + std::to_string(ranks_) +
+            " rank(s)");
+      owner_ = partition_elements(element_centres(space), ranks_);
+      for (int e = 0; e < space.num_elements(); ++e)
+        if (owner_[e] == rank_) mine_.push_back(e);
+    });
+  }
 
-DiscreteSolution solve_problem_petsc(const Space& space, const ProblemSpec& problem, const PetscSettings& settings,
-                                     const ProgressSink& progress) {
-  if (problem.pde == Pde::laplace_beltrami)
-    throw InputError("solver.type: petsc is not yet available for laplace_beltrami (use cholmod)");
-  ensure_petsc_initialised();
+  WorkShare share() const override {
+    return {&mine_, [](double part) {
+              MPI_Allreduce(MPI_IN_PLACE, &part, 1, MPI_DOUBLE, MPI_SUM, PETSC_COMM_WORLD);
+              return part;
+            }};
+  }
+  void locally(const std::function<void()>& work) const override { on_every_rank(work); }
+  void assemble(const Formulation& f, const Constraints& c, const Eigen::VectorXd& load,
+                const ProgressSink& say) override;
+  Eigen::VectorXd solve(SolveReport& report, const ProgressSink& say) override;
+
+ private:
+  const Space& space_;
+  const PetscSettings& settings_;
+  const int rank_, ranks_;
+  std::vector<int> owner_, mine_;
+  const Constraints* constraints_ = nullptr;
+  UnknownLayout layout_;
+  PetscObjects p_;
+  std::unique_ptr<ExtendedResidual> extended_;
+};
+
+void PetscBackend::assemble(const Formulation& f, const Constraints& c, const Eigen::VectorXd& load,
+                            const ProgressSink& say) {
   const MPI_Comm comm = PETSC_COMM_WORLD;
-  const int rank = mpi_rank(), ranks = mpi_size();
-  const auto say = [&](const std::string& msg) {
-    if (progress && rank == 0) progress(msg);
-  };
-  DiscreteSolution out;
-  LevelResult& r = out.result;
-  r.h = space.mesh_size();
-  r.dofs = space.dimension();
-  r.elements = space.num_elements();
-  const int qa = assembly_quadrature_degree(space);
-  auto t0 = Clock::now();
-
-  // Local work first (every rank the same, apart from its elements): an input error found here
-  // is raised on all ranks together before any collective call.
-  Constraints constraints;
-  std::vector<int> my_elements, unknown_offsets{0}, unknowns;
-  std::vector<BoundaryEdge> neumann_mine, supported_mine;
-  UnknownLayout layout;
-  RowCouplings couplings;
+  constraints_ = &c;
+  // Local work first (every rank the same, apart from its elements): an error found here is
+  // raised on all ranks together before any collective call.
   std::unique_ptr<ReducedBasis> basis;
+  RowCouplings couplings;
+  SparseMatrix pattern;
+  // With a direct factorization the solution is refined with residuals of the matrix kept in
+  // double-double: the corrections reuse the factor and remove the error floor of the double
+  // matrix. Krylov solves stop at their tolerance anyway (the right-hand side is exact for both).
+  const bool refine = settings_.pc == "mumps" || settings_.pc == "cholesky";
   on_every_rank([&] {
-    check_boundary_parts(space, problem);
-    const BoundarySplit boundary = split_boundary(space, problem);
-    const EssentialBoundary& essential = boundary.essential;
-    const std::vector<BoundaryEdge>& neumann_edges = boundary.neumann;
-    const std::vector<BoundaryEdge>& supported_edges = boundary.simply_supported;
-    say("boundary constraints");
-    constraints = impose_essential(space, essential, boundary_field(problem.value), problem.normal_derivative_field(), qa);
-    if (!constraints.values.allFinite())
-      throw InputError(problem.data_where + ": the boundary data (u or du/dn) are not finite at some boundary point");
-    basis = std::make_unique<ReducedBasis>(constraints, space.dimension());
-
-    say("partitioning " + std::to_string(space.num_elements()) + " elements over " + std::to_string(ranks) + " rank(s)");
-    const std::vector<int> owner = partition_elements(element_centres(space), ranks);
-    const ElementDofTable table = collect_element_dofs(space);
-    std::vector<int> dofs, local;
+    basis = std::make_unique<ReducedBasis>(c, space_.dimension());
+    const ElementDofTable table = collect_element_dofs(space_);
+    std::vector<int> unknown_offsets{0}, unknowns, dofs, local;
+    ElementDofTable my_table;
+    my_table.offsets.push_back(0);
     for (int e = 0; e < table.num_elements(); ++e) {
       dofs.assign(table.begin(e), table.begin(e + 1));
       basis->element(dofs, local);
       unknowns.insert(unknowns.end(), local.begin(), local.end());
       unknown_offsets.push_back(static_cast<int>(unknowns.size()));
-      if (owner[e] == rank) my_elements.push_back(e);
+      if (refine && owner_[e] == rank_) {
+        my_table.dofs.insert(my_table.dofs.end(), dofs.begin(), dofs.end());
+        my_table.offsets.push_back(static_cast<int>(my_table.dofs.size()));
+      }
     }
-    const int n = static_cast<int>(constraints.free.size());
-    layout = layout_unknowns(unknown_offsets, unknowns, owner, n, ranks);
-    for (const BoundaryEdge& be : neumann_edges)
-      if (owner[be.element] == rank) neumann_mine.push_back(be);
-    for (const BoundaryEdge& be : supported_edges)
-      if (owner[be.element] == rank) supported_mine.push_back(be);
-
-    couplings = row_couplings(unknown_offsets, unknowns, layout, rank);
+    layout_ = layout_unknowns(unknown_offsets, unknowns, owner_, static_cast<int>(c.free.size()), ranks_);
+    couplings = row_couplings(unknown_offsets, unknowns, layout_, rank_);
+    if (refine) pattern = sparsity_pattern(my_table, space_.dimension());
   });
-  r.free_dofs = static_cast<int>(constraints.free.size());
-  out.boundary_constrained = static_cast<int>(constraints.constrained.size());
-  const PetscInt n_global = r.free_dofs;
-  const PetscInt n_local = layout.first_row[rank + 1] - layout.first_row[rank];
+  const PetscInt n_global = static_cast<PetscInt>(c.free.size());
+  const PetscInt n_local = layout_.first_row[rank_ + 1] - layout_.first_row[rank_];
   long long totals[2] = {couplings.off_rank, couplings.total};
   MPI_Allreduce(MPI_IN_PLACE, totals, 2, MPI_LONG_LONG, MPI_SUM, comm);
-  if (ranks > 1) {
+  if (ranks_ > 1 && say) {
     char share[32];
     std::snprintf(share, sizeof share, "%.3g %%", 100.0 * static_cast<double>(totals[0]) / std::max(1LL, totals[1]));
     say("matrix couplings between ranks: " + std::to_string(totals[0]) + " of " + std::to_string(totals[1]) + " (" +
         share + ")");
   }
 
-  PetscObjects p;
+  PetscObjects& p = p_;
   check(MatCreate(comm, &p.A), "MatCreate");
   check(MatSetSizes(p.A, n_local, n_local, n_global, n_global), "MatSetSizes");
   check(MatSetType(p.A, MATAIJ), "MatSetType");
@@ -354,88 +359,50 @@ DiscreteSolution solve_problem_petsc(const Space& space, const ProblemSpec& prob
   check(MatSetOption(p.A, MAT_SPD, PETSC_TRUE), "MatSetOption");
   check(MatCreateVecs(p.A, &p.x, &p.b), "MatCreateVecs");
 
-  // With a direct factorization the solution is refined with residuals of the matrix kept in
-  // long double (petsc_extended_residual.hpp): the corrections reuse the factor and remove the
-  // error floor of the double matrix. Krylov solves stop at their tolerance anyway.
-  const bool refine = settings.pc == "mumps" || settings.pc == "cholesky";
-  std::unique_ptr<ExtendedResidual> extended;
-  if (refine) extended = std::make_unique<ExtendedResidual>(n_global, layout.first_row, rank);
-  say("assembling (" + std::to_string(r.free_dofs) + " unknowns" + (refine ? ", in extended precision" : "") + ")");
+  extended_ = std::make_unique<ExtendedResidual>(c, layout_.global, layout_.first_row, rank_, std::move(pattern));
+  if (say) say("assembling (" + std::to_string(n_global) + " unknowns, in extended precision)");
   on_every_rank([&] {
-    const SymbolicFunction source = problem.source;
-    const ScalarField f = [source](const Point2& x) { return source(x); };
-    std::vector<int> local, global_rows;
+    extended_->add_load(load);
+    std::vector<int> local;
     std::vector<PetscInt> rows;
     Eigen::MatrixXd T;
     Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> K;
-    Eigen::VectorXd g, rhs;
-    bool finite = true;
-    // Tᵀ A T and Tᵀ (b − A g) in the precision of A (double, or long double for the refinement).
-    const auto add_element = [&](int, const std::vector<int>& dofs, const auto& A_e, const Eigen::VectorXd& b_e) {
-      using Scalar = typename std::decay_t<decltype(A_e)>::Scalar;
-      using Matrix = Eigen::Matrix<Scalar, Eigen::Dynamic, Eigen::Dynamic>;
-      using Vector = Eigen::Matrix<Scalar, Eigen::Dynamic, 1>;
+    // Tᵀ A T in double for the factorization; A itself, in double-double, for the residuals.
+    const auto add_element = [&](int, const std::vector<int>& dofs, const DoubleDoubleMatrix& A_e) {
+      extended_->add(dofs, A_e);
       basis->element(dofs, local, &T);
       if (local.empty()) return;
-      g.resize(static_cast<int>(dofs.size()));
-      for (int i = 0; i < g.size(); ++i) g(i) = constraints.values(dofs[i]);
-      const Matrix Ts = T.cast<Scalar>();
       // Coefficient-wise products: Eigen's blocked ones would start a thread team per element.
-      const Matrix AT = A_e.lazyProduct(Ts);
-      const Matrix Ks = Ts.transpose().lazyProduct(AT);
-      const Vector rhs_s = Ts.transpose().lazyProduct(b_e.cast<Scalar>() - A_e.lazyProduct(g.cast<Scalar>()));
-      K = Ks.template cast<double>();
-      rhs = rhs_s.template cast<double>();
-      finite = finite && rhs.allFinite();
+      K = T.transpose().lazyProduct(A_e.hi.lazyProduct(T));
       rows.resize(local.size());
-      global_rows.resize(local.size());
-      for (std::size_t i = 0; i < local.size(); ++i) rows[i] = global_rows[i] = layout.global[local[i]];
+      for (std::size_t i = 0; i < local.size(); ++i) rows[i] = layout_.global[local[i]];
       const PetscInt m = static_cast<PetscInt>(rows.size());
       check(MatSetValues(p.A, m, rows.data(), m, rows.data(), K.data(), ADD_VALUES), "MatSetValues");
-      check(VecSetValues(p.b, m, rows.data(), rhs.data(), ADD_VALUES), "VecSetValues");
-      if constexpr (std::is_same_v<Scalar, long double>) extended->add(global_rows, Ks, rhs_s);
     };
-    if (refine)
-      for_each_element_system_extended(space, my_elements, problem.form, f, qa, add_element);
-    else
-      for_each_element_system(space, my_elements, problem.form, f, qa, add_element);
-    // Natural conditions on this rank's boundary edges: Neumann flux ∫ g_N v, and ∫ Δu ∂v/∂n on
-    // simply supported plate edges.
-    Eigen::VectorXd edges = Eigen::VectorXd::Zero(space.dimension());
-    if (!neumann_mine.empty()) edges += edge_load(space, neumann_mine, problem.normal_derivative_field(), false, qa);
-    if (!supported_mine.empty()) edges += edge_load(space, supported_mine, boundary_field(problem.laplacian), true, qa);
-    std::vector<int> one(1);
-    for (int d = 0; d < edges.size(); ++d) {
-      if (edges(d) == 0.0) continue;
-      one[0] = d;
-      basis->element(one, local, &T);
-      for (std::size_t i = 0; i < local.size(); ++i) {
-        const PetscInt row = layout.global[local[i]];
-        const PetscScalar v = T(0, static_cast<int>(i)) * edges(d);
-        check(VecSetValues(p.b, 1, &row, &v, ADD_VALUES), "VecSetValues");
-        if (extended) extended->add_load(static_cast<int>(row), v);
-      }
-    }
-    finite = finite && edges.allFinite();
-    if (!finite)
-      throw InputError(problem.source_where +
-                       ": the source term or boundary flux is not finite at some point of the domain "
-                       "(a pole, or a log or root of a negative number?)");
+    for_each_element_matrix(space_, mine_, f.terms(), f.quadrature_degree(), add_element);
   });
   check(MatAssemblyBegin(p.A, MAT_FINAL_ASSEMBLY), "MatAssemblyBegin");
   check(MatAssemblyEnd(p.A, MAT_FINAL_ASSEMBLY), "MatAssemblyEnd");
-  check(VecAssemblyBegin(p.b), "VecAssemblyBegin");
-  check(VecAssemblyEnd(p.b), "VecAssemblyEnd");
-  r.t_assemble = seconds_since(t0);
+  // The right-hand side Tᵀ(b − A g), rounded once from the double-double sums over the ranks.
+  const std::vector<double> rhs = extended_->owned_rows(nullptr);
+  PetscScalar* bv = nullptr;
+  check(VecGetArray(p.b, &bv), "VecGetArray");
+  std::copy(rhs.begin(), rhs.end(), bv);
+  check(VecRestoreArray(p.b, &bv), "VecRestoreArray");
+  if (!refine) extended_.reset();
+}
 
-  t0 = Clock::now();
+Eigen::VectorXd PetscBackend::solve(SolveReport& report, const ProgressSink& say) {
+  PetscObjects& p = p_;
+  const MPI_Comm comm = PETSC_COMM_WORLD;
+  const auto t0 = Clock::now();
   check(KSPCreate(comm, &p.ksp), "KSPCreate");
   check(KSPSetOperators(p.ksp, p.A, p.A), "KSPSetOperators");
   // Every rank has the same options (the command line, PETSC_OPTIONS and ~/.petscrc reach all
   // ranks from rank 0), so an option PETSc refuses fails on all ranks together.
-  on_every_rank([&] { configure_ksp(p.ksp, settings, ranks); });
+  on_every_rank([&] { configure_ksp(p.ksp, settings_, ranks_); });
   const std::string method = describe(p.ksp);
-  say("solving with PETSc " + method);
+  if (say) say("solving with PETSc " + method);
   {
     // Options PETSc reads only when it builds the preconditioner (a factorization package that
     // cannot do this factorization, say) fail here. Not shared across ranks: a failure here may
@@ -443,14 +410,14 @@ DiscreteSolution solve_problem_petsc(const Space& space, const ProblemSpec& prob
     QuietPetscErrors quiet;
     const PetscErrorCode code = KSPSetUp(p.ksp);
     if (code == PETSC_ERR_MEM) throw std::runtime_error("PETSc ran out of memory setting up " + method);
-    if (code != 0 && !settings.options.empty())
-      throw options_error(settings, "PETSc could not set up " + method, code);
+    if (code != 0 && !settings_.options.empty())
+      throw options_error(settings_, "PETSc could not set up " + method, code);
     check(code, "KSPSetUp");
   }
-  out.solve.t_factorize = seconds_since(t0);
+  report.t_factorize = seconds_since(t0);
   const auto t1 = Clock::now();
-  solve_quietly(p.ksp, p.b, p.x, settings, method);
-  out.solve.t_solve = seconds_since(t1);
+  solve_quietly(p.ksp, p.b, p.x, settings_, method);
+  report.t_solve = seconds_since(t1);
   KSPConvergedReason reason;
   PetscInt its = 0;
   check(KSPGetConvergedReason(p.ksp, &reason), "KSPGetConvergedReason");
@@ -464,15 +431,15 @@ DiscreteSolution solve_problem_petsc(const Space& space, const ProblemSpec& prob
     // pivot may be the matrix's own (exit 1, naming the options as a possible cause).
     bool zero_pivot = false;
     const std::string why = "the preconditioner of PETSc " + method + " failed (" + pc_failure(p.ksp, zero_pivot) + ")";
-    if (settings.options.empty()) throw NumericalError(why + " (choose another solver.pc)");
-    if (zero_pivot) throw NumericalError(why + "; " + options_place(settings) + " may be the cause");
-    throw InputError(options_place(settings) + ": " + why + ", most likely because of these options");
+    if (settings_.options.empty()) throw NumericalError(why + " (choose another solver.pc)");
+    if (zero_pivot) throw NumericalError(why + "; " + options_place(settings_) + " may be the cause");
+    throw InputError(options_place(settings_) + ": " + why + ", most likely because of these options");
   }
   if (reason < 0)
     throw NumericalError("PETSc " + method + " did not converge: " + failure_text(p.ksp, reason, bnorm) +
                          " (raise solver.rtol or solver.max_iterations, or choose another solver.pc)");
   check(VecScatterCreateToAll(p.x, &p.to_all, &p.all), "VecScatterCreateToAll");
-  if (extended) out.solve.refinement_steps = refine_solution(p, *extended, settings, method);
+  if (extended_) report.refinement_steps = refine_solution(p, *extended_, settings_, method);
   // The true residual ‖b − A x‖ / ‖b‖, whatever norm the KSP tested.
   Vec residual;
   check(VecDuplicate(p.b, &residual), "VecDuplicate");
@@ -480,44 +447,35 @@ DiscreteSolution solve_problem_petsc(const Space& space, const ProblemSpec& prob
   check(VecAYPX(residual, -1.0, p.b), "VecAYPX");
   check(VecNorm(residual, NORM_2, &rnorm), "VecNorm");
   VecDestroy(&residual);
-  out.solve.relative_residual = bnorm > 0 ? rnorm / bnorm : rnorm;
-  out.solve.method = "petsc " + method + ", " + std::to_string(its) + " iterations" +
-                     (out.solve.refinement_steps > 0
-                          ? ", " + std::to_string(out.solve.refinement_steps) + " refinement steps"
-                          : std::string()) +
-                     (ranks > 1 ? ", " + std::to_string(ranks) + " ranks" : "");
+  report.relative_residual = bnorm > 0 ? rnorm / bnorm : rnorm;
+  report.method = "petsc " + method + ", " + std::to_string(its) + " iterations" +
+                  (report.refinement_steps > 0 ? ", " + std::to_string(report.refinement_steps) + " refinement steps"
+                                               : std::string()) +
+                  (ranks_ > 1 ? ", " + std::to_string(ranks_) + " ranks" : "");
 
   // Every rank gets the whole solution (the space, the outputs and the error integrals need it).
   check(VecScatterBegin(p.to_all, p.x, p.all, INSERT_VALUES, SCATTER_FORWARD), "VecScatterBegin");
   check(VecScatterEnd(p.to_all, p.x, p.all, INSERT_VALUES, SCATTER_FORWARD), "VecScatterEnd");
   const PetscScalar* all = nullptr;
   check(VecGetArrayRead(p.all, &all), "VecGetArrayRead");
-  Eigen::VectorXd u_free(n_global);
-  for (PetscInt k = 0; k < n_global; ++k) u_free(k) = all[layout.global[k]];
+  const int n = static_cast<int>(constraints_->free.size());
+  Eigen::VectorXd u_free(n);
+  for (int k = 0; k < n; ++k) u_free(k) = all[layout_.global[k]];
   check(VecRestoreArrayRead(p.all, &all), "VecRestoreArrayRead");
-  out.coefficients = expand_solution(u_free, constraints);
-  r.t_solve = seconds_since(t0);
+  return expand_solution(u_free, *constraints_);
+}
 
-  r.g1_jump = space.max_gradient_jump(out.coefficients);
-  if (problem.exact) {
-    say("computing errors");
-    t0 = Clock::now();
-    const ExactSolution exact = problem.exact_solution();
-    SquaredErrors mine;
-    on_every_rank([&] {
-      mine = squared_errors_on_elements(space, my_elements, out.coefficients, exact, space.error_quadrature_degree());
-    });
-    double sums[3] = {mine.l2, mine.h1, mine.h2};
-    MPI_Allreduce(MPI_IN_PLACE, sums, 3, MPI_DOUBLE, MPI_SUM, comm);
-    const ErrorNorms e = error_norms_from_squares({sums[0], sums[1], sums[2]}, exact);
-    if (!std::isfinite(e.l2) || !std::isfinite(e.h1.value_or(0)) || !std::isfinite(e.h2.value_or(0)))
-      throw InputError(problem.data_where + ": the exact solution or its derivatives are not finite somewhere in the domain");
-    r.l2 = e.l2;
-    r.h1 = e.h1;
-    r.h2 = e.h2;
-    r.t_errors = seconds_since(t0);
-  }
-  return out;
+}  // namespace
+
+DiscreteSolution solve_problem_petsc(const Space& space, const ProblemSpec& problem, const PetscSettings& settings,
+                                     const ProgressSink& progress) {
+  ensure_petsc_initialised();
+  const ProgressSink say = [&](const std::string& msg) {
+    if (progress && mpi_rank() == 0) progress(msg);
+  };
+  const std::unique_ptr<Formulation> f = make_formulation(space, problem);
+  PetscBackend backend(space, settings, say);
+  return solve_pipeline(*f, backend, say);
 }
 
 }  // namespace iga

@@ -1,14 +1,14 @@
 #pragma once
 /// @file
-/// Solve one boundary value problem with PETSc, distributed over the MPI ranks (one rank without
-/// mpirun): the elements are partitioned (petsc_partition.hpp), each rank assembles its elements'
-/// systems with the essential boundary conditions eliminated into a distributed (MPIAIJ) matrix
-/// preallocated from the element couplings, the KSP of `settings` solves it, and the error
-/// integrals of each rank's elements are summed over the ranks. Every rank ends with the whole
-/// coefficient vector. Written against the Space interface only.
-///
-/// Every rank builds the whole space and computes the boundary constraints (a boundary-sized
-/// problem) itself; only assembly, solve and errors are divided.
+/// Solve one problem with PETSc, distributed over the MPI ranks (one rank without mpirun): the one
+/// pipeline (pipeline.hpp) with the PETSc backend. The elements are partitioned
+/// (petsc_partition.hpp); each rank assembles its elements' matrices (the serial assembler's
+/// double-double kernel) with the essential conditions eliminated into a distributed (MPIAIJ)
+/// matrix preallocated from the element couplings, keeps them in double-double for the right-hand
+/// side and the refinement residuals (petsc_extended_residual.hpp), the KSP of `settings` solves,
+/// and loads, errors and the sums of surface problems are summed over the ranks. Every rank ends
+/// with the whole coefficient vector. Every rank builds the whole space and computes the boundary
+/// constraints (a boundary-sized problem) itself. Written against the Space interface only.
 
 #include "solver/petsc_settings.hpp"
 #include "solver/solve_problem.hpp"

@@ -1,43 +1,21 @@
 #pragma once
 /// @file
-/// Solve one boundary value problem on one space: assemble, impose boundary conditions, solve,
-/// measure errors. Written against the Space interface only.
+/// Solve one boundary value problem on one space: the pipeline (pipeline.hpp) with the problem's
+/// formulation (planar or surface) and the backend the solver kind asks for (serial CHOLMOD/UMFPACK
+/// here, PETSc in petsc_solve_problem.hpp). Written against the Space interface only.
 
 #include <Eigen/Core>
-#include <functional>
-#include <string>
-#include <vector>
+#include <memory>
 
 #include "assembly/boundary_conditions.hpp"
-#include "assembly/error_norms.hpp"
 #include "assembly/split_matrix.hpp"
-#include "solver/level_result.hpp"
 #include "solver/linear_solver.hpp"
 #include "solver/petsc_settings.hpp"
+#include "solver/pipeline.hpp"
+#include "solver/planar_formulation.hpp"
 #include "solver/problem.hpp"
 
 namespace iga {
-
-/// Progress messages for long phases (the CLI prints them to stderr unless --quiet).
-using ProgressSink = std::function<void(const std::string&)>;
-
-struct DiscreteSolution {
-  Eigen::VectorXd coefficients;  ///< one per global basis function
-  LevelResult result;            ///< h, dofs, errors, timings (level and t_space left to the caller)
-  SolveReport solve;
-  int boundary_constrained = 0;  ///< coefficients fixed by essential data
-  /// Adaptive studies: the residual indicator η_K per element and the elements marked for refinement.
-  std::vector<double> indicators;
-  std::vector<int> marked;
-};
-
-/// Quadrature degree used for assembly with a space of local degree p (documented in docs/problems.md;
-/// error norms use Space::error_quadrature_degree).
-int assembly_quadrature_degree(const Space& space);
-
-/// Validate the problem's boundary part names against the space; throws InputError.
-void check_boundary_parts(const Space& space, const ProblemSpec& problem);
-
 
 /// The linear system of one problem on one space: the full matrix (extended precision) and load,
 /// the essential boundary conditions, and the reduced system of the free functions.
@@ -48,6 +26,26 @@ struct LinearSystem {
   SparseMatrix A_free;     ///< rows and columns: constraints.free, in that order
   Eigen::VectorXd b_free;
 };
+
+/// One process, every element: the matrix assembled whole (Formulation::matrix), reduced to the
+/// free coefficients and solved by CHOLMOD or UMFPACK with refinement residuals of the whole
+/// extended-precision system (solve_linear_system).
+class SerialBackend final : public LinearBackend {
+ public:
+  explicit SerialBackend(SolverKind kind) : kind_(kind) {}
+  void assemble(const Formulation& f, const Constraints& c, const Eigen::VectorXd& load,
+                const ProgressSink& progress) override;
+  Eigen::VectorXd solve(SolveReport& report, const ProgressSink& progress) override;
+  std::optional<double> energy(const Eigen::VectorXd& u) const override { return u.dot(system_.A.high * u); }
+  const LinearSystem& system() const { return system_; }
+
+ private:
+  SolverKind kind_;
+  LinearSystem system_;
+};
+
+/// The formulation of `problem` (planar, or Laplace–Beltrami on a surface).
+std::unique_ptr<Formulation> make_formulation(const Space& space, const ProblemSpec& problem);
 
 /// Assemble the matrix and load, impose the essential conditions and reduce (planar problems;
 /// what solve_problem solves). Throws InputError for bad data (non-finite load or boundary values,

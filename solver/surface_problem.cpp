@@ -1,6 +1,5 @@
 #include "solver/surface_problem.hpp"
 
-#include <chrono>
 #include <cmath>
 
 #include "assembly/assembler.hpp"
@@ -47,102 +46,81 @@ SurfaceSource surface_source(const ProblemSpec& problem) {
   };
 }
 
-namespace {
-using Clock = std::chrono::steady_clock;
-double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
-}  // namespace
-
-DiscreteSolution solve_surface_problem(const Space& space, const ProblemSpec& problem, SolverKind solver,
-                                       const ProgressSink& progress) {
-  const auto say = [&](const std::string& msg) {
-    if (progress) progress(msg);
-  };
-  if (space.ambient_dimension() != 3)
-    throw InputError(problem.source_where + ": laplace_beltrami needs a space on a surface in 3D");
-  const std::vector<BoundaryEdge> boundary = space.boundary_edges("all");
-  const bool open = !boundary.empty();
-  if (open && !problem.surface_dirichlet)
-    throw InputError(problem.source_where +
+void SurfaceFormulation::check() const {
+  const ProblemSpec& p = problem();
+  if (space().ambient_dimension() != 3)
+    throw InputError(p.source_where + ": laplace_beltrami needs a space on a surface in 3D");
+  if (open() && !p.surface_dirichlet)
+    throw InputError(p.source_where +
                      ": this surface has a boundary: give Dirichlet data on it (problem.boundary: {all: dirichlet})");
-  if (!open && problem.surface_dirichlet)
-    throw InputError(problem.boundary.front().where + ": this surface is closed (it has no boundary for Dirichlet data)");
-  DiscreteSolution out;
-  LevelResult& r = out.result;
-  r.h = space.mesh_size();
-  r.dofs = space.dimension();
-  r.elements = space.num_elements();
-  r.free_dofs = space.dimension();
-  const int qa = assembly_quadrature_degree(space);
+  if (!open() && p.surface_dirichlet)
+    throw InputError(p.boundary.front().where + ": this surface is closed (it has no boundary for Dirichlet data)");
+}
 
-  say("assembling");
-  auto t0 = Clock::now();
-  const Assembler assembler(space);
-  const SparseMatrix M = assembler.matrix(BilinearForm::mass, qa);
-  SparseMatrix A = assembler.matrix(BilinearForm::laplace, qa);
-  if (problem.reaction > 0) A += problem.reaction * M;
-  Eigen::VectorXd b = surface_load(space, surface_source(problem), qa);
-  if (!b.allFinite())
-    throw InputError(problem.source_where + ": the source term is not finite at some point of the surface");
-  // Without reaction, constants (Σ N_i = 1) span the kernel: make the load orthogonal to them
-  // (∫f = 0 holds for exact data only up to quadrature), pin one coefficient, and shift the
-  // solution to zero mean afterwards.
-  const Eigen::VectorXd ones = Eigen::VectorXd::Ones(space.dimension());
-  const Eigen::VectorXd mass_of_one = M * ones;
-  const double area = ones.dot(mass_of_one);
-  const bool pure = problem.reaction == 0 && !open;
-  if (pure) {
-    b -= (b.sum() / area) * mass_of_one;
-    A.prune([](Eigen::Index i, Eigen::Index j, double) { return i != 0 && j != 0; });
-    A.coeffRef(0, 0) = 1.0;
-    b(0) = 0.0;
+Eigen::VectorXd SurfaceFormulation::load(const WorkShare& share) const {
+  Eigen::VectorXd b = surface_load(space(), surface_source(problem()), quadrature_degree(), share.elements);
+  if (pure()) {
+    mass_of_one_ = surface_load(
+        space(), [](const Eigen::Vector3d&, const Eigen::Vector3d&, double) { return 1.0; }, quadrature_degree(),
+        share.elements);
+    area_ = share.sum(mass_of_one_.sum());
+    b -= (share.sum(b.sum()) / area_) * mass_of_one_;
   }
+  return b;
+}
 
-  Constraints constraints;
-  if (open) {
-    const SymbolicFunction g = *problem.surface_dirichlet;
-    constraints = surface_dirichlet_constraints(
-        space, boundary, [g](const Eigen::Vector3d& x) { return g.at(x); }, qa);
-    r.free_dofs = static_cast<int>(constraints.free.size());
+Constraints SurfaceFormulation::constraints() const {
+  const int n = space().dimension();
+  if (open()) {
+    const SymbolicFunction g = *problem().surface_dirichlet;
+    return surface_dirichlet_constraints(
+        space(), space().boundary_edges("all"), [g](const Eigen::Vector3d& x) { return g.at(x); },
+        quadrature_degree());
   }
-  r.t_assemble = seconds_since(t0);
+  Constraints c;
+  c.values = Eigen::VectorXd::Zero(n);
+  if (pure()) c.constrained = {0};
+  for (int i = pure() ? 1 : 0; i < n; ++i) c.free.push_back(i);
+  return c;
+}
 
-  say("factorizing and solving (" + std::to_string(r.free_dofs) + " unknowns)");
-  t0 = Clock::now();
-  if (open) {
-    SparseMatrix A_free;
-    Eigen::VectorXd b_free;
-    reduce_system(A, b, constraints, A_free, b_free);
-    out.coefficients = expand_solution(solve_linear_system(A_free, b_free, solver, out.solve), constraints);
-  } else {
-    out.coefficients = solve_linear_system(A, b, solver, out.solve);
-  }
-  if (pure) {
-    out.coefficients.array() -= mass_of_one.dot(out.coefficients) / area;
-    // With an exact solution, compare with its own mean: ∫u = Σ_i ∫u N_i.
-    if (problem.surface_exact) {
-      const SymbolicFunction u = *problem.surface_exact;
-      const double mean =
-          surface_load(space, [u](const Eigen::Vector3d& x, const Eigen::Vector3d&, double) { return u.at(x); },
-                       space.error_quadrature_degree())
-              .sum() / area;
-      out.coefficients.array() += mean;
-    }
-  }
-  r.t_solve = seconds_since(t0);
+std::vector<FormTerm> SurfaceFormulation::terms() const {
+  std::vector<FormTerm> t{{BilinearForm::laplace, 1.0}};
+  if (problem().reaction > 0) t.push_back({BilinearForm::mass, problem().reaction});
+  return t;
+}
 
-  if (problem.surface_exact) {
-    say("computing errors");
-    t0 = Clock::now();
-    const ErrorNorms e =
-        surface_error_norms(space, out.coefficients, surface_exact_solution(problem), space.error_quadrature_degree());
-    if (!std::isfinite(e.l2) || !std::isfinite(e.h1.value_or(0)))
-      throw InputError(problem.data_where + ": the exact solution or its gradient is not finite somewhere on the surface");
-    r.l2 = e.l2;
-    r.h1 = e.h1;
-    r.t_errors = seconds_since(t0);
+SplitMatrix SurfaceFormulation::matrix() const {
+  // In double: the Laplace–Beltrami matrix is conditioned like h⁻², far from the plates' need.
+  const Assembler assembler(space());
+  SparseMatrix A = assembler.matrix(BilinearForm::laplace, quadrature_degree());
+  if (problem().reaction > 0) A += problem().reaction * assembler.matrix(BilinearForm::mass, quadrature_degree());
+  return {A, Eigen::VectorXd()};
+}
+
+void SurfaceFormulation::finish(Eigen::VectorXd& coefficients, const WorkShare& share) const {
+  if (!pure()) return;
+  coefficients.array() -= share.sum(mass_of_one_.dot(coefficients)) / area_;
+  // With an exact solution, compare with its own mean: ∫u = Σ_i ∫u N_i.
+  if (problem().surface_exact) {
+    const SymbolicFunction u = *problem().surface_exact;
+    const double integral =
+        surface_load(space(), [u](const Eigen::Vector3d& x, const Eigen::Vector3d&, double) { return u.at(x); },
+                     space().error_quadrature_degree(), share.elements)
+            .sum();
+    coefficients.array() += share.sum(integral) / area_;
   }
-  r.g1_jump = space.max_gradient_jump(out.coefficients);  // surface gradient jump of C1 spaces on surfaces
-  return out;
+}
+
+ErrorNorms SurfaceFormulation::errors(const Eigen::VectorXd& coefficients, const WorkShare& share) const {
+  return surface_error_norms(space(), coefficients, surface_exact_solution(problem()),
+                             space().error_quadrature_degree(), share.elements);
+}
+
+Formulation::Messages SurfaceFormulation::messages() const {
+  return {problem().source_where + ": the source term is not finite at some point of the surface",
+          problem().data_where + ": the boundary data are not finite at some point of the surface's boundary",
+          problem().data_where + ": the exact solution or its gradient is not finite somewhere on the surface"};
 }
 
 }  // namespace iga

@@ -10,7 +10,7 @@
 
 #include "assembly/fields.hpp"
 #include "config/config_node.hpp"
-#include "solver/solve_problem.hpp"
+#include "solver/formulation.hpp"
 
 namespace iga {
 
@@ -20,8 +20,32 @@ SurfaceExactSolution surface_exact_solution(const ProblemSpec& problem);
 /// The given source, else f(x, n, H) = −Δ_Γu + u from the exact solution.
 SurfaceSource surface_source(const ProblemSpec& problem);
 
-/// Assemble the Laplace–Beltrami and mass matrices, the load, solve, and measure the errors.
-DiscreteSolution solve_surface_problem(const Space& space, const ProblemSpec& problem, SolverKind solver,
-                                       const ProgressSink& progress = {});
+/// The Laplace–Beltrami problem as a Formulation: matrix laplace + c mass, the load from
+/// surface_source, Dirichlet data on open surfaces (surface_dirichlet.hpp). Without reaction on a
+/// closed surface, constants (Σ N_i = 1) span the kernel: the load is made orthogonal to them
+/// (∫f = 0 holds for exact data only up to quadrature), coefficient 0 is pinned (an essential
+/// condition like any other) and the solution is shifted to zero mean, or to the exact solution's
+/// mean when one is given.
+class SurfaceFormulation final : public Formulation {
+ public:
+  using Formulation::Formulation;
+  void check() const override;
+  Eigen::VectorXd load(const WorkShare& share) const override;
+  Constraints constraints() const override;
+  std::vector<FormTerm> terms() const override;
+  SplitMatrix matrix() const override;
+  void finish(Eigen::VectorXd& coefficients, const WorkShare& share) const override;
+  bool has_exact() const override { return problem().surface_exact.has_value(); }
+  ErrorNorms errors(const Eigen::VectorXd& coefficients, const WorkShare& share) const override;
+  Messages messages() const override;
+
+ private:
+  bool open() const { return !space().boundary_edges("all").empty(); }
+  /// Closed surface without reaction: the solution is fixed up to a constant.
+  bool pure() const { return problem().reaction == 0 && !open(); }
+  /// Pure problems: this share's ∫ N_i and the area (set by load, used by finish).
+  mutable Eigen::VectorXd mass_of_one_;
+  mutable double area_ = 0;
+};
 
 }  // namespace iga

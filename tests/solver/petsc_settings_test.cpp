@@ -74,8 +74,14 @@ TEST(SolverSettings, ImpossibleCombinationsAndValuesAreRefusedAtTheirKey) {
   EXPECT_NE(msg.find("solver.max_iterations: max_iterations must be between 1 and 100000"), std::string::npos) << msg;
   msg = test::input_error([] { parse("solver: {type: petsc, options: \"-ksp_max_it 1 2\"}"); });
   EXPECT_NE(msg.find("'2' is not a PETSc option name"), std::string::npos) << msg;
-  msg = test::input_error([] { parse("solver: {type: petsc}", Pde::laplace_beltrami); });
-  EXPECT_NE(msg.find("laplace_beltrami"), std::string::npos) << msg;
+}
+
+TEST(SolverSettings, SurfaceProblemsTakePetscWithTheSecondOrderDefaults) {
+  if (!petsc_available()) GTEST_SKIP() << "built without PETSc";
+  const Parsed p = parse("solver: {type: petsc}", Pde::laplace_beltrami);
+  EXPECT_EQ(p.kind, SolverKind::petsc);
+  EXPECT_EQ(p.petsc.ksp, "cg");
+  EXPECT_EQ(p.petsc.pc, "gamg");
 }
 
 TEST(SolverSettings, PetscIsRefusedAsInputWhenNotBuiltIn) {

@@ -1,5 +1,6 @@
-// The PETSc path on one rank against CHOLMOD, on shipped configs of every space: the same errors to
-// the solver tolerance (nothing in the PETSc path is specific to a space), and its failures.
+// The PETSc path on one rank against CHOLMOD, on shipped configs of every space, planar and on
+// surfaces: the same errors to the solver tolerance (nothing in the PETSc path is specific to a
+// space or a problem), and its failures.
 
 #include <gtest/gtest.h>
 
@@ -62,7 +63,11 @@ INSTANTIATE_TEST_SUITE_P(
                       Case{"tmesh-biharmonic", 2, "preonly", "mumps"}, Case{"g1-poisson-3patch", 1, "cg", "gamg"},
                       Case{"g1-biharmonic-3patch", 1, "preonly", "mumps"},
                       // clamped, simply supported and free parts meeting at vertices
-                      Case{"g1-biharmonic-mixed", 1, "preonly", "mumps"}),
+                      Case{"g1-biharmonic-mixed", 1, "preonly", "mumps"},
+                      // Laplace–Beltrami on surfaces: the same pipeline with the surface formulation
+                      Case{"surface-laplace-beltrami-sphere", 2, "cg", "gamg"},
+                      Case{"surface-laplace-beltrami-sphere", 2, "preonly", "mumps"},
+                      Case{"g1_4split-surface-cube", 1, "cg", "gamg"}),
     [](const ::testing::TestParamInfo<Case>& info) {
       std::string name = std::string(info.param.config) + "_" + info.param.ksp + "_" + info.param.pc;
       for (char& ch : name)

@@ -1,0 +1,79 @@
+#pragma once
+/// @file
+/// What a problem poses on a space, as the solve pipeline (solver/pipeline.hpp) needs it: the
+/// load, the essential conditions, the matrix (whole, or element by element from its terms), the
+/// errors. The pipeline's seam between kinds of problem — planar second- and fourth-order problems
+/// (planar_formulation.hpp), Laplace–Beltrami on surfaces (surface_problem.hpp) — so that the
+/// steps themselves are written once for every problem and every solver backend.
+
+#include <Eigen/Core>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "assembly/boundary_conditions.hpp"
+#include "assembly/element_subset_assembly.hpp"
+#include "assembly/error_norms.hpp"
+#include "assembly/split_matrix.hpp"
+#include "solver/problem.hpp"
+
+namespace iga {
+
+/// Quadrature degree used for assembly with a space of local degree p (documented in docs/problems.md;
+/// error norms use Space::error_quadrature_degree).
+int assembly_quadrature_degree(const Space& space);
+
+/// The part of a solve this process does: the elements it integrates over (all of them when
+/// `elements` is null, as in a serial run) and how its partial sums become totals (a sum over the
+/// MPI ranks; the value itself when serial). Loads, errors and the sums below add up over the shares.
+struct WorkShare {
+  const std::vector<int>* elements = nullptr;
+  std::function<double(double)> total;  ///< collective; empty: the value itself
+  double sum(double part) const { return total ? total(part) : part; }
+};
+
+class Formulation {
+ public:
+  Formulation(const Space& space, const ProblemSpec& problem);
+  virtual ~Formulation() = default;
+  Formulation(const Formulation&) = delete;
+  Formulation& operator=(const Formulation&) = delete;
+
+  const Space& space() const { return space_; }
+  const ProblemSpec& problem() const { return problem_; }
+  int quadrature_degree() const { return quadrature_degree_; }
+
+  /// Input errors seen from the space alone (boundary part names, surface without boundary
+  /// data, ...), before any work.
+  virtual void check() const {}
+  /// The load of the share's elements, natural boundary terms on their edges included; the
+  /// shares' loads add up to the whole load (length: dimension).
+  virtual Eigen::VectorXd load(const WorkShare& share) const = 0;
+  /// The essential conditions (every process computes them whole: a boundary-sized problem).
+  virtual Constraints constraints() const = 0;
+  /// The matrix as Σ coefficient · form: what element_matrix_terms hands to distributed assembly.
+  virtual std::vector<FormTerm> terms() const = 0;
+  /// The whole matrix, for a process that assembles every element; entries summed beyond double
+  /// where refinement residuals need them (split_matrix.hpp).
+  virtual SplitMatrix matrix() const = 0;
+  /// The coefficients after the solve (problems fixed up to a constant shift to their mean here).
+  virtual void finish(Eigen::VectorXd& /*coefficients*/, const WorkShare& /*share*/) const {}
+  virtual bool has_exact() const = 0;
+  /// Errors over the share's elements against the exact solution.
+  virtual ErrorNorms errors(const Eigen::VectorXd& coefficients, const WorkShare& share) const = 0;
+  /// True when a(u_h, u_h) means the energy of the solution (reported for planar problems).
+  virtual bool reports_energy() const { return false; }
+
+  /// Input errors the pipeline raises when data turn out not finite, naming their config place.
+  struct Messages {
+    std::string load, boundary_data, exact;
+  };
+  virtual Messages messages() const = 0;
+
+ private:
+  const Space& space_;
+  const ProblemSpec& problem_;
+  int quadrature_degree_;
+};
+
+}  // namespace iga

@@ -1,0 +1,85 @@
+#include "solver/pipeline.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <optional>
+
+#include "config/errors.hpp"
+#include "config/progress.hpp"
+
+namespace iga {
+
+namespace {
+using Clock = std::chrono::steady_clock;
+double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
+
+bool finite(const ErrorNorms& e) {
+  return std::isfinite(e.l2) && std::isfinite(e.h1.value_or(0)) && std::isfinite(e.h2.value_or(0));
+}
+}  // namespace
+
+Constraints assemble_step(const Formulation& f, LinearBackend& backend, const ProgressSink& progress) {
+  const WorkShare share = backend.share();
+  // Ticks: one per element of the matrix loop and of the load loop (whole assemblies only).
+  const std::int64_t ticks = share.elements ? 0 : 2 * static_cast<std::int64_t>(f.space().num_elements());
+  std::optional<ProgressPhase> phase;
+  Eigen::VectorXd b;
+  Constraints c;
+  backend.locally([&] {
+    f.check();
+    if (progress) progress("assembling");
+    phase.emplace("assembling", ticks);
+    // NaN or inf data (sqrt of a negative number, a pole inside the domain) is bad input, not a
+    // numerical failure: say which datum it was before the solver reports a singular system.
+    b = f.load(share);
+    if (!b.allFinite()) throw InputError(f.messages().load);
+    c = f.constraints();
+    if (!c.values.allFinite()) throw InputError(f.messages().boundary_data);
+  });
+  backend.assemble(f, c, b, progress);
+  return c;
+}
+
+DiscreteSolution solve_pipeline(const Formulation& f, LinearBackend& backend, const ProgressSink& progress) {
+  const Space& space = f.space();
+  DiscreteSolution out;
+  LevelResult& r = out.result;
+  r.h = space.mesh_size();
+  r.dofs = space.dimension();
+  r.elements = space.num_elements();
+
+  auto t0 = Clock::now();
+  const Constraints c = assemble_step(f, backend, progress);
+  r.t_assemble = seconds_since(t0);
+  r.free_dofs = static_cast<int>(c.free.size());
+  out.boundary_constrained = static_cast<int>(c.constrained.size());
+
+  t0 = Clock::now();
+  const WorkShare share = backend.share();
+  out.coefficients = backend.solve(out.solve, progress);
+  f.finish(out.coefficients, share);
+  if (f.reports_energy()) r.energy = backend.energy(out.coefficients);  // for studies without an exact solution
+  r.t_solve = seconds_since(t0);
+
+  r.g1_jump = space.max_gradient_jump(out.coefficients);
+  if (f.has_exact()) {
+    if (progress) progress("computing errors");
+    t0 = Clock::now();
+    std::optional<ProgressPhase> phase(std::in_place, "error norms", share.elements ? 0 : space.num_elements());
+    ErrorNorms e = f.errors(out.coefficients, share);
+    if (share.elements) {  // squared integrals add up over the shares
+      const auto whole = [&](double part) { return std::sqrt(share.sum(part * part)); };
+      e.l2 = whole(e.l2);
+      if (e.h1) e.h1 = whole(*e.h1);
+      if (e.h2) e.h2 = whole(*e.h2);
+    }
+    if (!finite(e)) throw InputError(f.messages().exact);
+    r.l2 = e.l2;
+    r.h1 = e.h1;
+    r.h2 = e.h2;
+    r.t_errors = seconds_since(t0);
+  }
+  return out;
+}
+
+}  // namespace iga

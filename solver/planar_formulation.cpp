@@ -1,0 +1,94 @@
+#include "solver/planar_formulation.hpp"
+
+#include <algorithm>
+
+#include "config/errors.hpp"
+
+namespace iga {
+
+namespace {
+BoundaryField boundary_field(const SymbolicFunction& f) {
+  return [f](const Point2& x, const Point2&) { return f(x); };
+}
+
+/// The edges of `edges` on the share's elements.
+std::vector<BoundaryEdge> edges_of(const std::vector<BoundaryEdge>& edges, const WorkShare& share, int elements) {
+  if (!share.elements) return edges;
+  std::vector<char> mine(elements, 0);
+  for (int e : *share.elements) mine[e] = 1;
+  std::vector<BoundaryEdge> out;
+  for (const BoundaryEdge& be : edges)
+    if (mine[be.element]) out.push_back(be);
+  return out;
+}
+}  // namespace
+
+void check_boundary_parts(const Space& space, const ProblemSpec& problem) {
+  const std::vector<std::string> names = space.boundary_names();
+  for (const BoundaryPart& part : problem.boundary) {
+    if (part.name == "all" || std::find(names.begin(), names.end(), part.name) != names.end()) continue;
+    std::string list = "all";
+    for (const auto& n : names) list += ", " + n;
+    const std::string near = nearest_word(part.name, names);
+    throw InputError(part.where + ": unknown boundary part '" + part.name + "' of this " + space.type() +
+                     " domain (parts: " + list + ")" + (near.empty() ? "" : " (did you mean '" + near + "'?)"));
+  }
+}
+
+void PlanarFormulation::check() const { check_boundary_parts(space(), problem()); }
+
+const BoundarySplit& PlanarFormulation::boundary() const {
+  if (!boundary_) boundary_ = split_boundary(space(), problem());
+  return *boundary_;
+}
+
+const Assembler& PlanarFormulation::assembler() const {
+  if (!assembler_) assembler_ = std::make_unique<Assembler>(space());
+  return *assembler_;
+}
+
+Eigen::VectorXd PlanarFormulation::load(const WorkShare& share) const {
+  const int qa = quadrature_degree();
+  Eigen::VectorXd b;
+  if (share.elements) {
+    const SymbolicFunction source = problem().source;
+    b = subset_load(space(), *share.elements, [source](const Point2& x) { return source(x); }, qa);
+  } else {
+    const FunctionBatch source_batch({problem().source});
+    b = assembler().load(
+        [&source_batch](const Eigen::Matrix2Xd& x, Eigen::MatrixXd& values) { source_batch.evaluate(x, values); }, qa);
+  }
+  // Natural conditions: Neumann flux ∫ g_N v, and for simply supported plates ∫ Δu ∂v/∂n
+  // (from ∫ Δ²u v = ∫ Δu Δv − ∫_Γ Δu ∂v/∂n when v = 0 on Γ).
+  const int ne = space().num_elements();
+  const std::vector<BoundaryEdge> neumann = edges_of(boundary().neumann, share, ne);
+  const std::vector<BoundaryEdge> supported = edges_of(boundary().simply_supported, share, ne);
+  if (!neumann.empty()) b += edge_load(space(), neumann, problem().normal_derivative_field(), false, qa);
+  if (!supported.empty()) b += edge_load(space(), supported, boundary_field(problem().laplacian), true, qa);
+  return b;
+}
+
+Constraints PlanarFormulation::constraints() const {
+  return impose_essential(space(), boundary().essential, boundary_field(problem().value),
+                          problem().normal_derivative_field(), quadrature_degree());
+}
+
+SplitMatrix PlanarFormulation::matrix() const {
+  // Extended precision: refinement residuals must see the entries beyond their double rounding.
+  return assembler().matrix_extended(problem().form, quadrature_degree());
+}
+
+ErrorNorms PlanarFormulation::errors(const Eigen::VectorXd& coefficients, const WorkShare& share) const {
+  return error_norms(space(), coefficients, problem().exact_solution(), space().error_quadrature_degree(),
+                     share.elements);
+}
+
+Formulation::Messages PlanarFormulation::messages() const {
+  return {problem().source_where +
+              ": the source term or boundary flux is not finite at some point of the domain "
+              "(a pole, or a log or root of a negative number?)",
+          problem().data_where + ": the boundary data (u or du/dn) are not finite at some boundary point",
+          problem().data_where + ": the exact solution or its derivatives are not finite somewhere in the domain"};
+}
+
+}  // namespace iga
