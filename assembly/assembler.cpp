@@ -1,6 +1,7 @@
 #include "assembly/parallel.hpp"
 #include "assembly/assembler.hpp"
 #include "config/progress.hpp"
+#include "spaces/closed_forms.hpp"
 
 #include <omp.h>
 
@@ -21,23 +22,6 @@ Assembler::Assembler(const Space& space)
 
 namespace {
 
-/// The element matrix of `form` in double or double-double (the type of `local`): the space's
-/// closed form if it has one (rows in element_dofs order, as the table), else quadrature.
-bool closed_form(const Space& space, int e, BilinearForm form, Eigen::MatrixXd& local) {
-  return space.closed_form_element_matrix(e, form, local);
-}
-bool closed_form(const Space& space, int e, BilinearForm form, DoubleDoubleMatrix& local) {
-  return space.closed_form_element_matrix_double_double(e, form, local);
-}
-/// The shared closed form of element e (read in place), or null; double matrices are never shared.
-const Eigen::MatrixXd* shared_closed_form(const Space&, int, BilinearForm, const Eigen::MatrixXd*) { return nullptr; }
-const DoubleDoubleMatrix* shared_closed_form(const Space& space, int e, BilinearForm form, const DoubleDoubleMatrix*) {
-  return space.shared_closed_form_double_double(e, form);
-}
-void prepare_closed_forms(const Space&, BilinearForm, const Eigen::MatrixXd*) {}
-void prepare_closed_forms(const Space& space, BilinearForm form, const DoubleDoubleMatrix*) {
-  space.prepare_closed_forms_double_double(form);
-}
 void quadrature_matrix(BilinearForm form, const ElementValues& ev, Eigen::MatrixXd& local) {
   element_matrix(form, ev, local);
 }
@@ -98,7 +82,10 @@ void Assembler::assemble(BilinearForm form, int quad_degree, Values values) cons
   // matrix), and there are two barriers per block instead of one per colour: colours of a small
   // mesh hold a few dozen elements each, too few to keep two threads busy between barriers.
   keep_eigen_serial();
-  prepare_closed_forms(space_, form, static_cast<const Local*>(nullptr));
+  // The space's closed forms in the scalar of Local, where it has them (rows in element_dofs
+  // order, as the table); quadrature otherwise.
+  const ClosedForms* closed = space_.closed_forms();
+  if (closed) closed->prepare<Local>(form);
   const int ne = space_.num_elements();
   const int dim = space_.dimension();
   using Scalar = typename Local::Scalar;
@@ -122,10 +109,10 @@ void Assembler::assemble(BilinearForm form, int quad_degree, Values values) cons
         Local& local = slots[e - first];
         std::vector<int>& dofs = slot_dofs[e - first];
         slot_matrix[e - first] = &local;
-        if (const Local* shared = shared_closed_form(space_, e, form, &local)) {
+        if (const Local* shared = closed ? closed->shared<Local>(e, form) : nullptr) {
           slot_matrix[e - first] = shared;
           dofs.assign(table_.begin(e), table_.begin(e + 1));
-        } else if (closed_form(space_, e, form, local)) {
+        } else if (closed && closed->element_matrix(e, form, local)) {
           dofs.assign(table_.begin(e), table_.begin(e + 1));
         } else {
           ev.reinit(e, *space_.quadrature(e, quad_degree));

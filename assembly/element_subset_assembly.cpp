@@ -7,6 +7,7 @@
 #include "assembly/integrators.hpp"
 #include "assembly/parallel.hpp"
 #include "assembly/split_matrix.hpp"
+#include "spaces/closed_forms.hpp"
 #include "spaces/element_values.hpp"
 
 namespace iga {
@@ -52,7 +53,7 @@ void element_systems(const Space& space, const std::vector<int>& elements, Bilin
         s.dofs = geometry.dofs;
         // The extended closed form, rounded once: the one Assembler::matrix_extended uses (the
         // double one of some spaces runs Eigen's threaded products per element, slow here).
-        if (space.closed_form_element_matrix_extended(e, form, s.extended)) {
+        if (space.closed_forms() && space.closed_forms()->element_matrix(e, form, s.extended)) {
           if constexpr (!Extended) s.matrix = s.extended.cast<double>();
         } else {
           ev.reinit(e, *rule);

@@ -103,6 +103,20 @@ G14Space::G14Space(const PatchMesh& coarse, const G14Options& options) : options
   check_geometry(basis_.bspline, geometry_, mesh.name());
   mesh_ = std::make_shared<const PatchMesh>(std::move(mesh));
   topology_ = std::make_shared<const QuadTopology>(std::move(topology));
+  SpaceFacts facts;
+  facts.type = "g1_4split";
+  facts.parameters = {{"degree", std::to_string(options_.degree)},
+                      {"regularity", std::to_string(options_.regularity)},
+                      {"blending", blending_name(options_.blending)},
+                      {"refinement", options_.nested ? "nested" : "rebuild"},
+                      {"faces", std::to_string(topology_->num_faces())},
+                      {"domain", mesh_->name()}};
+  facts.dimension = basis_.dimension();
+  facts.num_elements = topology_->num_faces();
+  facts.cell_shapes = {CellShape::quadrilateral};
+  facts.degree = options_.degree;
+  facts.continuity = 1;
+  set_boundary_parts(*mesh_, facts);
   // Diameter: largest distance between samples of the face boundary.
   for (int f = 0; f < topology_->num_faces(); ++f) {
     std::vector<Point2> pts;
@@ -112,20 +126,12 @@ G14Space::G14Space(const PatchMesh& coarse, const G14Options& options) : options
         pts.emplace_back(face_jet(basis_.bspline, geometry_.x[f], uv)(0), face_jet(basis_.bspline, geometry_.y[f], uv)(0));
       }
     for (const Point2& a : pts)
-      for (const Point2& b : pts) mesh_size_ = std::max(mesh_size_, (a - b).norm());
+      for (const Point2& b : pts) facts.mesh_size = std::max(facts.mesh_size, (a - b).norm());
   }
+  set_facts(std::move(facts));
 }
 
 std::unique_ptr<Space::Evaluator> G14Space::make_evaluator() const { return std::make_unique<G14Evaluator>(*this); }
-
-std::vector<std::pair<std::string, std::string>> G14Space::parameters() const {
-  return {{"degree", std::to_string(options_.degree)},
-          {"regularity", std::to_string(options_.regularity)},
-          {"blending", blending_name(options_.blending)},
-          {"refinement", options_.nested ? "nested" : "rebuild"},
-          {"faces", std::to_string(topology_->num_faces())},
-          {"domain", mesh_->name()}};
-}
 
 RulePtr SplitRuleCache::cell(int degree) const {
   degree = std::max(degree, 0);
@@ -157,12 +163,6 @@ RulePtr SplitRuleCache::edge(int edge, int degree) const {
     r = std::make_shared<const QuadratureRule>(edge_rule(CellShape::quadrilateral, edge, line));
   }
   return r;
-}
-
-std::vector<std::string> G14Space::boundary_names() const { return boundary_part_names(*mesh_); }
-
-std::vector<BoundaryEdge> G14Space::boundary_edges(const std::string& name) const {
-  return boundary_part_edges(*mesh_, name);
 }
 
 std::vector<InteriorEdge> quad_interior_edges(const QuadTopology& t) {

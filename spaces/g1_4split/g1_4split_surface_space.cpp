@@ -148,11 +148,25 @@ G14SurfaceSpace::G14SurfaceSpace(const QuadTopology& coarse, const std::vector<E
                      "plane at the face centre folds or degenerates); the mesh does not fit the symmetric gluing");
   normal_jump_ = surface_normal_jump(*topology_, surface_, 4 * options.degree + 8);
   min_metric_ratio_ = surface_regularity(surface_, 24);
+  SpaceFacts facts;
+  facts.type = "g1_4split";
+  facts.parameters = make_parameters();
+  facts.dimension = surface_.basis.dimension();
+  facts.num_elements = topology_->num_faces();
+  facts.cell_shapes = {CellShape::quadrilateral};
+  facts.mesh_size = mesh_size_;
+  facts.degree = options_.degree;
+  facts.continuity = 1;
+  facts.ambient_dimension = 3;
+  for (int e = 0; e < topology_->num_edges(); ++e)
+    if (topology_->edge(e).boundary())
+      facts.all_boundary_edges.push_back({topology_->edge(e).sides[0].face, topology_->edge(e).sides[0].local_edge});
+  set_facts(std::move(facts));
 }
 
 std::unique_ptr<Space::Evaluator> G14SurfaceSpace::make_evaluator() const { return std::make_unique<Evaluator3>(*this); }
 
-std::vector<std::pair<std::string, std::string>> G14SurfaceSpace::parameters() const {
+std::vector<std::pair<std::string, std::string>> G14SurfaceSpace::make_parameters() const {
   const auto sci = [](double x) {
     char buf[32];
     std::snprintf(buf, sizeof buf, "%.3e", x);
@@ -167,14 +181,6 @@ std::vector<std::pair<std::string, std::string>> G14SurfaceSpace::parameters() c
           {"surface_normal_jump", sci(normal_jump_)},
           {"surface_min_metric_ratio", sci(min_metric_ratio_)},
           {"surface_fold_bound", sci(fold_bound_)}};
-}
-
-std::vector<BoundaryEdge> G14SurfaceSpace::boundary_edges(const std::string& name) const {
-  if (name != "all") throw std::invalid_argument("G14SurfaceSpace: no boundary part '" + name + "'");
-  std::vector<BoundaryEdge> out;
-  for (int e = 0; e < topology_->num_edges(); ++e)
-    if (topology_->edge(e).boundary()) out.push_back({topology_->edge(e).sides[0].face, topology_->edge(e).sides[0].local_edge});
-  return out;
 }
 
 std::optional<double> G14SurfaceSpace::max_gradient_jump(const Eigen::VectorXd& coefficients) const {
