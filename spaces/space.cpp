@@ -1,6 +1,7 @@
 #include "spaces/space.hpp"
 
 #include "config/errors.hpp"
+#include "spaces/gradient_jump.hpp"
 #include "spaces/surface_values.hpp"
 
 #include <Eigen/LU>  // Matrix2d::determinant
@@ -96,6 +97,11 @@ std::vector<BoundaryEdge> Space::boundary_edges(const std::string& name) const {
     valid += part + ", ";
   }
   throw InputError("unknown boundary '" + name + "' of this " + facts_.type + " space (valid: " + valid + "all)");
+}
+
+std::optional<double> Space::max_gradient_jump(const Eigen::VectorXd& coefficients) const {
+  if (facts_.gradient_jump_samples < 2) return std::nullopt;
+  return iga::max_gradient_jump(*this, coefficients, facts_.gradient_jump_samples);
 }
 
 std::shared_ptr<const Space> Space::refined(const std::vector<int>& marked_elements) const {

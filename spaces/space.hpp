@@ -171,6 +171,10 @@ struct SpaceFacts {
   /// Macro-elements: the polynomial pieces of every element's reference cell as triangles over
   /// shared points, so that drawings interpolate linearly only inside a piece. Empty: one piece.
   SampleCell pieces;
+  /// The `g1_jump` column: spaces whose C1 continuity comes from gluing conditions across
+  /// interfaces (G1 constructions), where it holds to round-off only, report the largest gradient
+  /// jump at this many equispaced points of every interior edge piece (gradient_jump.hpp); 0: none.
+  int gradient_jump_samples = 0;
   /// With pieces: sample_cell subdivides each piece into m² triangles, m = resolution / pieces_across
   /// (an edge of the reference cell crosses about pieces_across pieces); m <= 1 draws the pieces.
   int pieces_across = 1;
@@ -235,13 +239,6 @@ class Space : public std::enable_shared_from_this<Space> {
   /// nullptr (the default): the assembler integrates with quadrature.
   virtual const ClosedForms* closed_forms() const { return nullptr; }
 
-  /// The largest jump of the physical gradient of Σ c_i N_i across interior element edges, for
-  /// spaces that can locate both sides of their edges (a C1 space has it at round-off). Reported
-  /// as the `g1_jump` column of convergence.csv; nullopt (the default) leaves the column empty.
-  virtual std::optional<double> max_gradient_jump(const Eigen::VectorXd& /*coefficients*/) const {
-    return std::nullopt;
-  }
-
   /// Optional: every interior edge piece (each once), for estimators that need both sides of an
   /// edge (the normal-derivative jumps of the residual estimator). Empty (the default) means the
   /// space cannot locate the element across its edges; callers then treat jumps as unavailable.
@@ -272,6 +269,11 @@ class Space : public std::enable_shared_from_this<Space> {
   std::vector<std::string> boundary_names() const;
   /// Boundary edges of the named part; "all" returns every boundary edge. InputError for an unknown name.
   std::vector<BoundaryEdge> boundary_edges(const std::string& name) const;
+
+  /// The largest jump of the physical (surface) gradient of Σ c_i N_i across interior element
+  /// edges (gradient_jump.hpp) for spaces with SpaceFacts::gradient_jump_samples, at round-off for
+  /// a C1 space: the `g1_jump` column of convergence.csv. nullopt leaves the column empty.
+  std::optional<double> max_gradient_jump(const Eigen::VectorXd& coefficients) const;
 
   /// Adaptive refinement (LocallyRefinable) when the space has it, else nullptr.
   std::shared_ptr<const Space> refined(const std::vector<int>& marked_elements) const;

@@ -6,7 +6,6 @@
 #include "config/errors.hpp"
 #include "spaces/g1/bernstein_face.hpp"
 #include "spaces/g1/boundary_parts.hpp"
-#include "spaces/g1/gradient_jump.hpp"
 #include "spaces/push_forward.hpp"
 
 namespace iga {
@@ -129,7 +128,19 @@ G1Space::G1Space(std::shared_ptr<const PatchMesh> mesh, int k) : mesh_(std::move
   facts.degree = basis_.degree;
   facts.continuity = 1;
   set_boundary_parts(*mesh_, facts);
+  facts.gradient_jump_samples = 2 * basis_.degree + 4;
   set_facts(std::move(facts));
+}
+
+std::vector<InteriorEdge> G1Space::interior_edges() const {
+  std::vector<InteriorEdge> out;
+  for (int e = 0; e < mesh_->num_edges(); ++e) {
+    const MeshEdge& edge = mesh_->edge(e);
+    if (edge.boundary()) continue;
+    // `second` traverses the edge in the opposite direction: its parameter runs from 1 to 0.
+    out.push_back({edge.first.face, edge.first.local_edge, 0.0, 1.0, edge.second.face, edge.second.local_edge, 1.0, 0.0});
+  }
+  return out;
 }
 
 std::unique_ptr<Space::Evaluator> G1Space::make_evaluator() const { return std::make_unique<G1Evaluator>(*this); }
@@ -142,17 +153,6 @@ RulePtr G1Space::quadrature(int element, int degree) const {
 
 RulePtr G1Space::edge_quadrature(int element, int edge, int degree) const {
   return mesh_->shape(element) == CellShape::triangle ? rules_.triangle_edge(edge, degree) : rules_.edge(edge, degree);
-}
-
-std::optional<double> G1Space::max_gradient_jump(const Eigen::VectorXd& coefficients) const {
-  std::vector<Eigen::VectorXd> faces(mesh_->num_faces());
-  for (int f = 0; f < mesh_->num_faces(); ++f) {
-    const std::vector<int>& dofs = basis_.face_dofs[f];
-    Eigen::VectorXd local(static_cast<Eigen::Index>(dofs.size()));
-    for (std::size_t i = 0; i < dofs.size(); ++i) local[static_cast<Eigen::Index>(i)] = coefficients[dofs[i]];
-    faces[f] = basis_.extraction[f] * local;
-  }
-  return iga::max_gradient_jump(*mesh_, basis_.degree, faces);
 }
 
 }  // namespace iga

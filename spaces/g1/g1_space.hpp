@@ -37,9 +37,9 @@ class G1Space final : public Space {
   RulePtr quadrature(int element, int degree) const override;
   RulePtr edge_quadrature(int element, int edge, int degree) const override;
 
-  /// Largest physical gradient jump of Σ c_i N_i over every interior interface, sampled at
-  /// gradient_jump_samples(k) points per edge (gradient_jump.hpp).
-  std::optional<double> max_gradient_jump(const Eigen::VectorXd& coefficients) const override;
+  /// Every interior edge of the mesh once (the g1_jump check samples 2k + 4 points of each: the
+  /// jump times both Jacobian determinants is a polynomial of degree <= k + 2 along an edge).
+  std::vector<InteriorEdge> interior_edges() const override;
 
   const PatchMesh& mesh() const { return *mesh_; }
   const std::vector<EdgeGluing>& gluing() const { return gluing_; }

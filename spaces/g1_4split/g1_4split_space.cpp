@@ -116,6 +116,7 @@ G14Space::G14Space(const PatchMesh& coarse, const G14Options& options) : options
   facts.cell_shapes = {CellShape::quadrilateral};
   facts.degree = options_.degree;
   facts.continuity = 1;
+  facts.gradient_jump_samples = 4 * options_.degree + 8;
   set_boundary_parts(*mesh_, facts);
   // Diameter: largest distance between samples of the face boundary.
   for (int f = 0; f < topology_->num_faces(); ++f) {
@@ -184,37 +185,6 @@ std::vector<InteriorEdge> quad_interior_edges(const QuadTopology& t) {
     out.push_back(ie);
   }
   return out;
-}
-
-std::optional<double> G14Space::max_gradient_jump(const Eigen::VectorXd& coefficients) const {
-  const SplitBSpline& b = basis_.bspline;
-  std::vector<Eigen::VectorXd> faces(topology_->num_faces());
-  for (int f = 0; f < topology_->num_faces(); ++f) {
-    const std::vector<int>& dofs = basis_.face_dofs[f];
-    Eigen::VectorXd local(static_cast<Eigen::Index>(dofs.size()));
-    for (std::size_t i = 0; i < dofs.size(); ++i) local[static_cast<Eigen::Index>(i)] = coefficients[dofs[i]];
-    faces[f] = basis_.extraction[f] * local;
-  }
-  const int samples = 4 * options_.degree + 8;
-  double worst = 0.0;
-  for (const InteriorEdge& ie : interior_edges()) {
-    for (int s = 0; s < samples; ++s) {
-      const double t = double(s) / (samples - 1);
-      Eigen::Vector2d grad[2];
-      for (int side = 0; side < 2; ++side) {
-        const int f = side == 0 ? ie.element_a : ie.element_b;
-        const int j = side == 0 ? ie.edge_a : ie.edge_b;
-        const double tt = side == 0 ? ie.a0 + t * (ie.a1 - ie.a0) : ie.b0 + t * (ie.b1 - ie.b0);
-        const Point2 uv = reference_edge_point(CellShape::quadrilateral, j, tt);
-        const auto u = face_jet(b, faces[f], uv), x = face_jet(b, geometry_.x[f], uv), y = face_jet(b, geometry_.y[f], uv);
-        Eigen::Matrix2d J;
-        J << x(1), x(2), y(1), y(2);
-        grad[side] = J.transpose().inverse() * Eigen::Vector2d(u(1), u(2));
-      }
-      worst = std::max(worst, (grad[0] - grad[1]).norm());
-    }
-  }
-  return worst;
 }
 
 }  // namespace iga

@@ -158,6 +158,7 @@ G14SurfaceSpace::G14SurfaceSpace(const QuadTopology& coarse, const std::vector<E
   facts.degree = options_.degree;
   facts.continuity = 1;
   facts.ambient_dimension = 3;
+  facts.gradient_jump_samples = 4 * options_.degree + 8;  // surface gradient jump
   for (int e = 0; e < topology_->num_edges(); ++e)
     if (topology_->edge(e).boundary())
       facts.all_boundary_edges.push_back({topology_->edge(e).sides[0].face, topology_->edge(e).sides[0].local_edge});
@@ -181,38 +182,6 @@ std::vector<std::pair<std::string, std::string>> G14SurfaceSpace::make_parameter
           {"surface_normal_jump", sci(normal_jump_)},
           {"surface_min_metric_ratio", sci(min_metric_ratio_)},
           {"surface_fold_bound", sci(fold_bound_)}};
-}
-
-std::optional<double> G14SurfaceSpace::max_gradient_jump(const Eigen::VectorXd& coefficients) const {
-  const G14Basis& basis = surface_.basis;
-  const SplitBSpline& b = basis.bspline;
-  std::vector<Eigen::VectorXd> faces(topology_->num_faces());
-  for (int f = 0; f < topology_->num_faces(); ++f) {
-    const std::vector<int>& dofs = basis.face_dofs[f];
-    Eigen::VectorXd local(static_cast<Eigen::Index>(dofs.size()));
-    for (std::size_t i = 0; i < dofs.size(); ++i) local[static_cast<Eigen::Index>(i)] = coefficients[dofs[i]];
-    faces[f] = basis.extraction[f] * local;
-  }
-  const int samples = 4 * options_.degree + 8;
-  double worst = 0.0;
-  for (const InteriorEdge& ie : interior_edges())
-    for (int s = 0; s < samples; ++s) {
-      const double t = double(s) / (samples - 1);
-      Eigen::Vector3d grad[2];
-      for (int side = 0; side < 2; ++side) {
-        const int f = side == 0 ? ie.element_a : ie.element_b;
-        const int j = side == 0 ? ie.edge_a : ie.edge_b;
-        const double tt = side == 0 ? ie.a0 + t * (ie.a1 - ie.a0) : ie.b0 + t * (ie.b1 - ie.b0);
-        const Point2 uv = reference_edge_point(CellShape::quadrilateral, j, tt);
-        const auto x = surface_jet(surface_, f, uv.x(), uv.y());
-        const auto u = face_jet(b, faces[f], uv);
-        Eigen::Matrix<double, 3, 2> J;
-        J << x[1], x[2];
-        grad[side] = J * (J.transpose() * J).inverse() * Eigen::Vector2d(u(1), u(2));
-      }
-      worst = std::max(worst, (grad[0] - grad[1]).norm());
-    }
-  return worst;
 }
 
 }  // namespace iga

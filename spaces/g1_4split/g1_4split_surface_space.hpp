@@ -34,8 +34,6 @@ class G14SurfaceSpace final : public Space {
   RulePtr quadrature(int, int degree) const override { return rules_.cell(degree); }
   RulePtr edge_quadrature(int, int edge, int degree) const override { return rules_.edge(edge, degree); }
 
-  /// Largest jump of the surface gradient of Σ c_i N_i across interior edges (4k + 8 samples per edge).
-  std::optional<double> max_gradient_jump(const Eigen::VectorXd& coefficients) const override;
   std::vector<InteriorEdge> interior_edges() const override { return quad_interior_edges(*topology_); }
 
   const QuadTopology& topology() const { return *topology_; }
