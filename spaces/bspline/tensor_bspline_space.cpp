@@ -4,7 +4,6 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "config/errors.hpp"
 #include "spaces/bspline/bspline_basis_1d.hpp"
 #include "spaces/push_forward.hpp"
 

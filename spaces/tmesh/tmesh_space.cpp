@@ -5,7 +5,6 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "config/errors.hpp"
 #include "spaces/tmesh/tmesh_closed_forms.hpp"
 #include "spaces/tmesh/tmesh_refinement.hpp"
 

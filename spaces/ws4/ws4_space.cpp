@@ -4,7 +4,6 @@
 #include <algorithm>
 #include <cmath>
 
-#include "config/errors.hpp"
 #include "spaces/push_forward.hpp"
 #include "spaces/ws4/ws4_basis.hpp"
 #include "spaces/ws4/ws4_closed_forms.hpp"
@@ -156,8 +155,9 @@ Ws4Space::Ws4Space(Triangulation mesh, std::string description)
   // instead of 16), the errors of a sine on the unit square move by < 1e-4 (L2), 2e-6 (H1) and
   // 1e-9 (H2) relative, at 32 x 32 squares.
   facts.error_quadrature_degree = 2 * 4;
-  for (const std::string& name : mesh_.part_names()) facts.boundary_parts.emplace_back(name, split_boundary_edges(name));
-  facts.all_boundary_edges = split_boundary_edges("all");
+  for (std::size_t part = 0; part < mesh_.part_names().size(); ++part)
+    facts.boundary_parts.emplace_back(mesh_.part_names()[part], part_edges(static_cast<int>(part)));
+  facts.all_boundary_edges = part_edges(-1);
   facts.pieces = split_sample_cell(0);  // the 342 fan triangles over the 178 split vertices
   facts.pieces_across = 8;
   set_facts(std::move(facts));
@@ -323,15 +323,7 @@ RulePtr Ws4Space::edge_quadrature(int, int edge, int degree) const {
   return r;
 }
 
-std::vector<BoundaryEdge> Ws4Space::split_boundary_edges(const std::string& name) const {
-  const auto& names = mesh_.part_names();
-  const auto it = std::find(names.begin(), names.end(), name);
-  if (name != "all" && it == names.end()) {
-    std::string valid;
-    for (const std::string& n : names) valid += n + ", ";
-    throw InputError("unknown boundary '" + name + "' of a WS4 triangulation (valid: " + valid + "all)");
-  }
-  const int part = name == "all" ? -1 : static_cast<int>(it - names.begin());
+std::vector<BoundaryEdge> Ws4Space::part_edges(int part) const {
   std::vector<BoundaryEdge> out;
   for (int e = 0; e < mesh_.num_edges(); ++e) {
     if (!mesh_.is_boundary_edge(e) || (part >= 0 && mesh_.edge_part(e) != part)) continue;

@@ -89,8 +89,8 @@ class Ws4Space final : public Space {
  private:
   class Ws4Evaluator;
   void compute_vertex_frames();
-  /// Boundary edges of a part of the triangulation ("all": every boundary edge).
-  std::vector<BoundaryEdge> split_boundary_edges(const std::string& name) const;
+  /// Boundary edges of part `part` of the triangulation (-1: every boundary edge).
+  std::vector<BoundaryEdge> part_edges(int part) const;
 
   Triangulation mesh_;
   std::string description_;
