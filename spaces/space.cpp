@@ -91,12 +91,12 @@ std::vector<std::string> Space::boundary_names() const {
 
 std::vector<BoundaryEdge> Space::boundary_edges(const std::string& name) const {
   if (name == "all") return facts_.all_boundary_edges;
-  std::string valid;
+  std::string valid = "all";
   for (const auto& [part, edges] : facts_.boundary_parts) {
     if (part == name) return edges;
-    valid += part + ", ";
+    valid += ", " + part;
   }
-  throw InputError("unknown boundary '" + name + "' of this " + facts_.type + " space (valid: " + valid + "all)");
+  throw InputError("unknown boundary '" + name + "' of this " + facts_.type + " space (valid: " + valid + ")");
 }
 
 std::optional<double> Space::max_gradient_jump(const Eigen::VectorXd& coefficients) const {
