@@ -1,6 +1,7 @@
 #include "assembly/parallel.hpp"
 #include "assembly/assembler.hpp"
 #include "config/progress.hpp"
+#include "spaces/closed_forms.hpp"
 
 #include <omp.h>
 
@@ -21,23 +22,6 @@ Assembler::Assembler(const Space& space)
 
 namespace {
 
-/// The element matrix of `form` in double or double-double (the type of `local`): the space's
-/// closed form if it has one (rows in element_dofs order, as the table), else quadrature.
-bool closed_form(const Space& space, int e, BilinearForm form, Eigen::MatrixXd& local) {
-  return space.closed_form_element_matrix(e, form, local);
-}
-bool closed_form(const Space& space, int e, BilinearForm form, DoubleDoubleMatrix& local) {
-  return space.closed_form_element_matrix_double_double(e, form, local);
-}
-/// The shared closed form of element e (read in place), or null; double matrices are never shared.
-const Eigen::MatrixXd* shared_closed_form(const Space&, int, BilinearForm, const Eigen::MatrixXd*) { return nullptr; }
-const DoubleDoubleMatrix* shared_closed_form(const Space& space, int e, BilinearForm form, const DoubleDoubleMatrix*) {
-  return space.shared_closed_form_double_double(e, form);
-}
-void prepare_closed_forms(const Space&, BilinearForm, const Eigen::MatrixXd*) {}
-void prepare_closed_forms(const Space& space, BilinearForm form, const DoubleDoubleMatrix*) {
-  space.prepare_closed_forms_double_double(form);
-}
 void quadrature_matrix(BilinearForm form, const ElementValues& ev, Eigen::MatrixXd& local) {
   element_matrix(form, ev, local);
 }
@@ -98,13 +82,15 @@ const Local* element_local(const Space& space, const ElementDofTable* table, int
     if (table) dofs.assign(table->begin(e), table->begin(e + 1));
     else space.element_dofs(e, dofs);
   };
-  if (const Local* shared = shared_closed_form(space, e, form, &local)) {
-    table_dofs();
-    return shared;
-  }
-  if (closed_form(space, e, form, local)) {
-    table_dofs();
-    return &local;
+  if (const ClosedForms* closed = space.closed_forms()) {
+    if (const Local* shared = closed->shared<Local>(e, form)) {
+      table_dofs();
+      return shared;
+    }
+    if (closed->element_matrix(e, form, local)) {
+      table_dofs();
+      return &local;
+    }
   }
   ev.reinit(e, *space.quadrature(e, quad_degree));
   quadrature_matrix(form, ev, local);
@@ -115,7 +101,7 @@ const Local* element_local(const Space& space, const ElementDofTable* table, int
 }  // namespace
 
 void prepare_extended_element_matrices(const Space& space, BilinearForm form) {
-  prepare_closed_forms(space, form, static_cast<const DoubleDoubleMatrix*>(nullptr));
+  if (const ClosedForms* closed = space.closed_forms()) closed->prepare<DoubleDoubleMatrix>(form);
 }
 
 const DoubleDoubleMatrix& extended_element_matrix(const Space& space, int e, BilinearForm form, int quad_degree,
@@ -132,7 +118,10 @@ void Assembler::assemble(BilinearForm form, int quad_degree, Values values) cons
   // matrix), and there are two barriers per block instead of one per colour: colours of a small
   // mesh hold a few dozen elements each, too few to keep two threads busy between barriers.
   keep_eigen_serial();
-  prepare_closed_forms(space_, form, static_cast<const Local*>(nullptr));
+  // The space's closed forms in the scalar of Local, where it has them (rows in element_dofs
+  // order, as the table); quadrature otherwise.
+  const ClosedForms* closed = space_.closed_forms();
+  if (closed) closed->prepare<Local>(form);
   const int ne = space_.num_elements();
   const int dim = space_.dimension();
   using Scalar = typename Local::Scalar;

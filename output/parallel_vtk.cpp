@@ -39,7 +39,16 @@ fs::path piece_path(const fs::path& pvtu, int rank) {
 /// (coefficients are the whole space's).
 class ElementSubsetView final : public Space {
  public:
-  ElementSubsetView(const Space& space, std::vector<int> elements) : space_(space), elements_(std::move(elements)) {}
+  ElementSubsetView(const Space& space, std::vector<int> elements) : space_(space), elements_(std::move(elements)) {
+    SpaceFacts facts = space.facts();
+    facts.num_elements = static_cast<int>(elements_.size());
+    facts.cell_shapes.clear();
+    for (int e : elements_) facts.cell_shapes.push_back(space.cell_shape(e));
+    // Not needed for drawing (and the edges' element numbers would be the space's).
+    for (auto& part : facts.boundary_parts) part.second.clear();
+    facts.all_boundary_edges.clear();
+    set_facts(std::move(facts));
+  }
 
   class SubsetEvaluator final : public Evaluator {
    public:
@@ -68,26 +77,11 @@ class ElementSubsetView final : public Space {
   std::unique_ptr<Evaluator> make_evaluator() const override {
     return std::make_unique<SubsetEvaluator>(space_.make_evaluator(), elements_);
   }
-  int ambient_dimension() const override { return space_.ambient_dimension(); }
-  std::shared_ptr<const SurfacePatches> surface_patches() const override { return space_.surface_patches(); }
-  std::string type() const override { return space_.type(); }
-  std::vector<std::pair<std::string, std::string>> parameters() const override { return space_.parameters(); }
-  int dimension() const override { return space_.dimension(); }
   void element_dofs(int e, std::vector<int>& out) const override { space_.element_dofs(elements_[e], out); }
-  int num_elements() const override { return static_cast<int>(elements_.size()); }
-  CellShape cell_shape(int e) const override { return space_.cell_shape(elements_[e]); }
-  double mesh_size() const override { return space_.mesh_size(); }
-  int degree() const override { return space_.degree(); }
-  int continuity() const override { return space_.continuity(); }
-  bool affine_elements() const override { return space_.affine_elements(); }
   RulePtr quadrature(int e, int degree) const override { return space_.quadrature(elements_[e], degree); }
   RulePtr edge_quadrature(int e, int edge, int degree) const override {
     return space_.edge_quadrature(elements_[e], edge, degree);
   }
-  std::vector<std::string> boundary_names() const override { return space_.boundary_names(); }
-  /// Not needed for drawing (and the edges' element numbers would be the space's).
-  std::vector<BoundaryEdge> boundary_edges(const std::string&) const override { return {}; }
-  SampleCell sample_cell(int e, int resolution) const override { return space_.sample_cell(elements_[e], resolution); }
 
  private:
   const Space& space_;

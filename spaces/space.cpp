@@ -1,5 +1,7 @@
 #include "spaces/space.hpp"
 
+#include "config/errors.hpp"
+#include "spaces/gradient_jump.hpp"
 #include "spaces/surface_values.hpp"
 
 #include <Eigen/LU>  // Matrix2d::determinant
@@ -86,17 +88,42 @@ void Space::Evaluator::integrate_values(int /*element*/, const QuadratureRule& /
   local.noalias() = geometry.value * weights;
 }
 
-void Space::element_dofs(int element, std::vector<int>& out) const {
-  QuadratureRule one;
-  one.points = {cell_shape(element) == CellShape::quadrilateral ? Point2(0.5, 0.5) : Point2(1.0 / 3, 1.0 / 3)};
-  one.weights = {1.0};
-  PointValues pv;
-  make_evaluator()->evaluate(element, one, update_values, pv);
-  out = pv.dofs;
+std::vector<std::string> Space::boundary_names() const {
+  std::vector<std::string> names;
+  for (const auto& part : facts_.boundary_parts) names.push_back(part.first);
+  return names;
+}
+
+std::vector<BoundaryEdge> Space::boundary_edges(const std::string& name) const {
+  if (name == "all") return facts_.all_boundary_edges;
+  std::string valid = "all";
+  for (const auto& [part, edges] : facts_.boundary_parts) {
+    if (part == name) return edges;
+    valid += ", " + part;
+  }
+  throw InputError("unknown boundary '" + name + "' of this " + facts_.type + " space (valid: " + valid + ")");
+}
+
+std::optional<double> Space::max_gradient_jump(const Eigen::VectorXd& coefficients) const {
+  if (facts_.gradient_jump_samples < 2) return std::nullopt;
+  return iga::max_gradient_jump(*this, coefficients, facts_.gradient_jump_samples);
+}
+
+std::shared_ptr<const Space> Space::refined(const std::vector<int>& marked_elements) const {
+  const auto* refinable = dynamic_cast<const LocallyRefinable*>(this);
+  return refinable ? refinable->refine(marked_elements) : nullptr;
 }
 
 SampleCell Space::sample_cell(int element, int resolution) const {
   SampleCell s;
+  const SampleCell& pieces = facts_.pieces;
+  if (!pieces.cells.empty()) {
+    const int m = resolution / facts_.pieces_across;
+    if (m <= 1) return pieces;
+    for (const std::vector<int>& t : pieces.cells)
+      append_triangle_grid(s, pieces.points[t[0]], pieces.points[t[1]], pieces.points[t[2]], m);
+    return s;
+  }
   const int m = std::max(1, resolution);
   if (cell_shape(element) == CellShape::quadrilateral) {
     for (int j = 0; j <= m; ++j)
@@ -125,21 +152,6 @@ void append_triangle_grid(SampleCell& cell, const Point2& a, const Point2& b, co
       cell.cells.push_back({p, q, r});
       if (i + 1 < m - j) cell.cells.push_back({q, r + 1, r});
     }
-}
-
-bool Space::closed_form_element_matrix_extended(int element, BilinearForm form,
-                                               Eigen::Matrix<long double, Eigen::Dynamic, Eigen::Dynamic>& local) const {
-  Eigen::MatrixXd rounded;
-  if (!closed_form_element_matrix(element, form, rounded)) return false;
-  local = rounded.cast<long double>();
-  return true;
-}
-
-bool Space::closed_form_element_matrix_double_double(int element, BilinearForm form, DoubleDoubleMatrix& local) const {
-  Eigen::Matrix<long double, Eigen::Dynamic, Eigen::Dynamic> extended;
-  if (!closed_form_element_matrix_extended(element, form, extended)) return false;
-  local = DoubleDoubleMatrix::from_long_double(extended);
-  return true;
 }
 
 }  // namespace iga

@@ -26,10 +26,10 @@
 #include <utility>
 #include <vector>
 
-#include "config/double_double.hpp"
-#include "spaces/bilinear_form.hpp"
+#include "config/double_double.hpp"  // kept: code above spaces/ reaches DoubleDoubleMatrix through here
 #include "spaces/point_values.hpp"
 #include "quadrature/quadrature_rule.hpp"
+#include "spaces/bilinear_form.hpp"
 
 namespace iga {
 
@@ -83,6 +83,61 @@ void append_triangle_grid(SampleCell& cell, const Point2& a, const Point2& b, co
 /// (geometry/surface_patches.hpp); declared here so that the interface does not pull in geometry.
 struct SurfacePatches;
 
+class ClosedForms;  // spaces/closed_forms.hpp
+
+/// What is fixed about a space when it is built. Each space fills one in its constructor and hands
+/// it to Space::set_facts; Space answers the questions below from it (no virtual call, and a new
+/// space cannot forget one).
+struct SpaceFacts {
+  std::string type;  ///< short type name as used in configs, e.g. "bspline"
+  /// Parameters describing this instance (degree, regularity, elements, ...) for summaries.
+  std::vector<std::pair<std::string, std::string>> parameters;
+  int dimension = 0;     ///< number of global basis functions
+  int num_elements = 0;
+  /// One shape for every element, or one per element (mixed meshes).
+  std::vector<CellShape> cell_shapes;
+  double mesh_size = 0.0;  ///< largest element diameter in physical coordinates (the h of tables)
+  int degree = 0;          ///< polynomial degree of the local basis in reference coordinates
+  /// The space is C^k in physical coordinates (biharmonic problems need k >= 1); 0 is the safe answer.
+  int continuity = 0;
+  /// Evaluator::evaluate_function provides update_laplacian_gradient and update_bilaplacian.
+  bool higher_derivatives = false;
+  bool affine_elements = false;  ///< every element map is affine (a rule of degree 2p is exact for mass)
+  /// 2 for planar spaces; 3 for spaces on surfaces in 3D, whose evaluators fill the 3D members of
+  /// PointValues (x3, jacobian3, dz) and whose gradients are surface gradients.
+  int ambient_dimension = 2;
+  /// Degree of the rules for error norms and residual estimators; -1 means 2 degree + 4 (resolves
+  /// the smooth exact data on an element of size h). A macro-element whose rule is composite over
+  /// much smaller pieces may ask for less (WS4).
+  int error_quadrature_degree = -1;
+  /// Named boundary parts in the order they are listed, and every boundary edge ("all"), each in
+  /// the order the space numbers them (the order of boundary sums).
+  std::vector<std::pair<std::string, std::vector<BoundaryEdge>>> boundary_parts;
+  std::vector<BoundaryEdge> all_boundary_edges;
+  /// Spaces on a smooth surface built from a triangle mesh: that surface's patches and report.
+  std::shared_ptr<const SurfacePatches> surface_patches;
+  /// Macro-elements: the polynomial pieces of every element's reference cell as triangles over
+  /// shared points, so that drawings interpolate linearly only inside a piece. Empty: one piece.
+  SampleCell pieces;
+  /// The `g1_jump` column: spaces whose C1 continuity comes from gluing conditions across
+  /// interfaces (G1 constructions), where it holds to round-off only, report the largest gradient
+  /// jump at this many equispaced points of every interior edge piece (gradient_jump.hpp); 0: none.
+  int gradient_jump_samples = 0;
+  /// With pieces: sample_cell subdivides each piece into m² triangles, m = resolution / pieces_across
+  /// (an edge of the reference cell crosses about pieces_across pieces); m <= 1 draws the pieces.
+  int pieces_across = 1;
+};
+
+/// A capability of some spaces (T-meshes): adaptive local refinement. Kept off Space so that the
+/// interface lists only what every space answers; Space::refined asks for it.
+class LocallyRefinable {
+ public:
+  virtual ~LocallyRefinable() = default;
+  /// A new space on a mesh where every element in `marked_elements` is refined (and possibly more
+  /// elements, to keep the mesh valid for the space). Element numbers are unrelated to this one's.
+  virtual std::shared_ptr<const class Space> refine(const std::vector<int>& marked_elements) const = 0;
+};
+
 /// Spaces are held by SpacePtr; enable_shared_from_this lets code that is handed a `const Space&`
 /// (a study's LevelSink) keep the space alive beyond the call.
 class Space : public std::enable_shared_from_this<Space> {
@@ -118,41 +173,8 @@ class Space : public std::enable_shared_from_this<Space> {
   };
   virtual std::unique_ptr<Evaluator> make_evaluator() const = 0;
 
-  /// 2 for planar spaces; 3 for spaces on surfaces in 3D, whose evaluators fill the 3D members
-  /// of PointValues (x3, jacobian3, dz) and whose gradients are surface gradients.
-  virtual int ambient_dimension() const { return 2; }
-
-  /// Spaces on a smooth surface built from a triangle mesh: that surface's patches and report,
-  /// for the outputs (surface files, summary.json). nullptr (the default) for every other space.
-  virtual std::shared_ptr<const SurfacePatches> surface_patches() const { return nullptr; }
-  /// Short type name as used in configs, e.g. "bspline".
-  virtual std::string type() const = 0;
-  /// Parameters describing this instance (degree, regularity, elements, ...) for summaries.
-  virtual std::vector<std::pair<std::string, std::string>> parameters() const = 0;
-
-  /// Number of global basis functions.
-  virtual int dimension() const = 0;
   /// Global indices of the functions active on `element`, in the order Evaluator::evaluate uses.
-  /// The default evaluates at one point; spaces override it with a direct lookup.
-  virtual void element_dofs(int element, std::vector<int>& out) const;
-  virtual int num_elements() const = 0;
-  virtual CellShape cell_shape(int element) const = 0;
-  /// Largest element diameter in physical coordinates (the h of convergence tables).
-  virtual double mesh_size() const = 0;
-  /// Polynomial degree of the local basis in reference coordinates (drives quadrature choices).
-  virtual int degree() const = 0;
-  /// Global smoothness: the space is C^k (k = continuity()) in physical coordinates. Biharmonic
-  /// problems need k >= 1 (H2-conforming). The default 0 is the safe answer for a new space.
-  virtual int continuity() const { return 0; }
-  /// True when evaluate_function provides update_laplacian_gradient and update_bilaplacian (third
-  /// and fourth derivatives, for the biharmonic residual estimator). Default false.
-  virtual bool higher_derivatives() const { return false; }
-  /// True when every element map is affine (then a rule of degree 2p is exact for mass matrices).
-  virtual bool affine_elements() const = 0;
-  /// Degree of the rules for error norms and residual estimators, whose integrands hold the smooth
-  /// exact data as well as u_h: 2p + 4 resolves them on an element of size h. A macro-element
-  /// whose rule is composite over much smaller sub-regions may ask for less (see WS4).
-  virtual int error_quadrature_degree() const { return 2 * degree() + 4; }
+  virtual void element_dofs(int element, std::vector<int>& out) const = 0;
 
   /// A rule on element's reference cell exact for polynomials of degree `degree` on every
   /// polynomial piece of the element (a macro-element integrates sub-region by sub-region).
@@ -161,58 +183,59 @@ class Space : public std::enable_shared_from_this<Space> {
   /// exact for polynomials of degree `degree` on every piece of the edge.
   virtual RulePtr edge_quadrature(int element, int edge, int degree) const = 0;
 
-  /// Names of the boundary parts (e.g. left, right, bottom, top). "all" is implied.
-  virtual std::vector<std::string> boundary_names() const = 0;
-  /// Boundary edges of the named part; "all" returns every boundary edge.
-  virtual std::vector<BoundaryEdge> boundary_edges(const std::string& name) const = 0;
-
-  /// Optional fast path: the element matrix of `form` without quadrature (e.g. a combination of
-  /// reference matrices of an affine-invariant basis), rows and columns in element_dofs order.
-  /// Return false (the default) and the assembler integrates with quadrature. Must be thread-safe.
-  virtual bool closed_form_element_matrix(int /*element*/, BilinearForm /*form*/, Eigen::MatrixXd& /*local*/) const {
-    return false;
-  }
-  /// The same closed form in long double, not rounded to double: the residuals of iterative
-  /// refinement need the matrix beyond double precision (assembly/split_matrix.hpp). The default
-  /// widens closed_form_element_matrix; a space with a closed form should override it.
-  virtual bool closed_form_element_matrix_extended(int element, BilinearForm form,
-                                                   Eigen::Matrix<long double, Eigen::Dynamic, Eigen::Dynamic>& local) const;
-  /// The same closed form in double-double, for fourth-order problems whose residuals need the
-  /// matrix beyond long double (assembly/split_matrix.hpp). The default widens the long double one.
-  virtual bool closed_form_element_matrix_double_double(int element, BilinearForm form, DoubleDoubleMatrix& local) const;
-  /// Called once before an element loop over the double-double closed forms, outside any parallel
-  /// region: a space whose closed forms share tables (reference matrices, matrices of shape
-  /// classes) builds them here with every thread, rather than inside the loop, where the first
-  /// element to need them builds them on one thread while the others wait. Default: nothing.
-  virtual void prepare_closed_forms_double_double(BilinearForm /*form*/) const {}
-  /// The double-double closed form of `element` when it is a matrix shared by several elements
-  /// (valid while the space lives): the assembler reads it in place instead of copying it. Null
-  /// (the default) when the element has no shared matrix; then closed_form_element_matrix_double_double.
-  virtual const DoubleDoubleMatrix* shared_closed_form_double_double(int /*element*/, BilinearForm /*form*/) const {
-    return nullptr;
-  }
-
-  /// The largest jump of the physical gradient of Σ c_i N_i across interior element edges, for
-  /// spaces that can locate both sides of their edges (a C1 space has it at round-off). Reported
-  /// as the `g1_jump` column of convergence.csv; nullopt (the default) leaves the column empty.
-  virtual std::optional<double> max_gradient_jump(const Eigen::VectorXd& /*coefficients*/) const {
-    return std::nullopt;
-  }
+  /// Element matrices without quadrature, for spaces that have them (spaces/closed_forms.hpp).
+  /// nullptr (the default): the assembler integrates with quadrature.
+  virtual const ClosedForms* closed_forms() const { return nullptr; }
 
   /// Optional: every interior edge piece (each once), for estimators that need both sides of an
   /// edge (the normal-derivative jumps of the residual estimator). Empty (the default) means the
   /// space cannot locate the element across its edges; callers then treat jumps as unavailable.
   virtual std::vector<InteriorEdge> interior_edges() const { return {}; }
 
-  /// Optional adaptive refinement: a new space on a mesh where every element in `marked_elements`
-  /// is refined (and possibly more elements, to keep the mesh valid for the space, e.g. an
-  /// admissible T-mesh). Element numbers of the new space are unrelated to this one's.
-  /// nullptr (the default) means the space does not support local refinement.
-  virtual std::shared_ptr<const Space> refined(const std::vector<int>& /*marked_elements*/) const { return nullptr; }
+  // Facts fixed when the space was built (SpaceFacts).
+  const SpaceFacts& facts() const { return facts_; }
+  const std::string& type() const { return facts_.type; }
+  const std::vector<std::pair<std::string, std::string>>& parameters() const { return facts_.parameters; }
+  int dimension() const { return facts_.dimension; }
+  int num_elements() const { return facts_.num_elements; }
+  CellShape cell_shape(int element) const {
+    return facts_.cell_shapes.size() == 1 ? facts_.cell_shapes[0] : facts_.cell_shapes[element];
+  }
+  double mesh_size() const { return facts_.mesh_size; }
+  int degree() const { return facts_.degree; }
+  int continuity() const { return facts_.continuity; }
+  bool higher_derivatives() const { return facts_.higher_derivatives; }
+  bool affine_elements() const { return facts_.affine_elements; }
+  int ambient_dimension() const { return facts_.ambient_dimension; }
+  int error_quadrature_degree() const {
+    return facts_.error_quadrature_degree >= 0 ? facts_.error_quadrature_degree : 2 * facts_.degree + 4;
+  }
+  /// nullptr for every space that is not on a surface built from a triangle mesh.
+  const std::shared_ptr<const SurfacePatches>& surface_patches() const { return facts_.surface_patches; }
 
-  /// Sub-cells to draw element `element` with about `resolution` samples per edge.
-  /// The default samples the reference cell uniformly.
-  virtual SampleCell sample_cell(int element, int resolution) const;
+  /// Names of the boundary parts (e.g. left, right, bottom, top). "all" is implied.
+  std::vector<std::string> boundary_names() const;
+  /// Boundary edges of the named part; "all" returns every boundary edge. InputError for an unknown name.
+  std::vector<BoundaryEdge> boundary_edges(const std::string& name) const;
+
+  /// The largest jump of the physical (surface) gradient of Σ c_i N_i across interior element
+  /// edges (gradient_jump.hpp) for spaces with SpaceFacts::gradient_jump_samples, at round-off for
+  /// a C1 space: the `g1_jump` column of convergence.csv. nullopt leaves the column empty.
+  std::optional<double> max_gradient_jump(const Eigen::VectorXd& coefficients) const;
+
+  /// Adaptive refinement (LocallyRefinable) when the space has it, else nullptr.
+  std::shared_ptr<const Space> refined(const std::vector<int>& marked_elements) const;
+
+  /// Sub-cells to draw element `element` with about `resolution` samples per edge: a uniform grid
+  /// of the reference cell, or of each of its pieces (SpaceFacts::pieces).
+  SampleCell sample_cell(int element, int resolution) const;
+
+ protected:
+  /// Called once by each space's constructor, after it has computed what the facts need.
+  void set_facts(SpaceFacts facts) { facts_ = std::move(facts); }
+
+ private:
+  SpaceFacts facts_;
 };
 
 using SpacePtr = std::shared_ptr<const Space>;

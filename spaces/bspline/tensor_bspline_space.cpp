@@ -4,7 +4,6 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "config/errors.hpp"
 #include "spaces/bspline/bspline_basis_1d.hpp"
 #include "spaces/push_forward.hpp"
 
@@ -251,39 +250,20 @@ TensorBSplineSpace::TensorBSplineSpace(std::shared_ptr<const PatchGeometry> geom
   for (int mu : knots_v_.spans())
     geometry_span_v_.push_back(geometry_->knots_v().find_span(0.5 * (knots_v_[mu] + knots_v_[mu + 1])));
   mesh_size_ = compute_mesh_size();
+  set_facts(make_facts());
 }
 
 std::unique_ptr<Space::Evaluator> TensorBSplineSpace::make_evaluator() const {
   return std::make_unique<TensorEvaluator>(*this);
 }
 
-int TensorBSplineSpace::continuity() const {
-  int k = regularity();
-  for (const KnotVector* kv : {&geometry_->knots_u(), &geometry_->knots_v()}) {
-    const int m = kv->max_interior_multiplicity();
-    if (m > 0) k = std::min(k, kv->degree() - m);
-  }
-  return k;
-}
-
 int TensorBSplineSpace::regularity() const {
-  int r = degree();
+  int r = std::max(knots_u_.degree(), knots_v_.degree());
   for (const KnotVector* kv : {&knots_u_, &knots_v_}) {
     const int m = kv->max_interior_multiplicity();
     if (m > 0) r = std::min(r, kv->degree() - m);
   }
   return r;
-}
-
-std::vector<std::pair<std::string, std::string>> TensorBSplineSpace::parameters() const {
-  const int pu = knots_u_.degree(), pv = knots_v_.degree();
-  const bool interior = knots_u_.max_interior_multiplicity() > 0 || knots_v_.max_interior_multiplicity() > 0;
-  return {
-      {"degree", pu == pv ? std::to_string(pu) : std::to_string(pu) + "," + std::to_string(pv)},
-      {"regularity", interior ? std::to_string(regularity()) : "-"},
-      {"elements", std::to_string(num_elements_u()) + "x" + std::to_string(num_elements_v())},
-      {"domain", geometry_->description()},
-  };
 }
 
 void TensorBSplineSpace::element_dofs(int element, std::vector<int>& out) const {
@@ -295,21 +275,21 @@ void TensorBSplineSpace::element_dofs(int element, std::vector<int>& out) const 
     for (int a = 0; a <= pu; ++a) out[a + b * (pu + 1)] = (su - pu + a) + (sv - pv + b) * n_u_;
 }
 
-bool TensorBSplineSpace::closed_form_element_matrix_double_double(int element, BilinearForm form,
-                                                                   DoubleDoubleMatrix& local) const {
-  if (!geometry_->is_affine()) return false;
-  std::call_once(span_integrals_once_, [this] {
-    for (int mu : knots_u_.spans()) span_integrals_u_.push_back(span_integrals(knots_u_, mu));
-    for (int mu : knots_v_.spans()) span_integrals_v_.push_back(span_integrals(knots_v_, mu));
+bool TensorBSplineSpace::ExactMatrices::double_double(int element, BilinearForm form, DoubleDoubleMatrix& local) const {
+  const TensorBSplineSpace& s = space_;
+  if (!s.geometry_->is_affine()) return false;
+  std::call_once(s.span_integrals_once_, [&s] {
+    for (int mu : s.knots_u_.spans()) s.span_integrals_u_.push_back(span_integrals(s.knots_u_, mu));
+    for (int mu : s.knots_v_.spans()) s.span_integrals_v_.push_back(span_integrals(s.knots_v_, mu));
   });
-  const int ex = element % num_elements_u(), ey = element / num_elements_u();
+  const int ex = element % s.num_elements_u(), ey = element / s.num_elements_u();
   Point2 lo, hi;
-  element_box(element, lo, hi);
+  s.element_box(element, lo, hi);
   const Point2 h = hi - lo;
-  GeometryJet g = geometry_->evaluate(lo + 0.5 * h, geometry_span_u_[ex], geometry_span_v_[ey], false);
+  GeometryJet g = s.geometry_->evaluate(lo + 0.5 * h, s.geometry_span_u_[ex], s.geometry_span_v_[ey], false);
   g.jacobian.col(0) *= h.x();
   g.jacobian.col(1) *= h.y();
-  return tensor_element_matrix(span_integrals_u_[ex], span_integrals_v_[ey], g.jacobian, form, local);
+  return tensor_element_matrix(s.span_integrals_u_[ex], s.span_integrals_v_[ey], g.jacobian, form, local);
 }
 
 void TensorBSplineSpace::element_box(int element, Point2& lo, Point2& hi) const {
@@ -325,7 +305,7 @@ double TensorBSplineSpace::compute_mesh_size() const {
   const int per_edge = geometry_->is_affine() ? 1 : 4;
   std::vector<Point2> pts(4 * per_edge);
   double h = 0.0;
-  for (int e = 0; e < num_elements(); ++e) {
+  for (int e = 0; e < num_elements_u() * num_elements_v(); ++e) {
     Point2 lo, hi;
     element_box(e, lo, hi);
     const int ex = e % num_elements_u(), ey = e / num_elements_u();
@@ -345,29 +325,38 @@ RulePtr TensorBSplineSpace::quadrature(int, int degree) const { return rules_.ce
 
 RulePtr TensorBSplineSpace::edge_quadrature(int, int edge, int degree) const { return rules_.edge(edge, degree); }
 
-std::vector<std::string> TensorBSplineSpace::boundary_names() const { return {"left", "right", "bottom", "top"}; }
-
-std::vector<BoundaryEdge> TensorBSplineSpace::boundary_edges(const std::string& name) const {
-  const int nex = num_elements_u(), ney = num_elements_v();
-  std::vector<BoundaryEdge> out;
-  auto side = [&](const std::string& s) {
-    if (s == "bottom")
-      for (int ex = 0; ex < nex; ++ex) out.push_back({ex, 0});
-    else if (s == "right")
-      for (int ey = 0; ey < ney; ++ey) out.push_back({nex - 1 + ey * nex, 1});
-    else if (s == "top")
-      for (int ex = 0; ex < nex; ++ex) out.push_back({ex + (ney - 1) * nex, 2});
-    else if (s == "left")
-      for (int ey = 0; ey < ney; ++ey) out.push_back({ey * nex, 3});
+SpaceFacts TensorBSplineSpace::make_facts() const {
+  SpaceFacts f;
+  f.type = "bspline";
+  const int pu = knots_u_.degree(), pv = knots_v_.degree();
+  const bool interior = knots_u_.max_interior_multiplicity() > 0 || knots_v_.max_interior_multiplicity() > 0;
+  f.parameters = {
+      {"degree", pu == pv ? std::to_string(pu) : std::to_string(pu) + "," + std::to_string(pv)},
+      {"regularity", interior ? std::to_string(regularity()) : "-"},
+      {"elements", std::to_string(num_elements_u()) + "x" + std::to_string(num_elements_v())},
+      {"domain", geometry_->description()},
   };
-  if (name == "all") {
-    for (const char* s : {"bottom", "right", "top", "left"}) side(s);
-  } else if (name == "left" || name == "right" || name == "bottom" || name == "top") {
-    side(name);
-  } else {
-    throw InputError("unknown boundary '" + name + "' of a B-spline patch (valid: left, right, bottom, top, all)");
+  f.dimension = n_u_ * n_v_;
+  f.num_elements = num_elements_u() * num_elements_v();
+  f.cell_shapes = {CellShape::quadrilateral};
+  f.mesh_size = mesh_size_;
+  f.degree = std::max(pu, pv);
+  f.continuity = regularity();
+  for (const KnotVector* kv : {&geometry_->knots_u(), &geometry_->knots_v()}) {
+    const int m = kv->max_interior_multiplicity();
+    if (m > 0) f.continuity = std::min(f.continuity, kv->degree() - m);
   }
-  return out;
+  f.affine_elements = geometry_->is_affine();
+  const int nex = num_elements_u(), ney = num_elements_v();
+  std::vector<BoundaryEdge> bottom, right, top, left;
+  for (int ex = 0; ex < nex; ++ex) bottom.push_back({ex, 0});
+  for (int ey = 0; ey < ney; ++ey) right.push_back({nex - 1 + ey * nex, 1});
+  for (int ex = 0; ex < nex; ++ex) top.push_back({ex + (ney - 1) * nex, 2});
+  for (int ey = 0; ey < ney; ++ey) left.push_back({ey * nex, 3});
+  for (const auto* side : {&bottom, &right, &top, &left})
+    f.all_boundary_edges.insert(f.all_boundary_edges.end(), side->begin(), side->end());
+  f.boundary_parts = {{"left", left}, {"right", right}, {"bottom", bottom}, {"top", top}};
+  return f;
 }
 
 }  // namespace iga

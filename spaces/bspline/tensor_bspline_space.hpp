@@ -16,6 +16,7 @@
 #include "spaces/bspline/exact_element_matrix.hpp"
 #include "spaces/bspline/knot_vector.hpp"
 #include "spaces/bspline/patch_geometry.hpp"
+#include "spaces/closed_forms.hpp"
 #include "spaces/gauss_rule_cache.hpp"
 #include "spaces/space.hpp"
 
@@ -29,19 +30,7 @@ class TensorBSplineSpace final : public Space {
   TensorBSplineSpace(std::shared_ptr<const PatchGeometry> geometry, KnotVector knots_u, KnotVector knots_v);
 
   std::unique_ptr<Evaluator> make_evaluator() const override;
-
-  std::string type() const override { return "bspline"; }
-  /// degree, regularity (C^r over interior knots; "-" with one element per direction), elements
-  /// (n_ex x n_ey), domain.
-  std::vector<std::pair<std::string, std::string>> parameters() const override;
-
-  int dimension() const override { return n_u_ * n_v_; }
   void element_dofs(int element, std::vector<int>& out) const override;
-  int num_elements() const override { return num_elements_u() * num_elements_v(); }
-  CellShape cell_shape(int) const override { return CellShape::quadrilateral; }
-  double mesh_size() const override { return mesh_size_; }
-  int degree() const override { return std::max(knots_u_.degree(), knots_v_.degree()); }
-  bool affine_elements() const override { return geometry_->is_affine(); }
 
   /// Shared tensor Gauss rule exact for `degree` per direction (built once per degree).
   RulePtr quadrature(int element, int degree) const override;
@@ -50,13 +39,7 @@ class TensorBSplineSpace final : public Space {
 
   /// On affine patches: the exact element matrix from double-double span integrals
   /// (spaces/bspline/exact_element_matrix.hpp), so that the matrix annihilates what it should.
-  bool closed_form_element_matrix_double_double(int element, BilinearForm form, DoubleDoubleMatrix& local) const override;
-
-  /// left (u = 0), right (u = 1), bottom (v = 0), top (v = 1).
-  std::vector<std::string> boundary_names() const override;
-  /// Edges of a named side in increasing element order; "all" lists bottom, right, top, left.
-  /// Throws InputError for an unknown name.
-  std::vector<BoundaryEdge> boundary_edges(const std::string& name) const override;
+  const ClosedForms* closed_forms() const override { return &closed_forms_; }
 
   const PatchGeometry& geometry() const { return *geometry_; }
   const KnotVector& knots_u() const { return knots_u_; }
@@ -70,12 +53,26 @@ class TensorBSplineSpace final : public Space {
   const Eigen::MatrixXd& extraction_v(int ey) const { return extraction_v_[ey]; }
   /// Smallest continuity order of the interior knots of both directions (degree when there are none).
   int regularity() const;
-  /// regularity(), lowered where the geometry map itself is less smooth (its interior knots).
-  int continuity() const override;
 
  private:
   class TensorEvaluator;
+  class ExactMatrices final : public ClosedForms {
+   public:
+    explicit ExactMatrices(const TensorBSplineSpace& space) : space_(space) {}
+    ExactMatrices(const ExactMatrices&) = delete;
+
+   protected:
+    bool double_double(int element, BilinearForm form, DoubleDoubleMatrix& local) const override;
+
+   private:
+    const TensorBSplineSpace& space_;
+  };
   double compute_mesh_size() const;
+  /// type "bspline"; parameters degree, regularity (C^r over interior knots; "-" with one element
+  /// per direction), elements (n_ex x n_ey), domain; continuity: regularity(), lowered where the
+  /// geometry map itself is less smooth; boundary parts left (u = 0), right (u = 1), bottom
+  /// (v = 0), top (v = 1), each in increasing element order, "all" bottom, right, top, left.
+  SpaceFacts make_facts() const;
 
   std::shared_ptr<const PatchGeometry> geometry_;
   KnotVector knots_u_, knots_v_;
@@ -89,6 +86,7 @@ class TensorBSplineSpace final : public Space {
 
   // Shared rule caches: the space is used by several threads, hence the mutex.
   GaussRuleCache rules_;
+  ExactMatrices closed_forms_{*this};
 };
 
 }  // namespace iga

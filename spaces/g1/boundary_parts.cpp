@@ -80,4 +80,10 @@ std::vector<BoundaryEdge> boundary_part_edges(const PatchMesh& mesh, const std::
   throw InputError("unknown boundary '" + name + "' of multipatch domain '" + mesh.name() + "' (valid: " + valid + ")");
 }
 
+void set_boundary_parts(const PatchMesh& mesh, SpaceFacts& facts) {
+  facts.all_boundary_edges = boundary_part_edges(mesh, "all");
+  for (const std::string& name : boundary_part_names(mesh))
+    facts.boundary_parts.emplace_back(name, boundary_part_edges(mesh, name));
+}
+
 }  // namespace iga

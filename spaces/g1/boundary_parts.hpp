@@ -21,4 +21,7 @@ std::vector<std::string> boundary_part_names(const PatchMesh& mesh);
 /// is not "all" and not in boundary_part_names (the message lists the valid names).
 std::vector<BoundaryEdge> boundary_part_edges(const PatchMesh& mesh, const std::string& name);
 
+/// Every part of boundary_part_names and "all" into the facts of a space on `mesh`.
+void set_boundary_parts(const PatchMesh& mesh, SpaceFacts& facts);
+
 }  // namespace iga

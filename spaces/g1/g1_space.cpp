@@ -6,7 +6,6 @@
 #include "config/errors.hpp"
 #include "spaces/g1/bernstein_face.hpp"
 #include "spaces/g1/boundary_parts.hpp"
-#include "spaces/g1/gradient_jump.hpp"
 #include "spaces/push_forward.hpp"
 
 namespace iga {
@@ -113,20 +112,38 @@ G1Space::G1Space(std::shared_ptr<const PatchMesh> mesh, int k) : mesh_(std::move
                      "': degree below the separability degree of this mesh (" + e.what() + "); use degree >= " +
                      (works > 0 ? std::to_string(works) : std::string("11")));
   }
-  affine_ = true;
+  SpaceFacts facts;
+  facts.type = "g1";
+  facts.parameters = {{"degree", std::to_string(basis_.degree)},
+                      {"patches", std::to_string(mesh_->num_faces())},
+                      {"domain", mesh_->name()}};
+  facts.dimension = basis_.dimension();
+  facts.num_elements = mesh_->num_faces();
+  facts.affine_elements = true;
   for (int f = 0; f < mesh_->num_faces(); ++f) {
-    mesh_size_ = std::max(mesh_size_, mesh_->diameter(f));
-    affine_ = affine_ && mesh_->is_affine(f);
+    facts.cell_shapes.push_back(mesh_->shape(f));
+    facts.mesh_size = std::max(facts.mesh_size, mesh_->diameter(f));
+    facts.affine_elements = facts.affine_elements && mesh_->is_affine(f);
   }
+  facts.degree = basis_.degree;
+  facts.continuity = 1;
+  set_boundary_parts(*mesh_, facts);
+  facts.gradient_jump_samples = 2 * basis_.degree + 4;
+  set_facts(std::move(facts));
+}
+
+std::vector<InteriorEdge> G1Space::interior_edges() const {
+  std::vector<InteriorEdge> out;
+  for (int e = 0; e < mesh_->num_edges(); ++e) {
+    const MeshEdge& edge = mesh_->edge(e);
+    if (edge.boundary()) continue;
+    // `second` traverses the edge in the opposite direction: its parameter runs from 1 to 0.
+    out.push_back({edge.first.face, edge.first.local_edge, 0.0, 1.0, edge.second.face, edge.second.local_edge, 1.0, 0.0});
+  }
+  return out;
 }
 
 std::unique_ptr<Space::Evaluator> G1Space::make_evaluator() const { return std::make_unique<G1Evaluator>(*this); }
-
-std::vector<std::pair<std::string, std::string>> G1Space::parameters() const {
-  return {{"degree", std::to_string(basis_.degree)},
-          {"patches", std::to_string(mesh_->num_faces())},
-          {"domain", mesh_->name()}};
-}
 
 RulePtr G1Space::quadrature(int element, int degree) const {
   // A quad rule exact per direction; a triangle rule exact for total degree `degree` covers the
@@ -136,23 +153,6 @@ RulePtr G1Space::quadrature(int element, int degree) const {
 
 RulePtr G1Space::edge_quadrature(int element, int edge, int degree) const {
   return mesh_->shape(element) == CellShape::triangle ? rules_.triangle_edge(edge, degree) : rules_.edge(edge, degree);
-}
-
-std::vector<std::string> G1Space::boundary_names() const { return boundary_part_names(*mesh_); }
-
-std::vector<BoundaryEdge> G1Space::boundary_edges(const std::string& name) const {
-  return boundary_part_edges(*mesh_, name);
-}
-
-std::optional<double> G1Space::max_gradient_jump(const Eigen::VectorXd& coefficients) const {
-  std::vector<Eigen::VectorXd> faces(mesh_->num_faces());
-  for (int f = 0; f < mesh_->num_faces(); ++f) {
-    const std::vector<int>& dofs = basis_.face_dofs[f];
-    Eigen::VectorXd local(static_cast<Eigen::Index>(dofs.size()));
-    for (std::size_t i = 0; i < dofs.size(); ++i) local[static_cast<Eigen::Index>(i)] = coefficients[dofs[i]];
-    faces[f] = basis_.extraction[f] * local;
-  }
-  return iga::max_gradient_jump(*mesh_, basis_.degree, faces);
 }
 
 }  // namespace iga

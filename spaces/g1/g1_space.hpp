@@ -27,31 +27,19 @@ class G1Space final : public Space {
   /// construction needs on this mesh (the message names the smallest degree that works).
   G1Space(std::shared_ptr<const PatchMesh> mesh, int k);
 
+  /// Facts: type "g1", parameters degree, patches (faces), domain; C1 in physical coordinates by
+  /// construction (route A); boundary parts: the sides of the domain's bounding box that boundary
+  /// edges lie on, `left` (x = x_min), `right`, `bottom` (y = y_min), `top`, only the nonempty
+  /// ones, or the mesh's groups (boundary_parts.hpp).
   std::unique_ptr<Evaluator> make_evaluator() const override;
-  std::string type() const override { return "g1"; }
-  /// degree, patches (faces), domain.
-  std::vector<std::pair<std::string, std::string>> parameters() const override;
-
-  int dimension() const override { return basis_.dimension(); }
   void element_dofs(int element, std::vector<int>& out) const override { out = basis_.face_dofs[element]; }
-  int num_elements() const override { return mesh_->num_faces(); }
-  CellShape cell_shape(int element) const override { return mesh_->shape(element); }
-  double mesh_size() const override { return mesh_size_; }
-  int degree() const override { return basis_.degree; }
-  int continuity() const override { return 1; }  // physical C1 by construction (route A)
-  bool affine_elements() const override { return affine_; }
 
   RulePtr quadrature(int element, int degree) const override;
   RulePtr edge_quadrature(int element, int edge, int degree) const override;
 
-  /// Sides of the domain's bounding box that boundary edges lie on: `left` (x = x_min), `right`,
-  /// `bottom` (y = y_min), `top`; only the nonempty ones (see boundary_parts.hpp). "all" is implied.
-  std::vector<std::string> boundary_names() const override;
-  std::vector<BoundaryEdge> boundary_edges(const std::string& name) const override;
-
-  /// Largest physical gradient jump of Σ c_i N_i over every interior interface, sampled at
-  /// gradient_jump_samples(k) points per edge (gradient_jump.hpp).
-  std::optional<double> max_gradient_jump(const Eigen::VectorXd& coefficients) const override;
+  /// Every interior edge of the mesh once (the g1_jump check samples 2k + 4 points of each: the
+  /// jump times both Jacobian determinants is a polynomial of degree <= k + 2 along an edge).
+  std::vector<InteriorEdge> interior_edges() const override;
 
   const PatchMesh& mesh() const { return *mesh_; }
   const std::vector<EdgeGluing>& gluing() const { return gluing_; }
@@ -63,8 +51,6 @@ class G1Space final : public Space {
   std::shared_ptr<const PatchMesh> mesh_;
   std::vector<EdgeGluing> gluing_;
   G1Basis basis_;
-  double mesh_size_ = 0.0;
-  bool affine_ = false;
 
   GaussRuleCache rules_;
 };

@@ -103,6 +103,21 @@ G14Space::G14Space(const PatchMesh& coarse, const G14Options& options) : options
   check_geometry(basis_.bspline, geometry_, mesh.name());
   mesh_ = std::make_shared<const PatchMesh>(std::move(mesh));
   topology_ = std::make_shared<const QuadTopology>(std::move(topology));
+  SpaceFacts facts;
+  facts.type = "g1_4split";
+  facts.parameters = {{"degree", std::to_string(options_.degree)},
+                      {"regularity", std::to_string(options_.regularity)},
+                      {"blending", blending_name(options_.blending)},
+                      {"refinement", options_.nested ? "nested" : "rebuild"},
+                      {"faces", std::to_string(topology_->num_faces())},
+                      {"domain", mesh_->name()}};
+  facts.dimension = basis_.dimension();
+  facts.num_elements = topology_->num_faces();
+  facts.cell_shapes = {CellShape::quadrilateral};
+  facts.degree = options_.degree;
+  facts.continuity = 1;
+  facts.gradient_jump_samples = 4 * options_.degree + 8;
+  set_boundary_parts(*mesh_, facts);
   // Diameter: largest distance between samples of the face boundary.
   for (int f = 0; f < topology_->num_faces(); ++f) {
     std::vector<Point2> pts;
@@ -112,20 +127,12 @@ G14Space::G14Space(const PatchMesh& coarse, const G14Options& options) : options
         pts.emplace_back(face_jet(basis_.bspline, geometry_.x[f], uv)(0), face_jet(basis_.bspline, geometry_.y[f], uv)(0));
       }
     for (const Point2& a : pts)
-      for (const Point2& b : pts) mesh_size_ = std::max(mesh_size_, (a - b).norm());
+      for (const Point2& b : pts) facts.mesh_size = std::max(facts.mesh_size, (a - b).norm());
   }
+  set_facts(std::move(facts));
 }
 
 std::unique_ptr<Space::Evaluator> G14Space::make_evaluator() const { return std::make_unique<G14Evaluator>(*this); }
-
-std::vector<std::pair<std::string, std::string>> G14Space::parameters() const {
-  return {{"degree", std::to_string(options_.degree)},
-          {"regularity", std::to_string(options_.regularity)},
-          {"blending", blending_name(options_.blending)},
-          {"refinement", options_.nested ? "nested" : "rebuild"},
-          {"faces", std::to_string(topology_->num_faces())},
-          {"domain", mesh_->name()}};
-}
 
 RulePtr SplitRuleCache::cell(int degree) const {
   degree = std::max(degree, 0);
@@ -159,12 +166,6 @@ RulePtr SplitRuleCache::edge(int edge, int degree) const {
   return r;
 }
 
-std::vector<std::string> G14Space::boundary_names() const { return boundary_part_names(*mesh_); }
-
-std::vector<BoundaryEdge> G14Space::boundary_edges(const std::string& name) const {
-  return boundary_part_edges(*mesh_, name);
-}
-
 std::vector<InteriorEdge> quad_interior_edges(const QuadTopology& t) {
   std::vector<InteriorEdge> out;
   for (int e = 0; e < t.num_edges(); ++e) {
@@ -184,37 +185,6 @@ std::vector<InteriorEdge> quad_interior_edges(const QuadTopology& t) {
     out.push_back(ie);
   }
   return out;
-}
-
-std::optional<double> G14Space::max_gradient_jump(const Eigen::VectorXd& coefficients) const {
-  const SplitBSpline& b = basis_.bspline;
-  std::vector<Eigen::VectorXd> faces(topology_->num_faces());
-  for (int f = 0; f < topology_->num_faces(); ++f) {
-    const std::vector<int>& dofs = basis_.face_dofs[f];
-    Eigen::VectorXd local(static_cast<Eigen::Index>(dofs.size()));
-    for (std::size_t i = 0; i < dofs.size(); ++i) local[static_cast<Eigen::Index>(i)] = coefficients[dofs[i]];
-    faces[f] = basis_.extraction[f] * local;
-  }
-  const int samples = 4 * options_.degree + 8;
-  double worst = 0.0;
-  for (const InteriorEdge& ie : interior_edges()) {
-    for (int s = 0; s < samples; ++s) {
-      const double t = double(s) / (samples - 1);
-      Eigen::Vector2d grad[2];
-      for (int side = 0; side < 2; ++side) {
-        const int f = side == 0 ? ie.element_a : ie.element_b;
-        const int j = side == 0 ? ie.edge_a : ie.edge_b;
-        const double tt = side == 0 ? ie.a0 + t * (ie.a1 - ie.a0) : ie.b0 + t * (ie.b1 - ie.b0);
-        const Point2 uv = reference_edge_point(CellShape::quadrilateral, j, tt);
-        const auto u = face_jet(b, faces[f], uv), x = face_jet(b, geometry_.x[f], uv), y = face_jet(b, geometry_.y[f], uv);
-        Eigen::Matrix2d J;
-        J << x(1), x(2), y(1), y(2);
-        grad[side] = J.transpose().inverse() * Eigen::Vector2d(u(1), u(2));
-      }
-      worst = std::max(worst, (grad[0] - grad[1]).norm());
-    }
-  }
-  return worst;
 }
 
 }  // namespace iga

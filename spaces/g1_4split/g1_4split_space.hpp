@@ -48,28 +48,16 @@ class G14Space final : public Space {
   /// the separability degree of some edge, InputError when the geometry is not regular.
   G14Space(const PatchMesh& coarse, const G14Options& options);
 
+  /// Facts: type "g1_4split", C1, curved elements (the map is in the space), boundary parts of
+  /// the level mesh (boundary_parts.hpp).
   std::unique_ptr<Evaluator> make_evaluator() const override;
-  std::string type() const override { return "g1_4split"; }
-  std::vector<std::pair<std::string, std::string>> parameters() const override;
-
-  int dimension() const override { return basis_.dimension(); }
   void element_dofs(int element, std::vector<int>& out) const override { out = basis_.face_dofs[element]; }
-  int num_elements() const override { return topology_->num_faces(); }
-  CellShape cell_shape(int) const override { return CellShape::quadrilateral; }
-  double mesh_size() const override { return mesh_size_; }
-  int degree() const override { return options_.degree; }
-  int continuity() const override { return 1; }
-  bool affine_elements() const override { return false; }
 
   RulePtr quadrature(int, int degree) const override { return rules_.cell(degree); }
   RulePtr edge_quadrature(int, int edge, int degree) const override { return rules_.edge(edge, degree); }
 
-  std::vector<std::string> boundary_names() const override;
-  std::vector<BoundaryEdge> boundary_edges(const std::string& name) const override;
-
-  /// Largest physical gradient jump of Σ c_i N_i across interior edges, sampled at 4k + 8 points
-  /// per edge (the jump is piecewise rational of moderate degree on each half).
-  std::optional<double> max_gradient_jump(const Eigen::VectorXd& coefficients) const override;
+  /// Every interior edge once; the g1_jump check samples 4k + 8 points of each (the jump is
+  /// piecewise rational of moderate degree on each half).
   std::vector<InteriorEdge> interior_edges() const override { return quad_interior_edges(*topology_); }
 
   const QuadTopology& topology() const { return *topology_; }
@@ -86,7 +74,6 @@ class G14Space final : public Space {
   std::vector<SplitGluing> gluing_;
   G14Basis basis_;
   FaceGeometry geometry_;
-  double mesh_size_ = 0.0;
   SplitRuleCache rules_;
 };
 

@@ -136,11 +136,26 @@ G14SurfaceSpace::G14SurfaceSpace(const QuadTopology& coarse, const std::vector<E
                      "plane at the face centre folds or degenerates); the mesh does not fit the symmetric gluing");
   normal_jump_ = surface_normal_jump(*topology_, surface_, 4 * options.degree + 8);
   min_metric_ratio_ = surface_regularity(surface_, 24);
+  SpaceFacts facts;
+  facts.type = "g1_4split";
+  facts.parameters = make_parameters();
+  facts.dimension = surface_.basis.dimension();
+  facts.num_elements = topology_->num_faces();
+  facts.cell_shapes = {CellShape::quadrilateral};
+  facts.mesh_size = mesh_size_;
+  facts.degree = options_.degree;
+  facts.continuity = 1;
+  facts.ambient_dimension = 3;
+  facts.gradient_jump_samples = 4 * options_.degree + 8;  // surface gradient jump
+  for (int e = 0; e < topology_->num_edges(); ++e)
+    if (topology_->edge(e).boundary())
+      facts.all_boundary_edges.push_back({topology_->edge(e).sides[0].face, topology_->edge(e).sides[0].local_edge});
+  set_facts(std::move(facts));
 }
 
 std::unique_ptr<Space::Evaluator> G14SurfaceSpace::make_evaluator() const { return std::make_unique<Evaluator3>(*this); }
 
-std::vector<std::pair<std::string, std::string>> G14SurfaceSpace::parameters() const {
+std::vector<std::pair<std::string, std::string>> G14SurfaceSpace::make_parameters() const {
   const auto sci = [](double x) {
     char buf[32];
     std::snprintf(buf, sizeof buf, "%.3e", x);
@@ -155,46 +170,6 @@ std::vector<std::pair<std::string, std::string>> G14SurfaceSpace::parameters() c
           {"surface_normal_jump", sci(normal_jump_)},
           {"surface_min_metric_ratio", sci(min_metric_ratio_)},
           {"surface_fold_bound", sci(fold_bound_)}};
-}
-
-std::vector<BoundaryEdge> G14SurfaceSpace::boundary_edges(const std::string& name) const {
-  if (name != "all") throw std::invalid_argument("G14SurfaceSpace: no boundary part '" + name + "'");
-  std::vector<BoundaryEdge> out;
-  for (int e = 0; e < topology_->num_edges(); ++e)
-    if (topology_->edge(e).boundary()) out.push_back({topology_->edge(e).sides[0].face, topology_->edge(e).sides[0].local_edge});
-  return out;
-}
-
-std::optional<double> G14SurfaceSpace::max_gradient_jump(const Eigen::VectorXd& coefficients) const {
-  const G14Basis& basis = surface_.basis;
-  const SplitBSpline& b = basis.bspline;
-  std::vector<Eigen::VectorXd> faces(topology_->num_faces());
-  for (int f = 0; f < topology_->num_faces(); ++f) {
-    const std::vector<int>& dofs = basis.face_dofs[f];
-    Eigen::VectorXd local(static_cast<Eigen::Index>(dofs.size()));
-    for (std::size_t i = 0; i < dofs.size(); ++i) local[static_cast<Eigen::Index>(i)] = coefficients[dofs[i]];
-    faces[f] = basis.extraction[f] * local;
-  }
-  const int samples = 4 * options_.degree + 8;
-  double worst = 0.0;
-  for (const InteriorEdge& ie : interior_edges())
-    for (int s = 0; s < samples; ++s) {
-      const double t = double(s) / (samples - 1);
-      Eigen::Vector3d grad[2];
-      for (int side = 0; side < 2; ++side) {
-        const int f = side == 0 ? ie.element_a : ie.element_b;
-        const int j = side == 0 ? ie.edge_a : ie.edge_b;
-        const double tt = side == 0 ? ie.a0 + t * (ie.a1 - ie.a0) : ie.b0 + t * (ie.b1 - ie.b0);
-        const Point2 uv = reference_edge_point(CellShape::quadrilateral, j, tt);
-        const auto x = face_map_jet(surface_, f, uv.x(), uv.y());
-        const auto u = face_jet(b, faces[f], uv);
-        Eigen::Matrix<double, 3, 2> J;
-        J << x[1], x[2];
-        grad[side] = surface_jet(x[0], J).dual * Eigen::Vector2d(u(1), u(2));
-      }
-      worst = std::max(worst, (grad[0] - grad[1]).norm());
-    }
-  return worst;
 }
 
 }  // namespace iga

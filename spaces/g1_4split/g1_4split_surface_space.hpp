@@ -29,27 +29,11 @@ class G14SurfaceSpace final : public Space {
   G14SurfaceSpace(const QuadTopology& coarse, const std::vector<Eigen::Vector3d>& vertices, const G14Options& options);
 
   std::unique_ptr<Evaluator> make_evaluator() const override;
-  int ambient_dimension() const override { return 3; }
-  std::string type() const override { return "g1_4split"; }
-  /// degree, regularity, blending, refinement, faces, domain and the surface checks:
-  /// surface_normal_jump, surface_min_metric_ratio, surface_fold_bound (see below).
-  std::vector<std::pair<std::string, std::string>> parameters() const override;
 
-  int dimension() const override { return surface_.basis.dimension(); }
   void element_dofs(int element, std::vector<int>& out) const override { out = surface_.basis.face_dofs[element]; }
-  int num_elements() const override { return topology_->num_faces(); }
-  CellShape cell_shape(int) const override { return CellShape::quadrilateral; }
-  double mesh_size() const override { return mesh_size_; }
-  int degree() const override { return options_.degree; }
-  int continuity() const override { return 1; }
-  bool affine_elements() const override { return false; }
   RulePtr quadrature(int, int degree) const override { return rules_.cell(degree); }
   RulePtr edge_quadrature(int, int edge, int degree) const override { return rules_.edge(edge, degree); }
-  std::vector<std::string> boundary_names() const override { return {}; }
-  std::vector<BoundaryEdge> boundary_edges(const std::string& name) const override;
 
-  /// Largest jump of the surface gradient of Σ c_i N_i across interior edges (4k + 8 samples per edge).
-  std::optional<double> max_gradient_jump(const Eigen::VectorXd& coefficients) const override;
   std::vector<InteriorEdge> interior_edges() const override { return quad_interior_edges(*topology_); }
 
   const QuadTopology& topology() const { return *topology_; }
@@ -69,6 +53,9 @@ class G14SurfaceSpace final : public Space {
 
  private:
   class Evaluator3;
+  /// degree, regularity, blending, refinement, faces, domain and the surface checks:
+  /// surface_normal_jump, surface_min_metric_ratio, surface_fold_bound (see above).
+  std::vector<std::pair<std::string, std::string>> make_parameters() const;
 
   G14Options options_;
   std::shared_ptr<const QuadTopology> topology_;

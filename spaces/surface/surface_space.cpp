@@ -90,20 +90,21 @@ SurfaceBernsteinSpace::SurfaceBernsteinSpace(std::shared_ptr<const rsd::RsdSurfa
       dofs_.push_back(std::move(dofs));
     }
   }
-}
-
-std::vector<std::pair<std::string, std::string>> SurfaceBernsteinSpace::parameters() const {
-  std::vector<std::pair<std::string, std::string>> out = {
-      {"degree", std::to_string(degree_)},
-      {"subdivisions", std::to_string(subdivisions_)},
-      {"elements", std::to_string(num_elements())},
-      {"surface_triangles", std::to_string(surface_->mesh.num_triangles())}};
-  return out;  // the surface's own report: surface_patches()
-}
-
-std::vector<BoundaryEdge> SurfaceBernsteinSpace::boundary_edges(const std::string& name) const {
-  if (name != "all") throw std::invalid_argument("SurfaceBernsteinSpace: no boundary part '" + name + "'");
-  return boundary_;
+  SpaceFacts facts;
+  facts.type = "surface";
+  facts.parameters = {{"degree", std::to_string(degree_)},
+                      {"subdivisions", std::to_string(subdivisions_)},
+                      {"elements", std::to_string(elements_.size())},
+                      {"surface_triangles", std::to_string(surface_->mesh.num_triangles())}};
+  facts.dimension = dimension_;
+  facts.num_elements = static_cast<int>(elements_.size());
+  facts.cell_shapes = {CellShape::triangle};
+  facts.mesh_size = mesh_size_;
+  facts.degree = degree_;
+  facts.ambient_dimension = 3;
+  facts.all_boundary_edges = boundary_;
+  facts.surface_patches = patches_;  // the surface's own report
+  set_facts(std::move(facts));
 }
 
 namespace {

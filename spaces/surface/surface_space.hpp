@@ -35,22 +35,10 @@ class SurfaceBernsteinSpace : public Space {
   };
 
   std::unique_ptr<Evaluator> make_evaluator() const override;
-  int ambient_dimension() const override { return 3; }
-  std::string type() const override { return "surface"; }
-  std::vector<std::pair<std::string, std::string>> parameters() const override;
-  int dimension() const override { return dimension_; }
   void element_dofs(int element, std::vector<int>& out) const override { out = dofs_[element]; }
-  int num_elements() const override { return static_cast<int>(elements_.size()); }
-  CellShape cell_shape(int) const override { return CellShape::triangle; }
-  double mesh_size() const override { return mesh_size_; }
-  int degree() const override { return degree_; }
-  bool affine_elements() const override { return false; }
   RulePtr quadrature(int, int degree) const override { return rules_.triangle(degree); }
   RulePtr edge_quadrature(int, int edge, int degree) const override { return rules_.triangle_edge(edge, degree); }
-  std::vector<std::string> boundary_names() const override { return {}; }
-  std::vector<BoundaryEdge> boundary_edges(const std::string& name) const override;
 
-  std::shared_ptr<const SurfacePatches> surface_patches() const override { return patches_; }
 
   const rsd::RsdSurface& surface() const { return *surface_; }
   const std::shared_ptr<const rsd::RsdSurface>& shared_surface() const { return surface_; }

@@ -10,6 +10,7 @@
 #include <stdexcept>
 #include <tuple>
 
+#include "spaces/tmesh/hermite_dofs.hpp"
 #include "spaces/tmesh/local_forms.hpp"
 #include "spaces/tmesh/section_space.hpp"
 
@@ -100,49 +101,19 @@ struct CellScratch {
 }  // namespace
 
 HermiteExtraction hermite_extraction(const TMesh& mesh, int r) {
-  if (!mesh.admissibility_problem().empty())
-    throw std::invalid_argument("the T-mesh is not admissible: " + mesh.admissibility_problem());
-  const int n = mesh.sections()[mesh.cells()[0].section_s].n;
-  for (const SectionSpec& sp : mesh.sections())
-    if (sp.n != n) throw std::invalid_argument("the Hermite extraction needs the same n in every section space");
-  bool reduced = false;  // some edge with d_e = 0
-  for (const CompositeEdge& e : mesh.edges()) {
-    if (e.d == 1) throw std::invalid_argument("composite edges with d_e = 1 are not supported by the Hermite extraction");
-    reduced = reduced || e.d == 0;
-  }
-  const int need = reduced ? 2 * r + 3 : 2 * r + 1;
-  if (r < 0 || n < need)
-    throw std::invalid_argument("C^" + std::to_string(r) + " generalized splines need n >= " + std::to_string(need) +
-                                (reduced ? " (edges between different section spaces)" : "") + " (got n = " +
-                                std::to_string(n) + ")");
-  const int nr = r + 1, ni = n - 2 * r - 1;
-  // Per edge: last one-sided tangential order k_a and edge DOFs per normal order (k_a - r).
-  auto last_order = [&](const CompositeEdge& e) { return n - r - 3 + e.d; };
+  const HermiteDofs dofs = number_hermite_dofs(mesh, r);
+  const int n = dofs.n, nr = r + 1, ni = n - 2 * r - 1;
+  const std::vector<int>&vbase = dofs.vertex_base, &ebase = dofs.edge_base, &cbase = dofs.cell_base;
+  auto last_order = [&](const CompositeEdge& e) { return dofs.last_order(e); };
   const auto& V = mesh.vertices();
   const auto& E = mesh.edges();
   const int nc = mesh.num_cells();
 
   HermiteExtraction out;
-  // DOF numbering.
-  std::vector<int> vbase(V.size(), -1), ebase(E.size()), cbase(nc);
-  int next = 0;
-  for (size_t v = 0; v < V.size(); ++v)
-    if (!V[v].t_junction) {
-      vbase[v] = next;
-      next += nr * nr;
-    }
-  out.num_vertex_dofs = next;
-  for (size_t e = 0; e < E.size(); ++e) {
-    ebase[e] = next;
-    next += nr * (last_order(E[e]) - r);
-  }
-  out.num_edge_dofs = next - out.num_vertex_dofs;
-  for (int c = 0; c < nc; ++c) {
-    cbase[c] = next;
-    next += ni * ni;
-  }
-  out.num_cell_dofs = next - out.num_vertex_dofs - out.num_edge_dofs;
-  out.dimension = next;
+  out.num_vertex_dofs = dofs.num_vertex_dofs;
+  out.num_edge_dofs = dofs.num_edge_dofs;
+  out.num_cell_dofs = dofs.num_cell_dofs;
+  out.dimension = dofs.dimension;
 
   // Jets J_w[a + b nr] = D_s^a D_t^b p(w) (physical derivatives): the unit forms of their DOFs at
   // non-T-junction vertices, traces of their host edges at T-junctions (filled below).

@@ -5,7 +5,7 @@
 /// between them have d_e = 0 (d_e = 1 needs exponential families, not provided). Needs n >= 2r+1,
 /// and n >= 2r+3 when some edge has d_e = 0.
 ///
-/// DOFs, numbered in this order:
+/// DOFs (numbered by hermite_dofs.hpp), in this order:
 ///  - (V) every non-T-junction vertex w: D_s^a D_t^b p(w), a, b <= r, numbered a + b (r+1);
 ///  - (E) every composite edge e (lo end w_a): the (r+1) (n-2r-3+d_e) one-sided tangential
 ///    derivatives of the traces, L^i D_tan^i D_nor^b p(w_a) for r < i <= n-r-3+d_e, b <= r (L = |e|);

@@ -26,29 +26,23 @@ namespace iga {
 /// hyperbolic sections with largest w h = `wh` to stay exact to round-off: the smallest even e >= 2
 /// with (w h)^(e+1) / (e+1)! <= 1e-17, at most 16; 0 for wh = 0 (polynomial sections).
 int non_polynomial_extra_degree(double wh);
+/// Extra degree of the rules of trigonometric and hyperbolic sections on coarse cells.
+inline constexpr int kFullExtraDegree = 16;
 
-class TMeshSpace final : public Space {
+class TMeshSpace final : public Space, public LocallyRefinable {
  public:
   /// C^r space on `mesh` (see hermite_extraction.hpp for the conditions on n). `rectangular` names the boundary parts
   /// left/right/bottom/top (otherwise only "all"). Throws std::invalid_argument when the mesh is
   /// not admissible or a trigonometric cell has w h >= pi.
   TMeshSpace(TMesh mesh, int regularity, bool rectangular, std::string domain_description);
 
-  std::unique_ptr<Evaluator> make_evaluator() const override;
-  std::string type() const override { return "tmesh"; }
-  /// section, regularity, cells, T-junctions, domain.
-  std::vector<std::pair<std::string, std::string>> parameters() const override;
+  ~TMeshSpace() override;
 
-  int dimension() const override { return extraction_.dimension; }
+  /// Facts: type "tmesh"; parameters section, regularity, cells, T-junctions, domain; C^r, affine
+  /// cells, higher_derivatives (cells are tensor products of section spaces under a diagonal
+  /// scaling: any derivative is exact); boundary parts left, right, bottom, top when rectangular.
+  std::unique_ptr<Evaluator> make_evaluator() const override;
   void element_dofs(int element, std::vector<int>& out) const override { out = extraction_.dofs[element]; }
-  int num_elements() const override { return mesh_.num_cells(); }
-  CellShape cell_shape(int) const override { return CellShape::quadrilateral; }
-  double mesh_size() const override { return mesh_size_; }
-  int degree() const override { return section().n; }
-  int continuity() const override { return r_; }
-  bool affine_elements() const override { return true; }
-  /// Cells are tensor products of section spaces under a diagonal scaling: any derivative is exact.
-  bool higher_derivatives() const override { return true; }
 
   /// Tensor Gauss rule exact for `degree`; for trigonometric / hyperbolic sections exact for a
   /// higher degree, since Gauss rules are not exact for those integrands (notes P6): as many more
@@ -57,22 +51,8 @@ class TMeshSpace final : public Space {
   RulePtr quadrature(int element, int degree) const override;
   RulePtr edge_quadrature(int element, int edge, int degree) const override;
 
-  /// The cell map is a diagonal scaling and the local basis a tensor product, so every form is a
-  /// sum of Kronecker products of 1D integrals ∫ B_i^(a) B_k^(b) over the cell's sides: E_c K_c E_cᵀ
-  /// with K_c from side integrals computed once per (section, side length) with the Gauss rule of
-  /// assembly (2n + 1, plus 16 for non-polynomial sections: the coarse-cell rule, i.e. the tensor
-  /// rule's sums, separated; finer than quadrature() on fine cells). Accumulated in long double.
-  bool closed_form_element_matrix(int element, BilinearForm form, Eigen::MatrixXd& local) const override;
-  bool closed_form_element_matrix_extended(int element, BilinearForm form,
-                                           Eigen::Matrix<long double, Eigen::Dynamic, Eigen::Dynamic>& local) const override;
-  /// The same closed form in double-double, for the solver's residuals (the long double sums would
-  /// bring back the plates' round-off floor): side integrals summed from exact products, K_c per
-  /// (form, sections, side lengths) computed once per thread, then E_c K_c E_cᵀ skipping the zeros
-  /// of E_c and filling one triangle; cells with the same K_c and E_c reuse the result.
-  bool closed_form_element_matrix_double_double(int element, BilinearForm form, DoubleDoubleMatrix& local) const override;
-
-  std::vector<std::string> boundary_names() const override;
-  std::vector<BoundaryEdge> boundary_edges(const std::string& name) const override;
+  /// E_c K_c E_cᵀ from side integrals (tmesh_closed_forms.hpp).
+  const ClosedForms* closed_forms() const override;
 
   /// One piece per pair of side neighbours, over their common segment: a T-junction edge of a large
   /// cell yields one piece per small cell along it.
@@ -80,7 +60,7 @@ class TMeshSpace final : public Space {
 
   /// Split the marked cells dyadically, plus the cells refine_admissibly adds (2:1 balance, and a
   /// buffer when the result would not be regular and acyclic); same sections and regularity.
-  SpacePtr refined(const std::vector<int>& marked_elements) const override;
+  SpacePtr refine(const std::vector<int>& marked_elements) const override;
 
   const TMesh& mesh() const { return mesh_; }
   const HermiteExtraction& extraction() const { return extraction_; }
@@ -92,6 +72,10 @@ class TMeshSpace final : public Space {
   /// Bernstein basis of section `section` on a cell side of that lattice length (shared, immutable
   /// after construction).
   const SectionBernstein& bernstein(int section, std::int64_t length) const { return bernstein_.at({section, length}); }
+  /// Every (section, side lattice length) of the mesh with its Bernstein basis.
+  const std::map<std::pair<int, std::int64_t>, SectionBernstein>& bernstein_bases() const { return bernstein_; }
+  /// Degree every rule gets beyond the polynomial one (non_polynomial_extra_degree).
+  int extra_degree() const { return extra_degree_; }
 
  private:
   class TMeshEvaluator;
@@ -105,20 +89,7 @@ class TMeshSpace final : public Space {
   std::string domain_;
   HermiteExtraction extraction_;
   std::map<std::pair<int, std::int64_t>, SectionBernstein> bernstein_;
-  /// Per (section, side length): side(a, b)(i, k) = ∫_0^1 ∂^a B_i ∂^b B_k in reference coordinates
-  /// (a, b <= 2, index 3 a + b).
-  struct SideIntegrals {
-    Eigen::Matrix<long double, Eigen::Dynamic, Eigen::Dynamic> m[9];
-  };
-  std::map<std::pair<int, std::int64_t>, SideIntegrals> side_integrals_;
-  /// The same side integrals in double-double ((n+1)^2 entries each, column-major).
-  struct SideIntegralsDD {
-    int size = 0;
-    std::vector<DoubleDouble> m[9];
-  };
-  std::map<std::pair<int, std::int64_t>, SideIntegralsDD> side_integrals_dd_;
-  /// Distinguishes spaces in the per-thread cache of double-double cell matrices.
-  std::uint64_t instance_id_ = 0;
+  std::unique_ptr<const ClosedForms> closed_forms_;
   double mesh_size_ = 0.0;
   int extra_degree_ = 0;
 

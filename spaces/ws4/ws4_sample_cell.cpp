@@ -1,7 +1,6 @@
 #include "spaces/ws4/ws4_sample_cell.hpp"
 
 #include "spaces/ws4/ws4_split.hpp"
-#include "spaces/ws4/ws4_space.hpp"
 
 namespace iga::ws4 {
 
@@ -20,7 +19,5 @@ SampleCell split_sample_cell(int resolution) {
   }
   return s;
 }
-
-SampleCell Ws4Space::sample_cell(int /*element*/, int resolution) const { return split_sample_cell(resolution); }
 
 }  // namespace iga::ws4

@@ -43,50 +43,22 @@ class Ws4Space final : public Space {
   /// The space on `mesh`; `description` names the domain in parameters().
   explicit Ws4Space(Triangulation mesh, std::string description = "triangulation");
 
-  std::unique_ptr<Evaluator> make_evaluator() const override;
-  std::string type() const override { return "ws4"; }
-  /// triangles, vertices, edges, domain.
-  std::vector<std::pair<std::string, std::string>> parameters() const override;
+  ~Ws4Space() override;
 
-  int dimension() const override;
+  /// Facts: type "ws4"; parameters triangles, vertices, edges, domain; degree 4, C3 across
+  /// macro-edges (note §2.3), affine; error rules of degree 2p on each of the 342 pieces (see the
+  /// constructor); drawn on its pieces (ws4_sample_cell.hpp), so that linear cells never straddle
+  /// one; boundary parts of the triangulation (InputError for an unknown name).
+  std::unique_ptr<Evaluator> make_evaluator() const override;
   void element_dofs(int element, std::vector<int>& out) const override;
-  int num_elements() const override { return mesh_.num_triangles(); }
-  CellShape cell_shape(int) const override { return CellShape::triangle; }
-  double mesh_size() const override { return mesh_size_; }
-  int degree() const override { return 4; }
-  int continuity() const override { return 3; }  // C3 across macro-edges (note §2.3)
-  bool affine_elements() const override { return true; }
-  /// The error rule is one rule per polynomial piece (the 342 fan sub-triangles of the split, each
-  /// about 1/18 of the element's diameter) of degree 2p: exact for u_h² on every piece, and on
-  /// pieces that small it resolves the smooth data too. Against the composite rule of degree 2p + 2
-  /// (25 points per piece instead of 16), the errors of a sine on the unit square move by < 1e-4
-  /// (L2), 2e-6 (H1) and 1e-9 (H2) relative, at 32 x 32 squares.
-  int error_quadrature_degree() const override { return 2 * degree(); }
 
   /// triangle_rule(degree) on each of the 342 fan triangles of the WS4 split (shared by all elements).
   RulePtr quadrature(int element, int degree) const override;
   /// Gauss rule on each quarter of the edge (the pieces of the split along it).
   RulePtr edge_quadrature(int element, int edge, int degree) const override;
 
-  /// C_Kᵀ K_B C_K with K_B from the universal reference matrices, the product accumulated in long
-  /// double (ws4_reference_matrices.hpp). The double-double one is computed once per shape class
-  /// shared by several elements (ws4_shape_classes.hpp).
-  bool closed_form_element_matrix(int element, BilinearForm form, Eigen::MatrixXd& local) const override;
-  bool closed_form_element_matrix_extended(int element, BilinearForm form,
-                                           Eigen::Matrix<long double, Eigen::Dynamic, Eigen::Dynamic>& local) const override;
-  bool closed_form_element_matrix_double_double(int element, BilinearForm form, DoubleDoubleMatrix& local) const override;
-  /// The reference tables of `form` and the matrices of every shared shape class, with all threads.
-  void prepare_closed_forms_double_double(BilinearForm form) const override;
-  /// The cached matrix of the element's shape class (after prepare_closed_forms_double_double).
-  const DoubleDoubleMatrix* shared_closed_form_double_double(int element, BilinearForm form) const override;
-
-  /// Draws the element on its split (ws4_sample_cell.hpp): the 342 fan triangles over the 178 split
-  /// vertices, each subdivided further for resolution >= 16, so linear cells never straddle a piece.
-  SampleCell sample_cell(int element, int resolution) const override;
-
-  std::vector<std::string> boundary_names() const override { return mesh_.part_names(); }
-  /// Throws InputError for an unknown name.
-  std::vector<BoundaryEdge> boundary_edges(const std::string& name) const override;
+  /// C_Kᵀ K_B C_K from the universal reference matrices (ws4_closed_forms.hpp).
+  const ClosedForms* closed_forms() const override;
 
   const Triangulation& mesh() const { return mesh_; }
   /// The factor h of the scaled DOFs (see the file comment).
@@ -117,13 +89,15 @@ class Ws4Space final : public Space {
  private:
   class Ws4Evaluator;
   void compute_vertex_frames();
+  /// Boundary edges of part `part` of the triangulation (-1: every boundary edge).
+  std::vector<BoundaryEdge> part_edges(int part) const;
 
   Triangulation mesh_;
   std::string description_;
   double mesh_size_ = 0.0, h_ = 1.0;
   ShapeClasses classes_;
   std::vector<Eigen::MatrixXd> class_extraction_;
-  std::unique_ptr<ElementMatrixCache> matrix_cache_;
+  std::unique_ptr<const ClosedForms> closed_forms_;
   std::vector<Eigen::Matrix2d> vertex_frame_;
 
   mutable std::mutex rule_mutex_;

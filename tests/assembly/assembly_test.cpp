@@ -10,6 +10,7 @@
 
 #include "assembly/assembler.hpp"
 #include "assembly/parallel.hpp"
+#include "spaces/closed_forms.hpp"
 #include "tests/support/test_support.hpp"
 
 using namespace iga;
@@ -110,31 +111,37 @@ namespace {
 /// quadrature ones, so the test can see which path the assembler took.
 class ClosedFormSpace final : public Space {
  public:
-  explicit ClosedFormSpace(SpacePtr inner) : inner_(std::move(inner)) {}
+  explicit ClosedFormSpace(SpacePtr inner) : inner_(std::move(inner)), twice_(*inner_) {
+    SpaceFacts facts = inner_->facts();
+    facts.type = "closed-form test";
+    facts.parameters = {};
+    set_facts(std::move(facts));
+  }
   std::unique_ptr<Evaluator> make_evaluator() const override { return inner_->make_evaluator(); }
-  std::string type() const override { return "closed-form test"; }
-  std::vector<std::pair<std::string, std::string>> parameters() const override { return {}; }
-  int dimension() const override { return inner_->dimension(); }
   void element_dofs(int e, std::vector<int>& out) const override { inner_->element_dofs(e, out); }
-  int num_elements() const override { return inner_->num_elements(); }
-  CellShape cell_shape(int e) const override { return inner_->cell_shape(e); }
-  double mesh_size() const override { return inner_->mesh_size(); }
-  int degree() const override { return inner_->degree(); }
-  bool affine_elements() const override { return inner_->affine_elements(); }
   RulePtr quadrature(int e, int d) const override { return inner_->quadrature(e, d); }
   RulePtr edge_quadrature(int e, int edge, int d) const override { return inner_->edge_quadrature(e, edge, d); }
-  std::vector<std::string> boundary_names() const override { return inner_->boundary_names(); }
-  std::vector<BoundaryEdge> boundary_edges(const std::string& n) const override { return inner_->boundary_edges(n); }
-  bool closed_form_element_matrix(int e, BilinearForm form, Eigen::MatrixXd& local) const override {
-    ElementValues ev(*inner_, flags_for(form));
-    ev.reinit(e, *inner_->quadrature(e, 8));
-    element_matrix(form, ev, local);
-    local *= 2.0;
-    return true;
-  }
+  const ClosedForms* closed_forms() const override { return &twice_; }
 
  private:
+  class Twice final : public ClosedForms {
+   public:
+    explicit Twice(const Space& inner) : inner_(inner) {}
+
+   protected:
+    bool rounded(int e, BilinearForm form, Eigen::MatrixXd& local) const override {
+      ElementValues ev(inner_, flags_for(form));
+      ev.reinit(e, *inner_.quadrature(e, 8));
+      iga::element_matrix(form, ev, local);  // the integrator, not ClosedForms::element_matrix
+      local *= 2.0;
+      return true;
+    }
+
+   private:
+    const Space& inner_;
+  };
   SpacePtr inner_;
+  Twice twice_;
 };
 }  // namespace
 

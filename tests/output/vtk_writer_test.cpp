@@ -41,7 +41,16 @@ struct AffineElement {
 class AffineLagrangeSpace : public Space {
  public:
   AffineLagrangeSpace(std::vector<AffineElement> elements, std::vector<Point2> nodes)
-      : elements_(std::move(elements)), nodes_(std::move(nodes)) {}
+      : elements_(std::move(elements)), nodes_(std::move(nodes)) {
+    SpaceFacts facts;
+    facts.type = "affine-lagrange-test";
+    facts.dimension = static_cast<int>(nodes_.size());
+    facts.num_elements = static_cast<int>(elements_.size());
+    for (const AffineElement& e : elements_) facts.cell_shapes.push_back(e.shape);
+    facts.degree = 1;
+    facts.affine_elements = true;
+    set_facts(std::move(facts));
+  }
 
   /// 2 x 2 grid of parameter-space unit squares [i,i+1] x [j,j+1], mapped by x = A s + b;
   /// node (a, b) of the 3 x 3 grid is global function 3 b + a.
@@ -130,19 +139,10 @@ class AffineLagrangeSpace : public Space {
   };
 
   std::unique_ptr<Evaluator> make_evaluator() const override { return std::make_unique<AffineEvaluator>(*this); }
-  std::string type() const override { return "affine-lagrange-test"; }
-  std::vector<std::pair<std::string, std::string>> parameters() const override { return {}; }
-  int dimension() const override { return static_cast<int>(nodes_.size()); }
-  int num_elements() const override { return static_cast<int>(elements_.size()); }
-  CellShape cell_shape(int element) const override { return elements_.at(element).shape; }
-  double mesh_size() const override { return 0; }  // not used by the writer
-  int degree() const override { return 1; }
-  bool affine_elements() const override { return true; }
+  void element_dofs(int element, std::vector<int>& out) const override { out = elements_.at(element).dofs; }
   // The writer never integrates: these two throw so a test would notice if it started to.
   RulePtr quadrature(int, int) const override { throw std::logic_error("quadrature not used by the writer"); }
   RulePtr edge_quadrature(int, int, int) const override { throw std::logic_error("edge_quadrature not used"); }
-  std::vector<std::string> boundary_names() const override { return {}; }
-  std::vector<BoundaryEdge> boundary_edges(const std::string&) const override { return {}; }
 
  private:
   std::vector<AffineElement> elements_;

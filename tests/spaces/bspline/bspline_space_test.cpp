@@ -17,6 +17,7 @@
 
 #include "config/config_node.hpp"
 #include "config/errors.hpp"
+#include "spaces/closed_forms.hpp"
 #include "spaces/bspline/bspline_from_config.hpp"
 #include "spaces/bspline/tensor_bspline_space.hpp"
 #include "spaces/element_values.hpp"
@@ -438,7 +439,7 @@ TEST(BSplineSpace, ClosedFormMatricesMatchQuadratureAndKeepTheirKernel) {
                                       v.dyy * w.asDiagonal() * v.dyy.transpose()}};
       for (const auto& [form, expected] : gauss) {
         DoubleDoubleMatrix exact;
-        ASSERT_TRUE(s->closed_form_element_matrix_double_double(e, form, exact));
+        ASSERT_TRUE(s->closed_forms()->element_matrix(e, form, exact));
         const double scale = expected.cwiseAbs().maxCoeff();
         EXPECT_LT((exact.hi - expected).cwiseAbs().maxCoeff(), 1e-12 * scale) << "element " << e;
         EXPECT_EQ(exact.hi, exact.hi.transpose());

@@ -6,7 +6,7 @@
 #include <cmath>
 
 #include "spaces/g1/g1_space.hpp"
-#include "spaces/g1/gradient_jump.hpp"
+#include "tests/support/patch_gradient_jump.hpp"
 #include "spaces/g1/multipatch_domains.hpp"
 
 using namespace iga;

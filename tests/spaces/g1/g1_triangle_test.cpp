@@ -14,7 +14,7 @@
 #include "tests/spaces/g1/g1_test_support.hpp"
 #include "config/errors.hpp"
 #include "spaces/g1/g1_space.hpp"
-#include "spaces/g1/gradient_jump.hpp"
+#include "tests/support/patch_gradient_jump.hpp"
 #include "spaces/g1/multipatch_domains.hpp"
 #include "tests/support/test_support.hpp"
 

@@ -6,6 +6,7 @@
 #include <numbers>
 
 #include "assembly/integrators.hpp"
+#include "spaces/closed_forms.hpp"
 #include "spaces/element_values.hpp"
 #include "spaces/tmesh/tmesh_space.hpp"
 #include "tests/support/test_support.hpp"
@@ -33,13 +34,13 @@ TEST(TMeshClosedForm, MatchesTheQuadratureMatrices) {
         ev.reinit(e, *space.quadrature(e, 2 * space.degree() + 1));
         MatrixXld quadrature, closed;
         element_matrix_extended(form, ev, quadrature);
-        ASSERT_TRUE(space.closed_form_element_matrix_extended(e, form, closed));
+        ASSERT_TRUE(space.closed_forms()->element_matrix(e, form, closed));
         ASSERT_EQ(closed.rows(), quadrature.rows());
         ASSERT_EQ(closed.cols(), quadrature.cols());
         const long double scale = quadrature.cwiseAbs().maxCoeff();
         worst = std::max(worst, static_cast<double>((closed - quadrature).cwiseAbs().maxCoeff() / scale));
         Eigen::MatrixXd closed_double;
-        ASSERT_TRUE(space.closed_form_element_matrix(e, form, closed_double));
+        ASSERT_TRUE(space.closed_forms()->element_matrix(e, form, closed_double));
         EXPECT_LT((closed_double - closed.cast<double>()).cwiseAbs().maxCoeff(), 1e-15 * static_cast<double>(scale));
       }
       std::cout << section << " n=" << n << " form " << static_cast<int>(form) << ": max relative difference " << worst
@@ -62,9 +63,9 @@ TEST(TMeshClosedForm, DoubleDoubleMatchesTheQuadratureAndLongDoubleMatrices) {
         ev.reinit(e, *space.quadrature(e, 2 * space.degree() + 1));
         DoubleDoubleMatrix quadrature, closed;
         element_matrix_double_double(form, ev, quadrature);
-        ASSERT_TRUE(space.closed_form_element_matrix_double_double(e, form, closed));
+        ASSERT_TRUE(space.closed_forms()->element_matrix(e, form, closed));
         MatrixXld extended;
-        ASSERT_TRUE(space.closed_form_element_matrix_extended(e, form, extended));
+        ASSERT_TRUE(space.closed_forms()->element_matrix(e, form, extended));
         ASSERT_EQ(closed.rows(), quadrature.rows());
         ASSERT_EQ(closed.cols(), quadrature.cols());
         const long double scale = extended.cwiseAbs().maxCoeff();
@@ -116,7 +117,7 @@ TEST(TMeshClosedForm, FineCellsNeedFewerExtraPointsAndStayExact) {
       ev.reinit(e, *space.quadrature(e, degree));
       MatrixXld quadrature, closed;
       element_matrix_extended(form, ev, quadrature);
-      ASSERT_TRUE(space.closed_form_element_matrix_extended(e, form, closed));
+      ASSERT_TRUE(space.closed_forms()->element_matrix(e, form, closed));
       worst = std::max(worst, static_cast<double>((closed - quadrature).cwiseAbs().maxCoeff() / quadrature.cwiseAbs().maxCoeff()));
     }
     EXPECT_LT(worst, 1e-13) << "form " << static_cast<int>(form);

@@ -2,6 +2,7 @@
 /// Closed-form WS4 element matrices: the reference numbers of the WS4 notes §9, and equality with
 /// the quadrature-based element matrices of assembly/integrators on perturbed triangles.
 
+#include "spaces/closed_forms.hpp"
 #include "spaces/ws4/ws4_reference_matrices.hpp"
 
 #include <gtest/gtest.h>
@@ -43,7 +44,7 @@ TEST(Ws4Matrices, ClosedFormEqualsQuadratureOnPerturbedTriangles) {
     ElementValues ev(space, flags_for(form));
     for (int t = 0; t < space.num_elements(); ++t) {
       Eigen::MatrixXd closed, quad;
-      ASSERT_TRUE(space.closed_form_element_matrix(t, form, closed));
+      ASSERT_TRUE(space.closed_forms()->element_matrix(t, form, closed));
       ev.reinit(t, *space.quadrature(t, 8));
       element_matrix(form, ev, quad);
       EXPECT_LT((closed - quad).cwiseAbs().maxCoeff(), 1e-11 * quad.cwiseAbs().maxCoeff())
@@ -96,8 +97,8 @@ TEST(Ws4Matrices, DoubleDoubleElementMatricesEqualTheLongDoubleOnes) {
     for (int t = 0; t < space.num_elements(); ++t) {
       Eigen::Matrix<long double, Eigen::Dynamic, Eigen::Dynamic> extended;
       DoubleDoubleMatrix dd;
-      ASSERT_TRUE(space.closed_form_element_matrix_extended(t, form, extended));
-      ASSERT_TRUE(space.closed_form_element_matrix_double_double(t, form, dd));
+      ASSERT_TRUE(space.closed_forms()->element_matrix(t, form, extended));
+      ASSERT_TRUE(space.closed_forms()->element_matrix(t, form, dd));
       const double scale = static_cast<double>(extended.cwiseAbs().maxCoeff());
       for (int i = 0; i < 51; ++i)
         for (int j = 0; j < 51; ++j) {

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <iostream>
 
+#include "spaces/closed_forms.hpp"
 #include "spaces/ws4/ws4_hermite_transform.hpp"
 #include "spaces/ws4/ws4_reference_matrices.hpp"
 #include "spaces/ws4/ws4_space.hpp"
@@ -49,7 +50,7 @@ TEST(Ws4ShapeClasses, CachedDoubleDoubleElementMatricesAreTheElementsOwn) {
     double worst = 0.0;
     for (int t = 0; t < space.num_elements(); ++t) {
       DoubleDoubleMatrix cached, own;
-      ASSERT_TRUE(space.closed_form_element_matrix_double_double(t, form, cached));
+      ASSERT_TRUE(space.closed_forms()->element_matrix(t, form, cached));
       ws4_element_matrix_double_double(form, space.jacobian(t), ws4_exact_extraction(space.dof_geometry(t)), own);
       const double scale = own.hi.cwiseAbs().maxCoeff();
       for (int j = 0; j < 51; ++j)
@@ -72,17 +73,17 @@ TEST(Ws4ShapeClasses, PreparedSharedMatricesAreTheClosedFormsOfEveryElement) {
   const Ws4Space space(Triangulation::rectangle(12, 12, Point2(0, 0), Point2(1, 1)));
   const ShapeClasses& classes = space.shape_classes();
   for (BilinearForm form : {BilinearForm::mass, BilinearForm::bilaplace}) {
-    EXPECT_EQ(space.shared_closed_form_double_double(0, form), nullptr) << "nothing is shared before preparing";
-    space.prepare_closed_forms_double_double(form);
+    EXPECT_EQ(space.closed_forms()->shared<DoubleDoubleMatrix>(0, form), nullptr) << "nothing is shared before preparing";
+    space.closed_forms()->prepare<DoubleDoubleMatrix>(form);
     int shared = 0;
     for (int t = 0; t < space.num_elements(); ++t) {
-      const DoubleDoubleMatrix* m = space.shared_closed_form_double_double(t, form);
+      const DoubleDoubleMatrix* m = space.closed_forms()->shared<DoubleDoubleMatrix>(t, form);
       // Classes of one element keep no matrix; all others share the class's.
       ASSERT_EQ(m != nullptr, classes.count[classes.of_element[t]] > 1) << t;
       if (!m) continue;
       ++shared;
       DoubleDoubleMatrix own;
-      ASSERT_TRUE(space.closed_form_element_matrix_double_double(t, form, own));
+      ASSERT_TRUE(space.closed_forms()->element_matrix(t, form, own));
       EXPECT_EQ(m->hi, own.hi) << t;
       EXPECT_EQ(m->lo, own.lo) << t;
     }
