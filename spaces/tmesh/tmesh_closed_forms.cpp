@@ -99,8 +99,8 @@ bool TMeshClosedForms::double_double(int element, BilinearForm form, DoubleDoubl
   const Key key{static_cast<int>(form), cell.section_s, cell.x1 - cell.x0, cell.section_t, cell.y1 - cell.y0};
   auto it = cache.matrices.find(key);
   if (it == cache.matrices.end()) {
-    const SideIntegralsDD& sx = side_integrals_dd_.at({cell.section_s, cell.x1 - cell.x0});
-    const SideIntegralsDD& sy = side_integrals_dd_.at({cell.section_t, cell.y1 - cell.y0});
+    const SideIntegralsDD& sx = side_integrals_dd_.at(TMeshSpace::side_x(cell));
+    const SideIntegralsDD& sy = side_integrals_dd_.at(TMeshSpace::side_y(cell));
     const double hx = mesh_.width(element), hy = mesh_.height(element);
     const int nx = sx.size, ny = sy.size, nl = nx * ny;
     std::vector<DoubleDouble> k(static_cast<std::size_t>(nl) * nl, DoubleDouble(0.0));
@@ -206,8 +206,8 @@ bool TMeshClosedForms::extended(int element, BilinearForm form, LongDoubleMatrix
   const TMesh& mesh_ = space_.mesh();
   using MatrixL = Eigen::Matrix<long double, Eigen::Dynamic, Eigen::Dynamic>;
   const TCell& cell = mesh_.cells()[element];
-  const SideIntegrals& sx = side_integrals_.at({cell.section_s, cell.x1 - cell.x0});
-  const SideIntegrals& sy = side_integrals_.at({cell.section_t, cell.y1 - cell.y0});
+  const SideIntegrals& sx = side_integrals_.at(TMeshSpace::side_x(cell));
+  const SideIntegrals& sy = side_integrals_.at(TMeshSpace::side_y(cell));
   const long double hx = mesh_.width(element), hy = mesh_.height(element);
   // Terms c ∫ ∂x^a ∂y^b u ∂x^a' ∂y^b' v = c hx hy hx^-(a+a') hy^-(b+b') X(a, a') ⊗ Y(b, b').
   struct Term {

@@ -40,13 +40,13 @@ class TMeshClosedForms final : public ClosedForms {
   struct SideIntegrals {
     LongDoubleMatrix m[9];
   };
-  std::map<std::pair<int, std::int64_t>, SideIntegrals> side_integrals_;
+  std::map<TMeshSpace::SideKey, SideIntegrals> side_integrals_;
   /// The same side integrals in double-double ((n+1)^2 entries each, column-major).
   struct SideIntegralsDD {
     int size = 0;
     std::vector<DoubleDouble> m[9];
   };
-  std::map<std::pair<int, std::int64_t>, SideIntegralsDD> side_integrals_dd_;
+  std::map<TMeshSpace::SideKey, SideIntegralsDD> side_integrals_dd_;
   /// Distinguishes spaces in the per-thread cache of double-double cell matrices.
   std::uint64_t instance_id_ = 0;
 };

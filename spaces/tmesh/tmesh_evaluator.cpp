@@ -102,8 +102,8 @@ const TMeshSpace::TMeshEvaluator::Tables& TMeshSpace::TMeshEvaluator::tables(con
   if (it == cache_.end() && cache_.size() >= 256) cache_.clear();
   Tables& t = cache_[key];
   t.points = rule.points;
-  const SectionBernstein& bx = space_.bernstein(cell.section_s, lx);
-  const SectionBernstein& by = space_.bernstein(cell.section_t, ly);
+  const SectionBernstein& bx = space_.bernstein(TMeshSpace::side_x(cell));
+  const SectionBernstein& by = space_.bernstein(TMeshSpace::side_y(cell));
   const int n = bx.n(), q = rule.size();
   for (int d = 0; d < 3; ++d) {
     t.bx[d].resize(n + 1, q);
@@ -227,8 +227,8 @@ void TMeshSpace::TMeshEvaluator::evaluate_function(int element, const Quadrature
     }
   }
   if (!higher) return;
-  const SectionBernstein& bx = space_.bernstein(cell.section_s, cell.x1 - cell.x0);
-  const SectionBernstein& by = space_.bernstein(cell.section_t, cell.y1 - cell.y0);
+  const SectionBernstein& bx = space_.bernstein(TMeshSpace::side_x(cell));
+  const SectionBernstein& by = space_.bernstein(TMeshSpace::side_y(cell));
   const double hx = bx.h(), hy = by.h();
   const int n = bx.n();
   // D(a, b) = ∂x^a ∂y^b u_h at point k (reference derivatives carry h^d, see SectionBernstein).

@@ -22,9 +22,9 @@ TMeshSpace::TMeshSpace(TMesh mesh, int regularity, bool rectangular, std::string
   // Exact lattice lengths as keys: dyadic meshes have a handful of distinct cell sizes.
   for (int c = 0; c < mesh_.num_cells(); ++c) {
     const TCell& cell = mesh_.cells()[c];
-    const std::pair<int, std::int64_t> kx{cell.section_s, cell.x1 - cell.x0}, ky{cell.section_t, cell.y1 - cell.y0};
-    if (!bernstein_.count(kx)) bernstein_.emplace(kx, SectionBernstein(mesh_.sections()[kx.first], mesh_.width(c)));
-    if (!bernstein_.count(ky)) bernstein_.emplace(ky, SectionBernstein(mesh_.sections()[ky.first], mesh_.height(c)));
+    const SideKey kx = side_x(cell), ky = side_y(cell);
+    if (!bernstein_.count(kx)) bernstein_.emplace(kx, SectionBernstein(mesh_.sections()[cell.section_s], mesh_.width(c)));
+    if (!bernstein_.count(ky)) bernstein_.emplace(ky, SectionBernstein(mesh_.sections()[cell.section_t], mesh_.height(c)));
   }
   for (int c = 0; c < mesh_.num_cells(); ++c) mesh_size_ = std::max(mesh_size_, std::hypot(mesh_.width(c), mesh_.height(c)));
   // Extra degree of every rule for the largest w h of a non-polynomial section.

@@ -14,6 +14,7 @@
 #include <map>
 #include <memory>
 #include <mutex>
+#include <tuple>
 #include <vector>
 
 #include "spaces/space.hpp"
@@ -69,11 +70,16 @@ class TMeshSpace final : public Space, public LocallyRefinable {
   int regularity() const { return r_; }
   /// Physical box of a cell.
   void cell_box(int cell, Point2& lo, Point2& hi) const;
-  /// Bernstein basis of section `section` on a cell side of that lattice length (shared, immutable
-  /// after construction).
-  const SectionBernstein& bernstein(int section, std::int64_t length) const { return bernstein_.at({section, length}); }
-  /// Every (section, side lattice length) of the mesh with its Bernstein basis.
-  const std::map<std::pair<int, std::int64_t>, SectionBernstein>& bernstein_bases() const { return bernstein_; }
+  /// A cell side's one-dimensional basis is fixed by its section, its axis and its lattice length:
+  /// (section, axis 0 = x or 1 = y, length). The axis counts because a lattice unit may have
+  /// different physical lengths in x and y, and non-polynomial sections depend on the physical one.
+  using SideKey = std::tuple<int, int, std::int64_t>;
+  static SideKey side_x(const TCell& c) { return {c.section_s, 0, c.x1 - c.x0}; }
+  static SideKey side_y(const TCell& c) { return {c.section_t, 1, c.y1 - c.y0}; }
+  /// Bernstein basis of a cell side (shared, immutable after construction).
+  const SectionBernstein& bernstein(const SideKey& side) const { return bernstein_.at(side); }
+  /// Every cell side kind of the mesh with its Bernstein basis.
+  const std::map<SideKey, SectionBernstein>& bernstein_bases() const { return bernstein_; }
   /// Degree every rule gets beyond the polynomial one (non_polynomial_extra_degree).
   int extra_degree() const { return extra_degree_; }
 
@@ -88,7 +94,7 @@ class TMeshSpace final : public Space, public LocallyRefinable {
   bool rectangular_;
   std::string domain_;
   HermiteExtraction extraction_;
-  std::map<std::pair<int, std::int64_t>, SectionBernstein> bernstein_;
+  std::map<SideKey, SectionBernstein> bernstein_;
   std::unique_ptr<const ClosedForms> closed_forms_;
   double mesh_size_ = 0.0;
   int extra_degree_ = 0;

@@ -82,13 +82,11 @@ TEST(CheckSpace, EverySpaceOnEveryBuiltInFamily) {
 namespace iga {
 namespace {
 
-// Found by check_space, left to the owner of the T-mesh space: trigonometric and hyperbolic
-// sections on cells that are not square ((3 × 2) / 2 elements: 1.5 × 1 cells, refined once) give
-// basis functions whose values jump by ~0.1 (relative) across interior edges, while the same
-// sections on square cells, and polynomial sections on any cells, are continuous to 1e-15. The
-// polynomial sections do not depend on the cell width, so a width taken in the wrong direction
-// would show only here. Enable when fixed.
-TEST(CheckSpace, DISABLED_TMeshNonPolynomialSectionsOnNonSquareCellsAreContinuous) {
+// Found by check_space: the sections' Bernstein bases were keyed by (section, lattice length),
+// so on cells that are not square the x basis served the y side too. Trigonometric and hyperbolic
+// sections depend on the physical length (polynomial ones do not), and their basis functions
+// jumped by ~0.1 across interior edges of (3 × 2) / 2 elements (1.5 × 1 cells, refined once).
+TEST(CheckSpace, TMeshNonPolynomialSectionsOnNonSquareCellsAreContinuous) {
   for (const std::string section : {"trig", "hyperbolic"}) {
     SCOPED_TRACE(section);
     const SpacePtr space = test::space_from_yaml("domain: {type: rectangle, min: [0, 0], max: [3, 2]}\n"
