@@ -272,13 +272,12 @@ HermiteExtraction hermite_extraction(const TMesh& mesh, int r) {
   struct EndTables {
     Eigen::MatrixXd at0, at1;
   };
-  std::map<std::pair<int, std::int64_t>, EndTables> ends;
+  std::map<CellSideKey, EndTables> ends;
   for (int c = 0; c < nc; ++c) {
     const TCell& cell = mesh.cells()[c];
-    for (const auto& [key, h] : {std::make_pair(std::make_pair(cell.section_s, cell.x1 - cell.x0), mesh.width(c)),
-                                 std::make_pair(std::make_pair(cell.section_t, cell.y1 - cell.y0), mesh.height(c))})
+    for (const auto& [key, h] : {std::make_pair(side_key_x(cell), mesh.width(c)), std::make_pair(side_key_y(cell), mesh.height(c))})
       if (!ends.count(key)) {
-        const SectionBernstein bern(mesh.sections()[key.first], h);
+        const SectionBernstein bern(mesh.sections()[std::get<0>(key)], h);
         ends.emplace(key, EndTables{bern.derivatives(0.0, n), bern.derivatives(1.0, n)});
       }
   }
@@ -298,8 +297,8 @@ HermiteExtraction hermite_extraction(const TMesh& mesh, int r) {
       try {
         const TCell& cell = mesh.cells()[c];
         const double hx = mesh.width(c), hy = mesh.height(c);
-        const EndTables& bx = ends.at({cell.section_s, cell.x1 - cell.x0});
-        const EndTables& by = ends.at({cell.section_t, cell.y1 - cell.y0});
+        const EndTables& bx = ends.at(side_key_x(cell));
+        const EndTables& by = ends.at(side_key_y(cell));
         s.support.clear();
         for (int side = 0; side < 4; ++side) merge_into(s.support, traces[mesh.side_edge(c, side)].support);
         const int first_own = cbase[c], own = ni * ni;

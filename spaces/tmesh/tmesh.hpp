@@ -25,6 +25,13 @@ struct TCell {
   int section_s = 0, section_t = 0;
 };
 
+/// What fixes the one-dimensional basis of a cell side: (section, axis 0 = x or 1 = y, lattice
+/// length). The axis counts because a lattice unit may have different physical lengths in x and
+/// y, and non-polynomial sections depend on the physical length.
+using CellSideKey = std::tuple<int, int, std::int64_t>;
+inline CellSideKey side_key_x(const TCell& c) { return {c.section_s, 0, c.x1 - c.x0}; }
+inline CellSideKey side_key_y(const TCell& c) { return {c.section_t, 1, c.y1 - c.y0}; }
+
 struct TVertex {
   std::int64_t x = 0, y = 0;
   bool t_junction = false;  ///< lies in the interior of a side of some cell

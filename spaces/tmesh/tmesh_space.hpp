@@ -70,12 +70,10 @@ class TMeshSpace final : public Space, public LocallyRefinable {
   int regularity() const { return r_; }
   /// Physical box of a cell.
   void cell_box(int cell, Point2& lo, Point2& hi) const;
-  /// A cell side's one-dimensional basis is fixed by its section, its axis and its lattice length:
-  /// (section, axis 0 = x or 1 = y, length). The axis counts because a lattice unit may have
-  /// different physical lengths in x and y, and non-polynomial sections depend on the physical one.
-  using SideKey = std::tuple<int, int, std::int64_t>;
-  static SideKey side_x(const TCell& c) { return {c.section_s, 0, c.x1 - c.x0}; }
-  static SideKey side_y(const TCell& c) { return {c.section_t, 1, c.y1 - c.y0}; }
+  /// A cell side's one-dimensional basis (tmesh.hpp: CellSideKey).
+  using SideKey = CellSideKey;
+  static SideKey side_x(const TCell& c) { return side_key_x(c); }
+  static SideKey side_y(const TCell& c) { return side_key_y(c); }
   /// Bernstein basis of a cell side (shared, immutable after construction).
   const SectionBernstein& bernstein(const SideKey& side) const { return bernstein_.at(side); }
   /// Every cell side kind of the mesh with its Bernstein basis.
