@@ -29,6 +29,8 @@ CASES = [
     ("ws4 plate", "ws4-plate.yaml"),
     ("tmesh C1 n=3 plate", "tmesh-c1-plate.yaml"),
     ("g1 k=6 small study", "g1-k6-small.yaml"),
+    ("surface p=3 sphere (LB)", "surface-p3-sphere.yaml"),
+    ("g1_4split k=5 cube (LB)", "g1_4split-k5-cube.yaml"),
 ]
 
 
