@@ -1,4 +1,5 @@
 #include "output/element_drawing.hpp"
+#include "output/first_failure.hpp"
 
 #include <vtkCellType.h>
 
@@ -112,23 +113,10 @@ ElementDrawing draw_elements(const Space& space, bool lagrange_asked, int divisi
   // Pass 2 (parallel): the physical points, not yet merged.
   std::vector<double>& xyz = drawing.xyz;
   xyz.resize(3 * unmerged);
-  std::exception_ptr failure;
-  auto keep_failure = [&failure] {
-#pragma omp critical(iga_vtk_failure)
-    if (!failure) failure = std::current_exception();
-  };
-  // One evaluator per thread; a failure to make one is kept like an element's (the loop skips).
-  auto make_evaluator = [&]() -> std::unique_ptr<Space::Evaluator> {
-    try {
-      return space.make_evaluator();
-    } catch (...) {
-      keep_failure();
-      return nullptr;
-    }
-  };
+  FirstFailure failure;
 #pragma omp parallel if (num_elements > 1)
   {
-    const std::unique_ptr<Space::Evaluator> evaluator = make_evaluator();
+    const std::unique_ptr<Space::Evaluator> evaluator = failure.make_evaluator(space);
     PointValues geometry;
 #pragma omp for schedule(dynamic, 16)
     for (int e = 0; e < num_elements; ++e) {
@@ -149,11 +137,11 @@ ElementDrawing draw_elements(const Space& space, bool lagrange_asked, int divisi
           x[2] = ambient ? geometry.x3(2, k) : 0.0;
         }
       } catch (...) {
-        keep_failure();
+        failure.keep();
       }
     }
   }
-  if (failure) std::rethrow_exception(failure);
+  failure.rethrow();
 
   // Pass 3 (serial): merge coinciding points. Only points on an element's boundary can coincide
   // with another element's, except inside linear sub-cells, whose pieces repeat their shared points.

@@ -1,4 +1,5 @@
 #include "output/vtk_writer.hpp"
+#include "output/first_failure.hpp"
 
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
@@ -72,20 +73,7 @@ bool write_solution_vtu(const Space& space, const Eigen::VectorXd& coefficients,
   const std::vector<char>& owner = drawing.owner;
   std::vector<double>& xyz = drawing.xyz;
   const auto num_points = static_cast<vtkIdType>(drawing.num_points);
-  std::exception_ptr failure;
-  auto keep_failure = [&failure] {
-#pragma omp critical(iga_vtk_failure)
-    if (!failure) failure = std::current_exception();
-  };
-  // One evaluator per thread; a failure to make one is kept like an element's (the loop skips).
-  auto make_evaluator = [&]() -> std::unique_ptr<Space::Evaluator> {
-    try {
-      return space.make_evaluator();
-    } catch (...) {
-      keep_failure();
-      return nullptr;
-    }
-  };
+  FirstFailure failure;
 
   auto coordinates = make_field("Points", 3, num_points);
   for (std::int64_t p = 0; p < unmerged; ++p)
@@ -123,11 +111,11 @@ bool write_solution_vtu(const Space& space, const Eigen::VectorXd& coefficients,
           for (Eigen::Index k = 0; k < n; ++k)
             for (int r = 0; r < stride; ++r) exact_at[static_cast<std::size_t>(stride) * ids[k] + r] = values(r, k);
         } catch (...) {
-          keep_failure();
+          failure.keep();
         }
       }
     }
-    if (failure) std::rethrow_exception(failure);
+    failure.rethrow();
   } else if (has_exact) {
 #pragma omp parallel for schedule(static)
     for (std::int64_t p = 0; p < unmerged; ++p) {
@@ -139,10 +127,10 @@ bool write_solution_vtu(const Space& space, const Eigen::VectorXd& coefficients,
         if (has_gradient) v[1] = options.exact.ux(x), v[2] = options.exact.uy(x);
         if (has_hessian) v[3] = options.exact.uxx(x), v[4] = options.exact.uxy(x), v[5] = options.exact.uyy(x);
       } catch (...) {
-        keep_failure();
+        failure.keep();
       }
     }
-    if (failure) std::rethrow_exception(failure);
+    failure.rethrow();
   }
   std::vector<double>().swap(xyz);
 
@@ -158,7 +146,7 @@ bool write_solution_vtu(const Space& space, const Eigen::VectorXd& coefficients,
   const unsigned flags = update_values | update_gradients | (options.laplacian || has_hessian ? update_hessians : 0u);
 #pragma omp parallel if (num_elements > 1)
   {
-    const std::unique_ptr<Space::Evaluator> evaluator = make_evaluator();
+    const std::unique_ptr<Space::Evaluator> evaluator = failure.make_evaluator(space);
     PointValues geometry;
     FunctionValues uh;
 #pragma omp for schedule(dynamic, 16)
@@ -214,11 +202,11 @@ bool write_solution_vtu(const Space& space, const Eigen::VectorXd& coefficients,
           if (has_hessian) element_h2[e] = std::sqrt(measure * sum_h2 / q);
         }
       } catch (...) {
-        keep_failure();
+        failure.keep();
       }
     }
   }
-  if (failure) std::rethrow_exception(failure);
+  failure.rethrow();
 
   const std::vector<int>& cell_element = drawing.cell_element;
   const auto num_cells = static_cast<vtkIdType>(cell_element.size());
