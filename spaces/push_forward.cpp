@@ -50,9 +50,9 @@ void push_forward(const std::vector<GeometryJet>& geometry, const ReferenceDeriv
   }
 }
 
-void extract_reference_derivatives(const Eigen::SparseMatrix<double>& extraction, const Eigen::MatrixXd (&tables)[6],
-                                   unsigned flags, ReferenceDerivatives& ref) {
-  // Per point, a gather over each column's few nonzeros (10-15 % of a G1 extraction): the tables'
+void extract_reference_derivatives(const Extraction& extraction, const LocalTables& tables, unsigned flags,
+                                   ReferenceDerivatives& ref) {
+  // Per point, a gather over each row's few nonzeros (10-15 % of a G1 extraction): the tables'
   // column of that point is a few hundred bytes, the output written in order. Eigen's product with
   // the transposed sparse matrix walks rows of column-major arrays instead, several times slower.
   const bool values = (flags & update_values) != 0;
@@ -60,13 +60,7 @@ void extract_reference_derivatives(const Eigen::SparseMatrix<double>& extraction
   const bool hess = (flags & update_hessians) != 0;
   Eigen::MatrixXd* out[6] = {&ref.value, &ref.dxi, &ref.deta, &ref.dxixi, &ref.dxieta, &ref.detaeta};
   const bool wanted[6] = {values, grads, grads, hess, hess, hess};
-  if (!extraction.isCompressed()) {
-    const auto ct = extraction.transpose();
-    for (int t = 0; t < 6; ++t)
-      if (wanted[t]) *out[t] = ct * tables[t];
-    return;
-  }
-  const Eigen::Index n = extraction.cols();
+  const Eigen::Index n = extraction.rows();
   const Eigen::Index q = tables[0].cols();
   const int* begin = extraction.outerIndexPtr();
   const int* row = extraction.innerIndexPtr();
@@ -109,10 +103,14 @@ void extract_reference_derivatives(const Eigen::SparseMatrix<double>& extraction
   }
 }
 
-void contract_reference_derivatives(const Eigen::SparseMatrix<double>& extraction, const Eigen::MatrixXd (&tables)[6],
+void contract_reference_derivatives(const Extraction& extraction, const LocalTables& tables,
                                     const Eigen::VectorXd& active_coefficients, unsigned flags,
                                     ReferenceDerivatives& one) {
-  const Eigen::VectorXd local = extraction * active_coefficients;
+  contract_local_derivatives(tables, extraction.transpose() * active_coefficients, flags, one);
+}
+
+void contract_local_derivatives(const LocalTables& tables, const Eigen::VectorXd& local, unsigned flags,
+                                ReferenceDerivatives& one) {
   const bool grads = (flags & (update_gradients | update_hessians)) != 0;
   const bool hess = (flags & update_hessians) != 0;
   one.value.noalias() = local.transpose() * tables[0];  // push_forward of one function reads values
@@ -127,10 +125,10 @@ void contract_reference_derivatives(const Eigen::SparseMatrix<double>& extractio
   }
 }
 
-void integrate_extracted(const Eigen::SparseMatrix<double>& extraction, const Eigen::MatrixXd& value_table,
+void integrate_extracted(const Extraction& extraction, const Eigen::MatrixXd& value_table,
                          const Eigen::VectorXd& weights, Eigen::VectorXd& local) {
   const Eigen::VectorXd weighted = value_table * weights;
-  local.noalias() = extraction.transpose() * weighted;
+  local.noalias() = extraction * weighted;
 }
 
 void take_geometry(const std::vector<GeometryJet>& jets, PointValues& out) {
@@ -146,15 +144,25 @@ void take_geometry(const std::vector<GeometryJet>& jets, PointValues& out) {
 void take_single_function(const PointValues& single, unsigned flags, PointValues& geometry, FunctionValues& out) {
   geometry.x = single.x;
   geometry.jacobian = single.jacobian;
+  geometry.x3 = single.x3;  // surfaces in 3D (empty in the plane)
+  geometry.jacobian3 = single.jacobian3;
+  geometry.normal3 = single.normal3;
+  geometry.mean_curvature = single.mean_curvature;
   if (flags & update_values) out.value = single.value.row(0).transpose();
   if (flags & update_gradients) {
     out.dx = single.dx.row(0).transpose();
     out.dy = single.dy.row(0).transpose();
+    if (single.dz.size() > 0) out.dz = single.dz.row(0).transpose();
   }
   if (flags & update_hessians) {
     out.dxx = single.dxx.row(0).transpose();
     out.dxy = single.dxy.row(0).transpose();
     out.dyy = single.dyy.row(0).transpose();
+    if (single.dzz.size() > 0) {
+      out.dxz = single.dxz.row(0).transpose();
+      out.dyz = single.dyz.row(0).transpose();
+      out.dzz = single.dzz.row(0).transpose();
+    }
   }
 }
 

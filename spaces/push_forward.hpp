@@ -7,6 +7,7 @@
 #include <Eigen/SparseCore>
 #include <vector>
 
+#include "spaces/element_core.hpp"
 #include "spaces/space.hpp"
 
 namespace iga {
@@ -25,28 +26,32 @@ struct ReferenceDerivatives {
 };
 
 /// The reference data of an element's active functions from the tables of its local basis at the
-/// q points (value, d/dxi, d/deta, d²/dxi², d²/dxi deta, d²/deta²; local x q each) and its sparse
-/// extraction (local x active): only what `flags` asks for (hessians imply gradients).
-void extract_reference_derivatives(const Eigen::SparseMatrix<double>& extraction, const Eigen::MatrixXd (&tables)[6],
-                                   unsigned flags, ReferenceDerivatives& ref);
+/// q points (value, d/dxi, d/deta, d²/dxi², d²/dxi deta, d²/deta²; local x q each) and its
+/// extraction (active x local, element_core.hpp): only what `flags` asks for (hessians imply gradients).
+void extract_reference_derivatives(const Extraction& extraction, const LocalTables& tables, unsigned flags,
+                                   ReferenceDerivatives& ref);
 
 /// The reference data of one function Σ_i c_i φ_i (c: the element's active coefficients): the
 /// coefficients go through the extraction first (one local vector), then one row per table,
 /// instead of extracting every active function at every point.
-void contract_reference_derivatives(const Eigen::SparseMatrix<double>& extraction, const Eigen::MatrixXd (&tables)[6],
+void contract_reference_derivatives(const Extraction& extraction, const LocalTables& tables,
                                     const Eigen::VectorXd& active_coefficients, unsigned flags,
                                     ReferenceDerivatives& one);
 
+/// The same from the local coefficients (C_eᵀ c, or c itself when the extraction is the identity).
+void contract_local_derivatives(const LocalTables& tables, const Eigen::VectorXd& local, unsigned flags,
+                                ReferenceDerivatives& one);
+
 /// Σ_q weights(q) φ_i(x_q) for the active functions: tables' values times weights, then the
 /// extraction (the load vector's transposed evaluation).
-void integrate_extracted(const Eigen::SparseMatrix<double>& extraction, const Eigen::MatrixXd& value_table,
+void integrate_extracted(const Extraction& extraction, const Eigen::MatrixXd& value_table,
                          const Eigen::VectorXd& weights, Eigen::VectorXd& local);
 
 /// out.x and out.jacobian from the geometry jets alone (an evaluator's evaluate_geometry).
 void take_geometry(const std::vector<GeometryJet>& jets, PointValues& out);
 
 /// Row 0 of the physical arrays of `single` (one function pushed forward) into `out`, and its
-/// points and Jacobians into `geometry`.
+/// points and Jacobians (on surfaces also normals and mean curvature) into `geometry`.
 void take_single_function(const PointValues& single, unsigned flags, PointValues& geometry, FunctionValues& out);
 
 /// Fill out.x, out.jacobian and the physical arrays requested by `flags` from reference data and

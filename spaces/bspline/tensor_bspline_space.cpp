@@ -5,7 +5,7 @@
 #include <stdexcept>
 
 #include "spaces/bspline/bspline_basis_1d.hpp"
-#include "spaces/push_forward.hpp"
+#include "spaces/extracted_evaluator.hpp"
 
 namespace iga {
 
@@ -24,7 +24,8 @@ bool contains_breakpoints(const KnotVector& space, const KnotVector& geometry) {
 }  // namespace
 
 // ---------------------------------------------------------------------------------------------
-// Evaluator: Bernstein tables per rule, then per element only extraction + geometry + push-forward.
+// Evaluator specialisation (element_core.hpp): Bernstein tables per rule, then per element the two
+// 1D extractions (sum factorization) + geometry + push-forward.
 
 class TensorBSplineSpace::TensorEvaluator final : public Space::Evaluator {
  public:
@@ -44,8 +45,6 @@ class TensorBSplineSpace::TensorEvaluator final : public Space::Evaluator {
  private:
   /// tu_, tv_: the element's 1D active functions and derivatives up to order nd at the points.
   void active_1d(int element, const QuadratureRule& rule, int nd);
-  /// jets_: the geometry map at the points (second derivatives only when `hess`).
-  void geometry_jets(int element, const QuadratureRule& rule, bool hess);
 
   /// Bernstein values and derivatives (orders 0..2) at the points of one rule: (p+1) x q each.
   struct Tables {
@@ -137,7 +136,7 @@ void TensorBSplineSpace::TensorEvaluator::evaluate(int element, const Quadrature
         }
       }
   s.element_dofs(element, out.dofs);
-  geometry_jets(element, rule, hess);
+  space_.element_jets(element, rule, hess, jets_);
   push_forward(jets_, ref_, flags, out);
 }
 
@@ -170,13 +169,13 @@ void TensorBSplineSpace::TensorEvaluator::evaluate_function(int element, const Q
     one_.dxieta = reference(1, 1);
     one_.detaeta = reference(0, 2);
   }
-  geometry_jets(element, rule, hess);
+  space_.element_jets(element, rule, hess, jets_);
   push_forward(jets_, one_, flags | update_values, single_);
   take_single_function(single_, flags, geometry, out);
 }
 
 void TensorBSplineSpace::TensorEvaluator::evaluate_geometry(int element, const QuadratureRule& rule, PointValues& out) {
-  geometry_jets(element, rule, false);
+  space_.element_jets(element, rule, false, jets_);
   take_geometry(jets_, out);
   space_.element_dofs(element, out.dofs);
 }
@@ -189,8 +188,9 @@ void TensorBSplineSpace::TensorEvaluator::integrate_values(int element, const Qu
   local = Eigen::Map<const Eigen::VectorXd>(sums.data(), sums.size());
 }
 
-void TensorBSplineSpace::TensorEvaluator::geometry_jets(int element, const QuadratureRule& rule, bool hess) {
-  const TensorBSplineSpace& s = space_;
+void TensorBSplineSpace::element_jets(int element, const QuadratureRule& rule, bool hess,
+                                      std::vector<GeometryJet>& jets) const {
+  const TensorBSplineSpace& s = *this;
   const int nex = s.num_elements_u();
   const int ex = element % nex, ey = element / nex;
   const int q = rule.size();
@@ -199,17 +199,17 @@ void TensorBSplineSpace::TensorEvaluator::geometry_jets(int element, const Quadr
   s.element_box(element, lo, hi);
   const Point2 h = hi - lo;
   const int gsu = s.geometry_span_u_[ex], gsv = s.geometry_span_v_[ey];
-  jets_.resize(q);
+  jets.resize(q);
   if (s.geometry_->is_affine()) {
     // An affine map has one Jacobian and no curvature: evaluate it once per element.
     GeometryJet g = s.geometry_->evaluate(lo + 0.5 * h, gsu, gsv, false);
     g.jacobian.col(0) *= h.x();
     g.jacobian.col(1) *= h.y();
     for (int k = 0; k < q; ++k) {
-      jets_[k].jacobian = g.jacobian;
-      jets_[k].x = g.x + g.jacobian * (rule.points[k] - Point2(0.5, 0.5));
-      jets_[k].hessian_x.setZero();
-      jets_[k].hessian_y.setZero();
+      jets[k].jacobian = g.jacobian;
+      jets[k].x = g.x + g.jacobian * (rule.points[k] - Point2(0.5, 0.5));
+      jets[k].hessian_x.setZero();
+      jets[k].hessian_y.setZero();
     }
     return;
   }
@@ -223,9 +223,58 @@ void TensorBSplineSpace::TensorEvaluator::geometry_jets(int element, const Quadr
       g.hessian_x = g.hessian_x.cwiseProduct(scale);
       g.hessian_y = g.hessian_y.cwiseProduct(scale);
     }
-    jets_[k] = g;
+    jets[k] = g;
   }
 }
+
+
+/// The explicit core (element_core.hpp): the tensor Bernstein basis (local index a + b (p_u+1)),
+/// C_e = C_v ⊗ C_u built per element into the core's scratch (one core per evaluator, i.e. per
+/// thread), the patch map.
+struct TensorBSplineSpace::Core {
+  using Jet = GeometryJet;
+  static constexpr bool identity = false;
+  const TensorBSplineSpace& space;
+  mutable Eigen::SparseMatrix<double, Eigen::RowMajor> kron;
+
+  int kind(int /*e*/) const { return 0; }
+  int tabulate(int /*kind*/, const std::vector<Point2>& points, int /*order*/, LocalTables& t) const {
+    const int pu = space.knots_u_.degree(), pv = space.knots_v_.degree(), q = static_cast<int>(points.size());
+    const int du[6] = {0, 1, 0, 2, 1, 0}, dv[6] = {0, 0, 1, 0, 1, 2};
+    for (auto& table : t) table.resize((pu + 1) * (pv + 1), q);
+    for (int k = 0; k < q; ++k) {
+      const Eigen::MatrixXd bu = bernstein_derivatives(pu, points[k].x(), 2);
+      const Eigen::MatrixXd bv = bernstein_derivatives(pv, points[k].y(), 2);
+      for (int d = 0; d < 6; ++d)
+        for (int b = 0; b <= pv; ++b)
+          for (int a = 0; a <= pu; ++a) t[d](a + b * (pu + 1), k) = bu(du[d], a) * bv(dv[d], b);
+    }
+    return 2;
+  }
+  std::vector<int> active(int e) const {
+    std::vector<int> dofs;
+    space.element_dofs(e, dofs);
+    return dofs;
+  }
+  Extraction extraction(int e) const {
+    const Eigen::MatrixXd& cu = space.extraction_u_[e % space.num_elements_u()];
+    const Eigen::MatrixXd& cv = space.extraction_v_[e / space.num_elements_u()];
+    const Eigen::Index nu = cu.rows(), lu = cu.cols();
+    std::vector<Eigen::Triplet<double>> entries;
+    for (Eigen::Index b = 0; b < cv.rows(); ++b)
+      for (Eigen::Index a = 0; a < nu; ++a)
+        for (Eigen::Index m = 0; m < cv.cols(); ++m)
+          for (Eigen::Index l = 0; l < lu; ++l)
+            if (cu(a, l) * cv(b, m) != 0.0) entries.emplace_back(a + b * nu, l + m * lu, cu(a, l) * cv(b, m));
+    kron.resize(nu * cv.rows(), lu * cv.cols());
+    kron.setFromTriplets(entries.begin(), entries.end());
+    return Extraction(kron.rows(), kron.cols(), kron.nonZeros(), kron.outerIndexPtr(), kron.innerIndexPtr(),
+                      kron.valuePtr());
+  }
+  void map(int e, const QuadratureRule& rule, const LocalTables& /*t*/, int order, std::vector<Jet>& jets) const {
+    space.element_jets(e, rule, order >= 2, jets);
+  }
+};
 
 // ---------------------------------------------------------------------------------------------
 
@@ -255,6 +304,10 @@ TensorBSplineSpace::TensorBSplineSpace(std::shared_ptr<const PatchGeometry> geom
 
 std::unique_ptr<Space::Evaluator> TensorBSplineSpace::make_evaluator() const {
   return std::make_unique<TensorEvaluator>(*this);
+}
+
+std::unique_ptr<Space::Evaluator> TensorBSplineSpace::make_generic_evaluator() const {
+  return std::make_unique<ExtractedEvaluator<Core>>(Core{*this, {}});
 }
 
 int TensorBSplineSpace::regularity() const {

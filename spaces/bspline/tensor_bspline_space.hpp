@@ -17,12 +17,17 @@
 #include "spaces/bspline/knot_vector.hpp"
 #include "spaces/bspline/patch_geometry.hpp"
 #include "spaces/closed_forms.hpp"
+#include "spaces/element_core.hpp"
 #include "spaces/gauss_rule_cache.hpp"
+#include "spaces/push_forward.hpp"
 #include "spaces/space.hpp"
 
 namespace iga {
 
-class TensorBSplineSpace final : public Space {
+/// Its evaluator is a specialisation (element_core.hpp): sum factorization over the two 1D
+/// extractions instead of the (p_u+1)(p_v+1)-square extraction of the explicit core, which
+/// make_generic_evaluator evaluates through the generic path for check_space.
+class TensorBSplineSpace final : public Space, public FastEvaluator {
  public:
   /// Spline space of `knots_u` x `knots_v` on `geometry`. Both knot vectors must cover [0,1] and
   /// contain every breakpoint of the geometry (so the map is smooth on each element);
@@ -30,6 +35,8 @@ class TensorBSplineSpace final : public Space {
   TensorBSplineSpace(std::shared_ptr<const PatchGeometry> geometry, KnotVector knots_u, KnotVector knots_v);
 
   std::unique_ptr<Evaluator> make_evaluator() const override;
+  /// The explicit core: tensor Bernstein on the square, C_v ⊗ C_u, the patch map.
+  std::unique_ptr<Evaluator> make_generic_evaluator() const override;
   void element_dofs(int element, std::vector<int>& out) const override;
 
   /// Shared tensor Gauss rule exact for `degree` per direction (built once per degree).
@@ -48,14 +55,14 @@ class TensorBSplineSpace final : public Space {
   int num_elements_v() const { return knots_v_.num_spans(); }
   /// Parameter box [lo, hi] of an element.
   void element_box(int element, Point2& lo, Point2& hi) const;
-  /// Bézier extraction of element column ex (along u) and row ey (along v), (p+1) x (p+1).
-  const Eigen::MatrixXd& extraction_u(int ex) const { return extraction_u_[ex]; }
-  const Eigen::MatrixXd& extraction_v(int ey) const { return extraction_v_[ey]; }
+  /// The element map's jets at the points of `rule` (second derivatives only when `hess`).
+  void element_jets(int element, const QuadratureRule& rule, bool hess, std::vector<GeometryJet>& jets) const;
   /// Smallest continuity order of the interior knots of both directions (degree when there are none).
   int regularity() const;
 
  private:
   class TensorEvaluator;
+  struct Core;
   class ExactMatrices final : public ClosedForms {
    public:
     explicit ExactMatrices(const TensorBSplineSpace& space) : space_(space) {}
@@ -77,6 +84,7 @@ class TensorBSplineSpace final : public Space {
   std::shared_ptr<const PatchGeometry> geometry_;
   KnotVector knots_u_, knots_v_;
   int n_u_, n_v_;
+  /// Bézier extraction of each element column (along u) and row (along v), active × local (p+1)².
   std::vector<Eigen::MatrixXd> extraction_u_, extraction_v_;
   std::vector<int> geometry_span_u_, geometry_span_v_;  ///< geometry span of each element column/row
   double mesh_size_ = 0.0;

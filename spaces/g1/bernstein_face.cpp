@@ -8,10 +8,8 @@ namespace iga {
 
 namespace {
 
-int triangle_index(int k, int i, int j) { return j * (k + 1) - j * (j - 1) / 2 + i; }
-
 /// Triangle index from the exponents of (λ_0, λ_1, λ_2) = (w, u, v).
-int triangle_index_barycentric(int k, const int (&e)[3]) { return triangle_index(k, e[1], e[2]); }
+int triangle_index_barycentric(int k, const int (&e)[3]) { return bernstein_triangle_index(k, e[1], e[2]); }
 
 /// d-th derivative of x^n.
 double power_derivative(double x, int n, int d) {
@@ -42,7 +40,7 @@ void triangle_jet(int k, const Point2& uv, Eigen::Ref<Eigen::MatrixXd> out) {
         W[d] = power_derivative(w, l, d);
       }
       // w = 1 - u - v: every derivative of W picks up a factor -1.
-      const int id = triangle_index(k, i, j);
+      const int id = bernstein_triangle_index(k, i, j);
       out(0, id) = c * U[0] * V[0] * W[0];
       out(1, id) = c * (U[1] * V[0] * W[0] - U[0] * V[0] * W[1]);
       out(2, id) = c * (U[0] * V[1] * W[0] - U[0] * V[0] * W[1]);
@@ -105,7 +103,7 @@ std::vector<int> interior_coefficients(CellShape shape, int k) {
   for (int j = 2; j <= k - 2; ++j)
     for (int i = 2; i <= k - 2; ++i) {
       if (shape == CellShape::quadrilateral) out.push_back(i + j * (k + 1));
-      else if (k - i - j >= 2) out.push_back(triangle_index(k, i, j));
+      else if (k - i - j >= 2) out.push_back(bernstein_triangle_index(k, i, j));
     }
   return out;
 }

@@ -15,6 +15,9 @@
 
 namespace iga {
 
+/// Local index of the triangle's b_{i,j} = k!/(i!j!l!) u^i v^j w^l (exponents i of u, j of v).
+inline int bernstein_triangle_index(int k, int i, int j) { return j * (k + 1) - j * (j - 1) / 2 + i; }
+
 /// Number of Bernstein polynomials: (k+1)^2 or (k+1)(k+2)/2.
 int bernstein_count(CellShape shape, int k);
 

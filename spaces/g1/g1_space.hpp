@@ -46,8 +46,6 @@ class G1Space final : public Space {
   const G1Basis& basis() const { return basis_; }
 
  private:
-  class G1Evaluator;
-
   std::shared_ptr<const PatchMesh> mesh_;
   std::vector<EdgeGluing> gluing_;
   G1Basis basis_;

@@ -22,16 +22,6 @@ void tensor_tables(const SplitBSpline& b, const std::vector<Point2>& points, Eig
   }
 }
 
-const TensorTableCache::SixTables& TensorTableCache::at(const QuadratureRule& rule) {
-  auto it = cache_.find(&rule);
-  if (it != cache_.end() && it->second.points == rule.points) return it->second.t;
-  if (it == cache_.end() && cache_.size() >= 64) cache_.clear();
-  Tables& t = cache_[&rule];
-  t.points = rule.points;
-  tensor_tables(b_, rule.points, t.t);
-  return t.t;
-}
-
 Eigen::Matrix<double, 6, 1> face_jet(const SplitBSpline& b, const Eigen::VectorXd& c, const Point2& uv) {
   const int n = b.size();
   const Eigen::MatrixXd U = b.derivatives(uv.x(), 2), V = b.derivatives(uv.y(), 2);

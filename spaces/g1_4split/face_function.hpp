@@ -5,7 +5,6 @@
 /// Bernstein coefficients of a polynomial piece (one of the 4 sub-squares).
 
 #include <Eigen/Core>
-#include <map>
 #include <vector>
 
 #include "quadrature/quadrature_rule.hpp"
@@ -16,25 +15,6 @@ namespace iga {
 /// Tables of all (m+1)² tensor functions at the points, (m+1)² x q each: value, d/du, d/dv,
 /// d²/du², d²/dudv, d²/dv². A coordinate exactly 1/2 is evaluated on the right piece.
 void tensor_tables(const SplitBSpline& b, const std::vector<Point2>& points, Eigen::MatrixXd (&tables)[6]);
-
-/// tensor_tables at the points of each rule an evaluator is given, kept per rule (rules are shared
-/// through RulePtr, so the address identifies one; its points are compared to catch a reused
-/// address). One per evaluator, i.e. per thread; at most 64 rules are kept.
-class TensorTableCache {
- public:
-  using SixTables = Eigen::MatrixXd[6];
-  explicit TensorTableCache(const SplitBSpline& b) : b_(b) {}
-  /// The six tables of tensor_tables at `rule`'s points.
-  const SixTables& at(const QuadratureRule& rule);
-
- private:
-  struct Tables {
-    std::vector<Point2> points;
-    Eigen::MatrixXd t[6];
-  };
-  const SplitBSpline& b_;
-  std::map<const QuadratureRule*, Tables> cache_;
-};
 
 /// Value and derivatives of Σ c_l N_l at uv: (value, du, dv, duu, duv, dvv).
 Eigen::Matrix<double, 6, 1> face_jet(const SplitBSpline& b, const Eigen::VectorXd& coefficients, const Point2& uv);

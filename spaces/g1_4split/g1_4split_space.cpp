@@ -1,83 +1,51 @@
 #include "spaces/g1_4split/g1_4split_space.hpp"
 
-#include <Eigen/LU>
 #include <algorithm>
-#include <cmath>
-#include <stdexcept>
 
+#include "spaces/extracted_evaluator.hpp"
 #include "spaces/g1/boundary_parts.hpp"
 #include "spaces/g1_4split/face_function.hpp"
 #include "spaces/g1_4split/g1_4split_meshes.hpp"
-#include "spaces/push_forward.hpp"
 
 namespace iga {
 
-class G14Space::G14Evaluator final : public Space::Evaluator {
- public:
-  explicit G14Evaluator(const G14Space& s) : space_(s), tables_(s.basis_.bspline) {}
+namespace {
 
-  void evaluate(int element, const QuadratureRule& rule, unsigned flags, PointValues& out) override {
-    const TensorTableCache::SixTables& t = tables_.at(rule);
-    extract_reference_derivatives(space_.basis_.extraction[element], t, flags, ref_);
-    out.dofs = space_.basis_.face_dofs[element];
-    map_points(element, t, rule.size());
-    push_forward(jets_, ref_, flags, out);
+/// The explicit core (element_core.hpp): every face's tensor B-spline with the knot 1/2 (one kind),
+/// the sparse extraction of g1_4split_basis.hpp and the isoparametric map, whose coefficients go
+/// through the same tables.
+struct G14Core {
+  using Jet = GeometryJet;
+  static constexpr bool identity = false;
+  const G14Basis& basis;
+  const FaceGeometry& geometry;
+
+  int kind(int /*e*/) const { return 0; }
+  int tabulate(int /*kind*/, const std::vector<Point2>& points, int /*order*/, LocalTables& t) const {
+    tensor_tables(basis.bspline, points, t);
+    return 2;
   }
-
-  /// u_h through the extraction once per element, not every active function at every point.
-  void evaluate_function(int element, const QuadratureRule& rule, const Eigen::VectorXd& coefficients, unsigned flags,
-                         PointValues& geometry, FunctionValues& out) override {
-    if (flags & (update_laplacian_gradient | update_bilaplacian))
-      throw std::logic_error("evaluate_function: this space provides derivatives up to order 2 only");
-    const TensorTableCache::SixTables& t = tables_.at(rule);
-    const std::vector<int>& dofs = space_.basis_.face_dofs[element];
-    Eigen::VectorXd c(dofs.size());
-    for (std::size_t i = 0; i < dofs.size(); ++i) c(i) = coefficients(dofs[i]);
-    contract_reference_derivatives(space_.basis_.extraction[element], t, c, flags, one_);
-    geometry.dofs = dofs;
-    map_points(element, t, rule.size());
-    push_forward(jets_, one_, flags | update_values, single_);
-    take_single_function(single_, flags, geometry, out);
-  }
-
-  /// Points and Jacobians alone (VTK points, data checks; the load vector's integrate_values).
-  void evaluate_geometry(int element, const QuadratureRule& rule, PointValues& out) override {
-    map_points(element, tables_.at(rule), rule.size());
-    out.dofs = space_.basis_.face_dofs[element];
-    take_geometry(jets_, out);
-  }
-
-  void integrate_values(int element, const QuadratureRule& rule, const PointValues& /*geometry*/,
-                        const Eigen::VectorXd& weights, Eigen::VectorXd& local) override {
-    integrate_extracted(space_.basis_.extraction[element], tables_.at(rule)[0], weights, local);
-  }
-
- private:
-  /// jets_ at the q points of the tables t: the geometry's coefficients through the same tables.
-  void map_points(int element, const TensorTableCache::SixTables& t, int q) {
-    const Eigen::VectorXd& gx = space_.geometry_.x[element];
-    const Eigen::VectorXd& gy = space_.geometry_.y[element];
+  const std::vector<int>& active(int e) const { return basis.face_dofs[e]; }
+  Extraction extraction(int e) const { return extraction_view(basis.extraction[e]); }
+  void map(int e, const QuadratureRule& rule, const LocalTables& t, int /*order*/, std::vector<Jet>& jets) const {
+    const int q = rule.size();
     Eigen::Matrix<double, 6, Eigen::Dynamic> X(6, q), Y(6, q);
     for (int d = 0; d < 6; ++d) {
-      X.row(d) = gx.transpose() * t[d];
-      Y.row(d) = gy.transpose() * t[d];
+      X.row(d) = geometry.x[e].transpose() * t[d];
+      Y.row(d) = geometry.y[e].transpose() * t[d];
     }
-    jets_.resize(q);
+    jets.resize(q);
     for (int p = 0; p < q; ++p) {
-      GeometryJet& j = jets_[p];
+      GeometryJet& j = jets[p];
       j.x = Point2(X(0, p), Y(0, p));
       j.jacobian << X(1, p), X(2, p), Y(1, p), Y(2, p);
       j.hessian_x << X(3, p), X(4, p), X(4, p), X(5, p);
       j.hessian_y << Y(3, p), Y(4, p), Y(4, p), Y(5, p);
     }
   }
-
-  const G14Space& space_;
-  TensorTableCache tables_;
-  ReferenceDerivatives ref_, one_;
-  PointValues single_;
-  std::vector<GeometryJet> jets_;
 };
+
+}  // namespace
 
 G14Space::G14Space(const PatchMesh& coarse, const G14Options& options) : options_(options) {
   PatchMesh mesh = coarse;
@@ -132,7 +100,9 @@ G14Space::G14Space(const PatchMesh& coarse, const G14Options& options) : options
   set_facts(std::move(facts));
 }
 
-std::unique_ptr<Space::Evaluator> G14Space::make_evaluator() const { return std::make_unique<G14Evaluator>(*this); }
+std::unique_ptr<Space::Evaluator> G14Space::make_evaluator() const {
+  return std::make_unique<ExtractedEvaluator<G14Core>>(G14Core{basis_, geometry_});
+}
 
 RulePtr SplitRuleCache::cell(int degree) const {
   degree = std::max(degree, 0);

@@ -66,8 +66,6 @@ class G14Space final : public Space {
   const std::vector<SplitGluing>& gluing() const { return gluing_; }
 
  private:
-  class G14Evaluator;
-
   G14Options options_;
   std::shared_ptr<const PatchMesh> mesh_;  // level mesh: boundary parts and names
   std::shared_ptr<const QuadTopology> topology_;

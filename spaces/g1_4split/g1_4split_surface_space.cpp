@@ -9,8 +9,7 @@
 #include "geometry/surface_jet.hpp"
 #include "spaces/g1_4split/face_function.hpp"
 #include "spaces/g1_4split/g1_4split_geometry.hpp"
-#include "spaces/push_forward.hpp"
-#include "spaces/surface_values.hpp"
+#include "spaces/extracted_evaluator.hpp"
 
 namespace iga {
 
@@ -34,28 +33,31 @@ double face_fold_bound(const SplitBSpline& b, const std::array<Eigen::VectorXd, 
 
 }  // namespace
 
-class G14SurfaceSpace::Evaluator3 final : public Space::Evaluator {
- public:
-  explicit Evaluator3(const G14SurfaceSpace& s) : space_(s), tables_(s.surface_.basis.bspline) {}
+/// The explicit core (element_core.hpp): the planar space's local basis and extraction, and the
+/// fitted surface's map, whose three coordinates go through the same tables.
+struct G14SurfaceSpace::Core {
+  using Jet = SurfaceJet;
+  static constexpr bool identity = false;
+  const G14Surface& surface;
 
-  void evaluate(int element, const QuadratureRule& rule, unsigned flags, PointValues& out) override {
-    if (flags & (update_laplacian_gradient | update_bilaplacian))
-      throw std::logic_error("g1_4split surface: third and fourth derivatives on surfaces are not implemented");
-    const TensorTableCache::SixTables& t = tables_.at(rule);
-    const G14Basis& basis = space_.surface_.basis;
-    const unsigned need = flags & (update_values | update_gradients | update_hessians);
-    extract_reference_derivatives(basis.extraction[element], t, need, ref_);
-    out.dofs = basis.face_dofs[element];
+  int kind(int /*e*/) const { return 0; }
+  int tabulate(int /*kind*/, const std::vector<Point2>& points, int /*order*/, LocalTables& t) const {
+    tensor_tables(surface.basis.bspline, points, t);
+    return 2;
+  }
+  const std::vector<int>& active(int e) const { return surface.basis.face_dofs[e]; }
+  Extraction extraction(int e) const { return extraction_view(surface.basis.extraction[e]); }
+  void map(int e, const QuadratureRule& rule, const LocalTables& t, int order, std::vector<Jet>& jets) const {
     const int q = rule.size();
-    const bool second = flags & (update_surface_curvature | update_hessians);
+    const bool second = order >= 2;
     // Rows of X[c]: coordinate c of the map and its ξ, η, ξξ, ξη, ηη derivatives (tables' order).
     Eigen::Matrix<double, 6, Eigen::Dynamic> X[3];
     for (int c = 0; c < 3; ++c) {
       X[c].resize(6, q);
-      const Eigen::VectorXd& coef = space_.surface_.coefficients[element][c];
+      const Eigen::VectorXd& coef = surface.coefficients[e][c];
       for (int d = 0; d < (second ? 6 : 3); ++d) X[c].row(d) = coef.transpose() * t[d];
     }
-    jets_.resize(q);
+    jets.resize(q);
     for (int k = 0; k < q; ++k) {
       Eigen::Vector3d x;
       Eigen::Matrix<double, 3, 2> J;
@@ -67,20 +69,9 @@ class G14SurfaceSpace::Evaluator3 final : public Space::Evaluator {
         for (int ab = 0; ab < 3; ++ab) dd[ab](c) = X[c](3 + ab, k);
       }
       // The sign of n does not matter to the problems: H ∂_n u is the same for −n.
-      jets_[k] = second ? surface_jet(x, J, dd) : surface_jet(x, J);
+      jets[k] = second ? surface_jet(x, J, dd) : surface_jet(x, J);
     }
-    take_surface_geometry(jets_, flags, out);
-    if (flags & update_values) out.value = ref_.value;
-    if (flags & (update_gradients | update_hessians)) complete_surface_gradients(jets_, ref_.dxi, ref_.deta, out);
-    if (flags & update_hessians)
-      complete_surface_hessians(jets_, ref_.dxi, ref_.deta, {ref_.dxixi, ref_.dxieta, ref_.detaeta}, out);
   }
-
- private:
-  const G14SurfaceSpace& space_;
-  TensorTableCache tables_;
-  ReferenceDerivatives ref_;
-  std::vector<SurfaceJet> jets_;
 };
 
 G14SurfaceSpace::G14SurfaceSpace(const QuadTopology& coarse, const std::vector<Eigen::Vector3d>& vertices,
@@ -153,7 +144,9 @@ G14SurfaceSpace::G14SurfaceSpace(const QuadTopology& coarse, const std::vector<E
   set_facts(std::move(facts));
 }
 
-std::unique_ptr<Space::Evaluator> G14SurfaceSpace::make_evaluator() const { return std::make_unique<Evaluator3>(*this); }
+std::unique_ptr<Space::Evaluator> G14SurfaceSpace::make_evaluator() const {
+  return std::make_unique<ExtractedEvaluator<Core>>(Core{surface_});
+}
 
 std::vector<std::pair<std::string, std::string>> G14SurfaceSpace::make_parameters() const {
   const auto sci = [](double x) {

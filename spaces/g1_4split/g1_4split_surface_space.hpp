@@ -52,7 +52,7 @@ class G14SurfaceSpace final : public Space {
   double fold_bound() const { return fold_bound_; }
 
  private:
-  class Evaluator3;
+  struct Core;  // the explicit core of the generic evaluator (g1_4split_surface_space.cpp)
   /// degree, regularity, blending, refinement, faces, domain and the surface checks:
   /// surface_normal_jump, surface_min_metric_ratio, surface_fold_bound (see above).
   std::vector<std::pair<std::string, std::string>> make_parameters() const;

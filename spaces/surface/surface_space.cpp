@@ -5,8 +5,8 @@
 #include <stdexcept>
 
 #include "geometry/rsd/bezier_jet.hpp"
-#include "spaces/surface/reference_bernstein.hpp"
-#include "spaces/surface_values.hpp"
+#include "spaces/g1/bernstein_face.hpp"
+#include "spaces/extracted_evaluator.hpp"
 
 namespace iga {
 
@@ -72,7 +72,7 @@ SurfaceBernsteinSpace::SurfaceBernsteinSpace(std::shared_ptr<const rsd::RsdSurfa
           for (int a = 0; a < 3; ++a) k[a] = b1 * s[0][a] + b2 * s[1][a] + b3 * s[2][a];
           const auto [it, inserted] = numbering.try_emplace(lattice_key(tri, n, k), dimension_);
           if (inserted) ++dimension_;
-          dofs[bezier_index(p, b1, b2)] = it->second;
+          dofs[bernstein_triangle_index(p, b2, b3)] = it->second;
         }
       // Edges of the reference triangle: 0 = corners (0,1), 1 = (1,2), 2 = (2,0). An element edge
       // lies on a mesh edge when both corners have the same zero barycentric.
@@ -107,34 +107,36 @@ SurfaceBernsteinSpace::SurfaceBernsteinSpace(std::shared_ptr<const rsd::RsdSurfa
   set_facts(std::move(facts));
 }
 
-namespace {
+/// The explicit core (element_core.hpp): degree-p Bernstein on the reference triangle (the G1
+/// faces' local basis, bernstein_face.hpp: λ = (1 − ξ − η, ξ, η)), the
+/// identity extraction (the active functions are the Bernstein polynomials, numbered through the
+/// patch lattice) and the patch map composed with the sub-triangle's affine map.
+struct SurfaceBernsteinSpace::Core {
+  using Jet = SurfaceJet;
+  static constexpr bool identity = true;
+  const SurfaceBernsteinSpace& space;
 
-class SurfaceEvaluator : public Space::Evaluator {
- public:
-  explicit SurfaceEvaluator(const SurfaceBernsteinSpace& space) : space_(space) {}
-
-  void evaluate(int element, const QuadratureRule& points, unsigned flags, PointValues& out) override {
-    if (flags & (update_laplacian_gradient | update_bilaplacian))
-      throw std::logic_error("surface space: third and fourth derivatives on surfaces are not implemented");
-    const ReferenceBernstein& table = tables_.get(space_.degree(), points, flags & update_hessians);
-    const SurfaceBernsteinSpace::Element& el = space_.element(element);
-    const BezierTriangle& patch = space_.surface().patches[el.patch];
-    // The element map is the patch F composed with the affine map of the sub-triangle,
+  int kind(int /*e*/) const { return 0; }
+  int tabulate(int /*kind*/, const std::vector<Point2>& points, int /*order*/, LocalTables& t) const {
+    bernstein_tables(CellShape::triangle, space.degree_, points, t);
+    return 2;
+  }
+  const std::vector<int>& active(int e) const { return space.dofs_[e]; }
+  void map(int e, const QuadratureRule& rule, const LocalTables& /*t*/, int order, std::vector<Jet>& jets) const {
+    const Element& el = space.elements_[e];
+    const BezierTriangle& patch = space.surface_->patches[el.patch];
     // t = c0 + ξ (c1 − c0) + η (c2 − c0) in patch barycentrics: x_ξ = Σ_a ∂_aF u_a and
     // x_ξη = Σ_ab ∂_abF u_a v_b with u = c1 − c0, v = c2 − c0.
     const Eigen::Vector3d dir[2] = {el.corner[1] - el.corner[0], el.corner[2] - el.corner[0]};
-    const bool second = flags & (update_surface_curvature | update_hessians);
-    const int q = points.size();
-    space_.element_dofs(element, out.dofs);
-    jets_.resize(q);
-    for (int k = 0; k < q; ++k) {
-      const Point2& r = points.points[k];
-      const Eigen::Vector3d t = el.corner[0] + r.x() * dir[0] + r.y() * dir[1];
-      const BezierJet jet = bezier_jet(patch, t, second);
+    const bool second = order >= 2;
+    jets.resize(rule.size());
+    for (int k = 0; k < rule.size(); ++k) {
+      const Point2& r = rule.points[k];
+      const BezierJet jet = bezier_jet(patch, el.corner[0] + r.x() * dir[0] + r.y() * dir[1], second);
       Eigen::Matrix<double, 3, 2> J;
       for (int c = 0; c < 2; ++c) J.col(c) = jet.d[0] * dir[c](0) + jet.d[1] * dir[c](1) + jet.d[2] * dir[c](2);
       if (!second) {
-        jets_[k] = surface_jet(jet.x, J);
+        jets[k] = surface_jet(jet.x, J);
         continue;
       }
       const auto along = [&](const Eigen::Vector3d& u, const Eigen::Vector3d& v) {
@@ -143,25 +145,13 @@ class SurfaceEvaluator : public Space::Evaluator {
           for (int b = 0; b < 3; ++b) s += u(a) * v(b) * jet.dd[a][b];
         return s;
       };
-      jets_[k] = surface_jet(jet.x, J, {along(dir[0], dir[0]), along(dir[0], dir[1]), along(dir[1], dir[1])});
+      jets[k] = surface_jet(jet.x, J, {along(dir[0], dir[0]), along(dir[0], dir[1]), along(dir[1], dir[1])});
     }
-    take_surface_geometry(jets_, flags, out);
-    if (flags & update_values) out.value = table.value;
-    if (flags & (update_gradients | update_hessians)) complete_surface_gradients(jets_, table.dxi, table.deta, out);
-    if (flags & update_hessians)
-      complete_surface_hessians(jets_, table.dxi, table.deta, {table.dxixi, table.dxieta, table.detaeta}, out);
   }
-
- private:
-  const SurfaceBernsteinSpace& space_;
-  ReferenceBernsteinCache tables_;
-  std::vector<SurfaceJet> jets_;
 };
 
-}  // namespace
-
 std::unique_ptr<Space::Evaluator> SurfaceBernsteinSpace::make_evaluator() const {
-  return std::make_unique<SurfaceEvaluator>(*this);
+  return std::make_unique<ExtractedEvaluator<Core>>(Core{*this});
 }
 
 }  // namespace iga

@@ -46,6 +46,8 @@ class SurfaceBernsteinSpace : public Space {
   const Element& element(int e) const { return elements_[e]; }
 
  private:
+  struct Core;  // the explicit core of the generic evaluator (surface_space.cpp)
+
   std::shared_ptr<const rsd::RsdSurface> surface_;
   std::shared_ptr<const SurfacePatches> patches_;
   int degree_, subdivisions_;

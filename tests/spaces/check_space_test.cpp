@@ -5,7 +5,9 @@
 // Jumps across interior edges up to the declared continuity at round-off (1e-9 relative: the
 // extractions come from solves), partition of unity where the basis has it (Bernstein and
 // B-spline bases), quadrature exact on monomials up to degree 2p, evaluate_function equal to the
-// contraction of evaluate (values, gradients, Hessians; surfaces included) to round-off.
+// contraction of evaluate (values, gradients, Hessians; surfaces included) to round-off, and an
+// evaluator specialisation (B-spline sum factorization) equal to the generic evaluator on the
+// space's explicit core (tables → C_e → push-forward) to round-off: the same sums in another order.
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -61,16 +63,18 @@ TEST(CheckSpace, EverySpaceOnEveryBuiltInFamily) {
     const SpacePtr space = test::space_from_yaml("domain: " + c.domain + "\nspace: " + c.space + "\n", c.level);
     const int stride = std::max(1, space->num_elements() / 24);
     const test::SpaceCheck r = test::check_space(*space, stride, 1e-3);
-    std::printf("%-10s %-44.44s pou %.0e grad %.1e/%.1e hess %.1e/%.1e jumps %.0e %.0e (%d edges, C%d) quad %.0e fv %.0e\n",
+    std::printf("%-10s %-44.44s pou %.0e grad %.1e/%.1e hess %.1e/%.1e jumps %.0e %.0e (%d edges, C%d) quad %.0e fv %.0e ve %.0e\n",
                 space->type().c_str(), c.domain.c_str(), r.partition_of_unity, r.gradient_fd, r.gradient_fd_half,
                 r.hessian_fd, r.hessian_fd_half, r.value_jump, r.gradient_jump, r.edges_checked,
-                space->continuity(), r.quadrature, r.function_values);
+                space->continuity(), r.quadrature, r.function_values, r.evaluator_vs_extraction);
     if (c.partition_of_unity) EXPECT_LT(r.partition_of_unity, 1e-12);
     EXPECT_LT(r.gradient_fd_half, 0.3 * r.gradient_fd + 1e-9);
     EXPECT_LT(r.hessian_fd_half, 0.3 * r.hessian_fd + 1e-9);
     EXPECT_LT(r.hessian_fd, 1e-3);  // h² times third derivatives of size 1/h_e³ on the coarse elements
     EXPECT_LT(r.quadrature, 1e-13);
     EXPECT_LT(r.function_values, 1e-13);  // the same sums in another order
+    if (space->type() == "bspline") EXPECT_GE(r.evaluator_vs_extraction, 0.0);  // it has a fast kernel
+    EXPECT_LT(r.evaluator_vs_extraction, 1e-13);
     if (space->continuity() >= 0) EXPECT_LT(r.value_jump, 1e-9);
     if (space->continuity() >= 1) EXPECT_LT(r.gradient_jump, 1e-9);
   }

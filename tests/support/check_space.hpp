@@ -10,7 +10,10 @@
 ///  - jumps of values and of gradients across interior edges (Space::interior_edges());
 ///  - quadrature exactness of quadrature(e, d) on the monomials ξ^a η^b of degree ≤ d;
 ///  - Evaluator::evaluate_function (a space's own contraction, or the default) against the
-///    contraction of evaluate's arrays with the same coefficients: values, gradients, Hessians.
+///    contraction of evaluate's arrays with the same coefficients: values, gradients, Hessians;
+///  - evaluator vs extraction: a space with an evaluator specialisation (FastEvaluator,
+///    spaces/element_core.hpp) against the generic evaluator on its explicit core, every array of
+///    evaluate, evaluate_function, evaluate_geometry and integrate_values.
 /// Derivative errors are relative, |error| / (|reference| + 1) per function; with step h a
 /// central difference errs by O(h²) (truncation) + O(ε/h) (round-off); both h and h/2 are measured,
 /// so that a test can ask for the factor 4 of a consistent derivative instead of a bound that
@@ -22,6 +25,7 @@
 #include <cmath>
 #include <vector>
 
+#include "spaces/element_core.hpp"
 #include "spaces/space.hpp"
 
 namespace iga::test {
@@ -37,6 +41,8 @@ struct SpaceCheck {
   int edges_checked = 0;
   double function_values = 0;     ///< max |evaluate_function − Σ c_i (evaluate)| / (|Σ|c_i| ...| + 1)
   double quadrature = 0;          ///< max |Q(ξ^a η^b) − ∫ ξ^a η^b| over degrees ≤ 2p
+  /// FastEvaluator spaces: max |fast − generic| / (max |generic| + 1) per array; -1: no fast kernel.
+  double evaluator_vs_extraction = -1;
 };
 
 namespace detail {
@@ -46,6 +52,43 @@ inline QuadratureRule points_rule(const std::vector<Point2>& points) {
   r.points = points;
   r.weights.assign(points.size(), 1.0);
   return r;
+}
+
+/// Largest |a − b| / (max |b| + 1) (arrays of the same shape; empty arrays agree).
+inline double relative_difference(const Eigen::MatrixXd& a, const Eigen::MatrixXd& b) {
+  if (a.size() == 0 && b.size() == 0) return 0.0;
+  if (a.rows() != b.rows() || a.cols() != b.cols()) return 1e300;
+  return (a - b).cwiseAbs().maxCoeff() / (b.cwiseAbs().maxCoeff() + 1);
+}
+
+/// The fast evaluator `fast` against `generic` on element e at the rule: every array of evaluate,
+/// of evaluate_function (coefficients c), the points of evaluate_geometry and integrate_values.
+inline double compare_evaluators(Space::Evaluator& fast, Space::Evaluator& generic, int e, const QuadratureRule& rule,
+                                 const Eigen::VectorXd& c) {
+  const unsigned all = update_values | update_gradients | update_hessians;
+  double worst = 0;
+  PointValues a, b;
+  fast.evaluate(e, rule, all, a);
+  generic.evaluate(e, rule, all, b);
+  if (a.dofs != b.dofs) return 1e300;
+  for (auto m : {&PointValues::value, &PointValues::dx, &PointValues::dy, &PointValues::dz, &PointValues::dxx,
+                 &PointValues::dxy, &PointValues::dyy, &PointValues::dxz, &PointValues::dyz, &PointValues::dzz})
+    worst = std::max(worst, relative_difference(a.*m, b.*m));
+  worst = std::max(worst, relative_difference(a.x, b.x));
+  FunctionValues fa, fb;
+  fast.evaluate_function(e, rule, c, all, a, fa);
+  generic.evaluate_function(e, rule, c, all, b, fb);
+  for (auto m : {&FunctionValues::value, &FunctionValues::dx, &FunctionValues::dy, &FunctionValues::dz,
+                 &FunctionValues::dxx, &FunctionValues::dxy, &FunctionValues::dyy, &FunctionValues::dzz})
+    worst = std::max(worst, relative_difference(fa.*m, fb.*m));
+  fast.evaluate_geometry(e, rule, a);
+  generic.evaluate_geometry(e, rule, b);
+  worst = std::max(worst, relative_difference(a.x, b.x));
+  Eigen::VectorXd la, lb;
+  const Eigen::VectorXd w = Eigen::VectorXd::LinSpaced(rule.size(), 1.0, 2.0);
+  fast.integrate_values(e, rule, a, w, la);
+  generic.integrate_values(e, rule, b, w, lb);
+  return std::max(worst, relative_difference(la, lb));
 }
 
 /// The 3×2 Jacobian of point k in ambient coordinates (planar: z row zero).
@@ -65,6 +108,9 @@ inline double factorial(int n) { return n <= 1 ? 1.0 : n * factorial(n - 1); }
 inline SpaceCheck check_space(const Space& space, int stride = 1, double h = 1e-4) {
   SpaceCheck out;
   auto ev = space.make_evaluator();
+  const auto* fast = dynamic_cast<const FastEvaluator*>(&space);
+  std::unique_ptr<Space::Evaluator> generic = fast ? fast->make_generic_evaluator() : nullptr;
+  if (generic) out.evaluator_vs_extraction = 0;
   const unsigned all = update_values | update_gradients | update_hessians;
   for (int e = 0; e < space.num_elements(); e += stride) {
     const bool tri = space.cell_shape(e) == CellShape::triangle;
@@ -125,6 +171,9 @@ inline SpaceCheck check_space(const Space& space, int stride = 1, double h = 1e-
         compare(pv.dyz, fv.dyz);
         compare(pv.dzz, fv.dzz);
       }
+      if (generic)
+        out.evaluator_vs_extraction =
+            std::max(out.evaluator_vs_extraction, detail::compare_evaluators(*ev, *generic, e, *rule, c));
     }
     // Quadrature: monomials of the reference coordinates up to degree 2p (per direction on squares).
     const int d = 2 * space.degree();
