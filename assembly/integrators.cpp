@@ -132,24 +132,28 @@ void SymmetricSquaresIntegrator::unit_matrix(const ElementValues& ev, DoubleDoub
 namespace {
 bool on_surface(const PointValues& v) { return v.dz.size() > 0; }
 
-class MassIntegrator final : public SymmetricSquaresIntegrator {
+/// A standard form: its tag names it and is its closed-form key.
+template <BilinearForm Kind, unsigned Flags>
+class Standard : public SymmetricSquaresIntegrator {
  public:
   using SymmetricSquaresIntegrator::SymmetricSquaresIntegrator;
-  unsigned flags() const override { return update_values; }
-  std::string name() const override { return to_string(BilinearForm::mass); }
-  std::optional<BilinearForm> closed_form_kind() const override { return BilinearForm::mass; }
+  unsigned flags() const override { return Flags; }
+  std::string name() const override { return to_string(Kind); }
+  std::optional<BilinearForm> closed_form_kind() const override { return Kind; }
+};
+
+class MassIntegrator final : public Standard<BilinearForm::mass, update_values> {
+ public:
+  using Standard::Standard;
   int operands(const PointValues& v, Scratch&, Operand (&out)[kMaxOperands]) const override {
     out[0] = {&v.value, nullptr, 1};
     return 1;
   }
 };
 
-class StiffnessIntegrator final : public SymmetricSquaresIntegrator {
+class StiffnessIntegrator final : public Standard<BilinearForm::laplace, update_gradients> {
  public:
-  using SymmetricSquaresIntegrator::SymmetricSquaresIntegrator;
-  unsigned flags() const override { return update_gradients; }
-  std::string name() const override { return to_string(BilinearForm::laplace); }
-  std::optional<BilinearForm> closed_form_kind() const override { return BilinearForm::laplace; }
+  using Standard::Standard;
   int operands(const PointValues& v, Scratch&, Operand (&out)[kMaxOperands]) const override {
     out[0] = {&v.dx, nullptr, 1};
     out[1] = {&v.dy, nullptr, 1};
@@ -159,12 +163,9 @@ class StiffnessIntegrator final : public SymmetricSquaresIntegrator {
   }
 };
 
-class BilaplaceIntegrator final : public SymmetricSquaresIntegrator {
+class BilaplaceIntegrator final : public Standard<BilinearForm::bilaplace, update_hessians> {
  public:
-  using SymmetricSquaresIntegrator::SymmetricSquaresIntegrator;
-  unsigned flags() const override { return update_hessians; }
-  std::string name() const override { return to_string(BilinearForm::bilaplace); }
-  std::optional<BilinearForm> closed_form_kind() const override { return BilinearForm::bilaplace; }
+  using Standard::Standard;
   int operands(const PointValues& v, Scratch& scratch, Operand (&out)[kMaxOperands]) const override {
     // Δφ = trace of the Hessian as a double-double (exact in the plane): its rounding to double
     // (hi) is a perturbation of the functions, not of K, for the double and long double sums.
@@ -185,12 +186,9 @@ class BilaplaceIntegrator final : public SymmetricSquaresIntegrator {
   }
 };
 
-class HessianIntegrator final : public SymmetricSquaresIntegrator {
+class HessianIntegrator final : public Standard<BilinearForm::hessian, update_hessians> {
  public:
-  using SymmetricSquaresIntegrator::SymmetricSquaresIntegrator;
-  unsigned flags() const override { return update_hessians; }
-  std::string name() const override { return to_string(BilinearForm::hessian); }
-  std::optional<BilinearForm> closed_form_kind() const override { return BilinearForm::hessian; }
+  using Standard::Standard;
   int operands(const PointValues& v, Scratch&, Operand (&out)[kMaxOperands]) const override {
     // D²u : D²v over the symmetric entries, off-diagonal ones twice.
     out[0] = {&v.dxx, nullptr, 1};
