@@ -9,6 +9,7 @@
 #include <cassert>
 #include <memory>
 #include <numeric>
+#include <optional>
 
 namespace iga {
 
@@ -21,13 +22,6 @@ Assembler::Assembler(const Space& space)
 }
 
 namespace {
-
-void quadrature_matrix(BilinearForm form, const ElementValues& ev, Eigen::MatrixXd& local) {
-  element_matrix(form, ev, local);
-}
-void quadrature_matrix(BilinearForm form, const ElementValues& ev, DoubleDoubleMatrix& local) {
-  element_matrix_double_double(form, ev, local);
-}
 
 /// Double-double entries accumulated straight into the two arrays of a SplitMatrix: no array of
 /// pairs to allocate (16 bytes per nonzero) and split afterwards.
@@ -73,45 +67,60 @@ void scatter_owned_columns(const std::vector<int>& dofs, const Local& local, con
 }
 
 /// Element e's matrix of `form` as the assembler sums it (Local: double or double-double): the
-/// space's shared closed form (returned in place), its own closed form, else quadrature on `ev`.
-/// `dofs` gets the rows' global indices (closed forms: element_dofs order, read from `table`).
+/// space's shared closed form (returned in place), its own closed form, else quadrature on `ev`;
+/// closed forms are of unit coefficient and scaled here. `dofs` gets the rows' global indices
+/// (closed forms: element_dofs order, read from `table`).
 template <class Local>
-const Local* element_local(const Space& space, const ElementDofTable* table, int e, BilinearForm form, int quad_degree,
-                           ElementValues& ev, Local& local, std::vector<int>& dofs) {
+const Local* element_local(const Space& space, const ElementDofTable* table, int e, const Integrator& form,
+                           int quad_degree, ElementValues& ev, Local& local, std::vector<int>& dofs) {
   const auto table_dofs = [&] {
     if (table) dofs.assign(table->begin(e), table->begin(e + 1));
     else space.element_dofs(e, dofs);
   };
-  if (const ClosedForms* closed = space.closed_forms()) {
-    if (const Local* shared = closed->shared<Local>(e, form)) {
+  const std::optional<BilinearForm> kind = form.closed_form_kind();
+  const ClosedForms* closed = kind ? space.closed_forms() : nullptr;
+  if (closed) {
+    const double c = form.coefficient();
+    if (const Local* shared = closed->shared<Local>(e, *kind)) {
       table_dofs();
-      return shared;
+      if (c == 1.0) return shared;
+      local = *shared;
+      Integrator::scale(local, c);
+      return &local;
     }
-    if (closed->element_matrix(e, form, local)) {
+    if (closed->element_matrix(e, *kind, local)) {
       table_dofs();
+      if (c != 1.0) Integrator::scale(local, c);
       return &local;
     }
   }
   ev.reinit(e, *space.quadrature(e, quad_degree));
-  quadrature_matrix(form, ev, local);
+  form.element_matrix(ev, local);
   dofs = ev.dofs();
   return &local;
 }
 
-}  // namespace
-
-void prepare_extended_element_matrices(const Space& space, BilinearForm form) {
-  if (const ClosedForms* closed = space.closed_forms()) closed->prepare<DoubleDoubleMatrix>(form);
+/// Let the space build the closed-form tables `form` will read, outside the element loop.
+template <class Local>
+void prepare_closed_forms(const Space& space, const Integrator& form) {
+  const ClosedForms* closed = space.closed_forms();
+  if (closed && form.closed_form_kind()) closed->prepare<Local>(*form.closed_form_kind());
 }
 
-const DoubleDoubleMatrix& extended_element_matrix(const Space& space, int e, BilinearForm form, int quad_degree,
+}  // namespace
+
+void prepare_extended_element_matrices(const Space& space, const Integrator& form) {
+  prepare_closed_forms<DoubleDoubleMatrix>(space, form);
+}
+
+const DoubleDoubleMatrix& extended_element_matrix(const Space& space, int e, const Integrator& form, int quad_degree,
                                                   ElementValues& ev, DoubleDoubleMatrix& scratch,
                                                   std::vector<int>& dofs) {
   return *element_local(space, nullptr, e, form, quad_degree, ev, scratch, dofs);
 }
 
 template <class Local, class Values>
-void Assembler::assemble(BilinearForm form, int quad_degree, Values values) const {
+void Assembler::assemble(const Integrator& form, int quad_degree, Values values) const {
   // Blocks of consecutive elements: their matrices are computed in parallel into slots, then each
   // thread adds the columns it owns (an equal share of the dofs), element by element. Every entry
   // receives its contributions in element order whatever the number of threads (bitwise the same
@@ -120,8 +129,7 @@ void Assembler::assemble(BilinearForm form, int quad_degree, Values values) cons
   keep_eigen_serial();
   // The space's closed forms in the scalar of Local, where it has them (rows in element_dofs
   // order, as the table); quadrature otherwise.
-  const ClosedForms* closed = space_.closed_forms();
-  if (closed) closed->prepare<Local>(form);
+  prepare_closed_forms<Local>(space_, form);
   const int ne = space_.num_elements();
   const int dim = space_.dimension();
   using Scalar = typename Local::Scalar;
@@ -133,7 +141,7 @@ void Assembler::assemble(BilinearForm form, int quad_degree, Values values) cons
   std::vector<std::vector<int>> slot_dofs(slots.size());
 #pragma omp parallel if (worth_threads(ne))
   {
-    ElementValues ev(space_, flags_for(form));
+    ElementValues ev(space_, form.flags());
     const int threads = omp_get_num_threads(), me = omp_get_thread_num();
     const int own_first = static_cast<int>(static_cast<long>(dim) * me / threads);
     const int own_last = static_cast<int>(static_cast<long>(dim) * (me + 1) / threads);
@@ -152,13 +160,13 @@ void Assembler::assemble(BilinearForm form, int quad_degree, Values values) cons
   }
 }
 
-SparseMatrix Assembler::matrix(BilinearForm form, int quad_degree) const {
+SparseMatrix Assembler::matrix(const Form& form, int quad_degree) const {
   SparseMatrix A = pattern_;
-  assemble<Eigen::MatrixXd>(form, quad_degree, A.valuePtr());
+  assemble<Eigen::MatrixXd>(*form, quad_degree, A.valuePtr());
   return A;
 }
 
-SplitMatrix Assembler::matrix_extended(BilinearForm form, int quad_degree) const {
+SplitMatrix Assembler::matrix_extended(const Form& form, int quad_degree) const {
   // Entries summed in double-double: long double sums of h⁻² contributions would round each entry
   // by ≈ 5e-20 of its size, an error the biharmonic system amplifies by h⁻⁴.
   // The pattern copied and the values zeroed by all threads: first touch of a few hundred
@@ -177,7 +185,7 @@ SplitMatrix Assembler::matrix_extended(BilinearForm form, int quad_degree) const
     hi[p] = 0.0;
     lo[p] = 0.0;
   }
-  assemble<DoubleDoubleMatrix>(form, quad_degree, SplitValues{hi, lo});
+  assemble<DoubleDoubleMatrix>(*form, quad_degree, SplitValues{hi, lo});
   // Renormalised so that high is each entry rounded to double.
 #pragma omp parallel for schedule(static) if (worth_threads(nnz / 1024))
   for (Eigen::Index p = 0; p < nnz; ++p) {

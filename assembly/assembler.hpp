@@ -20,12 +20,13 @@ class Assembler {
   /// The space must outlive the assembler.
   explicit Assembler(const Space& space);
 
-  /// Global matrix of `form`, integrated with rules of polynomial degree `quad_degree`.
-  SparseMatrix matrix(BilinearForm form, int quad_degree) const;
+  /// Global matrix of `form` (closed-form element matrices where the space has them, else
+  /// integrated with rules of polynomial degree `quad_degree`).
+  SparseMatrix matrix(const Form& form, int quad_degree) const;
   /// The same matrix with element matrices and sums in long double, kept as high + low parts:
   /// what the residual of iterative refinement needs (see split_matrix.hpp). About as fast as
   /// `matrix` when the basis evaluation dominates; the long double products cost more at high degree.
-  SplitMatrix matrix_extended(BilinearForm form, int quad_degree) const;
+  SplitMatrix matrix_extended(const Form& form, int quad_degree) const;
   /// Load vector ∫ f N_i.
   Eigen::VectorXd load(const ScalarField& f, int quad_degree) const;
   /// The same with f evaluated at all points of an element at once (row 0 of its values).
@@ -38,7 +39,7 @@ class Assembler {
   /// array aligned with the pattern's, or the two arrays of a SplitMatrix); in parallel without
   /// locks (see the definition).
   template <class Local, class Values>
-  void assemble(BilinearForm form, int quad_degree, Values values) const;
+  void assemble(const Integrator& form, int quad_degree, Values values) const;
 
   const Space& space_;
   ElementDofTable table_;
@@ -50,9 +51,9 @@ class Assembler {
 /// same kernel, for callers that assemble some elements themselves: a rank of a distributed solve).
 /// Returns `scratch` or a matrix the space shares; `dofs` gets the global indices of its rows.
 /// Call prepare_extended_element_matrices once first (not from threads).
-const DoubleDoubleMatrix& extended_element_matrix(const Space& space, int element, BilinearForm form, int quad_degree,
+const DoubleDoubleMatrix& extended_element_matrix(const Space& space, int element, const Integrator& form, int quad_degree,
                                                   ElementValues& ev, DoubleDoubleMatrix& scratch,
                                                   std::vector<int>& dofs);
-void prepare_extended_element_matrices(const Space& space, BilinearForm form);
+void prepare_extended_element_matrices(const Space& space, const Integrator& form);
 
 }  // namespace iga

@@ -20,8 +20,8 @@ void for_each_element_matrix(const Space& space, const std::vector<int>& element
                              int quad_degree, const ElementMatrixSink& sink) {
   unsigned flags = 0;
   for (const FormTerm& t : terms) {
-    prepare_extended_element_matrices(space, t.form);
-    flags |= flags_for(t.form);
+    prepare_extended_element_matrices(space, *t);
+    flags |= t->flags();
   }
   const int n = static_cast<int>(elements.size());
   std::vector<DoubleDoubleMatrix> slots(std::min(n, batch_size));
@@ -37,17 +37,16 @@ void for_each_element_matrix(const Space& space, const std::vector<int>& element
 #pragma omp for schedule(dynamic, 8)
       for (int k = 0; k < m; ++k) {
         const int e = elements[first + k];
-        matrix[k] = &extended_element_matrix(space, e, terms[0].form, quad_degree, ev, slots[k], dofs[k]);
-        if (terms.size() == 1 && terms[0].coefficient == 1.0) continue;
-        // Σ c · form in double-double; every term's rows come in the element's one order.
+        matrix[k] = &extended_element_matrix(space, e, *terms[0], quad_degree, ev, slots[k], dofs[k]);
+        if (terms.size() == 1) continue;
+        // Σ terms in double-double (coefficients applied by each term); every term's rows come in
+        // the element's one order.
         DoubleDoubleMatrix& sum = slots[k];
         if (matrix[k] != &sum) sum = *matrix[k];
-        for (Eigen::Index j = 0; j < sum.cols(); ++j)
-          for (Eigen::Index i = 0; i < sum.rows(); ++i) sum.set(i, j, sum(i, j) * terms[0].coefficient);
         for (std::size_t t = 1; t < terms.size(); ++t) {
-          const DoubleDoubleMatrix& a = extended_element_matrix(space, e, terms[t].form, quad_degree, ev, term, term_dofs);
+          const DoubleDoubleMatrix& a = extended_element_matrix(space, e, *terms[t], quad_degree, ev, term, term_dofs);
           for (Eigen::Index j = 0; j < sum.cols(); ++j)
-            for (Eigen::Index i = 0; i < sum.rows(); ++i) sum.set(i, j, sum(i, j) + a(i, j) * terms[t].coefficient);
+            for (Eigen::Index i = 0; i < sum.rows(); ++i) sum.set(i, j, sum(i, j) + a(i, j));
         }
         matrix[k] = &sum;
       }

@@ -11,21 +11,15 @@
 
 #include "assembly/fields.hpp"
 #include "config/double_double.hpp"
-#include "spaces/bilinear_form.hpp"
+#include "assembly/integrator.hpp"
 #include "spaces/space.hpp"
 
 namespace iga {
 
-/// One term of a matrix Σ coefficient · form (Laplace–Beltrami with reaction: laplace + c mass).
-struct FormTerm {
-  BilinearForm form;
-  double coefficient = 1.0;
-};
-
 /// Receives one element's matrix: global indices of its rows and the matrix in double-double.
 using ElementMatrixSink = std::function<void(int element, const std::vector<int>& dofs, const DoubleDoubleMatrix&)>;
 
-/// The double-double matrix Σ c · form of each element of `elements` (the kernel of
+/// The double-double matrix Σ terms of each element of `elements` (the kernel of
 /// Assembler::matrix_extended: extended_element_matrix), handed to `sink` serially in the order
 /// given; the matrices are computed in parallel batches (OpenMP), so `sink` need not be thread-safe.
 void for_each_element_matrix(const Space& space, const std::vector<int>& elements, const std::vector<FormTerm>& terms,

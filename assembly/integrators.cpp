@@ -4,24 +4,20 @@
 
 namespace iga {
 
-unsigned flags_for(BilinearForm form) {
-  switch (form) {
-    case BilinearForm::mass: return update_values;
-    case BilinearForm::laplace: return update_gradients;
-    case BilinearForm::bilaplace:
-    case BilinearForm::hessian: return update_hessians;
-  }
-  return update_values;
+void Integrator::scale(DoubleDoubleMatrix& local, double c) {
+  for (Eigen::Index j = 0; j < local.cols(); ++j)
+    for (Eigen::Index i = 0; i < local.rows(); ++i) local.set(i, j, local(i, j) * c);
 }
 
-std::string to_string(BilinearForm form) {
-  switch (form) {
-    case BilinearForm::mass: return "mass";
-    case BilinearForm::laplace: return "laplace";
-    case BilinearForm::bilaplace: return "bilaplace";
-    case BilinearForm::hessian: return "hessian";
-  }
-  return "?";
+Form::Form(BilinearForm kind, double coefficient) {
+  // Indexed by the tag (the order of bilinear_form.hpp); coefficient 1 shares one object.
+  using Make = std::shared_ptr<const Integrator> (*)(double);
+  static constexpr Make make[kNumBilinearForms] = {mass_integrator, stiffness_integrator, bilaplace_integrator,
+                                                   hessian_integrator};
+  static const std::shared_ptr<const Integrator> unit[kNumBilinearForms] = {
+      make[0](1.0), make[1](1.0), make[2](1.0), make[3](1.0)};
+  const int k = static_cast<int>(kind);
+  integrator_ = coefficient == 1.0 ? unit[k] : make[k](coefficient);
 }
 
 namespace {
@@ -42,43 +38,27 @@ void add_weighted_square(const Eigen::MatrixXd& A, const Eigen::VectorXd& w, lon
   local.triangularView<Eigen::Upper>() += aw * a.transpose();
 }
 
-// The element matrix of `form`, accumulated in the scalar type of `local` (double, or long double
-// for the extended-precision residuals).
+// Σ_t f_t A_t diag(w) A_tᵀ accumulated in the scalar of `local` (double, or long double for the
+// extended-precision residuals); the operands' low parts are below what these sums resolve.
 template <class Local>
-void form_matrix(BilinearForm form, const ElementValues& ev, Local& local) {
+void squares_matrix(const SymmetricSquaresIntegrator& form, const ElementValues& ev, Local& local) {
   using Scalar = typename Local::Scalar;
-  const PointValues& v = ev.values();
-  const Eigen::VectorXd& w = ev.jxw();
+  thread_local SymmetricSquaresIntegrator::Scratch scratch;
+  SymmetricSquaresIntegrator::Operand ops[SymmetricSquaresIntegrator::kMaxOperands];
+  const int count = form.operands(ev.values(), scratch, ops);
   const int n = ev.num_functions();
   local.setZero(n, n);
-  switch (form) {
-    case BilinearForm::mass:
-      add_weighted_square(v.value, w, Scalar(1), local);
-      break;
-    case BilinearForm::laplace:
-      add_weighted_square(v.dx, w, Scalar(1), local);
-      add_weighted_square(v.dy, w, Scalar(1), local);
-      if (v.dz.size() > 0) add_weighted_square(v.dz, w, Scalar(1), local);  // surfaces in 3D
-      break;
-    case BilinearForm::bilaplace: {
-      // Δφ rounded once per function and point: a perturbation of the functions, not of K.
-      const Eigen::MatrixXd lap = v.dxx + v.dyy;
-      add_weighted_square(lap, w, Scalar(1), local);
-      break;
-    }
-    case BilinearForm::hessian:
-      add_weighted_square(v.dxx, w, Scalar(1), local);
-      add_weighted_square(v.dxy, w, Scalar(2), local);
-      add_weighted_square(v.dyy, w, Scalar(1), local);
-      break;
-  }
+  for (int t = 0; t < count; ++t) add_weighted_square(*ops[t].hi, ev.jxw(), Scalar(ops[t].factor), local);
   for (int j = 0; j < n; ++j)
     for (int i = j + 1; i < n; ++i) local(i, j) = local(j, i);
 }
 }  // namespace
 
-void element_matrix_extended(BilinearForm form, const ElementValues& ev, MatrixXld& local) {
-  form_matrix(form, ev, local);
+void SymmetricSquaresIntegrator::unit_matrix(const ElementValues& ev, Eigen::MatrixXd& local) const {
+  squares_matrix(*this, ev, local);
+}
+void SymmetricSquaresIntegrator::unit_matrix(const ElementValues& ev, MatrixXld& local) const {
+  squares_matrix(*this, ev, local);
 }
 
 namespace {
@@ -129,40 +109,17 @@ void add_weighted_square_double_double(const Eigen::MatrixXd& hi, const Eigen::M
 }
 }  // namespace
 
-void element_matrix_double_double(BilinearForm form, const ElementValues& ev, DoubleDoubleMatrix& local) {
-  const PointValues& v = ev.values();
-  const Eigen::VectorXd& w = ev.jxw();
+void SymmetricSquaresIntegrator::unit_matrix(const ElementValues& ev, DoubleDoubleMatrix& local) const {
+  thread_local Scratch scratch;
+  thread_local Eigen::MatrixXd s, e, zero;
+  Operand ops[kMaxOperands];
+  const int count = operands(ev.values(), scratch, ops);
   const int n = ev.num_functions();
-  thread_local Eigen::MatrixXd s, e, zero, lap_hi, lap_lo;
   s.setZero(n, n);
   e.setZero(n, n);
   zero.setZero(n, ev.num_points());
-  switch (form) {
-    case BilinearForm::mass:
-      add_weighted_square_double_double(v.value, zero, w, 1, s, e);
-      break;
-    case BilinearForm::laplace:
-      add_weighted_square_double_double(v.dx, zero, w, 1, s, e);
-      add_weighted_square_double_double(v.dy, zero, w, 1, s, e);
-      if (v.dz.size() > 0) add_weighted_square_double_double(v.dz, zero, w, 1, s, e);
-      break;
-    case BilinearForm::bilaplace:
-      // Δφ = φ_xx + φ_yy exactly, as a double-double.
-      lap_hi.resize(n, ev.num_points());
-      lap_lo.resize(n, ev.num_points());
-      for (Eigen::Index k = 0; k < lap_hi.size(); ++k) {
-        const DoubleDouble d = dd_detail::two_sum(v.dxx.data()[k], v.dyy.data()[k]);
-        lap_hi.data()[k] = d.hi;
-        lap_lo.data()[k] = d.lo;
-      }
-      add_weighted_square_double_double(lap_hi, lap_lo, w, 1, s, e);
-      break;
-    case BilinearForm::hessian:
-      add_weighted_square_double_double(v.dxx, zero, w, 1, s, e);
-      add_weighted_square_double_double(v.dxy, zero, w, 2, s, e);
-      add_weighted_square_double_double(v.dyy, zero, w, 1, s, e);
-      break;
-  }
+  for (int t = 0; t < count; ++t)
+    add_weighted_square_double_double(*ops[t].hi, ops[t].lo ? *ops[t].lo : zero, ev.jxw(), ops[t].factor, s, e);
   local.resize(n, n);
   for (int j = 0; j < n; ++j)
     for (int i = 0; i <= j; ++i) {
@@ -172,7 +129,89 @@ void element_matrix_double_double(BilinearForm form, const ElementValues& ev, Do
     }
 }
 
-void element_matrix(BilinearForm form, const ElementValues& ev, Eigen::MatrixXd& local) { form_matrix(form, ev, local); }
+namespace {
+bool on_surface(const PointValues& v) { return v.dz.size() > 0; }
+
+/// A standard form: its tag names it and is its closed-form key.
+template <BilinearForm Kind, unsigned Flags>
+class Standard : public SymmetricSquaresIntegrator {
+ public:
+  using SymmetricSquaresIntegrator::SymmetricSquaresIntegrator;
+  unsigned flags() const override { return Flags; }
+  std::string name() const override { return to_string(Kind); }
+  std::optional<BilinearForm> closed_form_kind() const override { return Kind; }
+};
+
+class MassIntegrator final : public Standard<BilinearForm::mass, update_values> {
+ public:
+  using Standard::Standard;
+  int operands(const PointValues& v, Scratch&, Operand (&out)[kMaxOperands]) const override {
+    out[0] = {&v.value, nullptr, 1};
+    return 1;
+  }
+};
+
+class StiffnessIntegrator final : public Standard<BilinearForm::laplace, update_gradients> {
+ public:
+  using Standard::Standard;
+  int operands(const PointValues& v, Scratch&, Operand (&out)[kMaxOperands]) const override {
+    out[0] = {&v.dx, nullptr, 1};
+    out[1] = {&v.dy, nullptr, 1};
+    if (!on_surface(v)) return 2;
+    out[2] = {&v.dz, nullptr, 1};
+    return 3;
+  }
+};
+
+class BilaplaceIntegrator final : public Standard<BilinearForm::bilaplace, update_hessians> {
+ public:
+  using Standard::Standard;
+  int operands(const PointValues& v, Scratch& scratch, Operand (&out)[kMaxOperands]) const override {
+    // Δφ = trace of the Hessian as a double-double (exact in the plane): its rounding to double
+    // (hi) is a perturbation of the functions, not of K, for the double and long double sums.
+    scratch.hi.resize(v.dxx.rows(), v.dxx.cols());
+    scratch.lo.resize(v.dxx.rows(), v.dxx.cols());
+    const bool surface = v.dzz.size() > 0;
+    for (Eigen::Index k = 0; k < scratch.hi.size(); ++k) {
+      DoubleDouble d = dd_detail::two_sum(v.dxx.data()[k], v.dyy.data()[k]);
+      if (surface) {
+        const DoubleDouble t = dd_detail::two_sum(d.hi, v.dzz.data()[k]);
+        d = dd_detail::quick_two_sum(t.hi, t.lo + d.lo);
+      }
+      scratch.hi.data()[k] = d.hi;
+      scratch.lo.data()[k] = d.lo;
+    }
+    out[0] = {&scratch.hi, &scratch.lo, 1};
+    return 1;
+  }
+};
+
+class HessianIntegrator final : public Standard<BilinearForm::hessian, update_hessians> {
+ public:
+  using Standard::Standard;
+  int operands(const PointValues& v, Scratch&, Operand (&out)[kMaxOperands]) const override {
+    // D²u : D²v over the symmetric entries, off-diagonal ones twice.
+    out[0] = {&v.dxx, nullptr, 1};
+    out[1] = {&v.dxy, nullptr, 2};
+    out[2] = {&v.dyy, nullptr, 1};
+    if (v.dzz.size() == 0) return 3;
+    out[3] = {&v.dxz, nullptr, 2};
+    out[4] = {&v.dyz, nullptr, 2};
+    out[5] = {&v.dzz, nullptr, 1};
+    return 6;
+  }
+};
+
+template <class T>
+std::shared_ptr<const Integrator> make(double coefficient) {
+  return std::make_shared<const T>(coefficient);
+}
+}  // namespace
+
+std::shared_ptr<const Integrator> mass_integrator(double c) { return make<MassIntegrator>(c); }
+std::shared_ptr<const Integrator> stiffness_integrator(double c) { return make<StiffnessIntegrator>(c); }
+std::shared_ptr<const Integrator> bilaplace_integrator(double c) { return make<BilaplaceIntegrator>(c); }
+std::shared_ptr<const Integrator> hessian_integrator(double c) { return make<HessianIntegrator>(c); }
 
 void element_load(const ScalarField& f, const ElementValues& ev, Eigen::VectorXd& local) {
   const PointValues& v = ev.values();

@@ -1,33 +1,70 @@
 #pragma once
 /// @file
-/// Element integrators: stateless functions from evaluated basis data to local matrices/vectors.
-/// Callers provide the output arrays (resized here), so threads never share scratch.
+/// The standard integrators, planar and on surfaces, and the element load. Each is a symmetric
+/// form Σ_t f_t ∫ (L_t u)(L_t v): a list of operands L_t φ (one row per function, one column per
+/// point) and exact factors f_t, summed as A diag(w) Aᵀ by one kernel per scalar (double, long
+/// double, double-double). On a surface (ambient dimension 3) the derivatives are the surface
+/// gradient and the covariant Hessian of PointValues, so the same objects give the surface forms:
+///   mass       ∫ u v
+///   stiffness  ∫ ∇u·∇v                  (surface: ∇_Γ; Laplace–Beltrami)
+///   bilaplace  ∫ Δu Δv                  (surface: Δ_Γ = trace of the covariant Hessian)
+///   hessian    ∫ D²u : D²v              (surface: covariant Hessians, all nine entries)
 
 #include <Eigen/Core>
-#include <string>
+#include <memory>
 
-#include "spaces/bilinear_form.hpp"
 #include "assembly/fields.hpp"
-#include "assembly/split_matrix.hpp"
-#include "spaces/element_values.hpp"
+#include "assembly/integrator.hpp"
 
 namespace iga {
 
+/// An integrator of the form Σ_t f_t ∫ (L_t u)(L_t v), written once for the three scalars.
+class SymmetricSquaresIntegrator : public Integrator {
+ public:
+  using Integrator::Integrator;
 
-/// Update flags an element loop needs for `form`.
-unsigned flags_for(BilinearForm form);
-std::string to_string(BilinearForm form);
+  /// L_t φ at the points: `hi` (+ `lo` where one rounding of a sum of derivatives would be too
+  /// much for double-double sums; null when hi is exact), times the exact factor f_t (1 or 2).
+  struct Operand {
+    const Eigen::MatrixXd* hi;
+    const Eigen::MatrixXd* lo;
+    double factor;
+  };
+  static constexpr int kMaxOperands = 6;
+  /// Scratch for operands the integrator computes (Δφ); one per thread.
+  struct Scratch {
+    Eigen::MatrixXd hi, lo;
+  };
+  /// The operands on `v`; returns how many.
+  virtual int operands(const PointValues& v, Scratch& scratch, Operand (&out)[kMaxOperands]) const = 0;
 
-/// Local matrix of `form` on the element last evaluated by `ev` (n x n, n = ev.num_functions()).
-void element_matrix(BilinearForm form, const ElementValues& ev, Eigen::MatrixXd& local);
+ protected:
+  void unit_matrix(const ElementValues& ev, Eigen::MatrixXd& local) const override;
+  void unit_matrix(const ElementValues& ev, MatrixXld& local) const override;
+  void unit_matrix(const ElementValues& ev, DoubleDoubleMatrix& local) const override;
+};
 
-/// The same local matrix with the quadrature sums in long double (the basis values stay double):
-/// the exact Gram matrix of the evaluated functions, to long double precision.
-void element_matrix_extended(BilinearForm form, const ElementValues& ev, MatrixXld& local);
+/// The standard integrators (tags: BilinearForm::mass, laplace, bilaplace, hessian).
+std::shared_ptr<const Integrator> mass_integrator(double coefficient = 1.0);
+std::shared_ptr<const Integrator> stiffness_integrator(double coefficient = 1.0);
+std::shared_ptr<const Integrator> bilaplace_integrator(double coefficient = 1.0);
+std::shared_ptr<const Integrator> hessian_integrator(double coefficient = 1.0);
 
-/// The same local matrix in double-double: every product of basis values and weights exact, the
-/// quadrature sums compensated (what Assembler::matrix_extended uses).
-void element_matrix_double_double(BilinearForm form, const ElementValues& ev, DoubleDoubleMatrix& local);
+/// The update flags of `form` (for element loops that evaluate themselves).
+inline unsigned flags_for(const Form& form) { return form->flags(); }
+
+/// The element matrix of `form` on the element last evaluated by `ev`, summed in the scalar of
+/// `local` (Eigen::MatrixXd, MatrixXld or DoubleDoubleMatrix): quadrature, never a closed form.
+template <class Local>
+void element_matrix(const Form& form, const ElementValues& ev, Local& local) {
+  form->element_matrix(ev, local);
+}
+inline void element_matrix_extended(const Form& form, const ElementValues& ev, MatrixXld& local) {
+  element_matrix(form, ev, local);
+}
+inline void element_matrix_double_double(const Form& form, const ElementValues& ev, DoubleDoubleMatrix& local) {
+  element_matrix(form, ev, local);
+}
 
 /// Local load ∫ f v (n entries).
 void element_load(const ScalarField& f, const ElementValues& ev, Eigen::VectorXd& local);

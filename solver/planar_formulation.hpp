@@ -23,7 +23,7 @@ class PlanarFormulation final : public Formulation {
   void check() const override;
   Eigen::VectorXd load(const WorkShare& share) const override;
   Constraints constraints() const override;
-  std::vector<FormTerm> terms() const override { return {{problem().form, 1.0}}; }
+  std::vector<FormTerm> terms() const override { return {Form(problem().form)}; }
   SplitMatrix matrix() const override;
   bool has_exact() const override { return problem().exact.has_value(); }
   ErrorNorms errors(const Eigen::VectorXd& coefficients, const WorkShare& share) const override;

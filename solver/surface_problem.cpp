@@ -85,16 +85,19 @@ Constraints SurfaceFormulation::constraints() const {
 }
 
 std::vector<FormTerm> SurfaceFormulation::terms() const {
-  std::vector<FormTerm> t{{BilinearForm::laplace, 1.0}};
-  if (problem().reaction > 0) t.push_back({BilinearForm::mass, problem().reaction});
+  std::vector<FormTerm> t{stiffness_integrator()};
+  if (problem().reaction > 0) t.push_back(mass_integrator(problem().reaction));
   return t;
 }
 
 SplitMatrix SurfaceFormulation::matrix() const {
   // In double: the Laplace–Beltrami matrix is conditioned like h⁻², far from the plates' need.
   const Assembler assembler(space());
-  SparseMatrix A = assembler.matrix(BilinearForm::laplace, quadrature_degree());
-  if (problem().reaction > 0) A += problem().reaction * assembler.matrix(BilinearForm::mass, quadrature_degree());
+  SparseMatrix A;
+  for (const FormTerm& t : terms()) {
+    SparseMatrix term = assembler.matrix(t, quadrature_degree());
+    A = A.nonZeros() ? SparseMatrix(A + term) : std::move(term);
+  }
   return {A, Eigen::VectorXd()};
 }
 

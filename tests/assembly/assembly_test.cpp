@@ -153,6 +153,40 @@ TEST(Assembly, UsesClosedFormElementMatricesWhenTheSpaceHasThem) {
   EXPECT_LT((B - 2.0 * A).norm(), 1e-13 * A.norm());
 }
 
+namespace {
+/// ∫ ∇u·∇v without the closed-form tag: a form the space's ClosedForms does not know.
+class UntaggedStiffness final : public SymmetricSquaresIntegrator {
+ public:
+  using SymmetricSquaresIntegrator::SymmetricSquaresIntegrator;
+  unsigned flags() const override { return update_gradients; }
+  std::string name() const override { return "untagged stiffness"; }
+  int operands(const PointValues& v, Scratch&, Operand (&out)[kMaxOperands]) const override {
+    out[0] = {&v.dx, nullptr, 1};
+    out[1] = {&v.dy, nullptr, 1};
+    return 2;
+  }
+};
+}  // namespace
+
+TEST(Integrator, FormsWithoutClosedFormAreIntegratedAndCoefficientsScaleBothPaths) {
+  const SpacePtr inner = test::space_from_yaml(kCubic);
+  const ClosedFormSpace closed(inner);
+  const SparseMatrix A = Assembler(*inner).matrix(BilinearForm::laplace, 8);
+  // The untagged form is integrated (A), not taken from the closed forms (2A).
+  const SparseMatrix U = Assembler(closed).matrix(Form(std::make_shared<const UntaggedStiffness>()), 8);
+  EXPECT_LT((U - A).norm(), 1e-13 * A.norm());
+  // A coefficient scales the quadrature and the closed-form element matrices alike (one rounding
+  // of each entry of a sum of a few element contributions).
+  const SparseMatrix A3 = Assembler(*inner).matrix(Form(BilinearForm::laplace, 3.0), 8);
+  const SparseMatrix B3 = Assembler(closed).matrix(Form(BilinearForm::laplace, 3.0), 8);
+  EXPECT_LT((A3 - 3.0 * A).norm(), 1e-15 * A3.norm());
+  EXPECT_LT((B3 - 6.0 * A).norm(), 1e-13 * A3.norm());
+  const SplitMatrix K3 = Assembler(*inner).matrix_extended(Form(stiffness_integrator(3.0)), 8);
+  EXPECT_LT((K3.high - 3.0 * A).norm(), 1e-15 * A3.norm());
+  EXPECT_EQ(Form(BilinearForm::hessian)->name(), "hessian");
+  EXPECT_EQ(Form(BilinearForm::bilaplace)->flags(), unsigned(update_hessians));
+}
+
 TEST(Assembly, DoubleDoubleElementMatricesAgreeWithLongDouble) {
   // Quadrature path (curved elements): the double-double sums (compiled for FMA where the CPU has
   // it) against the long double ones, on the same basis values. They differ by the long double
