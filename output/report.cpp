@@ -77,7 +77,7 @@ nlohmann::json optional_json(std::optional<double> v) { return v ? nlohmann::jso
 /// only), so summary.json echoes a value a config can take; empty for Poisson, which has no form key.
 std::string form_as_configured(const ProblemSpec& problem) {
   if (problem.pde != Pde::biharmonic) return {};
-  return problem.form == BilinearForm::hessian ? "hessian" : "laplacian";
+  return problem.terms.front()->name() == "hessian" ? "hessian" : "laplacian";
 }
 
 }  // namespace

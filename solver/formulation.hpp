@@ -8,9 +8,11 @@
 
 #include <Eigen/Core>
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
+#include "assembly/assembler.hpp"
 #include "assembly/boundary_conditions.hpp"
 #include "assembly/element_subset_assembly.hpp"
 #include "assembly/error_norms.hpp"
@@ -42,6 +44,9 @@ class Formulation {
   const Space& space() const { return space_; }
   const ProblemSpec& problem() const { return problem_; }
   int quadrature_degree() const { return quadrature_degree_; }
+  /// The problem's operator as Σ coefficient · form (ProblemSpec::terms): what the backends
+  /// assemble, whole (matrix) or element by element (for_each_element_matrix).
+  const std::vector<FormTerm>& terms() const { return problem_.terms; }
 
   /// Input errors seen from the space alone (boundary part names, surface without boundary
   /// data, ...), before any work.
@@ -51,11 +56,10 @@ class Formulation {
   virtual Eigen::VectorXd load(const WorkShare& share) const = 0;
   /// The essential conditions (every process computes them whole: a boundary-sized problem).
   virtual Constraints constraints() const = 0;
-  /// The matrix as Σ coefficient · form: what element_matrix_terms hands to distributed assembly.
-  virtual std::vector<FormTerm> terms() const = 0;
-  /// The whole matrix, for a process that assembles every element; entries summed beyond double
-  /// where refinement residuals need them (split_matrix.hpp).
-  virtual SplitMatrix matrix() const = 0;
+  /// The whole matrix Σ terms, for a process that assembles every element: terms() for the
+  /// linear system; a mass term too for an eigenproblem K x = λ M x under the same constraints.
+  /// Summed in double-double where extended_precision() says (one term then).
+  SplitMatrix matrix(const std::vector<FormTerm>& terms) const;
   /// The coefficients after the solve (problems fixed up to a constant shift to their mean here).
   virtual void finish(Eigen::VectorXd& /*coefficients*/, const WorkShare& /*share*/) const {}
   virtual bool has_exact() const = 0;
@@ -70,10 +74,18 @@ class Formulation {
   };
   virtual Messages messages() const = 0;
 
+ protected:
+  /// True when refinement residuals need the matrix entries beyond their double rounding
+  /// (split_matrix.hpp): plates, whose error floor grows like h⁻⁴ otherwise.
+  virtual bool extended_precision() const { return false; }
+  /// The assembler of whole matrices and loads (built once, when a process assembles everything).
+  const Assembler& assembler() const;
+
  private:
   const Space& space_;
   const ProblemSpec& problem_;
   int quadrature_degree_;
+  mutable std::unique_ptr<Assembler> assembler_;
 };
 
 }  // namespace iga

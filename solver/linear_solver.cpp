@@ -2,7 +2,6 @@
 
 #include <Eigen/CholmodSupport>
 #include <Eigen/UmfPackSupport>
-#include <chrono>
 #include <vector>
 
 #include "config/errors.hpp"
@@ -11,9 +10,6 @@
 namespace iga {
 
 namespace {
-
-using Clock = std::chrono::steady_clock;
-double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
 /// b − A x with products and sums in long double, rounded once (A with both triangles stored).
 Eigen::VectorXd residual_extended(const SparseMatrix& A, const Eigen::VectorXd& x, const Eigen::VectorXd& b) {
@@ -46,15 +42,15 @@ void refine(const Solver& solver, const ResidualFunction& residual, Eigen::Vecto
 template <class Solver>
 bool try_solve(Solver& solver, const SparseMatrix& A, const Eigen::VectorXd& b, const ResidualFunction& residual,
                Eigen::VectorXd& x, SolveReport& report) {
-  auto t0 = Clock::now();
+  Stopwatch clock;
   solver.compute(A);
-  report.t_factorize = seconds_since(t0);
+  report.t_factorize = clock.seconds();
   if (solver.info() != Eigen::Success) return false;
-  t0 = Clock::now();
+  clock.restart();
   x = solver.solve(b);
   const bool ok = solver.info() == Eigen::Success && x.allFinite();
   if (ok) refine(solver, residual, x, report);
-  report.t_solve = seconds_since(t0);
+  report.t_solve = clock.seconds();
   return ok;
 }
 

@@ -7,6 +7,7 @@
 /// error floor well above what the assembled system determines.
 
 #include <Eigen/Core>
+#include <chrono>
 #include <functional>
 #include <string>
 
@@ -14,7 +15,7 @@
 
 namespace iga {
 
-/// petsc: the distributed PETSc path (solver/petsc_solve_problem.hpp), chosen before this function.
+/// petsc: the distributed PETSc path (solver/petsc_backend.hpp), chosen before this function.
 enum class SolverKind { cholmod, umfpack, petsc };
 
 struct SolveReport {
@@ -23,6 +24,16 @@ struct SolveReport {
   double t_solve = 0;           ///< seconds
   double relative_residual = 0; ///< ||A x - b|| / ||b|| (computed in long double)
   int refinement_steps = 0;     ///< iterative-refinement corrections applied
+};
+
+/// Wall-clock seconds since construction or restart(): the phase times of SolveReport and LevelResult.
+class Stopwatch {
+ public:
+  double seconds() const { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count(); }
+  void restart() { start_ = std::chrono::steady_clock::now(); }
+
+ private:
+  std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
 };
 
 /// r(x) = b − A x evaluated more accurately than the double A allows, e.g. on the whole system

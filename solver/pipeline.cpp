@@ -1,6 +1,5 @@
 #include "solver/pipeline.hpp"
 
-#include <chrono>
 #include <cmath>
 #include <optional>
 
@@ -10,9 +9,6 @@
 namespace iga {
 
 namespace {
-using Clock = std::chrono::steady_clock;
-double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
-
 bool finite(const ErrorNorms& e) {
   return std::isfinite(e.l2) && std::isfinite(e.h1.value_or(0)) && std::isfinite(e.h2.value_or(0));
 }
@@ -48,23 +44,23 @@ DiscreteSolution solve_pipeline(const Formulation& f, LinearBackend& backend, co
   r.dofs = space.dimension();
   r.elements = space.num_elements();
 
-  auto t0 = Clock::now();
+  Stopwatch clock;
   const Constraints c = assemble_step(f, backend, progress);
-  r.t_assemble = seconds_since(t0);
+  r.t_assemble = clock.seconds();
   r.free_dofs = static_cast<int>(c.free.size());
   out.boundary_constrained = static_cast<int>(c.constrained.size());
 
-  t0 = Clock::now();
+  clock.restart();
   const WorkShare share = backend.share();
   out.coefficients = backend.solve(out.solve, progress);
   f.finish(out.coefficients, share);
   if (f.reports_energy()) r.energy = backend.energy(out.coefficients);  // for studies without an exact solution
-  r.t_solve = seconds_since(t0);
+  r.t_solve = clock.seconds();
 
   r.g1_jump = space.max_gradient_jump(out.coefficients);
   if (f.has_exact()) {
     if (progress) progress("computing errors");
-    t0 = Clock::now();
+    clock.restart();
     std::optional<ProgressPhase> phase(std::in_place, "error norms", share.elements ? 0 : space.num_elements());
     ErrorNorms e = f.errors(out.coefficients, share);
     if (share.elements) {  // squared integrals add up over the shares
@@ -77,7 +73,7 @@ DiscreteSolution solve_pipeline(const Formulation& f, LinearBackend& backend, co
     r.l2 = e.l2;
     r.h1 = e.h1;
     r.h2 = e.h2;
-    r.t_errors = seconds_since(t0);
+    r.t_errors = clock.seconds();
   }
   return out;
 }

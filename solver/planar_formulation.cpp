@@ -42,11 +42,6 @@ const BoundarySplit& PlanarFormulation::boundary() const {
   return *boundary_;
 }
 
-const Assembler& PlanarFormulation::assembler() const {
-  if (!assembler_) assembler_ = std::make_unique<Assembler>(space());
-  return *assembler_;
-}
-
 Eigen::VectorXd PlanarFormulation::load(const WorkShare& share) const {
   const int qa = quadrature_degree();
   Eigen::VectorXd b;
@@ -71,11 +66,6 @@ Eigen::VectorXd PlanarFormulation::load(const WorkShare& share) const {
 Constraints PlanarFormulation::constraints() const {
   return impose_essential(space(), boundary().essential, boundary_field(problem().value),
                           problem().normal_derivative_field(), quadrature_degree());
-}
-
-SplitMatrix PlanarFormulation::matrix() const {
-  // Extended precision: refinement residuals must see the entries beyond their double rounding.
-  return assembler().matrix_extended(problem().form, quadrature_degree());
 }
 
 ErrorNorms PlanarFormulation::errors(const Eigen::VectorXd& coefficients, const WorkShare& share) const {

@@ -71,7 +71,7 @@ void derive_from_exact(ProblemSpec& p, const SymbolicFunction& u) {
 ProblemSpec manufactured_problem(Pde pde, const SymbolicFunction& u, std::vector<BoundaryPart> boundary) {
   ProblemSpec p;
   p.pde = pde;
-  p.form = pde == Pde::poisson ? BilinearForm::laplace : BilinearForm::bilaplace;
+  if (pde == Pde::biharmonic) p.terms = {bilaplace_integrator()};
   derive_from_exact(p, u);
   p.boundary = std::move(boundary);
   return p;
@@ -86,12 +86,12 @@ ProblemSpec parse_problem(const ConfigNode& node) {
   const std::string pde = node["pde"].as_choice({"poisson", "biharmonic", "laplace_beltrami"});
   p.pde = pde == "poisson" ? Pde::poisson : Pde::biharmonic;  // laplace_beltrami returned above
 
+  bool hessian = false;
   if (auto form = node.find("form")) {
     if (p.pde == Pde::poisson) form->fail("'form' applies to biharmonic problems only");
-    p.form = form->as_choice({"laplacian", "hessian"}) == "hessian" ? BilinearForm::hessian : BilinearForm::bilaplace;
-  } else {
-    p.form = p.pde == Pde::poisson ? BilinearForm::laplace : BilinearForm::bilaplace;
+    hessian = form->as_choice({"laplacian", "hessian"}) == "hessian";
   }
+  if (p.pde == Pde::biharmonic) p.terms = {hessian ? hessian_integrator() : bilaplace_integrator()};
 
   if (auto exact = node.find("exact")) {
     derive_from_exact(p, parse_expression(*exact));
@@ -126,7 +126,7 @@ ProblemSpec parse_problem(const ConfigNode& node) {
                         : k == "neumann"   ? BoundaryKind::neumann
                         : k == "clamped"   ? BoundaryKind::clamped
                                            : BoundaryKind::simply_supported;
-    if (kind == BoundaryKind::simply_supported && p.form == BilinearForm::hessian)
+    if (kind == BoundaryKind::simply_supported && hessian)
       entry.fail("simply_supported needs form: laplacian (the Hessian form has another natural condition)");
     BoundaryPart part{name, kind, entry.where()};
     if (name == "all") p.boundary.insert(p.boundary.begin(), part);
@@ -143,7 +143,7 @@ ProblemSpec parse_surface_problem(const ConfigNode& node) {
     if (!(p.reaction >= 0.0 && std::isfinite(p.reaction))) c->fail("reaction must be a number >= 0");
   }
   p.pde = Pde::laplace_beltrami;
-  p.form = BilinearForm::laplace;
+  if (p.reaction > 0) p.terms.push_back(mass_integrator(p.reaction));
   const auto exact = node.find("exact");
   const auto source = node.find("source");
   if (!exact && !source) node.fail("give 'exact' (a solution in x, y, z), 'source', or both");

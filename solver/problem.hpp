@@ -1,7 +1,7 @@
 #pragma once
 /// @file
-/// The boundary value problem of a config: PDE, bilinear form, source, boundary parts with their
-/// kinds, and the data on them. With `exact` given, every datum is derived from it symbolically.
+/// The boundary value problem of a config: PDE, bilinear form (as integrator terms), source,
+/// boundary parts with their kinds, and the data on them. With `exact` given, every datum is derived from it symbolically.
 
 #include <optional>
 #include <string>
@@ -30,7 +30,10 @@ struct BoundaryPart {
 
 struct ProblemSpec {
   Pde pde = Pde::poisson;
-  BilinearForm form = BilinearForm::laplace;
+  /// The bilinear form as Σ coefficient · integrator (assembly/integrators.hpp): ∫ ∇u·∇v for
+  /// Poisson, ∫ Δu Δv or ∫ D²u : D²v (problem.form) for plates, ∫ ∇_Γu·∇_Γv + c ∫ u v on surfaces.
+  /// A new operator is a new integrator here, not a new case of the solver.
+  std::vector<FormTerm> terms{stiffness_integrator()};
   std::optional<SymbolicFunction> exact;
   SymbolicFunction source = SymbolicFunction::constant(0.0);
   std::vector<BoundaryPart> boundary;  ///< in config order; "all" first applies, later parts override

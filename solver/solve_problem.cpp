@@ -3,14 +3,15 @@
 #include <optional>
 
 #include "config/progress.hpp"
-#include "solver/petsc_solve_problem.hpp"
+#include "solver/petsc_backend.hpp"
+#include "solver/petsc_session.hpp"
 #include "solver/surface_problem.hpp"
 
 namespace iga {
 
 void SerialBackend::assemble(const Formulation& f, const Constraints& c, const Eigen::VectorXd& load,
                              const ProgressSink&) {
-  system_.A = f.matrix();
+  system_.A = f.matrix(f.terms());
   system_.b = load;
   system_.constraints = c;
   reduce_system(system_.A, system_.b, system_.constraints, system_.A_free, system_.b_free);
@@ -40,10 +41,17 @@ LinearSystem assemble_linear_system(const Space& space, const ProblemSpec& probl
 
 DiscreteSolution solve_problem(const Space& space, const ProblemSpec& problem, SolverKind solver,
                                const ProgressSink& progress, const PetscSettings& petsc) {
-  if (solver == SolverKind::petsc) return solve_problem_petsc(space, problem, petsc, progress);
   const std::unique_ptr<Formulation> f = make_formulation(space, problem);
-  SerialBackend backend(solver);
-  return solve_pipeline(*f, backend, progress);
+  if (solver != SolverKind::petsc) {
+    SerialBackend backend(solver);
+    return solve_pipeline(*f, backend, progress);
+  }
+  // Every rank runs the pipeline; rank 0 reports its progress.
+  const ProgressSink say = [&](const std::string& msg) {
+    if (progress && is_root_rank()) progress(msg);
+  };
+  const std::unique_ptr<LinearBackend> backend = make_petsc_backend(space, petsc, say);
+  return solve_pipeline(*f, *backend, say);
 }
 
 }  // namespace iga

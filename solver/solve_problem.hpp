@@ -2,7 +2,7 @@
 /// @file
 /// Solve one boundary value problem on one space: the pipeline (pipeline.hpp) with the problem's
 /// formulation (planar or surface) and the backend the solver kind asks for (serial CHOLMOD/UMFPACK
-/// here, PETSc in petsc_solve_problem.hpp). Written against the Space interface only.
+/// here, PETSc in petsc_backend.hpp). Written against the Space interface only.
 
 #include <Eigen/Core>
 #include <memory>
@@ -53,7 +53,7 @@ std::unique_ptr<Formulation> make_formulation(const Space& space, const ProblemS
 LinearSystem assemble_linear_system(const Space& space, const ProblemSpec& problem, const ProgressSink& progress = {});
 
 /// `progress`, when given, is told when each phase starts (assemble, factorize and solve, errors).
-/// SolverKind::petsc solves with PETSc as `petsc` says (solve_problem_petsc).
+/// SolverKind::petsc solves with PETSc as `petsc` says (make_petsc_backend; collective over the ranks).
 DiscreteSolution solve_problem(const Space& space, const ProblemSpec& problem, SolverKind solver,
                                const ProgressSink& progress = {}, const PetscSettings& petsc = {});
 

@@ -1,7 +1,6 @@
 #include "solver/study.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -21,9 +20,6 @@
 namespace iga {
 
 namespace {
-using Clock = std::chrono::steady_clock;
-double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
-
 std::string format_seconds(double s) {
   char buf[32];
   std::snprintf(buf, sizeof buf, "%.3f s", s);
@@ -107,10 +103,10 @@ StudySettings parse_study(const ConfigNode& root, const std::string& config_path
       check_requested_levels(domain_node, space_node, adaptive ? 1 : levels, s.limits, levels_node && levels_override <= 0 ? *levels_node : space_node,
                              levels_override > 0 ? "--levels" : "refinement.levels", memory_model(s.solver, s.petsc));
   }
-  const auto t_coarse = Clock::now();
+  const Stopwatch t_coarse;
   const SpacePtr coarse = make_space(domain_node, space_node, 0);
   s.level0 = coarse;
-  s.level0_seconds = seconds_since(t_coarse);
+  s.level0_seconds = t_coarse.seconds();
   check_boundary_parts(*coarse, s.problem);
   if ((s.problem.pde == Pde::laplace_beltrami) != (coarse->ambient_dimension() == 3))
     root["problem"]["pde"].fail(s.problem.pde == Pde::laplace_beltrami
@@ -155,8 +151,6 @@ StudySettings parse_study(const ConfigNode& root, const std::string& config_path
       if (!(s.tolerance > 0.0)) tolerance->fail("the estimator tolerance must be > 0 (got " + format_number(s.tolerance) + ")");
     }
     if (s.adaptive) {
-      if (s.problem.pde == Pde::poisson && s.problem.form != BilinearForm::laplace)
-        refinement->fail("adaptive refinement needs the residual indicator, implemented for Poisson with form laplace");
       if (s.problem.pde == Pde::biharmonic) {
         if (!coarse->higher_derivatives() || (coarse->num_elements() > 1 && coarse->interior_edges().empty()))
           refinement->fail("adaptive biharmonic refinement needs third and fourth derivatives and the interior edges "
@@ -235,7 +229,7 @@ StudyResult run_study(const StudySettings& settings, const ProgressSink& progres
   for (int level = 0; level < settings.levels; ++level) {
     const std::string tag = "[level " + std::to_string(level) + "] ";
     progress(tag + "building space");
-    auto t0 = Clock::now();
+    const Stopwatch t0;
     const bool reuse = !next && level == 0 && settings.level0;
     const SpacePtr space = next    ? next
                            : reuse ? settings.level0
@@ -245,7 +239,7 @@ StudyResult run_study(const StudySettings& settings, const ProgressSink& progres
                                                          previous.get());
                                      }();
     previous = space;
-    const double t_space = seconds_since(t0) + t_next + (reuse ? settings.level0_seconds : 0.0);
+    const double t_space = t0.seconds() + t_next + (reuse ? settings.level0_seconds : 0.0);
     check_size(measure(*space), settings.limits, space_node, "level " + std::to_string(level),
                memory_model(settings.solver, settings.petsc));  // before assembly
     progress(tag + "space: " + std::to_string(space->dimension()) + " dofs, " +
@@ -265,7 +259,7 @@ StudyResult run_study(const StudySettings& settings, const ProgressSink& progres
     if ((differences && level + 1 < settings.levels) || points) locator = std::make_shared<PointLocator>(space);
     sol.result.functionals = evaluate_functionals(settings.functionals, *space, sol.coefficients, locator.get());
     if (differences && previous_locator) {
-      const auto t_diff = Clock::now();
+      const Stopwatch t_diff;
       progress(tag + "differences to the previous level");
       const ProgressPhase phase("differences", space->num_elements());
       const ErrorNorms d = level_difference(*space, sol.coefficients, *previous_locator, previous_coefficients,
@@ -273,7 +267,7 @@ StudyResult run_study(const StudySettings& settings, const ProgressSink& progres
       sol.result.difference_l2 = d.l2;
       sol.result.difference_h1 = d.h1;
       sol.result.difference_h2 = d.h2;
-      sol.result.t_errors += seconds_since(t_diff);
+      sol.result.t_errors += t_diff.seconds();
     }
     if (differences) {
       previous_locator = locator;
@@ -300,7 +294,7 @@ StudyResult run_study(const StudySettings& settings, const ProgressSink& progres
         progress(tag + "estimator " + std::to_string(*estimator) + " <= tolerance: stopping");
         result.stop_reason = "tolerance";
       } else if (level + 1 < settings.levels) {
-        auto t1 = Clock::now();
+        const Stopwatch t1;
         const std::vector<int> marked = dorfler_marking(eta, settings.marking);
         sol.marked = marked;
         progress(tag + "estimator " + std::to_string(*estimator) + ", refining " + std::to_string(marked.size()) +
@@ -313,7 +307,7 @@ StudyResult run_study(const StudySettings& settings, const ProgressSink& progres
           progress(tag + "cannot refine further (" + e.what() + "): stopping");
           result.stop_reason = e.what();
         }
-        t_next = seconds_since(t1);
+        t_next = t1.seconds();
         if (!refined) {
           if (result.stop_reason.empty()) throw std::logic_error("adaptive study on a space without local refinement");
         } else if (settings.max_dofs > 0 && refined->dimension() > settings.max_dofs) {

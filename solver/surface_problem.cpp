@@ -2,7 +2,6 @@
 
 #include <cmath>
 
-#include "assembly/assembler.hpp"
 #include "assembly/error_norms.hpp"
 #include "assembly/surface_dirichlet.hpp"
 #include "assembly/surface_load.hpp"
@@ -82,23 +81,6 @@ Constraints SurfaceFormulation::constraints() const {
   if (pure()) c.constrained = {0};
   for (int i = pure() ? 1 : 0; i < n; ++i) c.free.push_back(i);
   return c;
-}
-
-std::vector<FormTerm> SurfaceFormulation::terms() const {
-  std::vector<FormTerm> t{stiffness_integrator()};
-  if (problem().reaction > 0) t.push_back(mass_integrator(problem().reaction));
-  return t;
-}
-
-SplitMatrix SurfaceFormulation::matrix() const {
-  // In double: the Laplace–Beltrami matrix is conditioned like h⁻², far from the plates' need.
-  const Assembler assembler(space());
-  SparseMatrix A;
-  for (const FormTerm& t : terms()) {
-    SparseMatrix term = assembler.matrix(t, quadrature_degree());
-    A = A.nonZeros() ? SparseMatrix(A + term) : std::move(term);
-  }
-  return {A, Eigen::VectorXd()};
 }
 
 void SurfaceFormulation::finish(Eigen::VectorXd& coefficients, const WorkShare& share) const {

@@ -20,7 +20,8 @@ SurfaceExactSolution surface_exact_solution(const ProblemSpec& problem);
 /// The given source, else f(x, n, H) = −Δ_Γu + u from the exact solution.
 SurfaceSource surface_source(const ProblemSpec& problem);
 
-/// The Laplace–Beltrami problem as a Formulation: matrix laplace + c mass, the load from
+/// The Laplace–Beltrami problem as a Formulation: matrix laplace + c mass (ProblemSpec::terms,
+/// summed in double: conditioned like h⁻², far from the plates' need), the load from
 /// surface_source, Dirichlet data on open surfaces (surface_dirichlet.hpp). Without reaction on a
 /// closed surface, constants (Σ N_i = 1) span the kernel: the load is made orthogonal to them
 /// (∫f = 0 holds for exact data only up to quadrature), coefficient 0 is pinned (an essential
@@ -32,8 +33,6 @@ class SurfaceFormulation final : public Formulation {
   void check() const override;
   Eigen::VectorXd load(const WorkShare& share) const override;
   Constraints constraints() const override;
-  std::vector<FormTerm> terms() const override;
-  SplitMatrix matrix() const override;
   void finish(Eigen::VectorXd& coefficients, const WorkShare& share) const override;
   bool has_exact() const override { return problem().surface_exact.has_value(); }
   ErrorNorms errors(const Eigen::VectorXd& coefficients, const WorkShare& share) const override;

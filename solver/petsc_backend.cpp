@@ -1,4 +1,4 @@
-#include "solver/petsc_solve_problem.hpp"
+#include "solver/petsc_backend.hpp"
 
 #include "config/errors.hpp"
 
@@ -7,7 +7,6 @@
 #include <petscksp.h>
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <memory>
@@ -26,9 +25,6 @@
 namespace iga {
 
 namespace {
-
-using Clock = std::chrono::steady_clock;
-double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
 /// PETSc's message for the error it last raised ("Input string abc has no integer value").
 std::string petsc_message(PetscErrorCode code) {
@@ -293,109 +289,123 @@ class PetscBackend final : public LinearBackend {
   Eigen::VectorXd solve(SolveReport& report, const ProgressSink& say) override;
 
  private:
+  /// The distributed numbering of the unknowns under the conditions `c` (layout_, couplings_,
+  /// basis_), and with `pattern` the couplings of this rank's elements' functions. Collective.
+  void lay_out(const Constraints& c, SparseMatrix* pattern, const ProgressSink& say);
+  /// Create `A`, the distributed matrix Σ terms on the unknowns of lay_out (Tᵀ A T in double),
+  /// each element matrix also handed to `extended` in double-double when given; the caller owns
+  /// `A` (and destroys it on every path). Collective. An eigensolver (SLEPc) asks it for the
+  /// stiffness f.terms() and for a mass term on the same layout.
+  void matrix(const Formulation& f, const std::vector<FormTerm>& terms, ExtendedResidual* extended, Mat& A) const;
+
   const Space& space_;
   const PetscSettings& settings_;
   const int rank_, ranks_;
   std::vector<int> owner_, mine_;
   const Constraints* constraints_ = nullptr;
+  std::unique_ptr<ReducedBasis> basis_;
   UnknownLayout layout_;
+  RowCouplings couplings_;
   PetscObjects p_;
   std::unique_ptr<ExtendedResidual> extended_;
 };
 
-void PetscBackend::assemble(const Formulation& f, const Constraints& c, const Eigen::VectorXd& load,
-                            const ProgressSink& say) {
-  const MPI_Comm comm = PETSC_COMM_WORLD;
+void PetscBackend::lay_out(const Constraints& c, SparseMatrix* pattern, const ProgressSink& say) {
   constraints_ = &c;
   // Local work first (every rank the same, apart from its elements): an error found here is
   // raised on all ranks together before any collective call.
-  std::unique_ptr<ReducedBasis> basis;
-  RowCouplings couplings;
-  SparseMatrix pattern;
-  // With a direct factorization the solution is refined with residuals of the matrix kept in
-  // double-double: the corrections reuse the factor and remove the error floor of the double
-  // matrix. Krylov solves stop at their tolerance anyway (the right-hand side is exact for both).
-  const bool refine = settings_.pc == "mumps" || settings_.pc == "cholesky";
   on_every_rank([&] {
-    basis = std::make_unique<ReducedBasis>(c, space_.dimension());
+    basis_ = std::make_unique<ReducedBasis>(c, space_.dimension());
     const ElementDofTable table = collect_element_dofs(space_);
     std::vector<int> unknown_offsets{0}, unknowns, dofs, local;
     ElementDofTable my_table;
     my_table.offsets.push_back(0);
     for (int e = 0; e < table.num_elements(); ++e) {
       dofs.assign(table.begin(e), table.begin(e + 1));
-      basis->element(dofs, local);
+      basis_->element(dofs, local);
       unknowns.insert(unknowns.end(), local.begin(), local.end());
       unknown_offsets.push_back(static_cast<int>(unknowns.size()));
-      if (refine && owner_[e] == rank_) {
+      if (pattern && owner_[e] == rank_) {
         my_table.dofs.insert(my_table.dofs.end(), dofs.begin(), dofs.end());
         my_table.offsets.push_back(static_cast<int>(my_table.dofs.size()));
       }
     }
     layout_ = layout_unknowns(unknown_offsets, unknowns, owner_, static_cast<int>(c.free.size()), ranks_);
-    couplings = row_couplings(unknown_offsets, unknowns, layout_, rank_);
-    if (refine) pattern = sparsity_pattern(my_table, space_.dimension());
+    couplings_ = row_couplings(unknown_offsets, unknowns, layout_, rank_);
+    if (pattern) *pattern = sparsity_pattern(my_table, space_.dimension());
   });
-  const PetscInt n_global = static_cast<PetscInt>(c.free.size());
-  const PetscInt n_local = layout_.first_row[rank_ + 1] - layout_.first_row[rank_];
-  long long totals[2] = {couplings.off_rank, couplings.total};
-  MPI_Allreduce(MPI_IN_PLACE, totals, 2, MPI_LONG_LONG, MPI_SUM, comm);
+  long long totals[2] = {couplings_.off_rank, couplings_.total};
+  MPI_Allreduce(MPI_IN_PLACE, totals, 2, MPI_LONG_LONG, MPI_SUM, PETSC_COMM_WORLD);
   if (ranks_ > 1 && say) {
     char share[32];
     std::snprintf(share, sizeof share, "%.3g %%", 100.0 * static_cast<double>(totals[0]) / std::max(1LL, totals[1]));
     say("matrix couplings between ranks: " + std::to_string(totals[0]) + " of " + std::to_string(totals[1]) + " (" +
         share + ")");
   }
+}
 
-  PetscObjects& p = p_;
-  check(MatCreate(comm, &p.A), "MatCreate");
-  check(MatSetSizes(p.A, n_local, n_local, n_global, n_global), "MatSetSizes");
-  check(MatSetType(p.A, MATAIJ), "MatSetType");
-  const std::vector<PetscInt> d_nnz(couplings.on_rank_columns.begin(), couplings.on_rank_columns.end());
-  const std::vector<PetscInt> o_nnz(couplings.off_rank_columns.begin(), couplings.off_rank_columns.end());
-  check(MatSeqAIJSetPreallocation(p.A, 0, d_nnz.data()), "MatSeqAIJSetPreallocation");
-  check(MatMPIAIJSetPreallocation(p.A, 0, d_nnz.data(), 0, o_nnz.data()), "MatMPIAIJSetPreallocation");
-  check(MatSetOption(p.A, MAT_SYMMETRIC, PETSC_TRUE), "MatSetOption");
-  check(MatSetOption(p.A, MAT_SPD, PETSC_TRUE), "MatSetOption");
-  check(MatCreateVecs(p.A, &p.x, &p.b), "MatCreateVecs");
-
-  extended_ = std::make_unique<ExtendedResidual>(c, layout_.global, layout_.first_row, rank_, std::move(pattern));
-  if (say) say("assembling (" + std::to_string(n_global) + " unknowns, in extended precision)");
+void PetscBackend::matrix(const Formulation& f, const std::vector<FormTerm>& terms, ExtendedResidual* extended,
+                          Mat& A) const {
+  const PetscInt n_global = static_cast<PetscInt>(constraints_->free.size());
+  const PetscInt n_local = layout_.first_row[rank_ + 1] - layout_.first_row[rank_];
+  check(MatCreate(PETSC_COMM_WORLD, &A), "MatCreate");
+  check(MatSetSizes(A, n_local, n_local, n_global, n_global), "MatSetSizes");
+  check(MatSetType(A, MATAIJ), "MatSetType");
+  const std::vector<PetscInt> d_nnz(couplings_.on_rank_columns.begin(), couplings_.on_rank_columns.end());
+  const std::vector<PetscInt> o_nnz(couplings_.off_rank_columns.begin(), couplings_.off_rank_columns.end());
+  check(MatSeqAIJSetPreallocation(A, 0, d_nnz.data()), "MatSeqAIJSetPreallocation");
+  check(MatMPIAIJSetPreallocation(A, 0, d_nnz.data(), 0, o_nnz.data()), "MatMPIAIJSetPreallocation");
+  check(MatSetOption(A, MAT_SYMMETRIC, PETSC_TRUE), "MatSetOption");
+  check(MatSetOption(A, MAT_SPD, PETSC_TRUE), "MatSetOption");
   on_every_rank([&] {
-    extended_->add_load(load);
     std::vector<int> local;
     std::vector<PetscInt> rows;
     Eigen::MatrixXd T;
     Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> K;
     // Tᵀ A T in double for the factorization; A itself, in double-double, for the residuals.
     const auto add_element = [&](int, const std::vector<int>& dofs, const DoubleDoubleMatrix& A_e) {
-      extended_->add(dofs, A_e);
-      basis->element(dofs, local, &T);
+      if (extended) extended->add(dofs, A_e);
+      basis_->element(dofs, local, &T);
       if (local.empty()) return;
       // Coefficient-wise products: Eigen's blocked ones would start a thread team per element.
       K = T.transpose().lazyProduct(A_e.hi.lazyProduct(T));
       rows.resize(local.size());
       for (std::size_t i = 0; i < local.size(); ++i) rows[i] = layout_.global[local[i]];
       const PetscInt m = static_cast<PetscInt>(rows.size());
-      check(MatSetValues(p.A, m, rows.data(), m, rows.data(), K.data(), ADD_VALUES), "MatSetValues");
+      check(MatSetValues(A, m, rows.data(), m, rows.data(), K.data(), ADD_VALUES), "MatSetValues");
     };
-    for_each_element_matrix(space_, mine_, f.terms(), f.quadrature_degree(), add_element);
+    for_each_element_matrix(space_, mine_, terms, f.quadrature_degree(), add_element);
   });
-  check(MatAssemblyBegin(p.A, MAT_FINAL_ASSEMBLY), "MatAssemblyBegin");
-  check(MatAssemblyEnd(p.A, MAT_FINAL_ASSEMBLY), "MatAssemblyEnd");
+  check(MatAssemblyBegin(A, MAT_FINAL_ASSEMBLY), "MatAssemblyBegin");
+  check(MatAssemblyEnd(A, MAT_FINAL_ASSEMBLY), "MatAssemblyEnd");
+}
+
+void PetscBackend::assemble(const Formulation& f, const Constraints& c, const Eigen::VectorXd& load,
+                            const ProgressSink& say) {
+  // With a direct factorization the solution is refined with residuals of the matrix kept in
+  // double-double: the corrections reuse the factor and remove the error floor of the double
+  // matrix. Krylov solves stop at their tolerance anyway (the right-hand side is exact for both).
+  const bool refine = settings_.pc == "mumps" || settings_.pc == "cholesky";
+  SparseMatrix pattern;
+  lay_out(c, refine ? &pattern : nullptr, say);
+  extended_ = std::make_unique<ExtendedResidual>(c, layout_.global, layout_.first_row, rank_, std::move(pattern));
+  if (say) say("assembling (" + std::to_string(c.free.size()) + " unknowns, in extended precision)");
+  on_every_rank([&] { extended_->add_load(load); });
+  matrix(f, f.terms(), extended_.get(), p_.A);
+  check(MatCreateVecs(p_.A, &p_.x, &p_.b), "MatCreateVecs");
   // The right-hand side Tᵀ(b − A g), rounded once from the double-double sums over the ranks.
   const std::vector<double> rhs = extended_->owned_rows(nullptr);
   PetscScalar* bv = nullptr;
-  check(VecGetArray(p.b, &bv), "VecGetArray");
+  check(VecGetArray(p_.b, &bv), "VecGetArray");
   std::copy(rhs.begin(), rhs.end(), bv);
-  check(VecRestoreArray(p.b, &bv), "VecRestoreArray");
+  check(VecRestoreArray(p_.b, &bv), "VecRestoreArray");
   if (!refine) extended_.reset();
 }
 
 Eigen::VectorXd PetscBackend::solve(SolveReport& report, const ProgressSink& say) {
   PetscObjects& p = p_;
   const MPI_Comm comm = PETSC_COMM_WORLD;
-  const auto t0 = Clock::now();
+  Stopwatch clock;
   check(KSPCreate(comm, &p.ksp), "KSPCreate");
   check(KSPSetOperators(p.ksp, p.A, p.A), "KSPSetOperators");
   // Every rank has the same options (the command line, PETSC_OPTIONS and ~/.petscrc reach all
@@ -414,10 +424,10 @@ Eigen::VectorXd PetscBackend::solve(SolveReport& report, const ProgressSink& say
       throw options_error(settings_, "PETSc could not set up " + method, code);
     check(code, "KSPSetUp");
   }
-  report.t_factorize = seconds_since(t0);
-  const auto t1 = Clock::now();
+  report.t_factorize = clock.seconds();
+  clock.restart();
   solve_quietly(p.ksp, p.b, p.x, settings_, method);
-  report.t_solve = seconds_since(t1);
+  report.t_solve = clock.seconds();
   KSPConvergedReason reason;
   PetscInt its = 0;
   check(KSPGetConvergedReason(p.ksp, &reason), "KSPGetConvergedReason");
@@ -467,15 +477,10 @@ Eigen::VectorXd PetscBackend::solve(SolveReport& report, const ProgressSink& say
 
 }  // namespace
 
-DiscreteSolution solve_problem_petsc(const Space& space, const ProblemSpec& problem, const PetscSettings& settings,
-                                     const ProgressSink& progress) {
+std::unique_ptr<LinearBackend> make_petsc_backend(const Space& space, const PetscSettings& settings,
+                                                  const ProgressSink& progress) {
   ensure_petsc_initialised();
-  const ProgressSink say = [&](const std::string& msg) {
-    if (progress && mpi_rank() == 0) progress(msg);
-  };
-  const std::unique_ptr<Formulation> f = make_formulation(space, problem);
-  PetscBackend backend(space, settings, say);
-  return solve_pipeline(*f, backend, say);
+  return std::make_unique<PetscBackend>(space, settings, progress);
 }
 
 }  // namespace iga
@@ -484,7 +489,7 @@ DiscreteSolution solve_problem_petsc(const Space& space, const ProblemSpec& prob
 
 namespace iga {
 
-DiscreteSolution solve_problem_petsc(const Space&, const ProblemSpec&, const PetscSettings&, const ProgressSink&) {
+std::unique_ptr<LinearBackend> make_petsc_backend(const Space&, const PetscSettings&, const ProgressSink&) {
   throw InputError("solver.type: petsc: this iga-run was built without PETSc");
 }
 
