@@ -1,11 +1,14 @@
 #include "solver/boundary_edge_kinds.hpp"
 
 #include <map>
+#include <utility>
 
 #include "config/errors.hpp"
 
 namespace iga {
 
+namespace {
+/// Every boundary edge once, ordered by (element, local edge), with its condition.
 std::vector<std::pair<BoundaryEdge, BoundaryKind>> boundary_edge_kinds(const Space& space, const ProblemSpec& problem) {
   std::map<std::pair<int, int>, BoundaryKind> kind_of_edge;
   for (const BoundaryPart& part : problem.boundary)
@@ -14,13 +17,7 @@ std::vector<std::pair<BoundaryEdge, BoundaryKind>> boundary_edge_kinds(const Spa
   for (const auto& [key, kind] : kind_of_edge) out.push_back({BoundaryEdge{key.first, key.second}, kind});
   return out;
 }
-
-std::vector<BoundaryEdge> boundary_edges_of_kind(const Space& space, const ProblemSpec& problem, BoundaryKind kind) {
-  std::vector<BoundaryEdge> out;
-  for (const auto& [edge, k] : boundary_edge_kinds(space, problem))
-    if (k == kind) out.push_back(edge);
-  return out;
-}
+}  // namespace
 
 BoundarySplit split_boundary(const Space& space, const ProblemSpec& problem) {
   BoundarySplit split;

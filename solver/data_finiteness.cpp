@@ -18,20 +18,14 @@ struct Datum {
   SymbolicFunction f;
 };
 
-/// Reference points at parameters `ts` of every edge of the cell (t = 0: the corners, t = 0.5: the
-/// edge midpoints). Built once and kept alive: evaluators may cache tables by the address of a rule.
-QuadratureRule points_on_edges(CellShape shape, const std::vector<double>& ts) {
+/// Reference points at parameters `ts` of every edge of the cell, or of edge `only` (t = 0: the
+/// corners, t = 0.5: the edge midpoints). Built once and kept alive: evaluators may cache tables
+/// by the address of a rule.
+QuadratureRule points_on_edges(CellShape shape, const std::vector<double>& ts, int only = -1) {
   QuadratureRule rule;
   for (double t : ts)
-    for (int e = 0; e < num_edges(shape); ++e) rule.points.push_back(reference_edge_point(shape, e, t));
-  rule.weights.assign(rule.points.size(), 0.0);
-  return rule;
-}
-
-/// Points of one boundary edge at parameters `ts`.
-QuadratureRule points_on_edge(CellShape shape, int edge, const std::vector<double>& ts) {
-  QuadratureRule rule;
-  for (double t : ts) rule.points.push_back(reference_edge_point(shape, edge, t));
+    for (int e = 0; e < num_edges(shape); ++e)
+      if (only < 0 || e == only) rule.points.push_back(reference_edge_point(shape, e, t));
   rule.weights.assign(rule.points.size(), 0.0);
   return rule;
 }
@@ -116,7 +110,7 @@ Finding check_boundary(const Space& space, const std::vector<Datum>& data, const
   const std::vector<BoundaryEdge> edges = space.boundary_edges("all");
   std::vector<QuadratureRule> rules;  // per (shape, edge), kept alive for the evaluators
   for (CellShape shape : {CellShape::quadrilateral, CellShape::triangle})
-    for (int e = 0; e < 4; ++e) rules.push_back(points_on_edge(shape, e % num_edges(shape), ts));
+    for (int e = 0; e < 4; ++e) rules.push_back(points_on_edges(shape, ts, e % num_edges(shape)));
   return first_non_finite(space, data, static_cast<int>(edges.size()), [&](int i) {
     const BoundaryEdge& b = edges[i];
     const int shape = space.cell_shape(b.element) == CellShape::triangle ? 1 : 0;

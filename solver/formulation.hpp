@@ -62,7 +62,8 @@ class Formulation {
   SplitMatrix matrix(const std::vector<FormTerm>& terms) const;
   /// The coefficients after the solve (problems fixed up to a constant shift to their mean here).
   virtual void finish(Eigen::VectorXd& /*coefficients*/, const WorkShare& /*share*/) const {}
-  virtual bool has_exact() const = 0;
+  /// An exact solution (in x, y or in x, y, z) to measure the errors against.
+  bool has_exact() const { return problem_.exact || problem_.surface_exact; }
   /// Errors over the share's elements against the exact solution.
   virtual ErrorNorms errors(const Eigen::VectorXd& coefficients, const WorkShare& share) const = 0;
   /// True when a(u_h, u_h) means the energy of the solution (reported for planar problems).

@@ -2,6 +2,8 @@
 
 #include <Eigen/CholmodSupport>
 #include <Eigen/UmfPackSupport>
+#include <cmath>
+#include <limits>
 #include <vector>
 
 #include "config/errors.hpp"
@@ -23,20 +25,15 @@ Eigen::VectorXd residual_extended(const SparseMatrix& A, const Eigen::VectorXd& 
   return out;
 }
 
-/// Iterative refinement with the factor in `solver`: apply corrections while each is smaller than the
-/// last, stop once one shrinks by less than 4x (round-off reached) or drops below ε ||x||.
+/// Iterative refinement with the factor in `solver` (refine_iteratively).
 template <class Solver>
 void refine(const Solver& solver, const ResidualFunction& residual, Eigen::VectorXd& x, SolveReport& report) {
-  double previous = x.norm();
-  for (int step = 0; step < max_refinement_steps; ++step) {
-    const Eigen::VectorXd d = solver.solve(residual(x));
-    const double size = d.norm();
-    if (!d.allFinite() || !(size < previous)) return;
-    x += d;
-    ++report.refinement_steps;
-    if (size > 0.25 * previous || size <= 1e-16 * x.norm()) return;
-    previous = size;
-  }
+  Eigen::VectorXd d;
+  const auto correct = [&] {
+    d = solver.solve(residual(x));
+    return d.allFinite() ? d.norm() : std::numeric_limits<double>::quiet_NaN();
+  };
+  report.refinement_steps += refine_iteratively(x.norm(), correct, [&] { return (x += d).norm(); });
 }
 
 template <class Solver>
@@ -55,6 +52,20 @@ bool try_solve(Solver& solver, const SparseMatrix& A, const Eigen::VectorXd& b, 
 }
 
 }  // namespace
+
+int refine_iteratively(double x_norm, const std::function<double()>& correct, const std::function<double()>& apply) {
+  int steps = 0;
+  double previous = x_norm;
+  for (int step = 0; step < max_refinement_steps; ++step) {
+    const double size = correct();
+    if (!std::isfinite(size) || !(size < previous)) break;
+    const double norm = apply();
+    ++steps;
+    if (size > 0.25 * previous || size <= 1e-16 * norm) break;
+    previous = size;
+  }
+  return steps;
+}
 
 Eigen::VectorXd solve_linear_system(const SparseMatrix& A, const Eigen::VectorXd& b, SolverKind kind,
                                     SolveReport& report, const ResidualFunction& given_residual) {

@@ -43,9 +43,17 @@ using ResidualFunction = std::function<Eigen::VectorXd(const Eigen::VectorXd& x)
 /// Solve A x = b (A stored with both triangles). With cholmod, a failed factorization (matrix not
 /// positive definite) falls back to UMFPACK. Then x ← x + A⁻¹ r with r = b − A x in long double
 /// (or r = residual(x) when given) while the corrections keep shrinking (at most
-/// max_refinement_steps). Throws NumericalError when every method fails or the residual is not small.
-constexpr int max_refinement_steps = 8;
+/// max_refinement_steps, refine_iteratively). Throws NumericalError when every method fails or the
+/// residual is not small.
 Eigen::VectorXd solve_linear_system(const SparseMatrix& A, const Eigen::VectorXd& b, SolverKind kind,
                                     SolveReport& report, const ResidualFunction& residual = {});
+
+/// Iterative refinement with a factor, the rule of the serial and the PETSc solver alike: apply
+/// corrections while each is smaller than the last; stop once one shrinks by less than 4x
+/// (round-off reached) or drops below ε ‖x‖. `correct()` computes the next correction from the
+/// current x and returns its norm (NaN when it failed); `apply()` adds it to x and returns ‖x‖.
+/// Returns the number of corrections applied.
+constexpr int max_refinement_steps = 8;
+int refine_iteratively(double x_norm, const std::function<double()>& correct, const std::function<double()>& apply);
 
 }  // namespace iga

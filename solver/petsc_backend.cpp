@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <memory>
 #include <sstream>
 #include <unordered_map>
@@ -221,39 +222,47 @@ std::string failure_text(KSP ksp, KSPConvergedReason reason, double bnorm) {
   return out.str();
 }
 
-/// Iterative refinement with the KSP's factor, as in the serial solver (linear_solver.cpp): apply
-/// corrections K⁻¹ r, r from the extended-precision residual, while each is smaller than the last;
-/// stop once one shrinks by less than 4x (round-off reached) or drops below ε ‖x‖. Returns the
-/// number of corrections applied. Collective.
+/// This rank's entries of `v` from `values`.
+void set_owned(Vec v, const std::vector<double>& values) {
+  PetscScalar* entries = nullptr;
+  check(VecGetArray(v, &entries), "VecGetArray");
+  std::copy(values.begin(), values.end(), entries);
+  check(VecRestoreArray(v, &entries), "VecRestoreArray");
+}
+
+/// The whole solution x on every rank, in the distributed numbering, handed to `use`. Collective.
+void with_whole_solution(PetscObjects& p, const std::function<void(const PetscScalar*)>& use) {
+  check(VecScatterBegin(p.to_all, p.x, p.all, INSERT_VALUES, SCATTER_FORWARD), "VecScatterBegin");
+  check(VecScatterEnd(p.to_all, p.x, p.all, INSERT_VALUES, SCATTER_FORWARD), "VecScatterEnd");
+  const PetscScalar* all = nullptr;
+  check(VecGetArrayRead(p.all, &all), "VecGetArrayRead");
+  use(all);
+  check(VecRestoreArrayRead(p.all, &all), "VecRestoreArrayRead");
+}
+
+/// Iterative refinement with the KSP's factor, the serial solver's rule (refine_iteratively):
+/// corrections K⁻¹ r, r from the extended-precision residual. Returns the number of corrections
+/// applied. Collective (norms and the KSP's reason are the same on every rank).
 int refine_solution(PetscObjects& p, ExtendedResidual& residual, const PetscSettings& s, const std::string& method) {
   Vec r = nullptr, d = nullptr;
   check(VecDuplicate(p.x, &r), "VecDuplicate");
   check(VecDuplicate(p.x, &d), "VecDuplicate");
-  int steps = 0;
-  PetscReal previous = 0, size = 0, xnorm = 0;
-  check(VecNorm(p.x, NORM_2, &previous), "VecNorm");
-  for (int step = 0; step < max_refinement_steps; ++step) {
-    check(VecScatterBegin(p.to_all, p.x, p.all, INSERT_VALUES, SCATTER_FORWARD), "VecScatterBegin");
-    check(VecScatterEnd(p.to_all, p.x, p.all, INSERT_VALUES, SCATTER_FORWARD), "VecScatterEnd");
-    const PetscScalar* all = nullptr;
-    check(VecGetArrayRead(p.all, &all), "VecGetArrayRead");
-    const std::vector<double> mine = residual.owned_rows(all);
-    check(VecRestoreArrayRead(p.all, &all), "VecRestoreArrayRead");
-    PetscScalar* rv = nullptr;
-    check(VecGetArray(r, &rv), "VecGetArray");
-    std::copy(mine.begin(), mine.end(), rv);
-    check(VecRestoreArray(r, &rv), "VecRestoreArray");
+  PetscReal size = 0, xnorm = 0;
+  check(VecNorm(p.x, NORM_2, &xnorm), "VecNorm");
+  const auto correct = [&] {
+    with_whole_solution(p, [&](const PetscScalar* all) { set_owned(r, residual.owned_rows(all)); });
     solve_quietly(p.ksp, r, d, s, method);
     KSPConvergedReason reason;
     check(KSPGetConvergedReason(p.ksp, &reason), "KSPGetConvergedReason");
     check(VecNorm(d, NORM_2, &size), "VecNorm");
-    if (reason < 0 || !std::isfinite(size) || !(size < previous)) break;
+    return reason < 0 ? std::numeric_limits<double>::quiet_NaN() : static_cast<double>(size);
+  };
+  const auto apply = [&] {
     check(VecAXPY(p.x, 1.0, d), "VecAXPY");
-    ++steps;
     check(VecNorm(p.x, NORM_2, &xnorm), "VecNorm");
-    if (size > 0.25 * previous || size <= 1e-16 * xnorm) break;
-    previous = size;
-  }
+    return static_cast<double>(xnorm);
+  };
+  const int steps = refine_iteratively(xnorm, correct, apply);
   VecDestroy(&d);
   VecDestroy(&r);
   return steps;
@@ -394,11 +403,7 @@ void PetscBackend::assemble(const Formulation& f, const Constraints& c, const Ei
   matrix(f, f.terms(), extended_.get(), p_.A);
   check(MatCreateVecs(p_.A, &p_.x, &p_.b), "MatCreateVecs");
   // The right-hand side Tᵀ(b − A g), rounded once from the double-double sums over the ranks.
-  const std::vector<double> rhs = extended_->owned_rows(nullptr);
-  PetscScalar* bv = nullptr;
-  check(VecGetArray(p_.b, &bv), "VecGetArray");
-  std::copy(rhs.begin(), rhs.end(), bv);
-  check(VecRestoreArray(p_.b, &bv), "VecRestoreArray");
+  set_owned(p_.b, extended_->owned_rows(nullptr));
   if (!refine) extended_.reset();
 }
 
@@ -464,14 +469,10 @@ Eigen::VectorXd PetscBackend::solve(SolveReport& report, const ProgressSink& say
                   (ranks_ > 1 ? ", " + std::to_string(ranks_) + " ranks" : "");
 
   // Every rank gets the whole solution (the space, the outputs and the error integrals need it).
-  check(VecScatterBegin(p.to_all, p.x, p.all, INSERT_VALUES, SCATTER_FORWARD), "VecScatterBegin");
-  check(VecScatterEnd(p.to_all, p.x, p.all, INSERT_VALUES, SCATTER_FORWARD), "VecScatterEnd");
-  const PetscScalar* all = nullptr;
-  check(VecGetArrayRead(p.all, &all), "VecGetArrayRead");
-  const int n = static_cast<int>(constraints_->free.size());
-  Eigen::VectorXd u_free(n);
-  for (int k = 0; k < n; ++k) u_free(k) = all[layout_.global[k]];
-  check(VecRestoreArrayRead(p.all, &all), "VecRestoreArrayRead");
+  Eigen::VectorXd u_free(constraints_->free.size());
+  with_whole_solution(p, [&](const PetscScalar* all) {
+    for (Eigen::Index k = 0; k < u_free.size(); ++k) u_free(k) = all[layout_.global[k]];
+  });
   return expand_solution(u_free, *constraints_);
 }
 

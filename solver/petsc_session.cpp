@@ -188,27 +188,21 @@ PetscSession::~PetscSession() {
 }
 
 int mpi_rank() {
-  PetscBool up = PETSC_FALSE;
-  PetscInitialized(&up);
-  if (!up) return 0;
+  if (!petsc_up()) return 0;
   PetscMPIInt rank = 0;
   MPI_Comm_rank(PETSC_COMM_WORLD, &rank);
   return rank;
 }
 
 int mpi_size() {
-  PetscBool up = PETSC_FALSE;
-  PetscInitialized(&up);
-  if (!up) return 1;
+  if (!petsc_up()) return 1;
   PetscMPIInt size = 1;
   MPI_Comm_size(PETSC_COMM_WORLD, &size);
   return size;
 }
 
 void on_every_rank(const std::function<void()>& work) {
-  PetscBool up = PETSC_FALSE;
-  PetscInitialized(&up);
-  if (!up) return work();
+  if (!petsc_up()) return work();
   int code = 0;  // 0 ok, 1 numerical, 2 input, 3 other
   std::string message;
   try {

@@ -6,8 +6,9 @@
 /// and how the linear algebra runs (one process with CHOLMOD/UMFPACK, or PETSc over MPI ranks).
 ///
 /// The backend's two steps, assemble then solve, are where a generalized eigenproblem
-/// K x = λ M x plugs in: a backend that assembles K and M from the terms of two formulations on
-/// its share of the elements and returns eigenpairs instead of one solution.
+/// K x = λ M x plugs in: a backend whose assemble step builds K from Formulation::terms() and M
+/// from a mass term under the same constraints (Formulation::matrix and reduce_system serially,
+/// PetscBackend::matrix on its layout under MPI) and whose solve step returns eigenpairs.
 
 #include <Eigen/Core>
 #include <functional>

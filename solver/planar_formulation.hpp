@@ -21,7 +21,6 @@ class PlanarFormulation final : public Formulation {
   void check() const override;
   Eigen::VectorXd load(const WorkShare& share) const override;
   Constraints constraints() const override;
-  bool has_exact() const override { return problem().exact.has_value(); }
   ErrorNorms errors(const Eigen::VectorXd& coefficients, const WorkShare& share) const override;
   bool reports_energy() const override { return true; }
   Messages messages() const override;

@@ -93,16 +93,45 @@ StudySettings parse_study(const ConfigNode& root, const std::string& config_path
   // Domain, space and boundary part names are validated on the coarsest space (cheap), so that
   // every input error surfaces before the study starts; what it asks for is checked first.
   check_space_request(space_node, s.limits);
-  {  // Uniform levels whose size follows from the request are checked before level 0 is built.
-    const auto refinement = root.find("refinement");
-    const auto levels_node = refinement && refinement->is_map() ? refinement->find("levels") : std::nullopt;
-    const auto type = refinement && refinement->is_map() ? refinement->find("type") : std::nullopt;
-    const bool adaptive = type && type->is_scalar() && type->as_string() == "adaptive";
-    const int levels = levels_override > 0 ? levels_override : levels_node ? levels_node->as_int() : s.levels;
-    if (levels >= 1 && levels <= (adaptive ? 40 : 12))  // adaptive levels follow the solutions: level 0 only
-      check_requested_levels(domain_node, space_node, adaptive ? 1 : levels, s.limits, levels_node && levels_override <= 0 ? *levels_node : space_node,
-                             levels_override > 0 ? "--levels" : "refinement.levels", memory_model(s.solver, s.petsc));
+  // The refinement keys cost nothing to check either; the adaptive ones that ask the space follow
+  // level 0.
+  const auto refinement = root.find("refinement");
+  std::optional<ConfigNode> levels_node;  // the key blamed for a level that is too large
+  if (refinement) {
+    refinement->check_keys({"type", "levels", "marking", "max_dofs", "tolerance"});
+    if (auto type = refinement->find("type")) s.adaptive = type->as_choice({"uniform", "adaptive"}) == "adaptive";
+    if (!s.adaptive) {
+      for (const char* key : {"marking", "max_dofs", "tolerance"})
+        if (auto k = refinement->find(key)) k->fail(std::string(key) + " is only used with refinement.type: adaptive");
+    }
+    const int max_levels = s.adaptive ? 40 : 12;
+    if (auto levels = refinement->find("levels")) {
+      s.levels = levels->as_int();
+      if (s.levels < 1 || s.levels > max_levels)
+        levels->fail("levels must be between 1 and " + std::to_string(max_levels) + " (got " + std::to_string(s.levels) + ")");
+      if (levels_override <= 0) levels_node = levels;
+    }
+    if (auto marking = refinement->find("marking")) {
+      s.marking = marking->as_double();
+      if (!(s.marking > 0.0 && s.marking <= 1.0)) marking->fail("the Dörfler parameter marking must be in (0, 1]");
+    }
+    if (auto max_dofs = refinement->find("max_dofs")) {
+      s.max_dofs = max_dofs->as_int();
+      if (s.max_dofs < 1) max_dofs->fail("max_dofs must be positive");
+    }
+    if (auto tolerance = refinement->find("tolerance")) {
+      s.tolerance = tolerance->as_double();
+      if (!(s.tolerance > 0.0)) tolerance->fail("the estimator tolerance must be > 0 (got " + format_number(s.tolerance) + ")");
+    }
   }
+  if (levels_override > 0) s.levels = levels_override;
+  const ConfigNode& blame = levels_node ? *levels_node : space_node;
+  const MemoryModel memory = memory_model(s.solver, s.petsc);
+  // Uniform levels whose size follows from the request are checked before level 0 is built
+  // (adaptive levels follow the solutions: level 0 only).
+  check_requested_levels(domain_node, space_node, s.adaptive ? 1 : s.levels, s.limits, blame,
+                         levels_override > 0 ? "--levels" : "refinement.levels", memory);
+
   const Stopwatch t_coarse;
   const SpacePtr coarse = make_space(domain_node, space_node, 0);
   s.level0 = coarse;
@@ -124,48 +153,20 @@ StudySettings parse_study(const ConfigNode& root, const std::string& config_path
     space_node.fail("the biharmonic problem needs a C1 (H2-conforming) space; this " + coarse->type() +
                        " space is only C" + std::to_string(coarse->continuity()) +
                        " (raise space.degree/space.regularity)");
-
-  if (auto refinement = root.find("refinement")) {
-    refinement->check_keys({"type", "levels", "marking", "max_dofs", "tolerance"});
-    if (auto type = refinement->find("type")) s.adaptive = type->as_choice({"uniform", "adaptive"}) == "adaptive";
-    if (!s.adaptive) {
-      for (const char* key : {"marking", "max_dofs", "tolerance"})
-        if (auto k = refinement->find(key)) k->fail(std::string(key) + " is only used with refinement.type: adaptive");
+  if (s.adaptive) {
+    if (s.problem.pde == Pde::biharmonic) {
+      if (!coarse->higher_derivatives() || (coarse->num_elements() > 1 && coarse->interior_edges().empty()))
+        refinement->fail("adaptive biharmonic refinement needs third and fourth derivatives and the interior edges "
+                         "of the space (the plate residual indicator); the " + coarse->type() + " space has not both");
     }
-    const int max_levels = s.adaptive ? 40 : 12;
-    if (auto levels = refinement->find("levels")) {
-      s.levels = levels->as_int();
-      if (s.levels < 1 || s.levels > max_levels)
-        levels->fail("levels must be between 1 and " + std::to_string(max_levels) + " (got " + std::to_string(s.levels) + ")");
-    }
-    if (auto marking = refinement->find("marking")) {
-      s.marking = marking->as_double();
-      if (!(s.marking > 0.0 && s.marking <= 1.0)) marking->fail("the Dörfler parameter marking must be in (0, 1]");
-    }
-    if (auto max_dofs = refinement->find("max_dofs")) {
-      s.max_dofs = max_dofs->as_int();
-      if (s.max_dofs < 1) max_dofs->fail("max_dofs must be positive");
-    }
-    if (auto tolerance = refinement->find("tolerance")) {
-      s.tolerance = tolerance->as_double();
-      if (!(s.tolerance > 0.0)) tolerance->fail("the estimator tolerance must be > 0 (got " + format_number(s.tolerance) + ")");
-    }
-    if (s.adaptive) {
-      if (s.problem.pde == Pde::biharmonic) {
-        if (!coarse->higher_derivatives() || (coarse->num_elements() > 1 && coarse->interior_edges().empty()))
-          refinement->fail("adaptive biharmonic refinement needs third and fourth derivatives and the interior edges "
-                           "of the space (the plate residual indicator); the " + coarse->type() + " space has not both");
-      }
-      if (!dynamic_cast<const LocallyRefinable*>(coarse.get()))  // asking refined({}) would build a space
-        refinement->fail("adaptive refinement: the " + coarse->type() + " space does not support local refinement");
-      // Without the normal-derivative jumps the indicator of a C0 space misses its dominant part.
-      if (coarse->continuity() < 1 && coarse->num_elements() > 1 && coarse->interior_edges().empty())
-        refinement->fail("adaptive refinement: this C0 " + coarse->type() +
-                         " space cannot list its interior edges, so the residual indicator would miss the "
-                         "normal-derivative jumps; use a C1 space");
-    }
+    if (!dynamic_cast<const LocallyRefinable*>(coarse.get()))  // asking refined({}) would build a space
+      refinement->fail("adaptive refinement: the " + coarse->type() + " space does not support local refinement");
+    // Without the normal-derivative jumps the indicator of a C0 space misses its dominant part.
+    if (coarse->continuity() < 1 && coarse->num_elements() > 1 && coarse->interior_edges().empty())
+      refinement->fail("adaptive refinement: this C0 " + coarse->type() +
+                       " space cannot list its interior edges, so the residual indicator would miss the "
+                       "normal-derivative jumps; use a C1 space");
   }
-  if (levels_override > 0) s.levels = levels_override;
 
   // Every level's size before the study starts: level 0 as built, the others estimated from it.
   if (coarse->degree() > s.limits.max_degree)  // spaces whose degree is not the key `degree`
@@ -173,15 +174,11 @@ StudySettings parse_study(const ConfigNode& root, const std::string& config_path
                        ", more than limits.max_degree = " + std::to_string(s.limits.max_degree) +
                        how_to_raise("max_degree"));
   const SpaceSize level0 = measure(*coarse);
-  const MemoryModel memory = memory_model(s.solver, s.petsc);
   check_size(level0, s.limits, space_node, "level 0", memory);
-  if (!s.adaptive) {
-    const auto levels_node = root.find("refinement") ? root["refinement"].find("levels") : std::nullopt;
-    const ConfigNode& blame = levels_node && levels_override <= 0 ? *levels_node : space_node;
+  if (!s.adaptive)
     for (int level = 1; level < s.levels; ++level)
       check_size(uniform_estimate(level0, level), s.limits, blame,
                  "level " + std::to_string(level) + " (estimated from level 0)", memory);
-  }
 
   if (auto output = root.find("output"))  // they name points and boundary parts of the space
     if (auto functionals = output->find("functionals")) s.functionals = parse_functionals(*functionals, *coarse);
@@ -286,7 +283,7 @@ StudyResult run_study(const StudySettings& settings, const ProgressSink& progres
               ? poisson_residual_indicators(*space, sol.coefficients, f, space->error_quadrature_degree())
               : plate_residual_indicators(
                     *space, sol.coefficients, f, space->error_quadrature_degree(),
-                    boundary_edges_of_kind(*space, settings.problem, BoundaryKind::simply_supported),
+                    split_boundary(*space, settings.problem).simply_supported,
                     [g = settings.problem.laplacian](const Point2& x, const Point2&) { return g(x); });
       estimator = total_indicator(eta);
       sol.indicators = eta;

@@ -34,7 +34,6 @@ class SurfaceFormulation final : public Formulation {
   Eigen::VectorXd load(const WorkShare& share) const override;
   Constraints constraints() const override;
   void finish(Eigen::VectorXd& coefficients, const WorkShare& share) const override;
-  bool has_exact() const override { return problem().surface_exact.has_value(); }
   ErrorNorms errors(const Eigen::VectorXd& coefficients, const WorkShare& share) const override;
   Messages messages() const override;
 
