@@ -89,33 +89,39 @@ Finding first_non_finite(const Space& space, const std::vector<Datum>& data, int
   return best;
 }
 
-[[noreturn]] void report(const std::vector<Datum>& data, const Finding& f, const char* place) {
+/// InputError naming the datum of `f` and `place` ("a vertex"), when `f` found one.
+void report(const std::vector<Datum>& data, const Finding& f, const char* place) {
+  if (f.datum < 0) return;
   const Datum& d = data[f.datum];
   throw InputError(d.where + ": " + d.what + " is not finite at (" + format_number(f.x.x()) + ", " +
                    format_number(f.x.y()) + "), " + place + " of element " + std::to_string(f.element) +
                    " (a pole or a singularity on a mesh line, or a log or root of a negative number?)");
 }
 
-/// First place where one of `data` is not finite at the points `ts` of every element edge.
-Finding check_elements(const Space& space, const std::vector<Datum>& data, const std::vector<double>& ts) {
+/// Reports the first place where one of `data` is not finite at the points `ts` of every element edge.
+void check_elements(const Space& space, const std::vector<Datum>& data, const std::vector<double>& ts,
+                    const char* place) {
   const QuadratureRule quad = points_on_edges(CellShape::quadrilateral, ts);
   const QuadratureRule tri = points_on_edges(CellShape::triangle, ts);
-  return first_non_finite(space, data, space.num_elements(), [&](int e) {
+  const Finding f = first_non_finite(space, data, space.num_elements(), [&](int e) {
     return std::pair<int, const QuadratureRule*>(e, space.cell_shape(e) == CellShape::triangle ? &tri : &quad);
   });
+  report(data, f, place);
 }
 
-/// First place where one of `data` is not finite at the points `ts` of every boundary edge.
-Finding check_boundary(const Space& space, const std::vector<Datum>& data, const std::vector<double>& ts) {
+/// Reports the first place where one of `data` is not finite at the points `ts` of every boundary edge.
+void check_boundary(const Space& space, const std::vector<Datum>& data, const std::vector<double>& ts,
+                    const char* place) {
   const std::vector<BoundaryEdge> edges = space.boundary_edges("all");
   std::vector<QuadratureRule> rules;  // per (shape, edge), kept alive for the evaluators
   for (CellShape shape : {CellShape::quadrilateral, CellShape::triangle})
     for (int e = 0; e < 4; ++e) rules.push_back(points_on_edges(shape, ts, e % num_edges(shape)));
-  return first_non_finite(space, data, static_cast<int>(edges.size()), [&](int i) {
+  const Finding f = first_non_finite(space, data, static_cast<int>(edges.size()), [&](int i) {
     const BoundaryEdge& b = edges[i];
     const int shape = space.cell_shape(b.element) == CellShape::triangle ? 1 : 0;
     return std::pair<int, const QuadratureRule*>(b.element, &rules[shape * 4 + b.local_edge]);
   });
+  report(data, f, place);
 }
 
 }  // namespace
@@ -128,8 +134,7 @@ void check_data_finite(const Space& space, const ProblemSpec& problem) {
     const SymbolicFunction ux = u.diff_x(), uy = u.diff_y();
     const std::string& w = problem.data_where;
     const std::vector<Datum> value = {{w, "the exact solution", u}};
-    const Finding at_vertex = check_elements(space, value, {0.0});
-    if (at_vertex.datum >= 0) report(value, at_vertex, "a vertex");
+    check_elements(space, value, {0.0}, "a vertex");
     const std::vector<Datum> all = {{w, "the exact solution", u},
                                     {w, "the x-derivative of the exact solution", ux},
                                     {w, "the y-derivative of the exact solution", uy},
@@ -137,21 +142,17 @@ void check_data_finite(const Space& space, const ProblemSpec& problem) {
                                     {w, "the second derivative u_xy of the exact solution", ux.diff_y()},
                                     {w, "the second derivative u_yy of the exact solution", uy.diff_y()},
                                     {problem.source_where, "the source term derived from it", problem.source}};
-    const Finding on_edge = check_elements(space, all, {0.5});
-    if (on_edge.datum >= 0) report(all, on_edge, "an edge midpoint");
+    check_elements(space, all, {0.5}, "an edge midpoint");
     return;  // the boundary data are derived from the exact solution: checked above
   }
   // A source given as such (not derived from an exact solution) is data like the boundary values:
   // infinite at a vertex, its load vector is finite only by the accident of the quadrature points.
   const std::vector<Datum> source = {{problem.source_where, "the source term", problem.source}};
-  const Finding at_vertex = check_elements(space, source, {0.0});
-  if (at_vertex.datum >= 0) report(source, at_vertex, "a vertex");
-  const Finding on_edge = check_elements(space, source, {0.5});
-  if (on_edge.datum >= 0) report(source, on_edge, "an edge midpoint");
+  check_elements(space, source, {0.0}, "a vertex");
+  check_elements(space, source, {0.5}, "an edge midpoint");
 
   const std::vector<Datum> value = {{problem.data_where, "the boundary value u", problem.value}};
-  const Finding at_end = check_boundary(space, value, {0.0, 1.0});
-  if (at_end.datum >= 0) report(value, at_end, "a boundary vertex");
+  check_boundary(space, value, {0.0, 1.0}, "a boundary vertex");
   std::vector<Datum> data = {value.front(), {problem.data_where, "the boundary data laplace_u", problem.laplacian}};
   if (problem.gradient_x && problem.gradient_y) {
     data.push_back({problem.data_where, "the x-derivative of u", *problem.gradient_x});
@@ -161,8 +162,7 @@ void check_data_finite(const Space& space, const ProblemSpec& problem) {
   }
   std::vector<double> gauss;
   for (const Point2& t : gauss_legendre(3).points) gauss.push_back(t.x());
-  const Finding inside = check_boundary(space, data, gauss);
-  if (inside.datum >= 0) report(data, inside, "a boundary point");
+  check_boundary(space, data, gauss, "a boundary point");
 }
 
 }  // namespace iga

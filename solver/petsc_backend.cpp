@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <functional>
 #include <limits>
 #include <memory>
 #include <sstream>
@@ -65,16 +66,22 @@ InputError options_error(const PetscSettings& s, const std::string& step, PetscE
   return InputError(options_place(s) + ": " + step + ": " + petsc_message(code));
 }
 
-/// KSPSolve without PETSc's banner. An error PETSc raises in the solve, when the config gave
-/// options, comes from them (the solver of the config's own keys has no such error): an input
-/// error naming solver.options. Without options it is iga-run's or PETSc's failure (exit 1).
-void solve_quietly(KSP ksp, Vec b, Vec x, const PetscSettings& s, const std::string& method) {
+/// A KSP step (`name`: KSPSetUp, KSPSolve) without PETSc's banner. An error PETSc raises in it,
+/// when the config gave options, comes from them (the solver of the config's own keys has no such
+/// error): an input error naming solver.options ("PETSc " + `failed`). Without options it is
+/// iga-run's or PETSc's failure (exit 1); out of memory while `doing` it, too.
+void ksp_step(const std::function<PetscErrorCode()>& step, const char* name, const std::string& doing,
+              const std::string& failed, const PetscSettings& s) {
   QuietPetscErrors quiet;
-  const PetscErrorCode code = KSPSolve(ksp, b, x);
+  const PetscErrorCode code = step();
   if (code == 0) return;
-  if (code == PETSC_ERR_MEM) throw std::runtime_error("PETSc ran out of memory solving with " + method);
-  if (!s.options.empty()) throw options_error(s, "PETSc failed solving with " + method, code);
-  check(code, "KSPSolve");
+  if (code == PETSC_ERR_MEM) throw std::runtime_error("PETSc ran out of memory " + doing);
+  if (!s.options.empty()) throw options_error(s, "PETSc " + failed, code);
+  check(code, name);
+}
+
+void solve_quietly(KSP ksp, Vec b, Vec x, const PetscSettings& s, const std::string& method) {
+  ksp_step([&] { return KSPSolve(ksp, b, x); }, "KSPSolve", "solving with " + method, "failed solving with " + method, s);
 }
 
 /// The unknowns of the reduced system: free function k is unknown k (its position in
@@ -150,12 +157,10 @@ void configure_ksp(KSP ksp, const PetscSettings& s, int ranks) {
   } else if (s.pc == "hypre") {
     check(PCSetType(pc, PCHYPRE), "PCSetType");
     check(PCHYPRESetType(pc, "boomeramg"), "PCHYPRESetType");
-  } else if (s.pc == "mumps" || (s.pc == "cholesky" && ranks > 1)) {
+  } else if (s.pc == "mumps" || s.pc == "cholesky") {
+    check(PCSetType(pc, PCCHOLESKY), "PCSetType");
     // PETSc's own Cholesky is sequential; across ranks the factorization is MUMPS's.
-    check(PCSetType(pc, PCCHOLESKY), "PCSetType");
-    check(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS), "PCFactorSetMatSolverType");
-  } else if (s.pc == "cholesky") {
-    check(PCSetType(pc, PCCHOLESKY), "PCSetType");
+    if (s.pc == "mumps" || ranks > 1) check(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS), "PCFactorSetMatSolverType");
   } else if (s.pc == "ilu") {
     check(PCSetType(pc, ranks > 1 ? PCBJACOBI : PCILU), "PCSetType");  // ILU(0) of each rank's block
   }
@@ -418,17 +423,11 @@ Eigen::VectorXd PetscBackend::solve(SolveReport& report, const ProgressSink& say
   on_every_rank([&] { configure_ksp(p.ksp, settings_, ranks_); });
   const std::string method = describe(p.ksp);
   if (say) say("solving with PETSc " + method);
-  {
-    // Options PETSc reads only when it builds the preconditioner (a factorization package that
-    // cannot do this factorization, say) fail here. Not shared across ranks: a failure here may
-    // be one rank's, and the others are then ended (end_ranks_after_failure).
-    QuietPetscErrors quiet;
-    const PetscErrorCode code = KSPSetUp(p.ksp);
-    if (code == PETSC_ERR_MEM) throw std::runtime_error("PETSc ran out of memory setting up " + method);
-    if (code != 0 && !settings_.options.empty())
-      throw options_error(settings_, "PETSc could not set up " + method, code);
-    check(code, "KSPSetUp");
-  }
+  // Options PETSc reads only when it builds the preconditioner (a factorization package that
+  // cannot do this factorization, say) fail here. Not shared across ranks: a failure here may be
+  // one rank's, and the others are then ended (end_ranks_after_failure).
+  ksp_step([&] { return KSPSetUp(p.ksp); }, "KSPSetUp", "setting up " + method, "could not set up " + method,
+           settings_);
   report.t_factorize = clock.seconds();
   clock.restart();
   solve_quietly(p.ksp, p.b, p.x, settings_, method);

@@ -46,8 +46,7 @@ Eigen::VectorXd PlanarFormulation::load(const WorkShare& share) const {
   const int qa = quadrature_degree();
   Eigen::VectorXd b;
   if (share.elements) {
-    const SymbolicFunction source = problem().source;
-    b = subset_load(space(), *share.elements, [source](const Point2& x) { return source(x); }, qa);
+    b = subset_load(space(), *share.elements, problem().source, qa);
   } else {
     const FunctionBatch source_batch({problem().source});
     b = assembler().load(

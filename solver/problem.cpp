@@ -20,15 +20,20 @@ std::string to_string(BoundaryKind kind) {
 
 namespace {
 
-ScalarField field(const SymbolicFunction& f) {
-  return [f](const Point2& x) { return f(x); };
-}
-
 BatchField batch_field(FunctionBatch batch) {
   return [batch](const Eigen::Matrix2Xd& points, Eigen::MatrixXd& values) { batch.evaluate(points, values); };
 }
 
 SymbolicFunction parse_expression(const ConfigNode& node) { return SymbolicFunction::parse(node.as_string(), node.where()); }
+
+void derive_from_exact(ProblemSpec& p, const SymbolicFunction& u) {
+  p.exact = u;
+  p.value = u;
+  p.gradient_x = u.diff_x();
+  p.gradient_y = u.diff_y();
+  p.laplacian = u.laplacian();
+  p.source = p.pde == Pde::poisson ? -u.laplacian() : u.bilaplacian();
+}
 
 }  // namespace
 
@@ -37,13 +42,13 @@ ExactSolution ProblemSpec::exact_solution() const {
   if (!exact) return s;
   const SymbolicFunction& u = *exact;
   const SymbolicFunction ux = u.diff_x(), uy = u.diff_y();
-  s.u = field(u);
-  s.ux = field(ux);
-  s.uy = field(uy);
+  s.u = u;
+  s.ux = ux;
+  s.uy = uy;
   const SymbolicFunction uxx = ux.diff_x(), uxy = ux.diff_y(), uyy = uy.diff_y();
-  s.uxx = field(uxx);
-  s.uxy = field(uxy);
-  s.uyy = field(uyy);
+  s.uxx = uxx;
+  s.uxy = uxy;
+  s.uyy = uyy;
   s.jet = batch_field(FunctionBatch({u, ux, uy, uxx, uxy, uyy}));
   return s;
 }
@@ -56,17 +61,6 @@ BoundaryField ProblemSpec::normal_derivative_field() const {
   const SymbolicFunction dn = normal_derivative;
   return [dn](const Point2& x, const Point2&) { return dn(x); };
 }
-
-namespace {
-void derive_from_exact(ProblemSpec& p, const SymbolicFunction& u) {
-  p.exact = u;
-  p.value = u;
-  p.gradient_x = u.diff_x();
-  p.gradient_y = u.diff_y();
-  p.laplacian = u.laplacian();
-  p.source = p.pde == Pde::poisson ? -u.laplacian() : u.bilaplacian();
-}
-}  // namespace
 
 ProblemSpec manufactured_problem(Pde pde, const SymbolicFunction& u, std::vector<BoundaryPart> boundary) {
   ProblemSpec p;

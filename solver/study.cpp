@@ -276,8 +276,7 @@ StudyResult run_study(const StudySettings& settings, const ProgressSink& progres
     std::optional<double> estimator;
     next.reset();
     if (settings.adaptive) {
-      const SymbolicFunction source = settings.problem.source;
-      const ScalarField f = [source](const Point2& x) { return source(x); };
+      const ScalarField f = settings.problem.source;
       const std::vector<double> eta =
           settings.problem.pde == Pde::poisson
               ? poisson_residual_indicators(*space, sol.coefficients, f, space->error_quadrature_degree())

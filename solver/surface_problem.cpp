@@ -13,8 +13,8 @@ namespace {
 SurfaceField field(const SymbolicFunction& f) {
   return [f](const Eigen::Vector3d& x) { return f.at(x); };
 }
-}  // namespace
 
+/// u and its ambient gradient as callables (empty when the problem has no exact solution).
 SurfaceExactSolution surface_exact_solution(const ProblemSpec& problem) {
   SurfaceExactSolution s;
   if (!problem.surface_exact) return s;
@@ -25,6 +25,7 @@ SurfaceExactSolution surface_exact_solution(const ProblemSpec& problem) {
   s.uz = field(u.diff_z());
   return s;
 }
+}  // namespace
 
 SurfaceSource surface_source(const ProblemSpec& problem) {
   if (problem.surface_source || !problem.surface_exact) {

@@ -14,9 +14,6 @@
 
 namespace iga {
 
-/// u and its ambient gradient as callables (empty when the problem has no exact solution).
-SurfaceExactSolution surface_exact_solution(const ProblemSpec& problem);
-
 /// The given source, else f(x, n, H) = −Δ_Γu + u from the exact solution.
 SurfaceSource surface_source(const ProblemSpec& problem);
 
