@@ -4,6 +4,7 @@
 
 #ifdef IGA_WITH_PETSC
 
+#include <dlfcn.h>
 #include <petscksp.h>
 
 #include <algorithm>
@@ -119,6 +120,16 @@ class ReducedBasis {
   std::unordered_map<int, std::vector<std::pair<int, double>>> change_;
 };
 
+/// hypre keeps a global error flag that its destroy functions return: after a set-up it refused
+/// (an option value it rejects only then), destroying the preconditioner fails again and PETSc's
+/// KSPDestroy returns before freeing the solver and hypre's matrix. Clearing the flag first lets the
+/// destroy free everything. Looked up at run time: libHYPRE is there only as PETSc's dependency (or
+/// not at all), iga-run does not link it.
+void clear_hypre_errors() {
+  using Clear = int (*)();
+  if (auto clear = reinterpret_cast<Clear>(dlsym(RTLD_DEFAULT, "HYPRE_ClearAllErrors"))) clear();
+}
+
 /// PETSc objects destroyed on every path out (PETSc's destroy functions accept null handles).
 struct PetscObjects {
   Mat A = nullptr;
@@ -130,6 +141,7 @@ struct PetscObjects {
     // banner while the error already on its way is reported. Destroying frees what it can anyway.
     QuietPetscErrors quiet;
     VecScatterDestroy(&to_all);
+    clear_hypre_errors();
     KSPDestroy(&ksp);
     VecDestroy(&all);
     VecDestroy(&x);
