@@ -41,12 +41,12 @@ TEST(Ws4Matrices, ClosedFormEqualsQuadratureOnPerturbedTriangles) {
   mesh.move_vertex(4, Point2(0.57, 0.43));  // the centre vertex: all 8 triangles distorted
   const Ws4Space space(mesh);
   for (BilinearForm form : {BilinearForm::mass, BilinearForm::laplace, BilinearForm::bilaplace, BilinearForm::hessian}) {
-    ElementValues ev(space, flags_for(form));
+    ElementValues ev(space, Form(form)->flags());
     for (int t = 0; t < space.num_elements(); ++t) {
       Eigen::MatrixXd closed, quad;
       ASSERT_TRUE(space.closed_forms()->element_matrix(t, form, closed));
       ev.reinit(t, *space.quadrature(t, 8));
-      element_matrix(form, ev, quad);
+      Form(form)->element_matrix(ev, quad);
       EXPECT_LT((closed - quad).cwiseAbs().maxCoeff(), 1e-11 * quad.cwiseAbs().maxCoeff())
           << "form " << static_cast<int>(form) << " element " << t;
     }
