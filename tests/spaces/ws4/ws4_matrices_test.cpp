@@ -17,7 +17,7 @@ namespace iga::ws4 {
 namespace {
 
 TEST(Ws4Matrices, ReferenceNumbersOfTheNotes) {
-  const Ws4ReferenceMatrices& r = Ws4ReferenceMatrices::get();
+  const ReferenceIntegrals<Eigen::MatrixXd>& r = ws4_reference_integrals();
   const Eigen::MatrixXd lap = r.grad[0][0] + r.grad[1][1];
   EXPECT_NEAR(lap(0, 0), 4.0 / 7, 1e-13);
   EXPECT_NEAR(r.mass(0, 0), 1.0 / 1440, 1e-16);
@@ -57,7 +57,7 @@ TEST(Ws4Matrices, ClosedFormEqualsQuadratureOnPerturbedTriangles) {
 TEST(Ws4Matrices, DoubleDoubleReferenceMatricesAnnihilateConstantsBeyondLongDouble) {
   // Σ_i B_i = 1: the row sums of every derivative matrix vanish exactly. Long double sums leave
   // ≈ 1e-19 of the entries; the double-double ones must be far below (here: 1e-25 relative).
-  const Ws4ReferenceMatricesDoubleDouble& r = Ws4ReferenceMatricesDoubleDouble::get();
+  const ReferenceIntegrals<DoubleDoubleMatrix>& r = ws4_reference_integrals_double_double(BilinearForm::hessian);
   for (int p = 0; p < 3; ++p)
     for (int q = 0; q < 3; ++q) {
       const DoubleDoubleMatrix& m = r.hess[p][q];
@@ -68,7 +68,7 @@ TEST(Ws4Matrices, DoubleDoubleReferenceMatricesAnnihilateConstantsBeyondLongDoub
       }
     }
   // And they agree with the long double ones to those ones' accuracy.
-  const Ws4ReferenceMatricesExtended& e = Ws4ReferenceMatricesExtended::get();
+  const ReferenceIntegrals<LongDoubleMatrix>& e = ws4_reference_integrals_extended();
   for (int i = 0; i < 51; ++i)
     for (int j = 0; j < 51; ++j)
       EXPECT_NEAR(static_cast<double>(e.hess[0][0](i, j) - r.hess[0][0](i, j).to_long_double()), 0.0,
@@ -81,11 +81,11 @@ TEST(Ws4Matrices, DoubleDoubleTablesLeaveLongDoubleArithmeticWorking) {
   // load after it then gives NaN (seen as NaN long double element matrices in the next test).
   // Whether that happens depends on the compiler's register allocation, so this guards the build
   // flag (-mno-mmx) rather than a line of code.
-  Ws4ReferenceMatricesDoubleDouble::get();
+  ws4_reference_integrals_double_double(BilinearForm::hessian);
   volatile long double one = 1;
   const long double sum = one + one + one + one + one + one + one + one + one;
   EXPECT_EQ(sum, 9.0L);
-  const Ws4ReferenceMatricesExtended& e = Ws4ReferenceMatricesExtended::get();
+  const ReferenceIntegrals<LongDoubleMatrix>& e = ws4_reference_integrals_extended();
   EXPECT_TRUE(e.hess[0][0].allFinite());
 }
 
