@@ -59,6 +59,33 @@ void gauss_legendre_unit(int g, T* x, T* w) {
   }
 }
 
+/// The collapsed g x g Gauss rule on fan triangle `f` of the split, in T (long double or
+/// double-double): points relative to the centre of the fan's region (the pieces' origin), from
+/// the corners' exact barycentrics, and weights. Collapsed coordinates:
+/// x = v0 + s (v1 − v0) + (1 − s) t (v2 − v0), dx = (1 − s) 2|T| ds dt.
+template <class T>
+void fan_rule(const Ws4Basis& basis, int f, int g, const T* gx, const T* gw, T* x, T* y, T* w) {
+  using std::abs;
+  const Ws4Split& split = basis.split();
+  const Point2 center = basis.center(split.fan_region()[f]);
+  T vx[3], vy[3];
+  for (int k = 0; k < 3; ++k) {
+    const Triple& b = split.vertices()[split.fan_triangles()[f][k]];
+    const T sum = T(b[0]) + T(b[1]) + T(b[2]);
+    vx[k] = T(b[1]) / sum - T(center.x());
+    vy[k] = T(b[2]) / sum - T(center.y());
+  }
+  const T twice_area = abs((vx[1] - vx[0]) * (vy[2] - vy[0]) - (vy[1] - vy[0]) * (vx[2] - vx[0]));
+  int k = 0;
+  for (int a = 0; a < g; ++a)
+    for (int c = 0; c < g; ++c, ++k) {
+      const T s = gx[a], t = (T(1.0) - s) * gx[c];
+      x[k] = vx[0] + s * (vx[1] - vx[0]) + t * (vx[2] - vx[0]);
+      y[k] = vy[0] + s * (vy[1] - vy[0]) + t * (vy[2] - vy[0]);
+      w[k] = gw[a] * gw[c] * (T(1.0) - s) * twice_area;
+    }
+}
+
 /// The reference matrices in long double, rounded once. Every integrand is a polynomial of degree
 /// <= 8 on each fan triangle of the split: a collapsed 5 x 5 Gauss rule (degree 9 in the collapsed
 /// direction) integrates it exactly, with nodes, split vertices (exact rationals) and the pieces in
@@ -90,10 +117,7 @@ const std::vector<MatrixL>& reference_sums() {
       active.clear();
       for (int i = 0; i < n; ++i) {
         const BasicPoly4<Real>& p = basis.piece_extended(r, i);
-        bool zero = true;
-        for (int a = 0; a <= 4; ++a)
-          for (int b = 0; a + b <= 4; ++b) zero = zero && p.coefficient(a, b) == 0;
-        if (zero) continue;
+        if (p.is_zero()) continue;
         const int k = static_cast<int>(active.size());
         active.push_back(i);
         store_derivatives(p, n, k, d);
@@ -102,25 +126,11 @@ const std::vector<MatrixL>& reference_sums() {
       for (MatrixL& t : table) t.resize(m, q);
       cached_region = r;
     }
-    Real vx[3], vy[3];  // fan-triangle corners relative to the region's center, from exact barycentrics
-    for (int k = 0; k < 3; ++k) {
-      const Triple& b = split.vertices()[split.fan_triangles()[f][k]];
-      const Real sum = Real(b[0]) + Real(b[1]) + Real(b[2]);
-      vx[k] = Real(b[1]) / sum - Real(basis.center(r).x());
-      vy[k] = Real(b[2]) / sum - Real(basis.center(r).y());
-    }
-    const Real twice_area = std::abs((vx[1] - vx[0]) * (vy[2] - vy[0]) - (vy[1] - vy[0]) * (vx[2] - vx[0]));
-    int k = 0;
-    for (int a = 0; a < 5; ++a)
-      for (int c = 0; c < 5; ++c, ++k) {
-        // Collapsed coordinates: x = v0 + s (v1 − v0) + (1 − s) t (v2 − v0), dx = (1 − s) 2|T| ds dt.
-        const Real s = gx[a], t = (1 - s) * gx[c];
-        const Real x = vx[0] + s * (vx[1] - vx[0]) + t * (vx[2] - vx[0]);
-        const Real y = vy[0] + s * (vy[1] - vy[0]) + t * (vy[2] - vy[0]);
-        weights(k) = gw[a] * gw[c] * (1 - s) * twice_area;
-        for (int j = 0; j < 6; ++j)
-          for (int i = 0; i < m; ++i) table[j](i, k) = d[j * n + i](x, y);
-      }
+    Real x[q], y[q];
+    fan_rule(basis, static_cast<int>(f), 5, gx, gw, x, y, weights.data());
+    for (int k = 0; k < q; ++k)
+      for (int j = 0; j < 6; ++j)
+        for (int i = 0; i < m; ++i) table[j](i, k) = d[j * n + i](x[k], y[k]);
     for (int p = 0; p < 10; ++p) {
       const MatrixL local = table[pairs[p][0]] * weights.asDiagonal() * table[pairs[p][1]].transpose();
       for (int b = 0; b < m; ++b)
@@ -232,25 +242,12 @@ std::vector<DoubleDoubleMatrix> reference_sums_double_double(int first_pair, int
       m = static_cast<int>(active.size());
       cached_region = r;
     }
-    DD vx[3], vy[3];
-    for (int k = 0; k < 3; ++k) {
-      const Triple& b = split.vertices()[split.fan_triangles()[f][k]];
-      const DD sum = DD(b[0]) + DD(b[1]) + DD(b[2]);
-      vx[k] = DD(b[1]) / sum - DD(basis.center(r).x());
-      vy[k] = DD(b[2]) / sum - DD(basis.center(r).y());
-    }
-    const DD twice_area = abs((vx[1] - vx[0]) * (vy[2] - vy[0]) - (vy[1] - vy[0]) * (vx[2] - vx[0]));
-    int k = 0;
-    for (int a = 0; a < g; ++a)
-      for (int c = 0; c < g; ++c, ++k) {
-        const DD s = gx[a], t = (DD(1.0) - s) * gx[c];
-        const DD x = vx[0] + s * (vx[1] - vx[0]) + t * (vx[2] - vx[0]);
-        const DD y = vy[0] + s * (vy[1] - vy[0]) + t * (vy[2] - vy[0]);
-        weights[k] = gw[a] * gw[c] * (DD(1.0) - s) * twice_area;
-        for (int j = 0; j < 6; ++j)
-          if (needed[j])
-            for (int i = 0; i < m; ++i) table[(j * n + i) * q + k] = d[j * n + i](x, y);
-      }
+    DD x[kMaxPoints], y[kMaxPoints];
+    fan_rule(basis, f, g, gx, gw, x, y, weights);
+    for (int k = 0; k < q; ++k)
+      for (int j = 0; j < 6; ++j)
+        if (needed[j])
+          for (int i = 0; i < m; ++i) table[(j * n + i) * q + k] = d[j * n + i](x[k], y[k]);
     // (table · weight) once per function and point, as hi/lo doubles; then each integral is a
     // compensated dot product (exact products of the hi parts, the rest in the error term).
     for (int j = 0; j < 6; ++j)
