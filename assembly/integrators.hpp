@@ -50,7 +50,4 @@ std::shared_ptr<const Integrator> stiffness_integrator(double coefficient = 1.0)
 std::shared_ptr<const Integrator> bilaplace_integrator(double coefficient = 1.0);
 std::shared_ptr<const Integrator> hessian_integrator(double coefficient = 1.0);
 
-/// Local load ∫ f v (n entries).
-void element_load(const ScalarField& f, const ElementValues& ev, Eigen::VectorXd& local);
-
 }  // namespace iga

@@ -44,14 +44,11 @@ const BoundarySplit& PlanarFormulation::boundary() const {
 
 Eigen::VectorXd PlanarFormulation::load(const WorkShare& share) const {
   const int qa = quadrature_degree();
-  Eigen::VectorXd b;
-  if (share.elements) {
-    b = subset_load(space(), *share.elements, problem().source, qa);
-  } else {
-    const FunctionBatch source_batch({problem().source});
-    b = assembler().load(
-        [&source_batch](const Eigen::Matrix2Xd& x, Eigen::MatrixXd& values) { source_batch.evaluate(x, values); }, qa);
-  }
+  const FunctionBatch source_batch({problem().source});
+  const BatchField source = [&source_batch](const Eigen::Matrix2Xd& x, Eigen::MatrixXd& values) {
+    source_batch.evaluate(x, values);
+  };
+  Eigen::VectorXd b = share.elements ? subset_load(space(), *share.elements, source, qa) : assembler().load(source, qa);
   // Natural conditions: Neumann flux ∫ g_N v, and for simply supported plates ∫ Δu ∂v/∂n
   // (from ∫ Δ²u v = ∫ Δu Δv − ∫_Γ Δu ∂v/∂n when v = 0 on Γ).
   const int ne = space().num_elements();
