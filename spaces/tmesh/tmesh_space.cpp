@@ -20,11 +20,17 @@ TMeshSpace::TMeshSpace(TMesh mesh, int regularity, bool rectangular, std::string
   extraction_ = hermite_extraction(mesh_, r_);
   normalize_basis();
   // Exact lattice lengths as keys: dyadic meshes have a handful of distinct cell sizes.
+  std::map<std::pair<SideKey, SideKey>, int> kind_of;
   for (int c = 0; c < mesh_.num_cells(); ++c) {
     const TCell& cell = mesh_.cells()[c];
     const SideKey kx = side_x(cell), ky = side_y(cell);
     if (!bernstein_.count(kx)) bernstein_.emplace(kx, SectionBernstein(mesh_.sections()[cell.section_s], mesh_.width(c)));
     if (!bernstein_.count(ky)) bernstein_.emplace(ky, SectionBernstein(mesh_.sections()[cell.section_t], mesh_.height(c)));
+    const auto [it, added] = kind_of.emplace(std::make_pair(kx, ky), static_cast<int>(kinds_.size()));
+    if (added) kinds_.push_back(it->first);
+    cell_kind_.push_back(it->second);
+    local_by_active_.push_back(extraction_.matrix[c].transpose().sparseView());
+    local_by_active_.back().makeCompressed();
   }
   for (int c = 0; c < mesh_.num_cells(); ++c) mesh_size_ = std::max(mesh_size_, std::hypot(mesh_.width(c), mesh_.height(c)));
   // Extra degree of every rule for the largest w h of a non-polynomial section.
