@@ -129,20 +129,10 @@ void TMeshSpace::cell_box(int cell, Point2& lo, Point2& hi) const {
   hi = mesh_.point(c.x1, c.y1);
 }
 
-RulePtr TMeshSpace::quadrature(int, int degree) const {
-  degree = std::max(degree, 0) + extra_degree_;
-  std::lock_guard<std::mutex> lock(rule_mutex_);
-  RulePtr& r = cell_rules_[degree];
-  if (!r) r = std::make_shared<const QuadratureRule>(tensor_gauss(degree));
-  return r;
-}
+RulePtr TMeshSpace::quadrature(int, int degree) const { return rules_.cell(std::max(degree, 0) + extra_degree_); }
 
 RulePtr TMeshSpace::edge_quadrature(int, int edge, int degree) const {
-  degree = std::max(degree, 0) + extra_degree_;
-  std::lock_guard<std::mutex> lock(rule_mutex_);
-  RulePtr& r = edge_rules_[{edge, degree}];
-  if (!r) r = std::make_shared<const QuadratureRule>(edge_rule(CellShape::quadrilateral, edge, gauss_legendre_for_degree(degree)));
-  return r;
+  return rules_.edge(edge, std::max(degree, 0) + extra_degree_);
 }
 
 namespace {

@@ -13,13 +13,13 @@
 #include <cstdint>
 #include <map>
 #include <memory>
-#include <mutex>
 #include <tuple>
 #include <vector>
 
 #include <Eigen/SparseCore>
 
 #include "spaces/element_core.hpp"
+#include "spaces/gauss_rule_cache.hpp"
 #include "spaces/space.hpp"
 #include "spaces/tmesh/hermite_extraction.hpp"
 #include "spaces/tmesh/tmesh.hpp"
@@ -109,10 +109,7 @@ class TMeshSpace final : public Space, public LocallyRefinable, public FastEvalu
   std::unique_ptr<const ClosedForms> closed_forms_;
   double mesh_size_ = 0.0;
   int extra_degree_ = 0;
-
-  mutable std::mutex rule_mutex_;
-  mutable std::map<int, RulePtr> cell_rules_;
-  mutable std::map<std::pair<int, int>, RulePtr> edge_rules_;
+  GaussRuleCache rules_;
 };
 
 }  // namespace iga

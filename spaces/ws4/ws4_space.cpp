@@ -267,30 +267,10 @@ Eigen::VectorXd Ws4Space::interpolate(const Jet3& f) const {
 }
 
 RulePtr Ws4Space::quadrature(int, int degree) const {
-  degree = std::max(degree, 0);
-  std::lock_guard<std::mutex> lock(rule_mutex_);
-  RulePtr& r = cell_rules_[degree];
-  if (!r) r = std::make_shared<const QuadratureRule>(Ws4Split::reference().composite_rule(degree));
-  return r;
+  return rules_.made(degree, [&] { return Ws4Split::reference().composite_rule(std::max(degree, 0)); });
 }
 
-RulePtr Ws4Space::edge_quadrature(int, int edge, int degree) const {
-  degree = std::max(degree, 0);
-  std::lock_guard<std::mutex> lock(rule_mutex_);
-  RulePtr& r = edge_rules_[{edge, degree}];
-  if (!r) {
-    const QuadratureRule g = gauss_legendre_for_degree(degree);
-    QuadratureRule quarters;
-    quarters.degree = g.degree;
-    for (int piece = 0; piece < 4; ++piece)
-      for (int k = 0; k < g.size(); ++k) {
-        quarters.points.emplace_back(0.25 * (piece + g.points[k].x()), 0.0);
-        quarters.weights.push_back(0.25 * g.weights[k]);
-      }
-    r = std::make_shared<const QuadratureRule>(edge_rule(CellShape::triangle, edge, quarters));
-  }
-  return r;
-}
+RulePtr Ws4Space::edge_quadrature(int, int edge, int degree) const { return rules_.triangle_edge(edge, degree); }
 
 std::vector<BoundaryEdge> Ws4Space::part_edges(int part) const {
   std::vector<BoundaryEdge> out;

@@ -26,10 +26,9 @@
 /// ws4_hermite_transform.hpp). Both neighbours of an edge use the same normal and points, hence C³
 /// (notes §2.3).
 
-#include <map>
-#include <mutex>
 
 #include "spaces/element_core.hpp"
+#include "spaces/gauss_rule_cache.hpp"
 #include "spaces/space.hpp"
 #include "spaces/ws4/triangulation.hpp"
 #include "spaces/ws4/ws4_hermite_transform.hpp"
@@ -99,10 +98,7 @@ class Ws4Space final : public Space, public FastEvaluator {
   std::vector<Eigen::MatrixXd> class_extraction_;
   std::unique_ptr<const ClosedForms> closed_forms_;
   std::vector<Eigen::Matrix2d> vertex_frame_;
-
-  mutable std::mutex rule_mutex_;
-  mutable std::map<int, RulePtr> cell_rules_;
-  mutable std::map<std::pair<int, int>, RulePtr> edge_rules_;
+  GaussRuleCache rules_{4};  ///< edges: Gauss on each quarter (the pieces of the split along it)
 };
 
 }  // namespace iga::ws4
