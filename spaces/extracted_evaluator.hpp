@@ -98,14 +98,9 @@ class ExtractedEvaluator final : public Space::Evaluator {
     }
   }
 
- private:
-  /// The map's second derivatives: planar Hessians need them, and on surfaces the curvature too.
-  static int map_order(unsigned flags) {
-    return (flags & (update_hessians | update_surface_curvature)) ? 2 : 1;
-  }
-
   /// The tables of element's local basis at rule's points, built once per (rule, kind) and again
   /// when a higher order is asked (rules are shared by address; the points guard a reused address).
+  /// Public for evaluator specialisations that contract them their own way.
   const LocalTables& tables(int element, const QuadratureRule& rule, int order) {
     const auto key = std::make_pair(&rule, core_.kind(element));
     auto it = cache_.find(key);
@@ -115,6 +110,12 @@ class ExtractedEvaluator final : public Space::Evaluator {
     entry.points = rule.points;
     entry.order = core_.tabulate(key.second, rule.points, order, entry.t);
     return entry.t;
+  }
+
+ private:
+  /// The map's second derivatives: planar Hessians need them, and on surfaces the curvature too.
+  static int map_order(unsigned flags) {
+    return (flags & (update_hessians | update_surface_curvature)) ? 2 : 1;
   }
 
   /// Push-forward of reference data (ReferenceDerivatives, or the tables themselves when C_e = I)

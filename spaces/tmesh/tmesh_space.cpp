@@ -29,8 +29,6 @@ TMeshSpace::TMeshSpace(TMesh mesh, int regularity, bool rectangular, std::string
     const auto [it, added] = kind_of.emplace(std::make_pair(kx, ky), static_cast<int>(kinds_.size()));
     if (added) kinds_.push_back(it->first);
     cell_kind_.push_back(it->second);
-    local_by_active_.push_back(extraction_.matrix[c].transpose().sparseView());
-    local_by_active_.back().makeCompressed();
   }
   for (int c = 0; c < mesh_.num_cells(); ++c) mesh_size_ = std::max(mesh_size_, std::hypot(mesh_.width(c), mesh_.height(c)));
   // Extra degree of every rule for the largest w h of a non-polynomial section.

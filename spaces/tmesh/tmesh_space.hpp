@@ -16,8 +16,6 @@
 #include <tuple>
 #include <vector>
 
-#include <Eigen/SparseCore>
-
 #include "spaces/element_core.hpp"
 #include "spaces/gauss_rule_cache.hpp"
 #include "spaces/space.hpp"
@@ -101,8 +99,6 @@ class TMeshSpace final : public Space, public LocallyRefinable, public FastEvalu
   std::string domain_;
   HermiteExtraction extraction_;
   std::map<SideKey, SectionBernstein> bernstein_;
-  /// E_cᵀ of every cell, compressed: (n+1)² × n_active, the generic evaluator's active × local view.
-  std::vector<Eigen::SparseMatrix<double>> local_by_active_;
   /// The local basis of every cell: an index into the distinct pairs (side x, side y) of kinds_.
   std::vector<int> cell_kind_;
   std::vector<std::pair<SideKey, SideKey>> kinds_;
