@@ -103,10 +103,4 @@ SpanIntegrals span_integrals(const KnotVector& knots, int span) {
   return out;
 }
 
-bool tensor_element_matrix(const SpanIntegrals& u, const SpanIntegrals& v, const Eigen::Matrix2d& jacobian,
-                           BilinearForm form, DoubleDoubleMatrix& local) {
-  tensor_form_matrix(u, v, affine_form_terms<DoubleDouble>(form, jacobian), local);
-  return true;
-}
-
 }  // namespace iga

@@ -44,9 +44,6 @@ SpacePtr build_or_name_the_separable_degree(const G14Options& o, const ConfigNod
   }
 }
 
-/// The file of `domain.file`, relative to the config's folder and confined to it (resolve_config_file).
-std::filesystem::path surface_file(const ConfigNode& node) { return resolve_config_file(node); }
-
 /// A closed quad surface in 3D: a built-in (cube, split_tetrahedron) or a quad .obj/.off file.
 std::pair<QuadTopology, std::vector<Eigen::Vector3d>> surface_mesh(const ConfigNode& domain) {
   domain.check_keys({"type", "mesh", "file"});
@@ -59,7 +56,7 @@ std::pair<QuadTopology, std::vector<Eigen::Vector3d>> surface_mesh(const ConfigN
     return {split_tetrahedron_topology(), split_tetrahedron_vertices()};
   }
   const ConfigNode node = domain["file"];
-  const std::filesystem::path path = surface_file(node);
+  const std::filesystem::path path = resolve_config_file(node);
   const QuadSurfaceFile read = node.guard([&] {
     QuadSurfaceFile file = read_quad_surface_mesh(path.string());
     validate_quad_surface(file);  // degenerate, folded, repeated faces: named here, not as a failed solve
@@ -112,7 +109,7 @@ std::vector<SpaceRequestSize> g1_4split_requested_sizes(const ConfigNode& domain
     const double r = regularity ? regularity->as_int() : 1;
     if (k < 3 || k > 10 || r < 1 || 2 * k - r < 4) return {};
     // Reading the file is cheap (its size is capped); the space built on it is not.
-    const QuadSurfaceFile read = read_quad_surface_mesh(surface_file(*file).string());
+    const QuadSurfaceFile read = read_quad_surface_mesh(resolve_config_file(*file).string());
     std::vector<std::pair<int, int>> edges;
     std::vector<int> used;
     for (const auto& q : read.quads)
