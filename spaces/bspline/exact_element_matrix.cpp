@@ -4,6 +4,8 @@
 #include <array>
 #include <vector>
 
+#include "spaces/bspline/bspline_basis_1d.hpp"
+
 namespace iga {
 
 namespace {
@@ -50,12 +52,6 @@ Table extraction_dd(const KnotVector& knots, int span) {
   for (int r = 0; r <= p; ++r)
     for (int i = 0; i <= p; ++i) out[r][i] = T[r][s + i];
   return out;
-}
-
-double binomial(int n, int k) {
-  double c = 1.0;
-  for (int i = 1; i <= k; ++i) c = c * (n - k + i) / i;  // exact for the small degrees used
-  return c;
 }
 
 /// Bernstein coefficients of the derivative of Σ c_i B_i^m: m (c_{i+1} − c_i) in degree m − 1.
