@@ -344,8 +344,8 @@ bool TensorBSplineSpace::ExactMatrices::double_double(int element, BilinearForm 
   g.jacobian.col(1) *= h.y();
   // The tensor functions N_a(s) M_b(t), ordered a + b (p_u+1); no extraction (the span integrals
   // include it). Every standard form has a closed form here.
-  tensor_form_matrix(s.span_integrals_u_[ex], s.span_integrals_v_[ey], affine_form_terms<DoubleDouble>(form, g.jacobian),
-                     local);
+  tensor_form_matrix(s.span_integrals_u_[ex], s.span_integrals_v_[ey],
+                     affine_form_terms<DoubleDouble>(form, g.jacobian), local);
   return true;
 }
 
