@@ -4,6 +4,8 @@
 #include <array>
 #include <vector>
 
+#include "spaces/bspline/bspline_basis_1d.hpp"
+
 namespace iga {
 
 namespace {
@@ -52,12 +54,6 @@ Table extraction_dd(const KnotVector& knots, int span) {
   return out;
 }
 
-double binomial(int n, int k) {
-  double c = 1.0;
-  for (int i = 1; i <= k; ++i) c = c * (n - k + i) / i;  // exact for the small degrees used
-  return c;
-}
-
 /// Bernstein coefficients of the derivative of Σ c_i B_i^m: m (c_{i+1} − c_i) in degree m − 1.
 Row differentiate(const Row& c) {
   const int m = static_cast<int>(c.size()) - 1;
@@ -101,12 +97,6 @@ SpanIntegrals span_integrals(const KnotVector& knots, int span) {
         for (int c = 0; c <= p; ++c) m.set(a, c, integrate_product(derivative[k][a], derivative[l][c]));
     }
   return out;
-}
-
-bool tensor_element_matrix(const SpanIntegrals& u, const SpanIntegrals& v, const Eigen::Matrix2d& jacobian,
-                           BilinearForm form, DoubleDoubleMatrix& local) {
-  tensor_form_matrix(u, v, affine_form_terms<DoubleDouble>(form, jacobian), local);
-  return true;
 }
 
 }  // namespace iga

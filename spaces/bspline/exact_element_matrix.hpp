@@ -22,11 +22,4 @@ namespace iga {
 using SpanIntegrals = DerivativeMoments<DoubleDoubleMatrix>;
 SpanIntegrals span_integrals(const KnotVector& knots, int span);
 
-/// The element matrix of `form` for the tensor functions N_a(s) M_b(t), ordered a + b (p_u+1), on
-/// an element whose reference square maps to the physical one by the constant Jacobian `jacobian`
-/// (J(i, k) = dx_i/dξ_k): the sum-factorised tensor path of affine_element_matrices.hpp, no
-/// extraction (the span integrals include it). True: every standard form has one.
-bool tensor_element_matrix(const SpanIntegrals& u, const SpanIntegrals& v, const Eigen::Matrix2d& jacobian,
-                           BilinearForm form, DoubleDoubleMatrix& local);
-
 }  // namespace iga
