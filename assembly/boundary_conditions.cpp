@@ -249,7 +249,9 @@ void reduce_system(const SplitMatrix& K, const Eigen::VectorXd& b, const Constra
 }
 
 Eigen::VectorXd expand_solution(const Eigen::VectorXd& u_free, const Constraints& c) {
-  if (!c.basis_change.empty()) return c.values + free_basis(c) * u_free;
+  // Column-major: the product adds into the values column by column (the row-major one would
+  // sum each row first and round differently).
+  if (!c.basis_change.empty()) return c.values + SparseMatrix(free_basis(c)) * u_free;
   Eigen::VectorXd u = c.values;
   for (int k = 0; k < static_cast<int>(c.free.size()); ++k) u(c.free[k]) = u_free(k);
   return u;
