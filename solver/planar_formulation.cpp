@@ -23,19 +23,17 @@ std::vector<BoundaryEdge> edges_of(const std::vector<BoundaryEdge>& edges, const
 }
 }  // namespace
 
-void check_boundary_parts(const Space& space, const ProblemSpec& problem) {
-  const std::vector<std::string> names = space.boundary_names();
-  for (const BoundaryPart& part : problem.boundary) {
+void PlanarFormulation::check() const {
+  const std::vector<std::string> names = space().boundary_names();
+  for (const BoundaryPart& part : problem().boundary) {
     if (part.name == "all" || std::find(names.begin(), names.end(), part.name) != names.end()) continue;
     std::string list = "all";
     for (const auto& n : names) list += ", " + n;
     const std::string near = nearest_word(part.name, names);
-    throw InputError(part.where + ": unknown boundary part '" + part.name + "' of this " + space.type() +
+    throw InputError(part.where + ": unknown boundary part '" + part.name + "' of this " + space().type() +
                      " domain (parts: " + list + ")" + (near.empty() ? "" : " (did you mean '" + near + "'?)"));
   }
 }
-
-void PlanarFormulation::check() const { check_boundary_parts(space(), problem()); }
 
 const BoundarySplit& PlanarFormulation::boundary() const {
   if (!boundary_) boundary_ = split_boundary(space(), problem());
