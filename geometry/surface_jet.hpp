@@ -24,7 +24,7 @@ struct SurfaceJet {
   double area = 0.0;                                  ///< √det G = |x_ξ × x_η|
   Eigen::Vector3d normal = Eigen::Vector3d::Zero();   ///< unit x_ξ × x_η
 
-  // Second order (has_second): zero otherwise.
+  // Second order: meaningful only when has_second (a jet refilled at first order keeps stale values).
   bool has_second = false;
   std::array<Eigen::Vector3d, 3> second{};           ///< x_ξξ, x_ξη, x_ηη
   Eigen::Matrix2d second_form = Eigen::Matrix2d::Zero();      ///< B_ab = x_ab · n
@@ -38,6 +38,12 @@ SurfaceJet surface_jet(const Eigen::Vector3d& x, const Eigen::Matrix<double, 3, 
 /// Second-order jet: also x_ξξ, x_ξη, x_ηη and the curvatures.
 SurfaceJet surface_jet(const Eigen::Vector3d& x, const Eigen::Matrix<double, 3, 2>& jacobian,
                        const std::array<Eigen::Vector3d, 3>& second);
+
+/// The same, written into an existing jet: evaluators refill one jet per quadrature point of every
+/// element, and building a fresh ~50-double struct per point and copying it cost as much as the
+/// geometry itself on low-degree surface elements. `second` null: first order (has_second false).
+void fill_surface_jet(SurfaceJet& j, const Eigen::Vector3d& x, const Eigen::Matrix<double, 3, 2>& jacobian,
+                      const std::array<Eigen::Vector3d, 3>* second = nullptr);
 
 /// The unit normal x_ξ × x_η / |x_ξ × x_η| of tangent vectors (no metric inverse; for checks that
 /// need only the normal).

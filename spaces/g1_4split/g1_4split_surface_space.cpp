@@ -69,7 +69,7 @@ struct G14SurfaceSpace::Core {
         for (int ab = 0; ab < 3; ++ab) dd[ab](c) = X[c](3 + ab, k);
       }
       // The sign of n does not matter to the problems: H ∂_n u is the same for −n.
-      jets[k] = second ? surface_jet(x, J, dd) : surface_jet(x, J);
+      fill_surface_jet(jets[k], x, J, second ? &dd : nullptr);
     }
   }
 };

@@ -136,7 +136,7 @@ struct SurfaceBernsteinSpace::Core {
       Eigen::Matrix<double, 3, 2> J;
       for (int c = 0; c < 2; ++c) J.col(c) = jet.d[0] * dir[c](0) + jet.d[1] * dir[c](1) + jet.d[2] * dir[c](2);
       if (!second) {
-        jets[k] = surface_jet(jet.x, J);
+        fill_surface_jet(jets[k], jet.x, J);
         continue;
       }
       const auto along = [&](const Eigen::Vector3d& u, const Eigen::Vector3d& v) {
@@ -145,7 +145,8 @@ struct SurfaceBernsteinSpace::Core {
           for (int b = 0; b < 3; ++b) s += u(a) * v(b) * jet.dd[a][b];
         return s;
       };
-      jets[k] = surface_jet(jet.x, J, {along(dir[0], dir[0]), along(dir[0], dir[1]), along(dir[1], dir[1])});
+      const std::array<Eigen::Vector3d, 3> dd = {along(dir[0], dir[0]), along(dir[0], dir[1]), along(dir[1], dir[1])};
+      fill_surface_jet(jets[k], jet.x, J, &dd);
     }
   }
 };
