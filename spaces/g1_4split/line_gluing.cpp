@@ -71,6 +71,10 @@ int opposite_edge(const QuadTopology& t, int v, int edge) {
 }
 
 std::vector<SplitGluing> line_gluing(const QuadTopology& t, const std::vector<double>& A, LineGluingReport* report) {
+  return line_gluing(t, [&](int v, int) { return A[v]; }, report);
+}
+
+std::vector<SplitGluing> line_gluing(const QuadTopology& t, const EndValue& A, LineGluingReport* report) {
   std::vector<char> used(t.num_edges(), 0);
   for (int e = 0; e < t.num_edges(); ++e) used[e] = t.edge(e).boundary() ? 1 : 0;
   std::vector<Line> lines;
@@ -82,7 +86,7 @@ std::vector<SplitGluing> line_gluing(const QuadTopology& t, const std::vector<do
     const int L = static_cast<int>(l.e.size());
     l.value.assign(L + 1, 0.0);
     if (!l.closed) {
-      const double first = A[l.v.front()], last = -A[l.v.back()];
+      const double first = A(l.v.front(), l.e.front()), last = -A(l.v.back(), l.e.back());
       for (int j = 0; j <= L; ++j) l.value[j] = first + (last - first) * j / L;
     }
     for (double& x : l.value)
@@ -138,6 +142,91 @@ std::vector<SplitGluing> line_gluing(const QuadTopology& t, const std::vector<do
   if (report) {
     report->lines = static_cast<int>(lines.size());
     report->zigzag_lines = static_cast<int>(std::count(zigzag.begin(), zigzag.end(), 1));
+  }
+  return g;
+}
+
+std::vector<SplitGluing> vertexwise_gluing(const QuadTopology& t, const EndValue& A, LineGluingReport* report) {
+  // True crossings: interior vertices whose edges all have value 0.
+  std::vector<char> crossing(t.num_vertices(), 0);
+  for (int v = 0; v < t.num_vertices(); ++v) {
+    if (t.vertex_on_boundary(v) || t.vertex_edges(v).size() != 4) continue;
+    bool all = true;
+    for (int e : t.vertex_edges(v)) all = all && std::abs(A(v, e)) < kZero;
+    crossing[v] = all;
+  }
+  std::vector<double> a0(t.num_edges(), 0.0), a1(t.num_edges(), 0.0), mid(t.num_edges(), 0.0);
+  for (int e = 0; e < t.num_edges(); ++e) {
+    if (t.edge(e).boundary()) continue;
+    a0[e] = crossing[t.edge(e).g0] ? 0.0 : A(t.edge(e).g0, e);
+    a1[e] = crossing[t.edge(e).g1] ? 0.0 : -A(t.edge(e).g1, e);
+    mid[e] = 0.5 * (a0[e] + a1[e]);
+  }
+  // Chains through true crossings (forward orientation along the chain).
+  std::vector<char> done(t.num_edges(), 0);
+  int chains = 0;
+  for (int start = 0; start < t.num_edges(); ++start) {
+    if (done[start] || t.edge(start).boundary()) continue;
+    const int g0 = t.edge(start).g0, g1 = t.edge(start).g1;
+    if (!crossing[g0] && !crossing[g1]) continue;  // no constraint on this edge's mid value
+    // Walk back to the chain's first edge, then forward; (edge, forward?) in chain order.
+    int e = start, from = g1;  // walking backwards: leave through g0
+    for (int guard = 0; guard < t.num_edges(); ++guard) {
+      const int v = t.edge(e).g0 == from ? t.edge(e).g1 : t.edge(e).g0;
+      if (!crossing[v]) break;
+      const int prev = opposite_edge(t, v, e);
+      if (prev == start) break;  // closed chain: any start
+      from = v;
+      e = prev;
+    }
+    // Now `e` is the first edge, entered from its end opposite to `from`... orient: it starts at
+    // the vertex that is not `from`'s side of the walk.
+    int v = t.edge(e).g0 == from ? t.edge(e).g1 : t.edge(e).g0;  // the chain's first vertex
+    std::vector<std::pair<int, bool>> chain;
+    bool closed = false;
+    for (int guard = 0; guard <= t.num_edges(); ++guard) {
+      chain.emplace_back(e, t.edge(e).g0 == v);
+      done[e] = 1;
+      v = t.edge(e).g0 == v ? t.edge(e).g1 : t.edge(e).g0;
+      if (!crossing[v]) break;
+      e = opposite_edge(t, v, e);
+      if (e == chain.front().first) {
+        closed = true;
+        break;
+      }
+    }
+    ++chains;
+    // Forward mids of the linear data, with the chain's alternating sign.
+    double sum = 0.0, big = 0.0;
+    int big_j = 0;
+    std::vector<double> m(chain.size());
+    for (std::size_t j = 0; j < chain.size(); ++j) {
+      const auto [edge, forward] = chain[j];
+      m[j] = (forward ? 1.0 : -1.0) * mid[edge] * (j % 2 ? -1.0 : 1.0);
+      sum += m[j];
+      if (std::abs(m[j]) > big) big = std::abs(m[j]), big_j = static_cast<int>(j);
+    }
+    if (closed && chain.size() % 2 == 1 && big > kZero) return {};  // μ = −μ with a kink
+    double mu = closed && chain.size() % 2 == 1 ? 0.0 : sum / static_cast<double>(chain.size());
+    if (big > kZero && std::abs(mu) < 0.5 * big) mu = m[big_j];  // keep a(½) away from 0 at kinks
+    for (std::size_t j = 0; j < chain.size(); ++j) {
+      const auto [edge, forward] = chain[j];
+      mid[edge] = (forward ? 1.0 : -1.0) * mu * (j % 2 ? -1.0 : 1.0);
+    }
+  }
+  std::vector<SplitGluing> g(t.num_edges());
+  for (int e = 0; e < t.num_edges(); ++e) {
+    if (t.edge(e).boundary()) continue;
+    // A kink at ½ with a(½) = 0 would force p'(½) = 0 on every function (singular geometry).
+    const double kink = (a1[e] - mid[e]) - (mid[e] - a0[e]);
+    if (std::abs(mid[e]) < kZero && std::abs(kink) > kZero) return {};
+    g[e] = SplitGluing::piecewise_linear(a0[e], mid[e], a1[e]);
+  }
+  if (twist_incompatible_vertex(t, g) >= 0) return {};
+  if (report) {
+    report->lines = chains;
+    report->zigzag_lines = 0;
+    report->mesh_fans = true;
   }
   return g;
 }

@@ -19,6 +19,7 @@
 /// ∓2μ equal on both sides of each vertex, a(½) = ±μ ≠ 0 so the kink at ½ forces nothing on p'(½)).
 /// Every piece is linear, so refined sub-edges carry linear data: nested, separable, optimal.
 
+#include <functional>
 #include <vector>
 
 #include "spaces/g1_4split/gluing.hpp"
@@ -29,12 +30,27 @@ namespace iga {
 struct LineGluingReport {
   int lines = 0;          ///< mesh lines (open and closed)
   int zigzag_lines = 0;   ///< lines turned to zigzag data to resolve a conflict
+  bool mesh_fans = false; ///< vertexwise_gluing from the mesh's own fans (then `lines` counts its chains)
 };
 
-/// Gluing per edge (unused entries for boundary edges) from the symmetric vertex values
-/// `vertex_value` (A of every vertex; used at the ends of the lines only).
+/// The gluing value a vertex gives one of its edges (outward: a(γ) seen from the vertex).
+using EndValue = std::function<double(int vertex, int edge)>;
+
+/// Gluing per edge (unused entries for boundary edges) from the vertex values (used at the ends
+/// of the lines only): `end_value(v, e)`, or the same A for every edge of a vertex.
+std::vector<SplitGluing> line_gluing(const QuadTopology& t, const EndValue& end_value,
+                                     LineGluingReport* report = nullptr);
 std::vector<SplitGluing> line_gluing(const QuadTopology& t, const std::vector<double>& vertex_value,
                                      LineGluingReport* report = nullptr);
+
+/// Gluing linear on each edge between end values given at every vertex (e.g. from the mesh's own
+/// fans, fan_values.hpp), where these already satisfy Condition 1 at every vertex. At interior
+/// vertices where all four values vanish (true crossings) the twist condition needs equal slopes on
+/// opposite edges: along each chain of edges through such vertices the mid-edge values alternate
+/// ±μ (μ fitted to the linear mids, kept away from 0 where the chain has a kink). Empty when that
+/// fails (a chain that closes with an odd sign, a kink with a(½) = 0).
+std::vector<SplitGluing> vertexwise_gluing(const QuadTopology& t, const EndValue& end_value,
+                                           LineGluingReport* report = nullptr);
 
 /// The edge opposite to `edge` at the interior valence-4 vertex v (the one sharing no face corner
 /// with it there), or -1 when v is not an interior valence-4 vertex.
