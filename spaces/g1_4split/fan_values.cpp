@@ -5,6 +5,9 @@
 #include <cmath>
 #include <set>
 
+#include "spaces/g1_4split/g1_4split_basis.hpp"
+#include "spaces/g1_4split/g1_4split_meshes.hpp"
+
 namespace iga {
 
 namespace {
@@ -95,6 +98,17 @@ std::vector<std::map<int, double>> fan_gluing_values(const PatchMesh& mesh, cons
     }
   }
   return out;
+}
+
+std::vector<SplitGluing> planar_line_gluing(const PatchMesh& mesh, const QuadTopology& t, LineGluingReport* report) {
+  const std::vector<double> A = symmetric_vertex_values(t, vertex_angles(mesh));
+  const std::vector<std::map<int, double>> fan = fan_gluing_values(mesh, t);
+  const EndValue value = [&](int v, int e) {
+    const auto it = fan[v].find(e);
+    return it != fan[v].end() ? it->second : A[v];
+  };
+  std::vector<SplitGluing> g = vertexwise_gluing(t, value, report);
+  return g.empty() ? line_gluing(t, A, report) : g;
 }
 
 }  // namespace iga

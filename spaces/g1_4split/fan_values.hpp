@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "spaces/g1/patch_mesh.hpp"
+#include "spaces/g1_4split/line_gluing.hpp"
 #include "spaces/g1_4split/quad_topology.hpp"
 
 namespace iga {
@@ -27,5 +28,10 @@ namespace iga {
 /// Per vertex, the outward gluing value of each of its interior edges (edge id -> A); empty for
 /// vertices that keep the symmetric value. `topology` = quad_topology(mesh).
 std::vector<std::map<int, double>> fan_gluing_values(const PatchMesh& mesh, const QuadTopology& topology);
+
+/// The default (`lines`) gluing of a planar mesh: vertexwise_gluing of the fan values (the symmetric
+/// value where a vertex has none); line_gluing of the symmetric values where that fails.
+std::vector<SplitGluing> planar_line_gluing(const PatchMesh& mesh, const QuadTopology& topology,
+                                            LineGluingReport* report = nullptr);
 
 }  // namespace iga

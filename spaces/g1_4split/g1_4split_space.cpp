@@ -49,19 +49,6 @@ struct G14Core {
   }
 };
 
-/// Gluing from the mesh's own fans where an equal-area fan exists (fan_values.hpp; symmetric values
-/// elsewhere), linear per edge; the symmetric lines gluing where that is not twist-compatible.
-std::vector<SplitGluing> planar_line_gluing(const PatchMesh& mesh, const QuadTopology& t, LineGluingReport* report) {
-  const std::vector<double> A = symmetric_vertex_values(t, vertex_angles(mesh));
-  const std::vector<std::map<int, double>> fan = fan_gluing_values(mesh, t);
-  const EndValue value = [&](int v, int e) {
-    const auto it = fan[v].find(e);
-    return it != fan[v].end() ? it->second : A[v];
-  };
-  std::vector<SplitGluing> g = vertexwise_gluing(t, value, report);
-  return g.empty() ? line_gluing(t, A, report) : g;
-}
-
 }  // namespace
 
 G14Space::G14Space(const PatchMesh& coarse, const G14Options& options) : options_(options) {
