@@ -57,21 +57,23 @@ for n in (3, 5, 6):
           ["The regular %d-gon as %d quads around a valence-%d centre, split once (scripts/g14_meshes.py):" % (n, n, n),
            "its spoke midpoints are interior crossing vertices next to the centre."], v, f)
 
-# Torus: R = 1, r = 0.4, 8 x 4 quads, every vertex of valence 4 (a closed surface in 3D).
-N, M, R, r = 8, 4, 1.0, 0.4
-v = []
-for i in range(N):
-    for j in range(M):
-        u, w = 2 * math.pi * i / N, 2 * math.pi * j / M + math.pi / M
-        v.append(((R + r * math.cos(w)) * math.cos(u), (R + r * math.cos(w)) * math.sin(u), r * math.sin(w)))
-faces = []
-for i in range(N):
-    for j in range(M):
-        a, b = i * M + j, ((i + 1) % N) * M + j
-        c, d = ((i + 1) % N) * M + (j + 1) % M, i * M + (j + 1) % M
-        faces.append([a, b, c, d])
-write("g14_torus_8x4.obj", ["A quad torus (R = 1, r = 0.4), 8 x 4 faces, every vertex of valence 4 (scripts/g14_meshes.py)."],
-      v, faces)
+# Tori: R = 1, r = 0.4, N x M quads, every vertex of valence 4 (closed surfaces in 3D).
+for N, M in ((8, 4), (16, 8)):
+    R, r = 1.0, 0.4
+    v = []
+    for i in range(N):
+        for j in range(M):
+            u, w = 2 * math.pi * i / N, 2 * math.pi * j / M + math.pi / M
+            v.append(((R + r * math.cos(w)) * math.cos(u), (R + r * math.cos(w)) * math.sin(u), r * math.sin(w)))
+    faces = []
+    for i in range(N):
+        for j in range(M):
+            a, b = i * M + j, ((i + 1) % N) * M + j
+            c, d = ((i + 1) % N) * M + (j + 1) % M, i * M + (j + 1) % M
+            faces.append([a, b, c, d])
+    write("g14_torus_%dx%d.obj" % (N, M),
+          ["A quad torus (R = 1, r = 0.4), %d x %d faces, every vertex of valence 4 (scripts/g14_meshes.py)." % (N, M)],
+          v, faces)
 
 # Pentagonal trapezohedron (the d10 die): 10 kites, 2 apexes of valence 5, 10 vertices of valence 3.
 h, z = 1.0, 0.1056
