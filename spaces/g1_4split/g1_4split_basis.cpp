@@ -7,6 +7,7 @@
 #include <map>
 
 #include "spaces/g1_4split/edge_equations.hpp"
+#include "spaces/g1_4split/line_gluing.hpp"
 
 namespace iga {
 
@@ -63,21 +64,30 @@ int nullspace_dimension(const Eigen::MatrixXd& M) {
   return static_cast<int>(M.cols()) - rank;
 }
 
+std::vector<double> symmetric_vertex_values(const QuadTopology& t, const std::vector<double>& boundary_angles) {
+  std::vector<double> A(t.num_vertices(), 0.0);
+  for (int v = 0; v < t.num_vertices(); ++v) {
+    const int F = t.vertex_faces(v);
+    if (F == 0) continue;
+    if (!t.vertex_on_boundary(v) || boundary_angles.empty()) {
+      A[v] = vertex_gluing_value(F, t.vertex_on_boundary(v));
+    } else {
+      A[v] = 2 * std::cos(boundary_angles[v] / F);
+      if (std::abs(A[v]) < 1e-9) A[v] = 0.0;  // a straight boundary point with 2 faces is crossing
+    }
+  }
+  return A;
+}
+
 std::vector<SplitGluing> symmetric_gluing(const QuadTopology& t, Blending blending,
                                           const std::vector<double>& boundary_angles) {
-  auto value = [&](int v) {
-    const int F = t.vertex_faces(v);
-    if (!t.vertex_on_boundary(v) || boundary_angles.empty()) return vertex_gluing_value(F, t.vertex_on_boundary(v));
-    const double A = 2 * std::cos(boundary_angles[v] / F);
-    return std::abs(A) < 1e-9 ? 0.0 : A;  // a straight boundary point with 2 faces is crossing
-  };
+  const std::vector<double> A = symmetric_vertex_values(t, boundary_angles);
+  if (blending == Blending::lines) return line_gluing(t, A);
   std::vector<SplitGluing> g(t.num_edges());
   for (int e = 0; e < t.num_edges(); ++e) {
     const QuadEdge& edge = t.edge(e);
     if (edge.boundary()) continue;
-    const double A0 = value(edge.g0);
-    const double A1 = value(edge.g1);
-    g[e] = SplitGluing::symmetric(A0, A1, blending);
+    g[e] = SplitGluing::symmetric(A[edge.g0], A[edge.g1], blending);
   }
   return g;
 }
@@ -108,17 +118,7 @@ std::vector<SplitGluing> inherited_gluing(const QuadTopology& coarse, const std:
 }
 
 int crossing_vertex_with_slope(const QuadTopology& t, const std::vector<SplitGluing>& gluing) {
-  for (int v = 0; v < t.num_vertices(); ++v) {
-    if (t.vertex_on_boundary(v)) continue;
-    bool crossing = true, slope = false;
-    for (int e : t.vertex_edges(v)) {
-      const bool start = t.edge(e).g0 == v;
-      crossing = crossing && std::abs(gluing[e].eval(start ? 0.0 : 1.0, 0, start ? 0 : 1)) < 1e-12;
-      slope = slope || std::abs(gluing[e].eval(start ? 0.0 : 1.0, 1, start ? 0 : 1)) > 1e-12;
-    }
-    if (crossing && slope) return v;
-  }
-  return -1;
+  return twist_incompatible_vertex(t, gluing);
 }
 
 Eigen::SparseMatrix<double> global_constraints(const QuadTopology& t, const std::vector<SplitGluing>& gluing,

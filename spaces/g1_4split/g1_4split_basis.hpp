@@ -35,10 +35,14 @@ struct G14Basis {
   int dimension() const { return static_cast<int>(functions.cols()); }
 };
 
+/// The symmetric gluing value A of every vertex: 2cos(2π/F) inside, 2cos(α/F) on the boundary
+/// (α from `boundary_angles`, or π when it is empty), snapped to 0 at crossing vertices.
+std::vector<double> symmetric_vertex_values(const QuadTopology& t, const std::vector<double>& boundary_angles = {});
+
 /// Gluing data per edge (unused entries for boundary edges): the symmetric data of the mesh,
 /// a(t) = A_{g0} d0(t) - A_{g1} d0(1 - t) with vertex_gluing_value. `boundary_angles` (empty, or
 /// one per vertex) gives the interior angle α of the domain at boundary vertices, A = 2cos(α/F);
-/// empty means a straight boundary (α = π) everywhere.
+/// empty means a straight boundary (α = π) everywhere. Blending::lines: line_gluing of these values.
 std::vector<SplitGluing> symmetric_gluing(const QuadTopology& t, Blending blending,
                                           const std::vector<double>& boundary_angles = {});
 
@@ -47,9 +51,9 @@ std::vector<SplitGluing> symmetric_gluing(const QuadTopology& t, Blending blendi
 std::vector<SplitGluing> inherited_gluing(const QuadTopology& coarse, const std::vector<SplitGluing>& gluing,
                                          const QuadTopology& fine);
 
-/// An interior crossing vertex (a = 0 on all its edges) at which some edge has a'(γ) ≠ 0, or -1.
-/// The twist condition there (opposite edges with equal a'(γ)) is not checked edge by edge; the
-/// blendings q0, q1, c1 have a' = 0 at every vertex, the linear one does not.
+/// An interior crossing vertex (a = 0 on all its edges) at which the twist condition fails
+/// (opposite edges with different outward slopes a'(γ)), or -1 (twist_incompatible_vertex). The
+/// blendings q0, q1, c1 have a' = 0 at every vertex, linear and lines do not.
 int crossing_vertex_with_slope(const QuadTopology& t, const std::vector<SplitGluing>& gluing);
 
 /// Build the local basis for degree k, regularity r. Throws NotSeparable when some vertex datum

@@ -69,14 +69,14 @@ std::pair<QuadTopology, std::vector<Eigen::Vector3d>> surface_mesh(const ConfigN
   return {std::move(topology), read.points};
 }
 
-/// The linear blending has a'(γ) ≠ 0: refused where an interior crossing vertex sees it (the twist
-/// compatibility of the gluing would fail there).
+/// The linear blending has a'(γ) ≠ 0: refused where an interior crossing vertex sees different
+/// slopes on opposite edges (the twist compatibility of the gluing fails there).
 void check_linear_blending(const ConfigNode& space, const QuadTopology& topology, const std::vector<SplitGluing>& gluing) {
   const int v = crossing_vertex_with_slope(topology, gluing);
   if (v >= 0)
     space["blending"].fail("blending linear is refused on '" + topology.name() + "': vertex " + std::to_string(v) +
-                           " is an interior valence-4 (crossing) vertex next to a vertex of another gluing value, "
-                           "where linear gluing data have a slope the twists cannot follow; use q1 or c1 there");
+                           " is an interior valence-4 (crossing) vertex between vertices of different gluing values, "
+                           "where linear gluing data have slopes the twists cannot follow; use lines (the default) there");
 }
 
 PatchMesh domain_mesh(const ConfigNode& domain) {
@@ -156,12 +156,12 @@ SpacePtr make_g1_4split_space(const ConfigNode& domain, const ConfigNode& space,
                                std::to_string(o.regularity) + ")");
   }
   if (space.has("blending")) {
-    const std::string b = space["blending"].as_choice({"q1", "c1", "linear", "q0"});
+    const std::string b = space["blending"].as_choice({"lines", "q1", "c1", "linear", "q0"});
     if (b == "q0")
       space["blending"].fail(
           "blending q0 (the paper's C0 blending) is refused for analysis: with it every function of the space has a "
           "zero tangential derivative at the midpoint of each edge between vertices of different gluing values, so "
-          "every geometry is singular there; use q1 or c1");
+          "every geometry is singular there; use lines (the default), q1 or c1");
     o.blending = blending_from_name(b);
   }
   if (space.has("refinement")) o.nested = space["refinement"].as_choice({"nested", "rebuild"}) == "nested";

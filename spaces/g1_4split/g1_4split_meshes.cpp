@@ -8,11 +8,23 @@
 
 namespace iga {
 
-std::vector<std::string> g14_domain_names() { return {"fan3", "fan5", "fan6", "grid2x2", "halffan3", "fan3+", "fan5+"}; }
+std::vector<std::string> g14_domain_names() {
+  return {"fan3", "fan5", "fan6", "grid2x2", "halffan3", "fan3+", "fan5+", "fan3s", "fan5s", "fan6s"};
+}
 
 PatchMesh g14_domain(const std::string& name) {
   const double pi = std::acos(-1.0);
   using P = Point2;
+  if (name == "fan3s" || name == "fan5s" || name == "fan6s") {
+    // The fan split once before use: its spoke midpoints are interior crossing vertices next to
+    // the centre, the meshes on which per-edge linear gluing data break the twist condition.
+    const PatchMesh split = g14_domain(name.substr(0, 4)).refined();
+    std::vector<Point2> vertices;
+    for (int v = 0; v < split.num_vertices(); ++v) vertices.push_back(split.vertex(v));
+    std::vector<std::vector<int>> faces;
+    for (int f = 0; f < split.num_faces(); ++f) faces.push_back(split.face(f));
+    return PatchMesh(std::move(vertices), std::move(faces), name);
+  }
   if (name == "fan3" || name == "fan5" || name == "fan6" || name == "fan3+" || name == "fan5+") {
     const int n = name[3] - '0';
     const bool plus = name.size() == 5;

@@ -13,7 +13,8 @@ namespace iga {
 
 /// Names of the planar built-ins of this space: fan3 (the paper's "round corner", 3 quads around a
 /// valence-3 vertex), fan5, fan6 (regular n-gon, spokes to the side midpoints), grid2x2 (unit square
-/// in 4), halffan3 (3 quads at a straight-boundary vertex), fan3+ and fan5+ (the fan with one more
+/// in 4), halffan3 (3 quads at a straight-boundary vertex), fan3s, fan5s, fan6s (the fans split
+/// once: crossing vertices next to the centre), fan3+ and fan5+ (the fan with one more
 /// quad outside the spoke end s0, which becomes an interior valence-3 vertex next to the centre:
 /// the topology of fan_topology(n, true)).
 std::vector<std::string> g14_domain_names();

@@ -1,11 +1,15 @@
 #include "spaces/g1_4split/g1_4split_space.hpp"
 
 #include <algorithm>
+#include <cstdio>
+#include <map>
 
 #include "spaces/extracted_evaluator.hpp"
 #include "spaces/g1/boundary_parts.hpp"
 #include "spaces/g1_4split/face_function.hpp"
 #include "spaces/g1_4split/g1_4split_meshes.hpp"
+#include "spaces/g1_4split/fan_values.hpp"
+#include "spaces/g1_4split/line_gluing.hpp"
 
 namespace iga {
 
@@ -50,9 +54,14 @@ struct G14Core {
 G14Space::G14Space(const PatchMesh& coarse, const G14Options& options) : options_(options) {
   PatchMesh mesh = coarse;
   QuadTopology topology = quad_topology(mesh);
-  gluing_ = symmetric_gluing(topology, options.blending, vertex_angles(mesh));
+  LineGluingReport lines;
+  gluing_ = options.blending == Blending::lines ? planar_line_gluing(mesh, topology, &lines)
+                                                : symmetric_gluing(topology, options.blending, vertex_angles(mesh));
   basis_ = build_g14_basis(topology, gluing_, options.degree, options.regularity);
   geometry_ = project_geometry(basis_, bilinear_geometry(mesh, basis_.bspline));
+  double jacobian = 1e300;  // of the level-0 geometry (refinement keeps the map)
+  for (int f = 0; f < topology.num_faces(); ++f)
+    jacobian = std::min(jacobian, certified_jacobian_bound(basis_.bspline, geometry_.x[f], geometry_.y[f]));
   for (int l = 0; l < options.level; ++l) {
     PatchMesh finer = mesh.refined();
     QuadTopology fine = quad_topology(finer);
@@ -61,7 +70,8 @@ G14Space::G14Space(const PatchMesh& coarse, const G14Options& options) : options
       geometry_ = subdivide_geometry(basis_.bspline, geometry_);
       basis_ = build_g14_basis(fine, gluing_, options.degree, options.regularity);
     } else {
-      gluing_ = symmetric_gluing(fine, options.blending, vertex_angles(finer));
+      gluing_ = options.blending == Blending::lines ? planar_line_gluing(finer, fine, nullptr)
+                                                    : symmetric_gluing(fine, options.blending, vertex_angles(finer));
       basis_ = build_g14_basis(fine, gluing_, options.degree, options.regularity);
       geometry_ = project_geometry(basis_, bilinear_geometry(finer, basis_.bspline));
     }
@@ -79,6 +89,16 @@ G14Space::G14Space(const PatchMesh& coarse, const G14Options& options) : options
                       {"refinement", options_.nested ? "nested" : "rebuild"},
                       {"faces", std::to_string(topology_->num_faces())},
                       {"domain", mesh_->name()}};
+  if (options_.blending == Blending::lines) {
+    // How the gluing was built, and how far the fitted map is from degenerate (docs/spaces/g1_4split.md).
+    facts.parameters.emplace_back("gluing_lines", lines.mesh_fans ? "mesh fans, " + std::to_string(lines.lines) +
+                                                                          " chains through crossings"
+                                                                    : std::to_string(lines.lines) + " lines, " +
+                                                                          std::to_string(lines.zigzag_lines) + " zigzag");
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.3e", jacobian);
+    facts.parameters.emplace_back("jacobian_bound", buf);
+  }
   facts.dimension = basis_.dimension();
   facts.num_elements = topology_->num_faces();
   facts.cell_shapes = {CellShape::quadrilateral};

@@ -20,7 +20,7 @@ namespace iga {
 struct G14Options {
   int degree = 5;
   int regularity = 1;
-  Blending blending = Blending::q1;
+  Blending blending = Blending::lines;
   int level = 0;
   bool nested = true;
 };

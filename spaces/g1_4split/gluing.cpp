@@ -10,7 +10,8 @@ Blending blending_from_name(const std::string& name) {
   if (name == "q1") return Blending::q1;
   if (name == "c1") return Blending::c1;
   if (name == "linear") return Blending::linear;
-  throw std::invalid_argument("unknown blending '" + name + "' (q0, q1, c1, linear)");
+  if (name == "lines") return Blending::lines;
+  throw std::invalid_argument("unknown blending '" + name + "' (q0, q1, c1, linear, lines)");
 }
 
 std::string blending_name(Blending b) {
@@ -19,6 +20,7 @@ std::string blending_name(Blending b) {
     case Blending::q1: return "q1";
     case Blending::c1: return "c1";
     case Blending::linear: return "linear";
+    case Blending::lines: return "lines";
   }
   return "?";
 }
@@ -56,6 +58,8 @@ SplitGluing SplitGluing::symmetric(double A0, double A1, Blending b) {
     case Blending::q1: d0 = {{{1, 0, -2, 0}, {2, -4, 2, 0}}}; break;
     case Blending::c1: d0 = {{{1, 0, -12, 16}, {0, 0, 0, 0}}}; break;
     case Blending::linear: d0 = {{{1, -1, 0, 0}, {1, -1, 0, 0}}}; break;
+    case Blending::lines:
+      throw std::invalid_argument("blending 'lines' is built from the whole mesh (line_gluing), not edge by edge");
   }
   SplitGluing g;
   for (int h = 0; h < 2; ++h) {
@@ -63,6 +67,13 @@ SplitGluing SplitGluing::symmetric(double A0, double A1, Blending b) {
     const std::array<double, 4> d1 = flip(d0[1 - h]);
     for (int j = 0; j < 4; ++j) g.piece[h][j] = A0 * d0[h][j] - A1 * d1[j];
   }
+  return g;
+}
+
+SplitGluing SplitGluing::piecewise_linear(double a0, double mid, double a1) {
+  SplitGluing g;
+  g.piece[0] = {a0, 2 * (mid - a0), 0, 0};
+  g.piece[1] = {2 * mid - a1, 2 * (a1 - mid), 0, 0};
   return g;
 }
 

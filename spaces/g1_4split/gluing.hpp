@@ -17,9 +17,12 @@ namespace iga {
 ///  linear: 1 - t (one polynomial; its restrictions to sub-edges stay linear, so nested refinement
 ///  keeps every edge separable at degree 4; a'(γ) ≠ 0, so it is valid only where no interior
 ///  crossing vertex has opposite edges with different a'(γ)).
-enum class Blending { q0, q1, c1, linear };
+///  lines: linear along every mesh line through interior valence-4 vertices, with a twist-compatible
+///  fallback where two such lines would both be non-zero at one vertex (spaces/g1_4split/line_gluing.hpp);
+///  valid on every quad mesh, optimal after nesting.
+enum class Blending { q0, q1, c1, linear, lines };
 
-/// Parses "q0", "q1", "c1"; throws std::invalid_argument otherwise.
+/// Parses "q0", "q1", "c1", "linear", "lines"; throws std::invalid_argument otherwise.
 Blending blending_from_name(const std::string& name);
 std::string blending_name(Blending b);
 
@@ -31,6 +34,8 @@ struct SplitGluing {
   double eval(double t, int order = 0, int half = -1) const;
   /// a(t) = A0 d0(t) - A1 d0(1 - t) for the blending `b`.
   static SplitGluing symmetric(double A0, double A1, Blending b);
+  /// The C0 spline linear on each half with a(0) = a0, a(1/2) = mid, a(1) = a1.
+  static SplitGluing piecewise_linear(double a0, double mid, double a1);
   /// The data seen from the other end: t -> 1 - t and the sign flips (a(t) -> -a(1 - t)).
   SplitGluing reversed() const;
   /// sign(t1 - t0) a(t0 + (t1 - t0) s): the gluing inherited by the sub-edge [t0, t1] (inside one

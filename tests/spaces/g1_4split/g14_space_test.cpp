@@ -30,12 +30,14 @@ std::string error_of(const std::string& text, int level) {
 }  // namespace
 
 TEST(G14Space, ConfigBuildsAndRefusesWithReasons) {
-  const SpacePtr s = test::space_from_yaml(yaml("{pde: poisson}", "fan5", "degree: 5"), 1);
+  const SpacePtr s = test::space_from_yaml(yaml("{pde: poisson}", "fan5", "degree: 5, blending: q1"), 1);
   EXPECT_EQ(s->type(), "g1_4split");
   EXPECT_EQ(s->num_elements(), 20);
-  EXPECT_EQ(s->dimension(), 1408);  // notes §11, pentagon level 1
+  EXPECT_EQ(s->dimension(), 1408);  // notes §11, pentagon level 1 (q1)
   EXPECT_EQ(s->continuity(), 1);
-  const std::string below = error_of(yaml("{pde: poisson}", "fan3", "degree: 4"), 1);
+  // The default (lines) is linear on every sub-edge: degree 4 stays separable where q1 is not.
+  EXPECT_EQ(test::space_from_yaml(yaml("{pde: poisson}", "fan3", "degree: 4"), 1)->type(), "g1_4split");
+  const std::string below = error_of(yaml("{pde: poisson}", "fan3", "degree: 4, blending: q1"), 1);
   EXPECT_NE(below.find("space.degree"), std::string::npos) << below;
   EXPECT_NE(below.find("smallest degree that works is 5"), std::string::npos) << below;
   const std::string q0 = error_of(yaml("{pde: poisson}", "fan3", "degree: 4, blending: q0"), 0);

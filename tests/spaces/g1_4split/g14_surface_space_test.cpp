@@ -68,7 +68,8 @@ TEST(G14SurfaceSpace, CubeAndTetrahedronAreSmoothRegularSurfaces) {
   for (const Case c : {Case{"cube", 4, 0, 192}, Case{"cube", 5, 0, 360}, Case{"cube", 5, 1, -1},
                        Case{"split_tetrahedron", 5, 0, -1}}) {
     const SpacePtr s = test::space_from_yaml(
-        yaml(std::string("{type: surface, mesh: ") + c.mesh + "}", "degree: " + std::to_string(c.k)), c.level);
+        yaml(std::string("{type: surface, mesh: ") + c.mesh + "}", "degree: " + std::to_string(c.k) + ", blending: q1"),
+        c.level);
     const G14SurfaceSpace& g = as_surface(s);
     EXPECT_EQ(s->ambient_dimension(), 3);
     EXPECT_TRUE(s->boundary_edges("all").empty());
@@ -158,7 +159,7 @@ TEST(G14SurfaceSpace, TheSurfaceIsWrittenWithUnitNormals) {
 }
 
 TEST(G14SurfaceSpace, RefusalsNameTheKeyAndTheReason) {
-  const std::string below = error_of(yaml("{type: surface, mesh: cube}", "degree: 4"), 2);
+  const std::string below = error_of(yaml("{type: surface, mesh: cube}", "degree: 4, blending: q1"), 2);
   EXPECT_NE(below.find("space.degree"), std::string::npos) << below;
   EXPECT_NE(below.find("smallest degree that works is 5"), std::string::npos) << below;
   const std::string rebuild = error_of(yaml("{type: surface, mesh: cube}", "degree: 5, refinement: rebuild"), 1);
