@@ -19,10 +19,12 @@ step() {  # step NAME COMMAND...: run it, remember how long it took
 }
 
 configure() {
-  # A first configure leaves out what command 2 adds (tests, Python module, PETSc); an existing
-  # build/ keeps its settings (command 2 may have turned them on).
+  # A first configure leaves out what command 2 adds (tests, Python module, PETSc) and compiles each
+  # layer in batches (a unity build: about a third of the compiler time from scratch, see
+  # docs/developing.md); an existing build/ keeps its settings (command 2 may have turned them on).
   local first=()
-  [ -f build/CMakeCache.txt ] || first=(-DBUILD_TESTING=OFF -DIGA_PYTHON=OFF -DIGA_WITH_PETSC=OFF)
+  [ -f build/CMakeCache.txt ] ||
+    first=(-DBUILD_TESTING=OFF -DIGA_PYTHON=OFF -DIGA_WITH_PETSC=OFF -DIGA_UNITY_BUILD=ON)
   cmake -S . -B build -DCMAKE_BUILD_TYPE=Release "${first[@]}" > build-configure.log 2>&1 ||
     { cat build-configure.log; exit 1; }
   rm -f build-configure.log
