@@ -38,8 +38,8 @@ space: {type: bspline, degree: 3, regularity: 2, elements: [8, 8]}
 output: {vtk: {levels: last}, plot: false}
 """, levels=1, view="warp"),
     "ws4-split": dict(
-        caption="WS4 on two triangles: the sub-cells VTK draws follow the Wang–Shi split of each "
-                "triangle (its 252 regions, fanned into triangles); thick lines: the triangles",
+        caption="WS4 on two triangles (thick lines) and the Wang–Shi split of each (thin lines), "
+                "from the linear sub-cells iga-run draws along the split",
         config="""problem:
   pde: biharmonic
   exact: "x^2*(1-x)^2*y^2*(1-y)^2"
@@ -263,6 +263,78 @@ def colour_bar(table, title, size):
     return bar
 
 
+def split_lines(grid, mesh):
+    """The straight lines of a macro-element split, from the edges of its linear sub-cells: the
+    collinear runs of edges that go from an element's boundary to an element's boundary. A
+    diagonal that only fans a quadrilateral piece into triangles ends inside, and is left out."""
+    def rounded(p):
+        return tuple(round(x, 9) for x in p[:2])
+
+    boundary = []  # the elements' edges, as segments
+    for c in range(mesh.GetNumberOfCells()):
+        cell = mesh.GetCell(c)
+        pts = [mesh.GetPoint(cell.GetPointId(i))[:2] for i in range(cell.GetNumberOfPoints())]
+        boundary += list(zip(pts, pts[1:] + pts[:1]))
+    scale = max(max(abs(x) for x in p) for seg in boundary for p in seg) or 1.0
+
+    def on_boundary(p):
+        for (ax, ay), (bx, by) in boundary:
+            dx, dy = bx - ax, by - ay
+            length2 = dx * dx + dy * dy
+            if length2 == 0:
+                continue
+            t = max(0.0, min(1.0, ((p[0] - ax) * dx + (p[1] - ay) * dy) / length2))
+            if (ax + t * dx - p[0]) ** 2 + (ay + t * dy - p[1]) ** 2 < (1e-7 * scale) ** 2:
+                return True
+        return False
+
+    edges = set()
+    for c in range(grid.GetNumberOfCells()):
+        cell = grid.GetCell(c)
+        ids = [cell.GetPointId(i) for i in range(cell.GetNumberOfPoints())]
+        for a, b in zip(ids, ids[1:] + ids[:1]):
+            pa, pb = rounded(grid.GetPoint(a)), rounded(grid.GetPoint(b))
+            if pa != pb:
+                edges.add((min(pa, pb), max(pa, pb)))
+    # Group the edges by the line they lie on, then walk each line's edges in order.
+    lines = {}
+    for pa, pb in edges:
+        dx, dy = pb[0] - pa[0], pb[1] - pa[1]
+        norm = (dx * dx + dy * dy) ** 0.5
+        dx, dy = dx / norm, dy / norm
+        if dx < -1e-12 or (abs(dx) <= 1e-12 and dy < 0):
+            dx, dy = -dx, -dy
+        # One line: direction and offset equal to 1e-5 of the drawing's size (the split's lines are
+        # much further apart than that, its vertices much closer to their lines).
+        key = (dx, dy, (-dy * pa[0] + dx * pa[1]) / scale)
+        same = next((k for k in lines if all(abs(a - b) < 1e-5 for a, b in zip(k, key))), key)
+        lines.setdefault(same, []).append((pa, pb))
+    kept = vtk.vtkPolyData()
+    points, cells = vtk.vtkPoints(), vtk.vtkCellArray()
+    for (dx, dy, _), segs in lines.items():
+        along = []  # (start, end, start point, end point) along the line's direction
+        for p, q in segs:
+            tp, tq = p[0] * dx + p[1] * dy, q[0] * dx + q[1] * dy
+            along.append((tp, tq, p, q) if tp <= tq else (tq, tp, q, p))
+        along.sort()
+        run = [along[0]]
+        for seg in along[1:] + [None]:
+            if seg is not None and seg[0] <= run[-1][1] + 1e-7 * scale:  # continues the run
+                if seg[1] > run[-1][1]:
+                    run.append(seg)
+                continue
+            first, last = run[0][2], run[-1][3]
+            if on_boundary(first) and on_boundary(last):
+                cells.InsertNextCell(2)
+                cells.InsertCellPoint(points.InsertNextPoint(first[0], first[1], 0.0))
+                cells.InsertCellPoint(points.InsertNextPoint(last[0], last[1], 0.0))
+            if seg is not None:
+                run = [seg]
+    kept.SetPoints(points)
+    kept.SetLines(cells)
+    return kept
+
+
 def extraordinary_vertices(mesh0):
     """Points where three, or more than four, level-0 patches meet (mesh_0.vtu has one closed
     polyline per patch; a point on k of them is a corner shared by k patches)."""
@@ -306,10 +378,7 @@ def render(name, spec, results, out_png, size):
         renderer.AddActor(field_actor(surface, field, table, lit=False))
         dz = 1e-3 * surface.GetLength()
         if spec.get("subcell_edges"):
-            edges = vtk.vtkExtractEdges()
-            edges.SetInputData(grid)
-            edges.Update()
-            renderer.AddActor(lines_actor(lifted(edges.GetOutput(), dz), 0.6, (0.55, 0.55, 0.55)))
+            renderer.AddActor(lines_actor(lifted(split_lines(grid, mesh), dz), 1.0, (0.25, 0.25, 0.25)))
             renderer.AddActor(lines_actor(lifted(mesh, 2 * dz), 3.0))
         elif spec.get("patches"):
             renderer.AddActor(lines_actor(lifted(mesh, dz), 1.0, (0.3, 0.3, 0.3)))

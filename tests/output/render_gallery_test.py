@@ -97,5 +97,28 @@ class RenderGallery(unittest.TestCase):
         self.assertLess(dark, 0.15 * WIDTH * HEIGHT, "the edges cover the surface")
 
 
+class WangShiSplitLines(unittest.TestCase):
+    """The gallery's WS4 picture draws the split from the linear sub-cells iga-run writes: on one
+    triangle that must give the split's 39 lines (docs/spaces/ws4.md: 39 lines, 178 vertices)."""
+
+    def test_one_triangle_gives_the_39_lines(self):
+        sys.path.insert(0, os.path.join(ROOT, "scripts"))
+        import render_gallery
+        with tempfile.TemporaryDirectory(prefix="iga-split-test-") as work:
+            with open(os.path.join(work, "triangle.off"), "w") as f:
+                f.write("OFF\n3 1 0\n0 0 0\n1 0 0\n0.3 0.8 0\n3 0 1 2\n")
+            with open(os.path.join(work, "split.yaml"), "w") as f:
+                f.write('problem: {pde: poisson, exact: "x*y", boundary: {all: dirichlet}}\n'
+                        "domain: {type: mesh_file, file: triangle.off}\n"
+                        "space: {type: ws4}\n"
+                        "output: {vtk: {cells: linear, samples: 8}, plot: false}\n")
+            subprocess.run([os.environ["IGA_RUN_BINARY"], "--quiet", "--levels", "1", "--output", "out",
+                            "split.yaml"], check=True, cwd=work, stdout=subprocess.DEVNULL)
+            grid = render_gallery.read_vtu(os.path.join(work, "out", "solution_0.vtu"))
+            mesh = render_gallery.read_vtu(os.path.join(work, "out", "mesh_0.vtu"))
+            self.assertEqual(grid.GetNumberOfPoints(), 178)
+            self.assertEqual(render_gallery.split_lines(grid, mesh).GetNumberOfCells(), 39)
+
+
 if __name__ == "__main__":
     unittest.main()
