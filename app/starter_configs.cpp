@@ -14,7 +14,7 @@ std::string trimmed(const std::string& s) {
   return b == std::string::npos ? std::string() : s.substr(b, e - b + 1);
 }
 
-std::string joined(const std::vector<std::string>& words) {
+std::string comma_separated(const std::vector<std::string>& words) {
   std::string out;
   for (const std::string& w : words) out += (out.empty() ? "" : ", ") + w;
   return out;
@@ -56,11 +56,11 @@ std::string starter_config_text(const std::string& space, const std::string& dom
   if (domains.empty()) {
     const std::string near = nearest_word(space, spaces);
     throw InputError("new: no space type '" + space + "'" + (near.empty() ? "" : " (did you mean '" + near + "'?)") +
-                     "; the space types: " + joined(spaces));
+                     "; the space types: " + comma_separated(spaces));
   }
   if (!found)
     throw InputError("new: space " + space + " has no starting config on domain type '" + domain +
-                     "'; its domain types: " + joined(domains));
+                     "'; its domain types: " + comma_separated(domains));
   std::ostringstream out;
   out << "# A starting config: space " << found->space << " on a domain of type " << found->domain
       << " (iga-run new " << found->space << " " << found->domain << ").\n"

@@ -8,6 +8,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 
 times=()
+started=$(date +%s%N)
 step() {  # step NAME COMMAND...: run it, remember how long it took
   local name=$1 start end
   shift
@@ -20,7 +21,7 @@ step() {  # step NAME COMMAND...: run it, remember how long it took
 
 configure() {
   # A first configure leaves out what command 2 adds (tests, Python module, PETSc) and compiles each
-  # layer in batches (a unity build: about a third of the compiler time from scratch, see
+  # layer in batches (a unity build: a third less compiler time from scratch, see
   # docs/developing.md); an existing build/ keeps its settings (command 2 may have turned them on).
   local first=()
   [ -f build/CMakeCache.txt ] ||
@@ -35,6 +36,8 @@ step "configure (cmake)" configure
 step "build iga-run" cmake --build build -j "$(nproc)" --target iga-run
 step "run the example" ./build/iga-run configs/quickstart.yaml "$@"
 
+total_ms=$((($(date +%s%N) - started) / 1000000))
+times+=("$(printf '%-20s %5d.%01d s' "total" $((total_ms / 1000)) $((total_ms % 1000 / 100)))")
 echo
 echo "quickstart: time per step"
 printf '  %s\n' "${times[@]}"
