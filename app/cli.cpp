@@ -15,6 +15,7 @@
 
 #include "app/catalogue.hpp"
 #include "app/progress_bar.hpp"
+#include "app/starter_configs.hpp"
 #include "geometry/geometry_study.hpp"
 #include "output/comparison.hpp"
 #include "output/convergence_plot.hpp"
@@ -247,6 +248,7 @@ int run_cli(int argc, char** argv) {
                "  iga-run CONFIG.yaml              run a study (results/<config name>/ by default)\n"
                "  iga-run A.yaml B.yaml ...        run each and compare them (comparison.csv, comparison.svg)\n"
                "  iga-run check CONFIG.yaml ...    validate only (exit 0: valid, 2: not)\n"
+               "  iga-run new SPACE [DOMAIN]       print a commented starting config (> my.yaml)\n"
                "  iga-run --list                   space types, domain types and built-in meshes"};
   std::vector<std::string> configs, check_list;
   std::string output, levels_text, threads_text;
@@ -261,6 +263,11 @@ int run_cli(int argc, char** argv) {
   app.set_version_flag("--version", std::string("iga-run ") + IGA_RUN_VERSION);
   CLI::App* check = app.add_subcommand("check", "validate config file(s) without solving: exit 0 if valid, 2 if not");
   check->add_option("config", check_list, "YAML config file(s)")->required();
+  std::string new_space, new_domain;
+  CLI::App* starter = app.add_subcommand("new", "print a commented starting config that runs as it is (the "
+                                                "starting configs of docs/configuration.md)");
+  starter->add_option("space", new_space, "space type (iga-run --list)")->required();
+  starter->add_option("domain", new_domain, "domain type (default: the space's first)");
   try {
     app.parse(argc, argv);
   } catch (const CLI::Success& e) {
@@ -273,6 +280,10 @@ int run_cli(int argc, char** argv) {
     std::cout << catalogue_text();
     return 0;
   }
+  if (starter->parsed()) return guarded("new", [&] {
+    std::cout << starter_config_text(new_space, new_domain);
+    return 0;
+  });
   if (check->parsed()) return guarded(check_list.front(), [&] { return check_configs(check_list); });
   if (configs.empty()) return fail(2, "a config file is required (iga-run CONFIG.yaml; see --help)");
   return guarded(configs.front(), [&] {

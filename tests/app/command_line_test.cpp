@@ -43,7 +43,7 @@ TEST(CommandLine, ListPrintsTheCatalogue) {
 TEST(CommandLine, HelpShowsTheCommands) {
   const RunResult r = run_iga("--help");
   ASSERT_EQ(r.exit_code, 0);
-  for (const char* word : {"check", "--list", "--threads", "--levels", "--quiet"})
+  for (const char* word : {"check", "new SPACE [DOMAIN]", "--list", "--threads", "--levels", "--quiet"})
     EXPECT_NE(r.out.find(word), std::string::npos) << word;
 }
 
