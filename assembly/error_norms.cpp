@@ -109,7 +109,9 @@ ErrorNorms surface_error_norms(const Space& space, const Eigen::VectorXd& coeffi
           const Where& where) {
         thread_local ShapeOperatorByDifferences differences;
         thread_local std::vector<Eigen::Matrix3d> W;
-        if (hess) differences.compute(where.evaluator, where.element, where.rule, geometry.jacobian3, W);
+        if (hess)
+          differences.compute(where.evaluator, where.element, where.rule,
+                              space.cell_shape(where.element) == CellShape::triangle, geometry.jacobian3, W);
         for (int k = 0; k < w.size(); ++k) {
           const Eigen::Vector3d x = geometry.x3.col(k);
           s[0] += w(k) * std::pow(uh.value(k) - exact.u(x), 2);

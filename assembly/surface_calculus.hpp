@@ -28,7 +28,7 @@ Eigen::Matrix3d covariant_hessian_of_ambient(const Eigen::Matrix3d& D, const Eig
 
 /// The Weingarten map W = ∇_Γ n at the points of `rule` on `element`, in ambient form (3 × 3,
 /// symmetric, W n = 0), from the unit normals of Evaluator::evaluate_geometry at points shifted
-/// by ±δ, ±2δ, ±3δ (δ = 2.5e-4) along each reference direction: ∂_a n by the sixth-order central
+/// by ±δ, ±2δ, ±3δ (δ = 2.5e-4, less within 1e-3 of the reference cell's edge) along each reference direction: ∂_a n by the sixth-order central
 /// difference, W = [∂_ξ n, ∂_η n] G⁻¹ Jᵀ. With L the reference length over which n turns (≈ 0.03
 /// at the rounded corners of the 4-split cube, level 0) the truncation is ≈ (δ/L)⁶ ≈ 1e-12 and the
 /// rounding ≈ 1e-15 L/δ relative to |W|: far below the errors it measures (the fourth-order
@@ -40,13 +40,16 @@ Eigen::Matrix3d covariant_hessian_of_ambient(const Eigen::Matrix3d& D, const Eig
 /// points of the pieces of every space here: the nearest lies ≥ 4e-3 inside its piece, 3δ = 7.5e-4).
 class ShapeOperatorByDifferences {
  public:
-  /// W at every point of `rule`; `jacobian3` are the Jacobians at those points (PointValues).
-  void compute(Space::Evaluator& evaluator, int element, const QuadratureRule& rule,
+  /// W at every point of `rule` on a reference triangle or square; `jacobian3` are the Jacobians
+  /// at those points (PointValues).
+  void compute(Space::Evaluator& evaluator, int element, const QuadratureRule& rule, bool triangle,
                const std::vector<Eigen::Matrix<double, 3, 2>>& jacobian3, std::vector<Eigen::Matrix3d>& W);
 
  private:
   QuadratureRule shifted_;         ///< 12 points per point of the last rule
   std::vector<Point2> base_;       ///< the points shifted_ was built from
+  bool triangle_ = false;
+  std::vector<double> delta_;      ///< the step at each point: 2.5e-4, or a quarter of its distance to the cell's edge
   PointValues geometry_;
 };
 

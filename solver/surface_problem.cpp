@@ -7,6 +7,7 @@
 #include "assembly/surface_dirichlet.hpp"
 #include "assembly/surface_load.hpp"
 #include "config/errors.hpp"
+#include "spaces/lifted_space.hpp"
 
 namespace iga {
 
@@ -129,9 +130,12 @@ void SurfaceBiharmonicFormulation::check() const {
   const ProblemSpec& p = problem();
   if (space().ambient_dimension() != 3)
     throw InputError(p.source_where + ": surface_biharmonic needs a space on a surface in 3D");
-  if (!space().boundary_edges("all").empty())
-    throw InputError(p.source_where + ": surface_biharmonic is solved on closed surfaces only; this surface has a "
-                                      "boundary (boundary conditions for open surfaces are not implemented yet)");
+  if (space().boundary_edges("all").empty()) return;
+  if (!dynamic_cast<const LiftedSpace*>(&space()))
+    throw InputError(p.source_where + ": surface_biharmonic on an open surface needs a lifted (graph) surface; this "
+                                      "surface's boundary conditions are not implemented");
+  if (!p.surface_exact)
+    throw InputError(p.source_where + ": surface_biharmonic on an open surface takes its clamped data from 'exact'");
 }
 
 Eigen::VectorXd SurfaceBiharmonicFormulation::load(const WorkShare& share) const {
@@ -161,6 +165,22 @@ Eigen::VectorXd SurfaceBiharmonicFormulation::load(const WorkShare& share) const
 }
 
 Constraints SurfaceBiharmonicFormulation::constraints() const {
+  // An open lifted surface: clamped on its whole boundary, u and ∇_Γu from the exact solution,
+  // imposed as the planar space's clamped condition on u ∘ X (same functions, same numbering):
+  // û = u(X(x, y)) and ∂_n û = (J_Xᵀ ∇u) · n with n the planar outward normal.
+  if (const auto* lifted = dynamic_cast<const LiftedSpace*>(&space());
+      lifted && !space().boundary_edges("all").empty()) {
+    const SymbolicFunction u = *problem().surface_exact;
+    const SymbolicFunction ux = u.diff_x(), uy = u.diff_y(), uz = u.diff_z();
+    const BoundaryField value = [lifted, u](const Point2& x, const Point2&) { return u.at(lifted->lift(x)); };
+    const BoundaryField normal = [lifted, ux, uy, uz](const Point2& x, const Point2& n) {
+      const Eigen::Vector3d X = lifted->lift(x);
+      const Eigen::Vector3d g(ux.at(X), uy.at(X), uz.at(X));
+      return (lifted->lift_jacobian(x).transpose() * g).dot(n);
+    };
+    const std::vector<BoundaryEdge> all = lifted->planar().boundary_edges("all");
+    return impose_essential(lifted->planar(), EssentialBoundary{all, all}, value, normal, quadrature_degree());
+  }
   // Closed surface, c > 0: no essential condition.
   Constraints c;
   c.values = Eigen::VectorXd::Zero(space().dimension());

@@ -51,7 +51,7 @@ TEST(SurfaceBiharmonic, ShapeOperatorByDifferencesHasTheMeanCurvatureAsTrace) {
     const RulePtr rule = space->quadrature(e, space->error_quadrature_degree());
     ev.reinit(e, *rule);
     const PointValues& v = ev.values();
-    differences.compute(*evaluator, e, *rule, v.jacobian3, W);
+    differences.compute(*evaluator, e, *rule, false, v.jacobian3, W);
     for (int k = 0; k < ev.num_points(); ++k) {
       worst = std::max(worst, std::abs(W[k].trace() - v.mean_curvature(k)));
       worst = std::max(worst, (W[k] * v.normal3.col(k)).norm());
