@@ -7,12 +7,20 @@
 #include <memory>
 
 #include "assembly/parallel.hpp"
+#include "assembly/surface_calculus.hpp"
 #include "spaces/space.hpp"
 #include "spaces/surface_values.hpp"
 
 namespace iga {
 
 namespace {
+
+/// The element being summed, for norms that evaluate more there (the surface shape operator).
+struct Where {
+  Space::Evaluator& evaluator;
+  int element;
+  const QuadratureRule& rule;
+};
 
 /// The element loop both norms share: u_h and its derivatives from Space::Evaluator::
 /// evaluate_function (coefficients contracted once per element, then one table product per
@@ -38,7 +46,7 @@ std::array<double, N> sum_over_elements(const Space& space, const Eigen::VectorX
       const QuadratureRule& rule = *rule_ptr;
       evaluator->evaluate_function(e, rule, coefficients, flags, geometry, uh);
       integration_weights(rule, geometry, jxw);
-      add(geometry, uh, jxw, sums);
+      add(geometry, uh, jxw, sums, Where{*evaluator, e, rule});
     }
 #pragma omp critical(iga_error_norms)
     for (int i = 0; i < N; ++i) total[i] += sums[i];
@@ -48,6 +56,7 @@ std::array<double, N> sum_over_elements(const Space& space, const Eigen::VectorX
 
 double square(double v) { return v * v; }
 
+
 }  // namespace
 
 ErrorNorms error_norms(const Space& space, const Eigen::VectorXd& coefficients, const ExactSolution& exact,
@@ -56,7 +65,8 @@ ErrorNorms error_norms(const Space& space, const Eigen::VectorXd& coefficients, 
   const unsigned flags = update_values | (grad ? update_gradients : 0u) | (hess ? update_hessians : 0u);
   const auto sums = sum_over_elements<3>(
       space, coefficients, flags, quad_degree, elements,
-      [&](const PointValues& geometry, const FunctionValues& uh, const Eigen::VectorXd& w, std::array<double, 3>& s) {
+      [&](const PointValues& geometry, const FunctionValues& uh, const Eigen::VectorXd& w, std::array<double, 3>& s,
+          const Where&) {
         const int q = static_cast<int>(w.size());
         // The exact solution and its derivatives, one row each (u, ux, uy, uxx, uxy, uyy).
         thread_local Eigen::MatrixXd jet;
@@ -91,11 +101,17 @@ ErrorNorms error_norms(const Space& space, const Eigen::VectorXd& coefficients, 
 
 ErrorNorms surface_error_norms(const Space& space, const Eigen::VectorXd& coefficients,
                                const SurfaceExactSolution& exact, int quad_degree, const std::vector<int>* elements) {
-  const bool grad = exact.has_gradient();
-  const unsigned flags = update_values | (grad ? update_gradients : 0u);
-  const auto sums = sum_over_elements<2>(
+  const bool grad = exact.has_gradient(), hess = grad && exact.has_hessian();
+  const unsigned flags = update_values | (grad ? update_gradients : 0u) | (hess ? update_hessians : 0u);
+  const auto sums = sum_over_elements<3>(
       space, coefficients, flags, quad_degree, elements,
-      [&](const PointValues& geometry, const FunctionValues& uh, const Eigen::VectorXd& w, std::array<double, 2>& s) {
+      [&](const PointValues& geometry, const FunctionValues& uh, const Eigen::VectorXd& w, std::array<double, 3>& s,
+          const Where& where) {
+        thread_local ShapeOperatorByDifferences differences;
+        thread_local std::vector<Eigen::Matrix3d> W;
+        if (hess)
+          differences.compute(where.evaluator, where.element, where.rule,
+                              space.cell_shape(where.element) == CellShape::triangle, geometry.jacobian3, W);
         for (int k = 0; k < w.size(); ++k) {
           const Eigen::Vector3d x = geometry.x3.col(k);
           s[0] += w(k) * std::pow(uh.value(k) - exact.u(x), 2);
@@ -104,15 +120,24 @@ ErrorNorms surface_error_norms(const Space& space, const Eigen::VectorXd& coeffi
             // tangent plane, ∇_Γu = ∇u − (∇u·n) n.
             const Eigen::Vector3d n = surface_normal(geometry.jacobian3[k]);
             Eigen::Vector3d g(exact.ux(x), exact.uy(x), exact.uz(x));
-            g -= g.dot(n) * n;
-            const Eigen::Vector3d e3 = Eigen::Vector3d(uh.dx(k), uh.dy(k), uh.dz(k)) - g;
+            const Eigen::Vector3d g_surface = g - g.dot(n) * n;
+            const Eigen::Vector3d e3 = Eigen::Vector3d(uh.dx(k), uh.dy(k), uh.dz(k)) - g_surface;
             s[1] += w(k) * e3.squaredNorm();
+            if (hess) {
+              Eigen::Matrix3d D;
+              D << exact.uxx(x), exact.uxy(x), exact.uxz(x), exact.uxy(x), exact.uyy(x), exact.uyz(x), exact.uxz(x),
+                  exact.uyz(x), exact.uzz(x);
+              Eigen::Matrix3d Hh;
+              Hh << uh.dxx(k), uh.dxy(k), uh.dxz(k), uh.dxy(k), uh.dyy(k), uh.dyz(k), uh.dxz(k), uh.dyz(k), uh.dzz(k);
+              s[2] += w(k) * (Hh - covariant_hessian_of_ambient(D, g, n, W[k])).squaredNorm();
+            }
           }
         }
       });
   ErrorNorms r;
   r.l2 = std::sqrt(sums[0]);
   if (grad) r.h1 = std::sqrt(sums[1]);
+  if (hess) r.h2 = std::sqrt(sums[2]);
   return r;
 }
 

@@ -24,8 +24,10 @@ struct ErrorNorms {
 ErrorNorms error_norms(const Space& space, const Eigen::VectorXd& coefficients, const ExactSolution& exact,
                        int quad_degree, const std::vector<int>* elements = nullptr);
 
-/// The same for a space on a surface in 3D (ambient_dimension() == 3): L2 error and the H1
-/// seminorm of the error's surface gradient, ∇_Γu = ∇u − (∇u·n) n.
+/// The same for a space on a surface in 3D (ambient_dimension() == 3): L2 error, the H1
+/// seminorm of the error's surface gradient, ∇_Γu = ∇u − (∇u·n) n, and, when the exact Hessian is
+/// given, the surface H2 seminorm ‖∇_Γ∇_Γ(u − u_h)‖ (covariant Hessians, Frobenius norm; the
+/// exact one from assembly/surface_calculus.hpp).
 ErrorNorms surface_error_norms(const Space& space, const Eigen::VectorXd& coefficients,
                                const SurfaceExactSolution& exact, int quad_degree,
                                const std::vector<int>* elements = nullptr);

@@ -25,11 +25,14 @@ using SurfaceField = std::function<double(const Eigen::Vector3d& x)>;
 /// curvature H = div_Γ n at x (e.g. f = −Δ_Γ u + u computed from u given in x, y, z).
 using SurfaceSource = std::function<double(const Eigen::Vector3d& x, const Eigen::Vector3d& n, double H)>;
 
-/// An exact solution on a surface in 3D, given in ambient coordinates: u and its ambient gradient
-/// (the error norms project the gradient onto the tangent plane).
+/// An exact solution on a surface in 3D, given in ambient coordinates: u, its ambient gradient
+/// (the error norms project it onto the tangent plane) and optionally its ambient Hessian (the
+/// surface H2 seminorm turns it into the covariant Hessian: assembly/surface_calculus.hpp).
 struct SurfaceExactSolution {
   SurfaceField u, ux, uy, uz;
+  SurfaceField uxx, uxy, uxz, uyy, uyz, uzz;
   bool has_gradient() const { return ux && uy && uz; }
+  bool has_hessian() const { return uxx && uxy && uxz && uyy && uyz && uzz; }
 };
 
 /// An exact solution and its derivatives; members left empty are not available.

@@ -43,4 +43,43 @@ Eigen::VectorXd surface_load(const Space& space, const SurfaceSource& f, int qua
   return b;
 }
 
+Eigen::VectorXd surface_form_load(const Space& space, const SurfaceSource& f0, const SurfaceSource& f2,
+                                  int quad_degree, const std::vector<int>* elements) {
+  if (space.ambient_dimension() != 3)
+    throw std::logic_error("surface_form_load: the space is not on a surface in 3D");
+  const int ne = elements ? static_cast<int>(elements->size()) : space.num_elements();
+  // Deterministic sums as in surface_load: a fixed element range per thread, added in thread order.
+  std::vector<Eigen::VectorXd> partial;
+#pragma omp parallel if (worth_threads(ne))
+  {
+#pragma omp single
+    partial.assign(omp_get_num_threads(), Eigen::VectorXd::Zero(space.dimension()));
+    Eigen::VectorXd& mine = partial[omp_get_thread_num()];
+    ElementValues ev(space, update_values | update_hessians | update_surface_curvature);
+    Eigen::VectorXd w0, w2, local;
+#pragma omp for schedule(static)
+    for (int k = 0; k < ne; ++k) {
+      const int e = elements ? (*elements)[k] : k;
+      const RulePtr rule = space.quadrature(e, quad_degree);
+      ev.reinit(e, *rule);
+      const PointValues& v = ev.values();
+      const int q = ev.num_points();
+      w0.resize(q);
+      w2.resize(q);
+      for (int j = 0; j < q; ++j) {
+        const Eigen::Vector3d x = v.x3.col(j), n = v.normal3.col(j);
+        const double H = v.mean_curvature(j);
+        w0(j) = f0(x, n, H) * ev.jxw()(j);
+        w2(j) = f2(x, n, H) * ev.jxw()(j);
+      }
+      // Δ_Γ N_i: the trace of the covariant Hessian.
+      local.noalias() = v.value * w0 + (v.dxx + v.dyy + v.dzz) * w2;
+      for (int i = 0; i < local.size(); ++i) mine(v.dofs[i]) += local(i);
+    }
+  }
+  Eigen::VectorXd b = Eigen::VectorXd::Zero(space.dimension());
+  for (const Eigen::VectorXd& p : partial) b += p;
+  return b;
+}
+
 }  // namespace iga

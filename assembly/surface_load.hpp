@@ -17,4 +17,11 @@ namespace iga {
 Eigen::VectorXd surface_load(const Space& space, const SurfaceSource& f, int quad_degree,
                              const std::vector<int>* elements = nullptr);
 
+/// b_i = ∫_Γ f0(x, n, H) N_i + f2(x, n, H) Δ_Γ N_i dA: the load of a fourth-order surface problem
+/// given as its bilinear form applied to a known function u, v ↦ ∫ Δ_Γu Δ_Γv + c u v (f2 = Δ_Γu,
+/// f0 = c u, both computed pointwise from u). On a G1 surface, whose curvature jumps across patch
+/// edges, this is the load whose solution is u; the strong form Δ_Γ²u + c u misses the edge terms.
+Eigen::VectorXd surface_form_load(const Space& space, const SurfaceSource& f0, const SurfaceSource& f2,
+                                  int quad_degree, const std::vector<int>* elements = nullptr);
+
 }  // namespace iga

@@ -14,7 +14,7 @@ bool petsc_available() {
 
 PetscSettings default_petsc_settings(Pde pde) {
   PetscSettings s;
-  if (pde == Pde::biharmonic) {
+  if (pde == Pde::biharmonic || pde == Pde::surface_biharmonic) {
     s.ksp = "preonly";
     s.pc = "mumps";
   }

@@ -5,7 +5,13 @@
 namespace iga {
 
 std::string to_string(Pde pde) {
-  return pde == Pde::poisson ? "poisson" : (pde == Pde::biharmonic ? "biharmonic" : "laplace_beltrami");
+  switch (pde) {
+    case Pde::poisson: return "poisson";
+    case Pde::biharmonic: return "biharmonic";
+    case Pde::laplace_beltrami: return "laplace_beltrami";
+    case Pde::surface_biharmonic: return "surface_biharmonic";
+  }
+  return "?";
 }
 
 std::string to_string(BoundaryKind kind) {
@@ -73,12 +79,13 @@ ProblemSpec manufactured_problem(Pde pde, const SymbolicFunction& u, std::vector
 
 ProblemSpec parse_problem(const ConfigNode& node) {
   // Surfaces have their own keys (no boundary; reaction).
-  if (const auto pde = node.find("pde"); pde && pde->is_scalar() && pde->as_string() == "laplace_beltrami")
+  if (const auto pde = node.find("pde");
+      pde && pde->is_scalar() && (pde->as_string() == "laplace_beltrami" || pde->as_string() == "surface_biharmonic"))
     return parse_surface_problem(node);
   node.check_keys({"pde", "exact", "source", "boundary", "data", "form"});
   ProblemSpec p;
-  const std::string pde = node["pde"].as_choice({"poisson", "biharmonic", "laplace_beltrami"});
-  p.pde = pde == "poisson" ? Pde::poisson : Pde::biharmonic;  // laplace_beltrami returned above
+  const std::string pde = node["pde"].as_choice({"poisson", "biharmonic", "laplace_beltrami", "surface_biharmonic"});
+  p.pde = pde == "poisson" ? Pde::poisson : Pde::biharmonic;  // the surface problems returned above
 
   bool hessian = false;
   if (auto form = node.find("form")) {
@@ -136,7 +143,19 @@ ProblemSpec parse_surface_problem(const ConfigNode& node) {
     p.reaction = c->as_double();
     if (!(p.reaction >= 0.0 && std::isfinite(p.reaction))) c->fail("reaction must be a number >= 0");
   }
-  p.pde = Pde::laplace_beltrami;
+  p.pde = node["pde"].as_string() == "surface_biharmonic" ? Pde::surface_biharmonic : Pde::laplace_beltrami;
+  if (p.pde == Pde::surface_biharmonic) {
+    // Δ_Γ²u + c u = f: ∫ Δ_Γu Δ_Γv + c ∫ u v (the planar bilaplace integrator reads the covariant
+    // Hessian on a surface). Closed surfaces only, and c > 0: without it constants are the kernel.
+    if (p.reaction <= 0)
+      (node.has("reaction") ? node["reaction"] : node).fail(
+          "surface_biharmonic needs reaction > 0 (a closed surface's constants are the kernel of Δ_Γ²)");
+    if (const auto boundary = node.find("boundary"))
+      boundary->fail("surface_biharmonic is solved on closed surfaces only (no boundary conditions yet)");
+    if (const auto value = node.find("boundary_value"))
+      value->fail("surface_biharmonic is solved on closed surfaces only (no boundary data)");
+    p.terms = {bilaplace_integrator()};
+  }
   if (p.reaction > 0) p.terms.push_back(mass_integrator(p.reaction));
   const auto exact = node.find("exact");
   const auto source = node.find("source");

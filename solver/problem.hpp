@@ -14,8 +14,11 @@
 
 namespace iga {
 
-/// laplace_beltrami: −Δ_Γu + u = f on a closed surface in 3D (solver/surface_problem.hpp).
-enum class Pde { poisson, biharmonic, laplace_beltrami };
+/// laplace_beltrami: −Δ_Γu + c u = f on a surface in 3D; surface_biharmonic: Δ_Γ²u + c u = f on a
+/// closed surface in 3D (both solver/surface_problem.hpp).
+enum class Pde { poisson, biharmonic, laplace_beltrami, surface_biharmonic };
+/// The problems posed on a surface in 3D (space with ambient_dimension() == 3).
+inline bool on_surface(Pde pde) { return pde == Pde::laplace_beltrami || pde == Pde::surface_biharmonic; }
 enum class BoundaryKind { dirichlet, neumann, clamped, simply_supported };
 
 std::string to_string(Pde pde);
@@ -48,13 +51,14 @@ struct ProblemSpec {
   /// for messages about them found only while solving.
   std::string source_where = "problem.source", data_where = "problem.data";
 
-  /// laplace_beltrami only: the exact solution or the source as functions of x, y, z (the planar
+  /// Surface problems only: the exact solution or the source as functions of x, y, z (the planar
   /// members exact/source then stay unset/zero).
   std::optional<SymbolicFunction> surface_exact, surface_source;
   /// laplace_beltrami on an open surface: u on its boundary curve (boundary: {all: dirichlet};
   /// from boundary_value, else the exact solution).
   std::optional<SymbolicFunction> surface_dirichlet;
-  /// laplace_beltrami: c in −Δ_Γu + c u = f (c = 0: the solution is fixed up to a constant).
+  /// Surface problems: c in −Δ_Γu + c u = f or Δ_Γ²u + c u = f (laplace_beltrami with c = 0: the
+  /// solution is fixed up to a constant; surface_biharmonic needs c > 0).
   double reaction = 1.0;
 
   /// u, ∇u, D²u of the exact solution as callables (empty members when there is none).
@@ -70,7 +74,8 @@ ProblemSpec manufactured_problem(Pde pde, const SymbolicFunction& u, std::vector
 /// Parse and validate the `problem:` section (keys pde, exact, source, boundary, data, form).
 ProblemSpec parse_problem(const ConfigNode& node);
 
-/// `problem:` with `pde: laplace_beltrami` (keys pde, exact, source, reaction; expressions in x, y, z). With
+/// `problem:` with `pde: laplace_beltrami` or `surface_biharmonic` (keys pde, exact, source, reaction;
+/// expressions in x, y, z; boundary keys for laplace_beltrami only). With
 /// both exact and source, the source is used as given and exact measures the errors.
 ProblemSpec parse_surface_problem(const ConfigNode& node);
 

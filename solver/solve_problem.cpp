@@ -29,6 +29,7 @@ Eigen::VectorXd SerialBackend::solve(SolveReport& report, const ProgressSink& pr
 
 std::unique_ptr<Formulation> make_formulation(const Space& space, const ProblemSpec& problem) {
   if (problem.pde == Pde::laplace_beltrami) return std::make_unique<SurfaceFormulation>(space, problem);
+  if (problem.pde == Pde::surface_biharmonic) return std::make_unique<SurfaceBiharmonicFormulation>(space, problem);
   return std::make_unique<PlanarFormulation>(space, problem);
 }
 

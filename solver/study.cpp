@@ -79,8 +79,8 @@ StudySettings parse_study(const ConfigNode& root, const std::string& config_path
     if (auto plot = output->find("plot")) s.write_plot = plot->as_bool();
     if (auto matrices = output->find("matrices")) {
       s.write_matrices = matrices->as_bool();
-      if (s.write_matrices && s.problem.pde == Pde::laplace_beltrami)
-        matrices->fail("matrix export is for planar problems (poisson, biharmonic), not laplace_beltrami");
+      if (s.write_matrices && on_surface(s.problem.pde))
+        matrices->fail("matrix export is for planar problems (poisson, biharmonic), not " + to_string(s.problem.pde));
     }
   }
   if (!output_override.empty()) {
@@ -136,14 +136,15 @@ StudySettings parse_study(const ConfigNode& root, const std::string& config_path
   const SpacePtr coarse = make_space(domain_node, space_node, 0);
   s.level0 = coarse;
   s.level0_seconds = t_coarse.seconds();
-  if ((s.problem.pde == Pde::laplace_beltrami) != (coarse->ambient_dimension() == 3))
-    root["problem"]["pde"].fail(s.problem.pde == Pde::laplace_beltrami
-                                    ? "laplace_beltrami needs a surface in 3D (domain.type: surface, space.type: surface)"
-                                    : "a surface in 3D takes pde: laplace_beltrami");
+  if (on_surface(s.problem.pde) != (coarse->ambient_dimension() == 3))
+    root["problem"]["pde"].fail(on_surface(s.problem.pde)
+                                    ? to_string(s.problem.pde) +
+                                          " needs a surface in 3D (domain.type: surface, space.type: surface)"
+                                    : "a surface in 3D takes pde: laplace_beltrami or surface_biharmonic");
   // Boundary part names; a surface's boundary against its Dirichlet data (the pipeline's own check).
   make_formulation(*coarse, s.problem)->check();
-  if (s.problem.pde == Pde::biharmonic && coarse->continuity() < 1)
-    space_node.fail("the biharmonic problem needs a C1 (H2-conforming) space; this " + coarse->type() +
+  if ((s.problem.pde == Pde::biharmonic || s.problem.pde == Pde::surface_biharmonic) && coarse->continuity() < 1)
+    space_node.fail("the " + to_string(s.problem.pde) + " problem needs a C1 (H2-conforming) space; this " + coarse->type() +
                        " space is only C" + std::to_string(coarse->continuity()) +
                        " (raise space.degree/space.regularity)");
   if (s.adaptive) {
@@ -213,7 +214,7 @@ StudyResult run_study(const StudySettings& settings, const ProgressSink& progres
   double t_next = 0.0;
   // Without an exact solution: the previous level's solution, located by its own space, for the
   // differences between successive levels (planar problems).
-  const bool differences = !settings.problem.exact && settings.problem.pde != Pde::laplace_beltrami;
+  const bool differences = !settings.problem.exact && !on_surface(settings.problem.pde);
   std::shared_ptr<const PointLocator> previous_locator;
   Eigen::VectorXd previous_coefficients;
   for (int level = 0; level < settings.levels; ++level) {

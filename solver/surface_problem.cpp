@@ -3,9 +3,11 @@
 #include <cmath>
 
 #include "assembly/error_norms.hpp"
+#include "assembly/surface_calculus.hpp"
 #include "assembly/surface_dirichlet.hpp"
 #include "assembly/surface_load.hpp"
 #include "config/errors.hpp"
+#include "spaces/lifted_space.hpp"
 
 namespace iga {
 
@@ -23,6 +25,21 @@ SurfaceExactSolution surface_exact_solution(const ProblemSpec& problem) {
   s.ux = field(u.diff_x());
   s.uy = field(u.diff_y());
   s.uz = field(u.diff_z());
+  return s;
+}
+
+/// The same with the ambient Hessian (the surface H2 seminorm of fourth-order problems).
+SurfaceExactSolution surface_exact_solution_with_hessian(const ProblemSpec& problem) {
+  SurfaceExactSolution s = surface_exact_solution(problem);
+  if (!problem.surface_exact) return s;
+  const SymbolicFunction& u = *problem.surface_exact;
+  const SymbolicFunction ux = u.diff_x(), uy = u.diff_y(), uz = u.diff_z();
+  s.uxx = field(ux.diff_x());
+  s.uxy = field(ux.diff_y());
+  s.uxz = field(ux.diff_z());
+  s.uyy = field(uy.diff_y());
+  s.uyz = field(uy.diff_z());
+  s.uzz = field(uz.diff_z());
   return s;
 }
 }  // namespace
@@ -107,6 +124,79 @@ Formulation::Messages SurfaceFormulation::messages() const {
   return {problem().source_where + ": the source term is not finite at some point of the surface",
           problem().data_where + ": the boundary data are not finite at some point of the surface's boundary",
           problem().data_where + ": the exact solution or its gradient is not finite somewhere on the surface"};
+}
+
+void SurfaceBiharmonicFormulation::check() const {
+  const ProblemSpec& p = problem();
+  if (space().ambient_dimension() != 3)
+    throw InputError(p.source_where + ": surface_biharmonic needs a space on a surface in 3D");
+  if (space().boundary_edges("all").empty()) return;
+  if (!dynamic_cast<const LiftedSpace*>(&space()))
+    throw InputError(p.source_where + ": surface_biharmonic on an open surface needs a lifted (graph) surface; this "
+                                      "surface's boundary conditions are not implemented");
+  if (!p.surface_exact)
+    throw InputError(p.source_where + ": surface_biharmonic on an open surface takes its clamped data from 'exact'");
+}
+
+Eigen::VectorXd SurfaceBiharmonicFormulation::load(const WorkShare& share) const {
+  const ProblemSpec& p = problem();
+  if (p.surface_source || !p.surface_exact) {
+    const SymbolicFunction f = p.surface_source.value_or(SymbolicFunction::constant(0.0));
+    return surface_load(
+        space(), [f](const Eigen::Vector3d& x, const Eigen::Vector3d&, double) { return f.at(x); },
+        quadrature_degree(), share.elements);
+  }
+  // ℓ(v) = a(u, v) = ∫ Δ_Γu Δ_Γv + c u v with Δ_Γu from u's ambient derivatives, n and H.
+  const SymbolicFunction u = *p.surface_exact;
+  const SymbolicFunction ux = u.diff_x(), uy = u.diff_y(), uz = u.diff_z();
+  const SymbolicFunction uxx = ux.diff_x(), uxy = ux.diff_y(), uxz = ux.diff_z(), uyy = uy.diff_y(),
+                         uyz = uy.diff_z(), uzz = uz.diff_z();
+  const double c = p.reaction;
+  const SurfaceSource value_part = [u, c](const Eigen::Vector3d& x, const Eigen::Vector3d&, double) {
+    return c * u.at(x);
+  };
+  const SurfaceSource laplacian_part = [=](const Eigen::Vector3d& x, const Eigen::Vector3d& n, double H) {
+    const Eigen::Vector3d g(ux.at(x), uy.at(x), uz.at(x));
+    Eigen::Matrix3d D;
+    D << uxx.at(x), uxy.at(x), uxz.at(x), uxy.at(x), uyy.at(x), uyz.at(x), uxz.at(x), uyz.at(x), uzz.at(x);
+    return surface_laplacian_of_ambient(D, g, n, H);
+  };
+  return surface_form_load(space(), value_part, laplacian_part, quadrature_degree(), share.elements);
+}
+
+Constraints SurfaceBiharmonicFormulation::constraints() const {
+  // An open lifted surface: clamped on its whole boundary, u and ∇_Γu from the exact solution,
+  // imposed as the planar space's clamped condition on u ∘ X (same functions, same numbering):
+  // û = u(X(x, y)) and ∂_n û = (J_Xᵀ ∇u) · n with n the planar outward normal.
+  if (const auto* lifted = dynamic_cast<const LiftedSpace*>(&space());
+      lifted && !space().boundary_edges("all").empty()) {
+    const SymbolicFunction u = *problem().surface_exact;
+    const SymbolicFunction ux = u.diff_x(), uy = u.diff_y(), uz = u.diff_z();
+    const BoundaryField value = [lifted, u](const Point2& x, const Point2&) { return u.at(lifted->lift(x)); };
+    const BoundaryField normal = [lifted, ux, uy, uz](const Point2& x, const Point2& n) {
+      const Eigen::Vector3d X = lifted->lift(x);
+      const Eigen::Vector3d g(ux.at(X), uy.at(X), uz.at(X));
+      return (lifted->lift_jacobian(x).transpose() * g).dot(n);
+    };
+    const std::vector<BoundaryEdge> all = lifted->planar().boundary_edges("all");
+    return impose_essential(lifted->planar(), EssentialBoundary{all, all}, value, normal, quadrature_degree());
+  }
+  // Closed surface, c > 0: no essential condition.
+  Constraints c;
+  c.values = Eigen::VectorXd::Zero(space().dimension());
+  for (int i = 0; i < space().dimension(); ++i) c.free.push_back(i);
+  return c;
+}
+
+ErrorNorms SurfaceBiharmonicFormulation::errors(const Eigen::VectorXd& coefficients, const WorkShare& share) const {
+  return surface_error_norms(space(), coefficients, surface_exact_solution_with_hessian(problem()),
+                             space().error_quadrature_degree(), share.elements);
+}
+
+Formulation::Messages SurfaceBiharmonicFormulation::messages() const {
+  return {problem().source_where + ": the load is not finite at some point of the surface",
+          problem().data_where + ": the boundary data are not finite",
+          problem().data_where + ": the exact solution or its derivatives are not finite somewhere on the surface"};
 }
 
 }  // namespace iga

@@ -14,7 +14,7 @@
 
 namespace iga {
 
-/// The given source, else f(x, n, H) = −Δ_Γu + u from the exact solution.
+/// The given source, else f(x, n, H) = −Δ_Γu + u from the exact solution (laplace_beltrami).
 SurfaceSource surface_source(const ProblemSpec& problem);
 
 /// The Laplace–Beltrami problem as a Formulation: matrix laplace + c mass (ProblemSpec::terms,
@@ -41,6 +41,25 @@ class SurfaceFormulation final : public Formulation {
   /// Pure problems: this share's ∫ N_i and the area (set by load, used by finish).
   mutable Eigen::VectorXd mass_of_one_;
   mutable double area_ = 0;
+};
+
+/// The surface biharmonic problem Δ_Γ²u + c u = f (c = `reaction` > 0, default 1) on a closed
+/// surface, as a Formulation: matrix ∫ Δ_Γu Δ_Γv + c ∫ u v (ProblemSpec::terms: the bilaplace
+/// integrator on the covariant Hessians, and mass), on C1 surface spaces. The load is the given
+/// source, or with an exact solution u the bilinear form applied to u,
+///   ℓ(v) = ∫ Δ_Γu Δ_Γv + c u v,   Δ_Γu = tr ∇²u − n·∇²u n − H ∂_n u   pointwise,
+/// element by element with the surface's own n and H: on a G1 surface (curvature jumps across
+/// patch edges) Δ_Γu jumps there and the strong form f = Δ_Γ²u + c u would miss the edge terms;
+/// the weak load has none to miss, and its solution is u's Galerkin projection. Errors: L2, H1
+/// (surface gradient) and the surface H2 seminorm (covariant Hessian).
+class SurfaceBiharmonicFormulation final : public Formulation {
+ public:
+  using Formulation::Formulation;
+  void check() const override;
+  Eigen::VectorXd load(const WorkShare& share) const override;
+  Constraints constraints() const override;
+  ErrorNorms errors(const Eigen::VectorXd& coefficients, const WorkShare& share) const override;
+  Messages messages() const override;
 };
 
 }  // namespace iga
