@@ -9,6 +9,7 @@ packages=(
   libeigen3-dev libsuitesparse-dev libyaml-cpp-dev libvtk9-dev
   libginac-dev libmuparser-dev libplplot-dev plplot-driver-cairo
   libcli11-dev nlohmann-json3-dev libgtest-dev libbenchmark-dev
+  libspectra-dev         # Spectra, header-only Lanczos/Arnoldi: the eigensolver of problem.eigen (solver/eigen_solver.cpp)
   libgmsh-dev            # Gmsh SDK: reading .msh, meshing .geo domains and polygons (mesh/)
   libseccomp-dev         # system-call filter of the Gmsh worker process (mesh/worker_sandbox.cpp)
   libtinyxml2-dev        # G+Smo XML geometry files (mesh/gismo_xml.cpp)

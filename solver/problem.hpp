@@ -11,6 +11,7 @@
 #include "assembly/integrators.hpp"
 #include "config/config_node.hpp"
 #include "config/expression.hpp"
+#include "solver/eigen_spec.hpp"
 
 namespace iga {
 
@@ -56,6 +57,9 @@ struct ProblemSpec {
   std::optional<SymbolicFunction> surface_dirichlet;
   /// laplace_beltrami: c in −Δ_Γu + c u = f (c = 0: the solution is fixed up to a constant).
   double reaction = 1.0;
+  /// An eigenproblem (problem.eigen): the smallest eigenvalues of the operator under homogeneous
+  /// essential conditions; no source, no data, no exact solution.
+  std::optional<EigenSpec> eigen;
 
   /// u, ∇u, D²u of the exact solution as callables (empty members when there is none).
   ExactSolution exact_solution() const;
@@ -69,10 +73,11 @@ struct ProblemSpec {
 /// `boundary` lists parts as in the config ("all" first).
 ProblemSpec manufactured_problem(Pde pde, const SymbolicFunction& u, std::vector<BoundaryPart> boundary);
 
-/// Parse and validate the `problem:` section (keys pde, exact, source, boundary, data, form).
+/// Parse and validate the `problem:` section (keys pde, exact, source, boundary, data, form, eigen).
 ProblemSpec parse_problem(const ConfigNode& node);
 
-/// `problem:` with `pde: laplace_beltrami` (keys pde, exact, source, reaction; expressions in x, y, z). With
+/// `problem:` with `pde: laplace_beltrami` (keys pde, exact, source, reaction, boundary, boundary_value,
+/// eigen; expressions in x, y, z). With
 /// both exact and source, the source is used as given and exact measures the errors.
 ProblemSpec parse_surface_problem(const ConfigNode& node);
 
