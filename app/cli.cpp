@@ -18,6 +18,7 @@
 #include "geometry/geometry_study.hpp"
 #include "output/comparison.hpp"
 #include "output/convergence_plot.hpp"
+#include "output/eigen_report.hpp"
 #include "output/geometry_study_outputs.hpp"
 #include "output/parallel_vtk.hpp"
 #include "config/errors.hpp"
@@ -89,11 +90,23 @@ StudyResult run_into(const StudySettings& settings, const std::string& config_pa
   progress("writing tables and plot");
   write_convergence_csv(result.rows, (dir / "convergence.csv").string(), result.adaptive,
                         functional_names(settings));
-  if (settings.write_plot) plot_convergence(result.rows, result.expected, plot_title(settings, result),
+  const std::vector<EigenRow> eigen =
+      settings.problem.eigen ? eigen_rows(result.eigen, settings.problem.eigen->exact) : std::vector<EigenRow>{};
+  if (settings.problem.eigen) write_eigenvalues_csv(eigen, (dir / "eigenvalues.csv").string());
+  if (settings.write_plot && !settings.problem.eigen) plot_convergence(result.rows, result.expected, plot_title(settings, result),
                                             (dir / "convergence.svg").string(), result.adaptive);
   result.total_seconds = std::chrono::duration<double>(Clock::now() - t_start).count();
   write_summary_json(settings, result, (dir / "summary.json").string());
 
+  if (settings.problem.eigen) {
+    std::cout << result.space_type << " / " << to_string(settings.problem.pde) << " eigenvalues — " << config_path
+              << '\n'
+              << format_eigen_table(eigen);
+    if (!settings.problem.eigen->exact.empty())
+      std::cout << "expected rate for smooth eigenfunctions: twice the energy-norm order, h^"
+                << 2 * (settings.problem.order() == 4 ? result.expected.h2 : result.expected.h1) << '\n';
+    return result;
+  }
   std::cout << result.space_type << " / " << to_string(settings.problem.pde) << " — " << config_path << '\n'
             << format_convergence_table(result.rows, result.adaptive, functional_names(settings));
   if (!has_errors(result.rows)) {

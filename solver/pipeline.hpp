@@ -51,6 +51,10 @@ struct DiscreteSolution {
   /// Adaptive studies: the residual indicator η_K per element and the elements marked for refinement.
   std::vector<double> indicators;
   std::vector<int> marked;
+  /// Eigenproblems (solver/eigen_pipeline.hpp): the eigenvalues, ascending, and the M-normalised
+  /// modes, one per column; `coefficients` is the first.
+  Eigen::VectorXd eigenvalues;
+  Eigen::MatrixXd modes;
 };
 
 /// The assemble step alone: load, essential conditions (checked finite, InputError naming the

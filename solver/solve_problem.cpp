@@ -3,6 +3,7 @@
 #include <optional>
 
 #include "config/progress.hpp"
+#include "solver/eigen_pipeline.hpp"
 #include "solver/petsc_backend.hpp"
 #include "solver/petsc_session.hpp"
 #include "solver/surface_problem.hpp"
@@ -42,6 +43,18 @@ LinearSystem assemble_linear_system(const Space& space, const ProblemSpec& probl
 DiscreteSolution solve_problem(const Space& space, const ProblemSpec& problem, SolverKind solver,
                                const ProgressSink& progress, const PetscSettings& petsc) {
   const std::unique_ptr<Formulation> f = make_formulation(space, problem);
+  if (problem.eigen) {  // serial only for now (parse_study refuses solver.type: petsc)
+    SerialEigenBackend backend;
+    EigenSolution e = solve_eigen_pipeline(*f, backend, progress);
+    DiscreteSolution out;
+    out.result = e.result;
+    out.solve = {e.report.method, e.report.t_factorize, e.report.t_solve, e.report.max_residual, 0};
+    out.eigenvalues = e.modes.values;
+    out.modes = std::move(e.modes.vectors);
+    out.coefficients = out.modes.col(0);
+    out.boundary_constrained = e.result.dofs - e.result.free_dofs;
+    return out;
+  }
   if (solver != SolverKind::petsc) {
     SerialBackend backend(solver);
     return solve_pipeline(*f, backend, progress);

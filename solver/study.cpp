@@ -149,6 +149,12 @@ StudySettings parse_study(const ConfigNode& root, const std::string& config_path
     if (!open && s.problem.surface_dirichlet)
       root["problem"]["boundary"].fail("this surface is closed: it has no boundary for Dirichlet data");
   }
+  if (s.problem.eigen) {
+    if (s.solver == SolverKind::petsc)
+      root["solver"].fail("eigenproblems (problem.eigen) are solved serially for now (Spectra + CHOLMOD): remove "
+                          "solver.type: petsc");
+    if (s.adaptive) refinement->fail("adaptive refinement of eigenproblems (problem.eigen) is not supported yet");
+  }
   if (s.problem.pde == Pde::biharmonic && coarse->continuity() < 1)
     space_node.fail("the biharmonic problem needs a C1 (H2-conforming) space; this " + coarse->type() +
                        " space is only C" + std::to_string(coarse->continuity()) +
@@ -220,7 +226,8 @@ StudyResult run_study(const StudySettings& settings, const ProgressSink& progres
   double t_next = 0.0;
   // Without an exact solution: the previous level's solution, located by its own space, for the
   // differences between successive levels (planar problems).
-  const bool differences = !settings.problem.exact && settings.problem.pde != Pde::laplace_beltrami;
+  const bool differences =
+      !settings.problem.exact && settings.problem.pde != Pde::laplace_beltrami && !settings.problem.eigen;
   std::shared_ptr<const PointLocator> previous_locator;
   Eigen::VectorXd previous_coefficients;
   for (int level = 0; level < settings.levels; ++level) {
@@ -248,6 +255,8 @@ StudyResult run_study(const StudySettings& settings, const ProgressSink& progres
                                          [&](const std::string& msg) { progress(tag + msg); }, settings.petsc);
     sol.result.level = level;
     sol.result.t_space = t_space;
+    if (settings.problem.eigen)
+      result.eigen.push_back({level, sol.result.h, sol.result.dofs, sol.result.free_dofs, sol.eigenvalues});
     if (!result.rows.empty() && result.rows.back().energy && sol.result.energy)
       sol.result.energy_difference = std::sqrt(std::abs(*sol.result.energy - *result.rows.back().energy));
     std::shared_ptr<const PointLocator> locator;

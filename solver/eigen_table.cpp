@@ -1,0 +1,33 @@
+#include "solver/eigen_table.hpp"
+
+#include <cmath>
+
+namespace iga {
+
+std::vector<EigenRow> eigen_rows(const std::vector<EigenLevel>& levels, const std::vector<double>& exact) {
+  std::vector<EigenRow> rows;
+  for (std::size_t l = 0; l < levels.size(); ++l) {
+    const EigenLevel& L = levels[l];
+    for (int i = 0; i < L.values.size(); ++i) {
+      EigenRow r{L.level, L.h, L.dofs, i + 1, L.values(i), {}, {}, {}, {}};
+      if (i < static_cast<int>(exact.size())) {
+        r.reference = exact[i];
+        r.relative_error = std::abs(L.values(i) - exact[i]) / std::abs(exact[i]);
+        const EigenLevel* prev = l > 0 ? &levels[l - 1] : nullptr;
+        if (prev && i < prev->values.size()) {
+          const double e0 = std::abs(prev->values(i) - exact[i]) / std::abs(exact[i]);
+          const double e1 = *r.relative_error;
+          if (e0 > 0 && e1 > 0) {
+            const double drop = std::log(e0 / e1);
+            if (prev->h != L.h) r.rate = drop / std::log(prev->h / L.h);
+            if (prev->dofs != L.dofs) r.rate_dofs = drop / std::log(double(L.dofs) / prev->dofs);
+          }
+        }
+      }
+      rows.push_back(r);
+    }
+  }
+  return rows;
+}
+
+}  // namespace iga
