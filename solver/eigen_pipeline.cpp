@@ -1,5 +1,6 @@
 #include "solver/eigen_pipeline.hpp"
 
+#include <cstdio>
 #include <stdexcept>
 
 #include "assembly/integrators.hpp"
@@ -24,6 +25,12 @@ EigenPairs SerialEigenBackend::eigensolve(int count, EigenReport& report, const 
     progress("eigensolve: " + std::to_string(count) + " eigenpairs of " + std::to_string(K_free_.rows()) + " unknowns");
   ProgressPhase phase("eigensolve", 0);
   EigenPairs free = smallest_eigenpairs(K_free_, M_free_, count, report);
+  if (progress) {
+    char line[160];
+    std::snprintf(line, sizeof line, "eigensolve: %d solves with the factor (factorize %.3f s, Lanczos %.3f s), "
+                  "largest residual %.1e", report.operations, report.t_factorize, report.t_solve, report.max_residual);
+    progress(line);
+  }
   EigenPairs out{free.values, Eigen::MatrixXd(constraints_.values.size(), free.vectors.cols())};
   Constraints homogeneous = constraints_;
   homogeneous.values.setZero();

@@ -2,8 +2,7 @@
 
 #include <Eigen/CholmodSupport>
 #include <Eigen/Eigenvalues>
-#include <Spectra/MatOp/SparseSymMatProd.h>
-#include <Spectra/SymGEigsShiftSolver.h>
+#include <Spectra/SymEigsSolver.h>
 #include <algorithm>
 #include <cmath>
 #include <numeric>
@@ -16,38 +15,55 @@ namespace iga {
 
 namespace {
 
-/// y = (K − σM)⁻¹ x with one CHOLMOD factor: Spectra's operation interface (its own
-/// SymShiftInvert would factor with SparseLU).
-class CholmodShiftInvert {
+/// The CHOLMOD factor P (K − σM) Pᵀ = L Lᵀ (Eigen's wrapper, opened for the triangular solves).
+class CholeskyFactor : public Eigen::CholmodSupernodalLLT<SparseMatrix, Eigen::Lower> {
+ public:
+  CholeskyFactor() { cholmod().print = 0; }  // a failed factorization is reported by the caller
+  /// x = A⁻¹ b for one of CHOLMOD's systems (CHOLMOD_L, CHOLMOD_Lt, CHOLMOD_P, CHOLMOD_Pt).
+  void apply(int system, const double* b, double* x) const {
+    Eigen::Map<const Eigen::VectorXd> in(b, rows());
+    Eigen::VectorXd copy = in;
+    cholmod_dense B = Eigen::viewAsCholmod(copy);
+    cholmod_dense* X = cholmod_solve(system, m_cholmodFactor, &B, &const_cast<CholeskyFactor*>(this)->cholmod());
+    if (!X) throw NumericalError("eigenproblem: CHOLMOD could not solve with its factor");
+    Eigen::Map<Eigen::VectorXd>(x, rows()) = Eigen::Map<const Eigen::VectorXd>(static_cast<double*>(X->x), rows());
+    cholmod_free_dense(&X, &const_cast<CholeskyFactor*>(this)->cholmod());
+  }
+};
+
+/// C = L⁻¹ P M Pᵀ L⁻ᵀ, symmetric, with eigenvalues ν = 1 / (λ − σ) for the pairs of K x = λ M x
+/// (y = Lᵀ P x): shift-and-invert as a standard problem, so that Lanczos orthogonalizes in the
+/// Euclidean inner product and each step costs one solve with the factor and one product with M
+/// (in M's inner product, as Spectra's SymGEigsShiftSolver does it, the products with M took more
+/// time than the solves).
+class TransformedPencil {
  public:
   using Scalar = double;
-  CholmodShiftInvert(const SparseMatrix& K, const SparseMatrix& M, EigenReport& report)
-      : K_(K), M_(M), report_(report) {
-    llt_.cholmod().print = 0;  // a failed factorization is reported by the caller
-  }
-  Eigen::Index rows() const { return K_.rows(); }
-  Eigen::Index cols() const { return K_.cols(); }
-  /// Factor K − σM; false when it is not positive definite.
-  bool factor(double sigma) {
-    const Stopwatch clock;
-    if (sigma == 0.0) llt_.compute(K_);
-    else llt_.compute(SparseMatrix(K_ - sigma * M_));
-    report_.t_factorize += clock.seconds();
-    return llt_.info() == Eigen::Success;
-  }
-  void set_shift(double sigma) {  // factored before (factor): Spectra calls this once
-    if (sigma != report_.shift) throw std::logic_error("CholmodShiftInvert: shift changed after factorization");
-  }
-  void perform_op(const double* x_in, double* y_out) const {
-    Eigen::Map<Eigen::VectorXd>(y_out, K_.rows()) = llt_.solve(Eigen::Map<const Eigen::VectorXd>(x_in, K_.rows()));
+  TransformedPencil(const CholeskyFactor& factor, const SparseMatrix& M, EigenReport& report)
+      : factor_(factor), M_(M), report_(report), a_(M.rows()), b_(M.rows()) {}
+  Eigen::Index rows() const { return M_.rows(); }
+  Eigen::Index cols() const { return M_.cols(); }
+  void perform_op(const double* y, double* out) const {
+    factor_.apply(CHOLMOD_Lt, y, a_.data());
+    factor_.apply(CHOLMOD_Pt, a_.data(), b_.data());
+    a_.noalias() = M_ * b_;
+    factor_.apply(CHOLMOD_P, a_.data(), b_.data());
+    factor_.apply(CHOLMOD_L, b_.data(), out);
     ++report_.operations;
+  }
+  /// x = Pᵀ L⁻ᵀ y: the eigenvector of the pencil.
+  Eigen::VectorXd pencil_vector(const Eigen::VectorXd& y) const {
+    Eigen::VectorXd z(y.size()), x(y.size());
+    factor_.apply(CHOLMOD_Lt, y.data(), z.data());
+    factor_.apply(CHOLMOD_Pt, z.data(), x.data());
+    return x;
   }
 
  private:
-  const SparseMatrix& K_;
-  const SparseMatrix& M_;
+  const CholeskyFactor& factor_;
+  Eigen::SparseMatrix<double, Eigen::RowMajor> M_;  // row-major: Eigen's product runs in parallel
   EigenReport& report_;
-  Eigen::CholmodSupernodalLLT<SparseMatrix, Eigen::Lower> llt_;
+  mutable Eigen::VectorXd a_, b_;
 };
 
 /// Sort ascending, M-normalise, fix the signs, measure the residuals.
@@ -85,28 +101,45 @@ EigenPairs smallest_eigenpairs(const SparseMatrix& K, const SparseMatrix& M, int
   set_blas_threads_for(n);
   report = {};
   report.method = "spectra shift-invert lanczos + cholmod";
-  CholmodShiftInvert op(K, M, report);
-  if (!op.factor(0.0)) {
+  CholeskyFactor factor;
+  const auto factor_at = [&](double sigma) {
+    const Stopwatch clock;
+    if (sigma == 0.0) factor.compute(K);
+    else factor.compute(SparseMatrix(K - sigma * M));
+    report.t_factorize += clock.seconds();
+    return factor.info() == Eigen::Success;
+  };
+  if (!factor_at(0.0)) {
     // K singular (constants in its kernel): shift below the spectrum by 10⁻⁶ λ_max (λ_max about
     // max K_ii / max M_ii), so that K − σM has a condition number near 10⁶ and λ = 0 stays the
     // eigenvalue closest to σ.
     report.shift = -K.diagonal().maxCoeff() / M.diagonal().maxCoeff() * 1e-6;
-    if (!op.factor(report.shift))
+    if (!factor_at(report.shift))
       throw NumericalError("eigenproblem: K − σM is not positive definite (K not semi-definite or M singular)");
   }
-  Spectra::SparseSymMatProd<double> mass(M);
+  // The Lanczos steps solve with one vector at a time: small, memory-bound BLAS calls that threads
+  // only slow down (the factorization above used them).
+  set_blas_threads_for(0);
+  TransformedPencil op(factor, M, report);
   // Lanczos basis: twice the wanted pairs, at least 20 (fewer restarts for clusters of multiple λ).
   const int ncv = std::min(n, std::max(2 * count + 1, count + 20));
-  Spectra::SymGEigsShiftSolver<CholmodShiftInvert, Spectra::SparseSymMatProd<double>, Spectra::GEigsMode::ShiftInvert>
-      solver(op, mass, count, ncv, report.shift);
+  Spectra::SymEigsSolver<TransformedPencil> solver(op, count, ncv);
   const Stopwatch clock;
   solver.init();
-  // Relative tolerance of the Ritz values of (K − σM)⁻¹M: eigenvalue errors go like its square.
-  solver.compute(Spectra::SortRule::LargestMagn, 1000, 1e-13);
+  // Relative tolerance of the Ritz values ν: eigenvalue errors go like its square.
+  solver.compute(Spectra::SortRule::LargestAlge, 1000, 1e-10);
   report.t_solve = clock.seconds();
   if (solver.info() != Spectra::CompInfo::Successful)
     throw NumericalError("eigenproblem: Lanczos did not converge for " + std::to_string(count) + " eigenpairs");
-  EigenPairs out = finish(solver.eigenvalues(), solver.eigenvectors(), K, M, report);
+  const Eigen::VectorXd nu = solver.eigenvalues();
+  const Eigen::MatrixXd y = solver.eigenvectors();
+  Eigen::VectorXd lambda(nu.size());
+  Eigen::MatrixXd x(n, nu.size());
+  for (int i = 0; i < nu.size(); ++i) {
+    lambda(i) = report.shift + 1.0 / nu(i);
+    x.col(i) = op.pencil_vector(y.col(i));
+  }
+  EigenPairs out = finish(lambda, x, K, M, report);
   if (!(report.max_residual < 1e-6))
     throw NumericalError("eigenproblem: eigenpair residual " + std::to_string(report.max_residual) + " is not small");
   return out;

@@ -54,7 +54,7 @@ domain: {type: unit_square}
 space: {type: ws4, elements: 2}
 refinement: {levels: 3}
 )yaml");
-  // WS4 is quartic and C1: 2p = 8. From 4 to 8 elements a side, measured 8.07 for λ₁; the higher
+  // WS4 is quartic (and C3): 2p = 8. From 4 to 8 elements a side, measured 8.07 for λ₁; the higher
   // ones still approach 8 from above (8.35, 8.58, 8.09, 8.26 for λ₂, λ₄, λ₅, λ₆; λ₄ was 8.91 a
   // level before, and on 16 elements λ₆'s is 8.17).
   EXPECT_NEAR(last_rate(rows, 1), 8.0, 0.15);
