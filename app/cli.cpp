@@ -99,6 +99,8 @@ StudyResult run_into(const StudySettings& settings, const std::string& config_pa
     write_eigenvalues_csv(eigen, (dir / "eigenvalues.csv").string());
     if (settings.write_plot)
       plot_eigen_errors(eigen, eigen_rate, plot_title(settings, result), (dir / "eigenvalues.svg").string());
+    write_spectrum_files(*settings.problem.eigen, result.eigen, dir.string(), plot_title(settings, result),
+                         settings.write_plot);
   }
   if (settings.write_plot && !settings.problem.eigen) plot_convergence(result.rows, result.expected, plot_title(settings, result),
                                             (dir / "convergence.svg").string(), result.adaptive);

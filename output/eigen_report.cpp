@@ -1,5 +1,7 @@
 #include "output/eigen_report.hpp"
 
+#include "output/eigen_plot.hpp"
+
 #include <algorithm>
 #include <cstdio>
 #include <fstream>
@@ -53,6 +55,33 @@ std::string format_eigen_table(const std::vector<EigenRow>& rows) {
     out += '\n';
   }
   return out;
+}
+
+void write_spectrum_files(const EigenSpec& spec, const std::vector<EigenLevel>& levels, const std::string& directory,
+                          const std::string& title, bool plot) {
+  std::vector<SpectrumRow> rows;
+  std::vector<SpectrumCurve> curves;
+  for (const EigenLevel& level : levels) {
+    const int N = static_cast<int>(level.spectrum.size());
+    if (N == 0) continue;
+    const std::vector<double> exact =
+        spec.formula.empty() ? spec.exact : eigenvalues_from_formula(spec.formula, spec.formula_where, N);
+    const std::vector<SpectrumRow> mine = spectrum_rows(level, exact);
+    rows.insert(rows.end(), mine.begin(), mine.end());
+    if (static_cast<int>(exact.size()) < N) continue;
+    SpectrumCurve curve{"level " + std::to_string(level.level) + ", N = " + std::to_string(N), {}};
+    for (const SpectrumRow& r : mine) curve.ratios.push_back(*r.ratio);
+    curves.push_back(std::move(curve));
+  }
+  if (rows.empty()) return;
+  const std::string csv = directory + "/spectrum.csv";
+  std::ofstream out(csv);
+  if (!out) throw std::runtime_error("cannot write " + csv);
+  out << "level,n,N,eigenvalue,reference,ratio\n";
+  for (const SpectrumRow& r : rows)
+    out << r.level << ',' << r.n << ',' << r.N << ',' << number(r.eigenvalue, "%.17e") << ','
+        << number(r.reference, "%.17e") << ',' << number(r.ratio, "%.15f") << '\n';
+  if (plot && !curves.empty()) plot_normalized_spectrum(curves, title, directory + "/spectrum.svg");
 }
 
 nlohmann::json eigen_json(const std::vector<EigenRow>& rows) {

@@ -57,6 +57,11 @@ EigenSolution solve_eigen_pipeline(const Formulation& f, EigenBackend& backend, 
   clock.restart();
   out.modes = backend.eigensolve(f.problem().eigen->count, out.report, progress);
   r.t_solve = clock.seconds();
+  if (f.problem().eigen->spectrum && r.free_dofs <= max_spectrum_unknowns) {
+    if (progress) progress("the whole spectrum (dense, " + std::to_string(r.free_dofs) + " unknowns)");
+    EigenReport dense;
+    out.spectrum = backend.spectrum(dense);
+  }
   return out;
 }
 

@@ -40,6 +40,8 @@ class SerialEigenBackend final : public EigenBackend {
 /// What an eigen solve produced: the pairs (whole coefficient vectors) and the level's numbers.
 struct EigenSolution {
   EigenPairs modes;
+  /// eigen.spectrum, at most max_spectrum_unknowns free unknowns: every eigenvalue, ascending.
+  Eigen::VectorXd spectrum;
   LevelResult result;  ///< h, dofs, free_dofs, t_assemble, t_solve (errors: none)
   EigenReport report;
 };

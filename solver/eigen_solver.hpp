@@ -2,7 +2,8 @@
 /// @file
 /// Generalized symmetric eigenproblems K x = λ M x (K symmetric positive semi-definite, M positive
 /// definite, both with both triangles stored): the smallest eigenpairs by shift-and-invert Lanczos
-/// (Spectra) on one CHOLMOD factor of K − σM, or all of them by a dense solver for small problems.
+/// (Spectra) with one CHOLMOD factor of K − σM, or all of them by a dense solver for small problems
+/// (docs/eigen.md).
 
 #include <Eigen/Core>
 #include <string>

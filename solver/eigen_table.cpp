@@ -30,4 +30,18 @@ std::vector<EigenRow> eigen_rows(const std::vector<EigenLevel>& levels, const st
   return rows;
 }
 
+std::vector<SpectrumRow> spectrum_rows(const EigenLevel& level, const std::vector<double>& exact) {
+  std::vector<SpectrumRow> rows;
+  const int N = static_cast<int>(level.spectrum.size());
+  for (int i = 0; i < N; ++i) {
+    SpectrumRow r{level.level, i + 1, N, level.spectrum(i), {}, {}};
+    if (i < static_cast<int>(exact.size())) {
+      r.reference = exact[i];
+      r.ratio = level.spectrum(i) / exact[i];
+    }
+    rows.push_back(r);
+  }
+  return rows;
+}
+
 }  // namespace iga

@@ -17,6 +17,7 @@ struct EigenLevel {
   int dofs = 0;
   int free_dofs = 0;
   Eigen::VectorXd values;
+  Eigen::VectorXd spectrum;  ///< eigen.spectrum: all eigenvalues (empty above max_spectrum_unknowns)
 };
 
 /// One eigenvalue of one level. Without a reference the optional members are empty; the rates
@@ -36,5 +37,15 @@ struct EigenRow {
 
 /// Every eigenvalue of every level, level by level, index by index.
 std::vector<EigenRow> eigen_rows(const std::vector<EigenLevel>& levels, const std::vector<double>& exact);
+
+/// A level's whole spectrum against references (as many as given): n, λ_h,n and λ_h,n / λ_n.
+struct SpectrumRow {
+  int level = 0;
+  int n = 1;  ///< 1 .. N
+  int N = 0;  ///< the level's free unknowns
+  double eigenvalue = 0;
+  std::optional<double> reference, ratio;
+};
+std::vector<SpectrumRow> spectrum_rows(const EigenLevel& level, const std::vector<double>& exact);
 
 }  // namespace iga

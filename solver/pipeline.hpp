@@ -55,6 +55,7 @@ struct DiscreteSolution {
   /// modes, one per column; `coefficients` is the first.
   Eigen::VectorXd eigenvalues;
   Eigen::MatrixXd modes;
+  Eigen::VectorXd spectrum;  ///< eigen.spectrum: every eigenvalue (small problems; else empty)
 };
 
 /// The assemble step alone: load, essential conditions (checked finite, InputError naming the

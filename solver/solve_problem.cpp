@@ -50,6 +50,7 @@ DiscreteSolution solve_problem(const Space& space, const ProblemSpec& problem, S
     out.result = e.result;
     out.solve = {e.report.method, e.report.t_factorize, e.report.t_solve, e.report.max_residual, 0};
     out.eigenvalues = e.modes.values;
+    out.spectrum = std::move(e.spectrum);
     out.modes = std::move(e.modes.vectors);
     out.coefficients = out.modes.col(0);
     out.boundary_constrained = e.result.dofs - e.result.free_dofs;

@@ -256,7 +256,8 @@ StudyResult run_study(const StudySettings& settings, const ProgressSink& progres
     sol.result.level = level;
     sol.result.t_space = t_space;
     if (settings.problem.eigen)
-      result.eigen.push_back({level, sol.result.h, sol.result.dofs, sol.result.free_dofs, sol.eigenvalues});
+      result.eigen.push_back(
+          {level, sol.result.h, sol.result.dofs, sol.result.free_dofs, sol.eigenvalues, sol.spectrum});
     if (!result.rows.empty() && result.rows.back().energy && sol.result.energy)
       sol.result.energy_difference = std::sqrt(std::abs(*sol.result.energy - *result.rows.back().energy));
     std::shared_ptr<const PointLocator> locator;
