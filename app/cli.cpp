@@ -199,7 +199,15 @@ int run_configs(const std::vector<std::string>& paths, const std::string& output
   const std::filesystem::path dir(staged.path());
   write_comparison_csv(compared, (dir / "comparison.csv").string());
   std::string table;
-  if (const auto norm = compared_norm(compared)) {
+  if (const auto& eigen = studies.front().second.problem.eigen) {
+    // Eigenproblems: the largest relative eigenvalue error of each level against DOFs, per space.
+    std::vector<std::pair<std::string, std::vector<EigenRow>>> spaces;
+    for (const ComparedStudy& c : compared) spaces.emplace_back(c.label, eigen_rows(c.result.eigen, eigen->exact));
+    const std::string name = std::filesystem::path(paths.front()).stem().string();
+    plot_eigen_comparison(spaces, "eigenvalues — " + name, (dir / "comparison.svg").string());
+    table = format_eigen_comparison(spaces);
+    std::ofstream(dir / "comparison.txt") << table;
+  } else if (const auto norm = compared_norm(compared)) {
     const std::string name = std::filesystem::path(paths.front()).stem().string();
     plot_comparison(compared, *norm, to_string(studies.front().second.problem.pde) + " — " + name,
                     (dir / "comparison.svg").string());

@@ -49,6 +49,20 @@ std::pair<PLFLT, PLFLT> range(const std::vector<PLFLT>& v, double margin) {
   return {a - margin * (b - a), b + margin * (b - a)};
 }
 
+/// A legend of lines at the top, inside, on the given side.
+void legend(plstream& pls, const std::vector<std::string>& texts, std::vector<PLINT>& opts, std::vector<PLINT>& colours,
+            std::vector<PLINT>& styles, PLINT side) {
+  std::vector<const char*> text_ptrs;
+  for (const std::string& t : texts) text_ptrs.push_back(t.c_str());
+  std::vector<PLINT> text_colours(texts.size(), kBlack);
+  std::vector<PLFLT> widths(texts.size(), 2.0);
+  PLFLT w = 0, h = 0;
+  pls.legend(&w, &h, PL_LEGEND_BACKGROUND | PL_LEGEND_BOUNDING_BOX, PL_POSITION_TOP | side | PL_POSITION_INSIDE, 0.02,
+             0.02, 0.08, 0, kBlack, 1, 0, 0, static_cast<PLINT>(texts.size()), opts.data(), 1.0, 0.8, 1.6, 0.0,
+             text_colours.data(), text_ptrs.data(), nullptr, nullptr, nullptr, nullptr, colours.data(), styles.data(),
+             widths.data(), nullptr, nullptr, nullptr, nullptr);
+}
+
 }  // namespace
 
 void plot_eigen_errors(const std::vector<EigenRow>& rows, int expected_rate, const std::string& title,
@@ -107,15 +121,61 @@ void plot_eigen_errors(const std::vector<EigenRow>& rows, int expected_rate, con
         styles.push_back(2);
       }
     }
-    std::vector<const char*> text_ptrs;
-    for (const std::string& t : texts) text_ptrs.push_back(t.c_str());
-    std::vector<PLINT> text_colours(texts.size(), kBlack);
-    std::vector<PLFLT> widths(texts.size(), 2.0);
-    PLFLT w = 0, h = 0;
-    pls.legend(&w, &h, PL_LEGEND_BACKGROUND | PL_LEGEND_BOUNDING_BOX, PL_POSITION_TOP | PL_POSITION_RIGHT | PL_POSITION_INSIDE,
-               0.02, 0.02, 0.08, 0, kBlack, 1, 0, 0, static_cast<PLINT>(texts.size()), opts.data(), 1.0, 0.8, 1.6,
-               0.0, text_colours.data(), text_ptrs.data(), nullptr, nullptr, nullptr, nullptr, colours.data(),
-               styles.data(), widths.data(), nullptr, nullptr, nullptr, nullptr);
+    legend(pls, texts, opts, colours, styles, PL_POSITION_RIGHT);
+  });
+}
+
+std::vector<std::pair<int, double>> worst_relative_errors(const std::vector<EigenRow>& rows) {
+  std::map<int, std::pair<int, double>> by_level;
+  for (const EigenRow& r : rows) {
+    if (!r.relative_error) continue;
+    auto& [dofs, worst] = by_level[r.level];
+    dofs = r.dofs;
+    worst = std::max(worst, *r.relative_error);
+  }
+  std::vector<std::pair<int, double>> out;
+  for (const auto& [level, point] : by_level) out.push_back(point);
+  return out;
+}
+
+void plot_eigen_comparison(const std::vector<std::pair<std::string, std::vector<EigenRow>>>& spaces,
+                           const std::string& title, const std::string& filename) {
+  std::vector<std::pair<std::string, std::pair<std::vector<PLFLT>, std::vector<PLFLT>>>> lines;
+  std::vector<PLFLT> xs, ys;
+  for (const auto& [label, rows] : spaces) {
+    std::pair<std::vector<PLFLT>, std::vector<PLFLT>> line;
+    for (const auto& [dofs, error] : worst_relative_errors(rows)) {
+      if (!(error > 0)) continue;
+      line.first.push_back(std::log10(double(dofs)));
+      line.second.push_back(std::log10(error));
+    }
+    if (line.first.empty()) continue;
+    xs.insert(xs.end(), line.first.begin(), line.first.end());
+    ys.insert(ys.end(), line.second.begin(), line.second.end());
+    lines.emplace_back(label, std::move(line));
+  }
+  if (lines.empty()) return;
+  svg(filename, [&](plstream& pls) {
+    const auto [x0, x1] = range(xs, 0.08);
+    auto [y0, y1] = range(ys, 0.05);
+    pls.col0(kBlack);
+    pls.env(x0, x1, y0, y1 + 0.25 * (y1 - y0), 0, 30);
+    pls.lab("degrees of freedom", "largest relative eigenvalue error", title.c_str());
+    std::vector<std::string> texts;
+    std::vector<PLINT> opts, colours, styles;
+    for (std::size_t k = 0; k < lines.size(); ++k) {
+      const auto& [label, l] = lines[k];
+      const int colour = 2 + int(k % kColours);
+      pls.col0(colour);
+      pls.width(2.0);
+      pls.line(static_cast<PLINT>(l.first.size()), l.first.data(), l.second.data());
+      pls.string(static_cast<PLINT>(l.first.size()), l.first.data(), l.second.data(), "●");
+      texts.push_back(label);
+      opts.push_back(PL_LEGEND_LINE);
+      colours.push_back(colour);
+      styles.push_back(1);
+    }
+    legend(pls, texts, opts, colours, styles, PL_POSITION_RIGHT);
   });
 }
 
@@ -144,15 +204,7 @@ void plot_normalized_spectrum(const std::vector<SpectrumCurve>& curves, const st
       colours.push_back(colour);
       styles.push_back(1);
     }
-    std::vector<const char*> text_ptrs;
-    for (const std::string& t : texts) text_ptrs.push_back(t.c_str());
-    std::vector<PLINT> text_colours(texts.size(), kBlack);
-    std::vector<PLFLT> widths(texts.size(), 2.0);
-    PLFLT w = 0, h = 0;
-    pls.legend(&w, &h, PL_LEGEND_BACKGROUND | PL_LEGEND_BOUNDING_BOX, PL_POSITION_TOP | PL_POSITION_LEFT | PL_POSITION_INSIDE,
-               0.02, 0.02, 0.08, 0, kBlack, 1, 0, 0, static_cast<PLINT>(texts.size()), opts.data(), 1.0, 0.8, 1.6,
-               0.0, text_colours.data(), text_ptrs.data(), nullptr, nullptr, nullptr, nullptr, colours.data(),
-               styles.data(), widths.data(), nullptr, nullptr, nullptr, nullptr);
+    legend(pls, texts, opts, colours, styles, PL_POSITION_LEFT);
   });
 }
 

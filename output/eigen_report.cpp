@@ -84,6 +84,19 @@ void write_spectrum_files(const EigenSpec& spec, const std::vector<EigenLevel>& 
   if (plot && !curves.empty()) plot_normalized_spectrum(curves, title, directory + "/spectrum.svg");
 }
 
+std::string format_eigen_comparison(const std::vector<std::pair<std::string, std::vector<EigenRow>>>& spaces) {
+  std::string out = "largest relative eigenvalue error per level (over the eigenvalues with references)\n";
+  char line[160];
+  std::snprintf(line, sizeof line, "%-16s %8s %12s\n", "space", "dofs", "error");
+  out += line;
+  for (const auto& [label, rows] : spaces)
+    for (const auto& [dofs, error] : worst_relative_errors(rows)) {
+      std::snprintf(line, sizeof line, "%-16s %8d %12.3e\n", label.c_str(), dofs, error);
+      out += line;
+    }
+  return out;
+}
+
 nlohmann::json eigen_json(const std::vector<EigenRow>& rows) {
   nlohmann::json a = nlohmann::json::array();
   for (const EigenRow& r : rows)

@@ -26,6 +26,9 @@ std::string format_eigen_table(const std::vector<EigenRow>& rows);
 void write_spectrum_files(const EigenSpec& spec, const std::vector<EigenLevel>& levels, const std::string& directory,
                           const std::string& title, bool plot);
 
+/// A comparison of spaces: per space and level, the DOFs and the largest relative eigenvalue error.
+std::string format_eigen_comparison(const std::vector<std::pair<std::string, std::vector<EigenRow>>>& spaces);
+
 /// The rows for summary.json.
 nlohmann::json eigen_json(const std::vector<EigenRow>& rows);
 
