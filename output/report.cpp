@@ -351,7 +351,7 @@ std::string summary_json(const StudySettings& settings, const StudyResult& resul
   // Text was checked to be UTF-8 where it was read; a path from the command line (a file name is
   // bytes) may still not be: replaced, never an exception after the study.
   if (settings.problem.eigen) {
-    j["problem"]["eigen"] = {{"count", settings.problem.eigen->count}};
+    j["problem"]["eigen"] = {{"count", settings.problem.eigen->count}, {"spectrum", settings.problem.eigen->spectrum}};
     j["eigenvalues"] = eigen_json(eigen_rows(result.eigen, settings.problem.eigen->exact));
   }
   return j.dump(2, ' ', false, nlohmann::json::error_handler_t::replace);

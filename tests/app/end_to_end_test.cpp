@@ -81,6 +81,14 @@ void check_eigen_study(const fs::path& out, const std::string& name) {
   // Every shipped eigen config has a reference for λ₁, met to 1e-3 on its level 1.
   EXPECT_LT(summary["eigenvalues"][count]["relative_error"].get<double>(), 1e-3) << name;
   EXPECT_GT(fs::file_size(out / "eigenvalues.svg"), 1000u) << name;
+  if (summary["problem"]["eigen"].value("spectrum", false)) {  // every eigenvalue of both levels
+    const std::string spectrum = slurp(out / "spectrum.csv");
+    EXPECT_EQ(spectrum.rfind("level,n,N,eigenvalue,reference,ratio\n", 0), 0u) << name;
+    EXPECT_EQ(std::count(spectrum.begin(), spectrum.end(), '\n'),
+              1 + summary["levels"][0]["free_dofs"].get<int>() + summary["levels"][1]["free_dofs"].get<int>());
+    EXPECT_GT(fs::file_size(out / "spectrum.svg"), 1000u) << name;
+  }
+  if (!fs::exists(out / "solution_1.vtu")) return;  // output.vtk: false
   auto reader = vtkSmartPointer<vtkXMLUnstructuredGridReader>::New();
   reader->SetFileName((out / "solution_1.vtu").c_str());
   reader->Update();
