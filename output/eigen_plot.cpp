@@ -71,7 +71,7 @@ void plot_eigen_errors(const std::vector<EigenRow>& rows, int expected_rate, con
   std::map<int, std::pair<std::vector<PLFLT>, std::vector<PLFLT>>> lines;
   std::vector<double> drawn;
   for (const EigenRow& r : rows) {
-    if (!r.relative_error || !(*r.relative_error > 0)) continue;
+    if (!r.relative_error || !(*r.relative_error > 0) || !std::isfinite(*r.relative_error)) continue;  // log scale
     const bool repeat = std::any_of(drawn.begin(), drawn.end(), [&](double v) {
       return std::abs(v - *r.reference) <= 1e-12 * std::abs(v);
     });
@@ -145,7 +145,7 @@ void plot_eigen_comparison(const std::vector<std::pair<std::string, std::vector<
   for (const auto& [label, rows] : spaces) {
     std::pair<std::vector<PLFLT>, std::vector<PLFLT>> line;
     for (const auto& [dofs, error] : worst_relative_errors(rows)) {
-      if (!(error > 0)) continue;
+      if (!(error > 0) || !std::isfinite(error)) continue;  // log scale
       line.first.push_back(std::log10(double(dofs)));
       line.second.push_back(std::log10(error));
     }

@@ -24,7 +24,9 @@ EigenPairs SerialEigenBackend::eigensolve(int count, EigenReport& report, const 
   if (progress)
     progress("eigensolve: " + std::to_string(count) + " eigenpairs of " + std::to_string(K_free_.rows()) + " unknowns");
   ProgressPhase phase("eigensolve", 0);
-  EigenPairs free = smallest_eigenpairs(K_free_, M_free_, count, report);
+  // Nothing constrained: our operators without a reaction term then have the constants in their kernel.
+  const bool may_be_singular = constraints_.constrained.empty();
+  EigenPairs free = smallest_eigenpairs(K_free_, M_free_, count, report, may_be_singular);
   if (progress) {
     char line[160];
     std::snprintf(line, sizeof line, "eigensolve: %d solves with the factor (factorize %.3f s, Lanczos %.3f s), "

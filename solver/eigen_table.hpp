@@ -28,6 +28,7 @@ struct EigenRow {
   int dofs = 0;
   int index = 1;  ///< 1 = the smallest
   double eigenvalue = 0;
+  /// relative_error: |λ_h − λ| / |λ|, or |λ_h| where λ = 0.
   std::optional<double> reference, relative_error;
   /// log(e_prev / e) / log(h_prev / h): 2p for smooth eigenfunctions of second-order problems.
   std::optional<double> rate;

