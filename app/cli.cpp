@@ -94,7 +94,7 @@ StudyResult run_into(const StudySettings& settings, const std::string& config_pa
   const std::vector<EigenRow> eigen =
       settings.problem.eigen ? eigen_rows(result.eigen, settings.problem.eigen->exact) : std::vector<EigenRow>{};
   // Eigenvalue errors fall like twice the energy-norm order (docs/eigen.md).
-  const int eigen_rate = 2 * (settings.problem.order() == 4 ? result.expected.h2 : result.expected.h1);
+  const int eigen_rate = 2 * (settings.problem.pde == Pde::biharmonic ? result.expected.h2 : result.expected.h1);
   if (settings.problem.eigen) {
     write_eigenvalues_csv(eigen, (dir / "eigenvalues.csv").string());
     if (settings.write_plot)

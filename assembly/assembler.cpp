@@ -1,5 +1,6 @@
 #include "assembly/parallel.hpp"
 #include "assembly/assembler.hpp"
+#include "assembly/element_subset_assembly.hpp"
 #include "config/progress.hpp"
 #include "spaces/closed_forms.hpp"
 
@@ -206,36 +207,9 @@ Eigen::VectorXd Assembler::load(const ScalarField& f, int quad_degree) const {
 }
 
 Eigen::VectorXd Assembler::load(const BatchField& f, int quad_degree) const {
-  // Geometry first, then the transposed evaluation Σ_q f(x_q) JxW_q N_i(x_q) (Space::Evaluator::
-  // integrate_values), so a space never has to tabulate all its functions for a load vector.
-  // Element vectors go to their own slots (no colours, no barriers between them) and are added
-  // in element order afterwards: the same sums whatever the number of threads.
-  keep_eigen_serial();
-  const int ne = space_.num_elements();
-  std::vector<double> locals(table_.dofs.size());
-  #pragma omp parallel if (worth_threads(ne))
-  {
-    const std::unique_ptr<Space::Evaluator> evaluator = space_.make_evaluator();
-    PointValues geometry;
-    Eigen::VectorXd jxw, fw, local;
-    Eigen::MatrixXd fx;
-#pragma omp for schedule(dynamic, 16)
-    for (int e = 0; e < ne; ++e) {
-      progress_tick();
-      const RulePtr rule_ptr = space_.quadrature(e, quad_degree);  // keeps the rule alive
-      const QuadratureRule& rule = *rule_ptr;
-      evaluator->evaluate_geometry(e, rule, geometry);
-      integration_weights(rule, geometry, jxw);
-      f(geometry.x, fx);
-      fw = fx.row(0).transpose().cwiseProduct(jxw);
-      evaluator->integrate_values(e, rule, geometry, fw, local);
-      assert(local.size() == table_.size(e));
-      std::copy(local.data(), local.data() + local.size(), locals.begin() + table_.offsets[e]);
-    }
-  }
-  Eigen::VectorXd b = Eigen::VectorXd::Zero(space_.dimension());
-  for (size_t k = 0; k < locals.size(); ++k) b(table_.dofs[k]) += locals[k];
-  return b;
+  std::vector<int> all(space_.num_elements());
+  std::iota(all.begin(), all.end(), 0);
+  return subset_load(space_, all, f, quad_degree);
 }
 
 }  // namespace iga

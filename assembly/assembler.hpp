@@ -23,9 +23,9 @@ class Assembler {
   /// Global matrix of `form` (closed-form element matrices where the space has them, else
   /// integrated with rules of polynomial degree `quad_degree`).
   SparseMatrix matrix(const Form& form, int quad_degree) const;
-  /// The same matrix with element matrices and sums in long double, kept as high + low parts:
+  /// The same matrix with element matrices and sums in double-double, kept as high + low parts:
   /// what the residual of iterative refinement needs (see split_matrix.hpp). About as fast as
-  /// `matrix` when the basis evaluation dominates; the long double products cost more at high degree.
+  /// `matrix` when the basis evaluation dominates; the double-double sums cost more at high degree.
   SplitMatrix matrix_extended(const Form& form, int quad_degree) const;
   /// Load vector ∫ f N_i.
   Eigen::VectorXd load(const ScalarField& f, int quad_degree) const;

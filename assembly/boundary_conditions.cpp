@@ -72,16 +72,6 @@ void split_dependent_traces(const Eigen::MatrixXd& M, const Eigen::VectorXd& r, 
   }
 }
 
-/// Columns of the free unknowns in terms of the global functions (dim x free): identity columns,
-/// plus the basis change of dependent boundary functions.
-SparseMatrix free_basis(const Constraints& c, int dim) {
-  std::vector<Eigen::Triplet<double>> t = c.basis_change;
-  for (int k = 0; k < static_cast<int>(c.free.size()); ++k) t.emplace_back(c.free[k], k, 1.0);
-  SparseMatrix T(dim, static_cast<int>(c.free.size()));
-  T.setFromTriplets(t.begin(), t.end());
-  return T;
-}
-
 /// Iterative refinement of the projection with residuals from the unsummed integrals in long
 /// double: a few corrections remove the round-off of M's sums and of its factorization.
 void refine_projection(const Eigen::SimplicialLDLT<SparseMatrix>& ldlt, const std::vector<Eigen::Triplet<double>>& m,
@@ -188,6 +178,14 @@ Constraints impose_essential(const Space& space, const EssentialBoundary& bounda
   return c;
 }
 
+Eigen::SparseMatrix<double, Eigen::RowMajor> free_basis(const Constraints& c) {
+  std::vector<Eigen::Triplet<double>> t = c.basis_change;
+  for (int k = 0; k < static_cast<int>(c.free.size()); ++k) t.emplace_back(c.free[k], k, 1.0);
+  Eigen::SparseMatrix<double, Eigen::RowMajor> T(static_cast<int>(c.values.size()), static_cast<int>(c.free.size()));
+  T.setFromTriplets(t.begin(), t.end());
+  return T;
+}
+
 Eigen::VectorXd reduced_residual(const SplitMatrix& A, const Eigen::VectorXd& b, const Constraints& c,
                                  const Eigen::VectorXd& u_free) {
   const int nf = static_cast<int>(c.free.size());
@@ -218,7 +216,7 @@ void reduce_system(const SplitMatrix& K, const Eigen::VectorXd& b, const Constra
   const int nf = static_cast<int>(c.free.size());
   b_free = reduced_residual(K, b, c, Eigen::VectorXd::Zero(nf));
   if (!c.basis_change.empty()) {  // rare: dependent boundary traces (see impose_essential)
-    const SparseMatrix T = free_basis(c, dim);
+    const SparseMatrix T = free_basis(c);
     const SparseMatrix AT = A * T;
     A_free = SparseMatrix(T.transpose() * AT);
     return;
@@ -251,7 +249,9 @@ void reduce_system(const SplitMatrix& K, const Eigen::VectorXd& b, const Constra
 }
 
 Eigen::VectorXd expand_solution(const Eigen::VectorXd& u_free, const Constraints& c) {
-  if (!c.basis_change.empty()) return c.values + free_basis(c, static_cast<int>(c.values.size())) * u_free;
+  // Column-major: the product adds into the values column by column (the row-major one would
+  // sum each row first and round differently).
+  if (!c.basis_change.empty()) return c.values + SparseMatrix(free_basis(c)) * u_free;
   Eigen::VectorXd u = c.values;
   for (int k = 0; k < static_cast<int>(c.free.size()); ++k) u(c.free[k]) = u_free(k);
   return u;

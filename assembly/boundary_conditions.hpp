@@ -66,6 +66,11 @@ void reduce_system(const SparseMatrix& A, const Eigen::VectorXd& b, const Constr
 Eigen::VectorXd reduced_residual(const SplitMatrix& A, const Eigen::VectorXd& b, const Constraints& c,
                                  const Eigen::VectorXd& u_free);
 
+/// The free unknowns in terms of the global functions, u = values + T u_free: T (dimension x
+/// free) has identity columns, plus the basis change of dependent boundary functions. Row i lists
+/// the unknowns function i depends on (how the PETSc backend maps an element's functions).
+Eigen::SparseMatrix<double, Eigen::RowMajor> free_basis(const Constraints& c);
+
 /// The full coefficient vector from the free solution and the fixed values.
 Eigen::VectorXd expand_solution(const Eigen::VectorXd& u_free, const Constraints& c);
 

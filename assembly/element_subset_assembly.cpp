@@ -6,6 +6,7 @@
 #include "assembly/assembler.hpp"
 #include "assembly/integrators.hpp"
 #include "assembly/parallel.hpp"
+#include "config/progress.hpp"
 #include "spaces/element_values.hpp"
 
 namespace iga {
@@ -57,8 +58,13 @@ void for_each_element_matrix(const Space& space, const std::vector<int>& element
   }
 }
 
-Eigen::VectorXd subset_load(const Space& space, const std::vector<int>& elements, const ScalarField& f,
+Eigen::VectorXd subset_load(const Space& space, const std::vector<int>& elements, const BatchField& f,
                             int quad_degree) {
+  // Geometry first, then the transposed evaluation Σ_q f(x_q) JxW_q N_i(x_q) (Space::Evaluator::
+  // integrate_values), so a space never has to tabulate all its functions for a load vector.
+  // Element vectors go to their own slots and are added in the order given afterwards: the same
+  // sums whatever the number of threads.
+  keep_eigen_serial();
   const int n = static_cast<int>(elements.size());
   std::vector<Eigen::VectorXd> locals(n);
   std::vector<std::vector<int>> dofs(n);
@@ -67,18 +73,19 @@ Eigen::VectorXd subset_load(const Space& space, const std::vector<int>& elements
     const std::unique_ptr<Space::Evaluator> evaluator = space.make_evaluator();
     PointValues geometry;
     Eigen::VectorXd jxw, fw;
+    Eigen::MatrixXd fx;
 #pragma omp for schedule(dynamic, 16)
     for (int k = 0; k < n; ++k) {
+      progress_tick();
       const RulePtr rule = space.quadrature(elements[k], quad_degree);  // keeps the rule alive
       evaluator->evaluate_geometry(elements[k], *rule, geometry);
       integration_weights(*rule, geometry, jxw);
-      fw.resize(rule->size());
-      for (int q = 0; q < rule->size(); ++q) fw(q) = f(geometry.x.col(q)) * jxw(q);
+      f(geometry.x, fx);
+      fw = fx.row(0).transpose().cwiseProduct(jxw);
       evaluator->integrate_values(elements[k], *rule, geometry, fw, locals[k]);
       dofs[k] = geometry.dofs;
     }
   }
-  // Added in the order given: the same sums whatever the number of threads.
   Eigen::VectorXd b = Eigen::VectorXd::Zero(space.dimension());
   for (int k = 0; k < n; ++k)
     for (int i = 0; i < locals[k].size(); ++i) b(dofs[k][i]) += locals[k](i);

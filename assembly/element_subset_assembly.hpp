@@ -26,8 +26,8 @@ void for_each_element_matrix(const Space& space, const std::vector<int>& element
                              int quad_degree, const ElementMatrixSink& sink);
 
 /// ∫ f N_i over `elements` only (rules of degree `quad_degree`), as a vector of length
-/// space.dimension(): the transposed evaluation of Assembler::load, element by element.
-Eigen::VectorXd subset_load(const Space& space, const std::vector<int>& elements, const ScalarField& f,
+/// space.dimension(), contributions added in the order given (Assembler::load: all elements).
+Eigen::VectorXd subset_load(const Space& space, const std::vector<int>& elements, const BatchField& f,
                             int quad_degree);
 
 /// ∫_Γ g v ds (or ∫_Γ g ∂v/∂n ds when `normal_derivative`) over the given boundary edges only, as a

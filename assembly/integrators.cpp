@@ -213,12 +213,4 @@ std::shared_ptr<const Integrator> stiffness_integrator(double c) { return make<S
 std::shared_ptr<const Integrator> bilaplace_integrator(double c) { return make<BilaplaceIntegrator>(c); }
 std::shared_ptr<const Integrator> hessian_integrator(double c) { return make<HessianIntegrator>(c); }
 
-void element_load(const ScalarField& f, const ElementValues& ev, Eigen::VectorXd& local) {
-  const PointValues& v = ev.values();
-  const int q = ev.num_points();
-  Eigen::VectorXd fw(q);
-  for (int k = 0; k < q; ++k) fw(k) = f(v.x.col(k)) * ev.jxw()(k);
-  local.noalias() = v.value * fw;
-}
-
 }  // namespace iga

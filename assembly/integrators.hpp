@@ -50,23 +50,4 @@ std::shared_ptr<const Integrator> stiffness_integrator(double coefficient = 1.0)
 std::shared_ptr<const Integrator> bilaplace_integrator(double coefficient = 1.0);
 std::shared_ptr<const Integrator> hessian_integrator(double coefficient = 1.0);
 
-/// The update flags of `form` (for element loops that evaluate themselves).
-inline unsigned flags_for(const Form& form) { return form->flags(); }
-
-/// The element matrix of `form` on the element last evaluated by `ev`, summed in the scalar of
-/// `local` (Eigen::MatrixXd, MatrixXld or DoubleDoubleMatrix): quadrature, never a closed form.
-template <class Local>
-void element_matrix(const Form& form, const ElementValues& ev, Local& local) {
-  form->element_matrix(ev, local);
-}
-inline void element_matrix_extended(const Form& form, const ElementValues& ev, MatrixXld& local) {
-  element_matrix(form, ev, local);
-}
-inline void element_matrix_double_double(const Form& form, const ElementValues& ev, DoubleDoubleMatrix& local) {
-  element_matrix(form, ev, local);
-}
-
-/// Local load ∫ f v (n entries).
-void element_load(const ScalarField& f, const ElementValues& ev, Eigen::VectorXd& local);
-
 }  // namespace iga

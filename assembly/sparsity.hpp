@@ -29,29 +29,4 @@ ElementDofTable collect_element_dofs(const Space& space);
 /// on a common element; inner indices sorted within each column.
 SparseMatrix sparsity_pattern(const ElementDofTable& table, int dimension);
 
-/// Add the local matrix `local` (rows and columns in the order of `dofs`) into `values`, an array
-/// aligned with the value array of `pattern`, which must hold every entry (sparsity_pattern).
-/// Templated so that double matrices and long double value arrays share the one scatter loop.
-template <class Local, class Value>
-void scatter_add_values(const std::vector<int>& dofs, const Local& local, const SparseMatrix& pattern, Value* values) {
-  const int n = static_cast<int>(dofs.size());
-  const int* outer = pattern.outerIndexPtr();
-  const int* inner = pattern.innerIndexPtr();
-  for (int j = 0; j < n; ++j) {
-    const int* first = inner + outer[dofs[j]];
-    const int* last = inner + outer[dofs[j] + 1];
-    for (int i = 0; i < n; ++i) {
-      const int* pos = std::lower_bound(first, last, dofs[i]);
-      assert(pos != last && *pos == dofs[i]);
-      values[pos - inner] += local(i, j);
-    }
-  }
-}
-
-/// Add the local matrix `local` (rows and columns in the order of `dofs`) into `matrix`, whose
-/// pattern must already hold every entry (sparsity_pattern).
-inline void scatter_add(const std::vector<int>& dofs, const Eigen::MatrixXd& local, SparseMatrix& matrix) {
-  scatter_add_values(dofs, local, matrix, matrix.valuePtr());
-}
-
 }  // namespace iga

@@ -8,21 +8,6 @@
 
 namespace iga {
 
-void scatter_add(const std::vector<int>& dofs, const MatrixXld& local, const SparseMatrix& pattern,
-                 std::vector<long double>& values) {
-  scatter_add_values(dofs, local, pattern, values.data());
-}
-
-SplitMatrix split_matrix(const SparseMatrix& pattern, const std::vector<long double>& values) {
-  SplitMatrix k{pattern, Eigen::VectorXd(pattern.nonZeros())};
-  double* high = k.high.valuePtr();
-  for (Eigen::Index p = 0; p < pattern.nonZeros(); ++p) {
-    high[p] = static_cast<double>(values[p]);
-    k.low(p) = static_cast<double>(values[p] - high[p]);
-  }
-  return k;
-}
-
 SplitMatrix split_matrix(const SparseMatrix& pattern, const std::vector<DoubleDouble>& values) {
   SplitMatrix k{pattern, Eigen::VectorXd(pattern.nonZeros())};
   double* high = k.high.valuePtr();

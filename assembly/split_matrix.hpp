@@ -27,14 +27,7 @@ struct SplitMatrix {
   int rows() const { return static_cast<int>(high.rows()); }
 };
 
-/// Add the local matrix (rows and columns in the order of `dofs`) into `values`, aligned with the
-/// value array of `pattern` (sparsity_pattern).
-void scatter_add(const std::vector<int>& dofs, const MatrixXld& local, const SparseMatrix& pattern,
-                 std::vector<long double>& values);
-
-/// Split long double values aligned with `pattern` into high and low parts.
-SplitMatrix split_matrix(const SparseMatrix& pattern, const std::vector<long double>& values);
-/// The same for double-double values (kept exactly).
+/// Split double-double values aligned with `pattern` into high and low parts (kept exactly).
 SplitMatrix split_matrix(const SparseMatrix& pattern, const std::vector<DoubleDouble>& values);
 
 /// r = b − K x, products and sums in double-double, rounded to long double (K with both triangles

@@ -7,21 +7,14 @@
 
 namespace iga {
 
-namespace {
-/// Every boundary edge once, ordered by (element, local edge), with its condition.
-std::vector<std::pair<BoundaryEdge, BoundaryKind>> boundary_edge_kinds(const Space& space, const ProblemSpec& problem) {
+BoundarySplit split_boundary(const Space& space, const ProblemSpec& problem) {
+  // Every boundary edge once, ordered by (element, local edge), with the kind of the last part naming it.
   std::map<std::pair<int, int>, BoundaryKind> kind_of_edge;
   for (const BoundaryPart& part : problem.boundary)
     for (const BoundaryEdge& e : space.boundary_edges(part.name)) kind_of_edge[{e.element, e.local_edge}] = part.kind;
-  std::vector<std::pair<BoundaryEdge, BoundaryKind>> out;
-  for (const auto& [key, kind] : kind_of_edge) out.push_back({BoundaryEdge{key.first, key.second}, kind});
-  return out;
-}
-}  // namespace
-
-BoundarySplit split_boundary(const Space& space, const ProblemSpec& problem) {
   BoundarySplit split;
-  for (const auto& [e, kind] : boundary_edge_kinds(space, problem)) {
+  for (const auto& [key, kind] : kind_of_edge) {
+    const BoundaryEdge e{key.first, key.second};
     if (kind != BoundaryKind::neumann) split.essential.value_edges.push_back(e);
     if (kind == BoundaryKind::clamped) split.essential.normal_edges.push_back(e);
     if (kind == BoundaryKind::neumann) split.neumann.push_back(e);

@@ -63,12 +63,6 @@ void resize_values(FunctionValues& v, int q, bool hessians) {
 
 }  // namespace
 
-ErrorNorms level_difference(const Space& fine, const Eigen::VectorXd& fine_coefficients, const PointLocator& coarse,
-                            const Eigen::VectorXd& coarse_coefficients, bool hessians, int quad_degree) {
-  return level_difference(fine, fine_coefficients, coarse, coarse_coefficients, hessians,
-                          [&fine, quad_degree](int e) { return fine.quadrature(e, quad_degree); });
-}
-
 std::function<RulePtr(int)> difference_rule(const Space& fine) {
   const int degree = fine.affine_elements() ? std::min(fine.error_quadrature_degree(), 2 * fine.degree())
                                             : fine.error_quadrature_degree();

@@ -14,14 +14,10 @@
 namespace iga {
 
 /// ‖u_f − u_c‖_L2, |u_f − u_c|_H1 and (with `hessians`) |u_f − u_c|_H2 on the fine space's elements,
-/// rules of degree `quad_degree`. u_c is evaluated at the fine quadrature points located in the
+/// with the rule of each fine element given by `rule_of(element)`. u_c is evaluated at the fine quadrature points located in the
 /// coarse space: each fine element's centre is located once, and its points are mapped into that
 /// coarse element together (a fine element of a nested refinement lies in one coarse element);
 /// points outside it are located one by one. Planar spaces only.
-ErrorNorms level_difference(const Space& fine, const Eigen::VectorXd& fine_coefficients, const PointLocator& coarse,
-                            const Eigen::VectorXd& coarse_coefficients, bool hessians, int quad_degree);
-
-/// The same with the rule of each fine element given by `rule_of(element)`.
 ErrorNorms level_difference(const Space& fine, const Eigen::VectorXd& fine_coefficients, const PointLocator& coarse,
                             const Eigen::VectorXd& coarse_coefficients, bool hessians,
                             const std::function<RulePtr(int)>& rule_of);

@@ -4,6 +4,7 @@
 
 #ifdef IGA_WITH_PETSC
 
+#include <dlfcn.h>
 #include <petscksp.h>
 
 #include <algorithm>
@@ -13,7 +14,6 @@
 #include <limits>
 #include <memory>
 #include <sstream>
-#include <unordered_map>
 
 #include "assembly/boundary_conditions.hpp"
 #include "assembly/element_subset_assembly.hpp"
@@ -84,40 +84,33 @@ void solve_quietly(KSP ksp, Vec b, Vec x, const PetscSettings& s, const std::str
   ksp_step([&] { return KSPSolve(ksp, b, x); }, "KSPSolve", "solving with " + method, "failed solving with " + method, s);
 }
 
-/// The unknowns of the reduced system: free function k is unknown k (its position in
-/// Constraints::free); a constrained function contributes to the unknowns of its basis change.
-class ReducedBasis {
- public:
-  explicit ReducedBasis(const Constraints& c, int dimension) : free_of_(dimension, -1) {
-    for (int k = 0; k < static_cast<int>(c.free.size()); ++k) free_of_[c.free[k]] = k;
-    for (const auto& t : c.basis_change) change_[t.row()].emplace_back(t.col(), t.value());
-  }
+/// The unknowns an element with functions `dofs` couples (sorted, unique), and T_e with
+/// u|element = values|element + T_e u_unknowns: the rows `dofs` of free_basis (boundary_conditions.hpp)
+/// on those columns.
+using FreeBasis = Eigen::SparseMatrix<double, Eigen::RowMajor>;
+void element_unknowns(const FreeBasis& T, const std::vector<int>& dofs, std::vector<int>& unknowns,
+                      Eigen::MatrixXd* T_e = nullptr) {
+  unknowns.clear();
+  for (int d : dofs)
+    for (FreeBasis::InnerIterator it(T, d); it; ++it) unknowns.push_back(static_cast<int>(it.col()));
+  std::sort(unknowns.begin(), unknowns.end());
+  unknowns.erase(std::unique(unknowns.begin(), unknowns.end()), unknowns.end());
+  if (!T_e) return;
+  T_e->setZero(static_cast<int>(dofs.size()), static_cast<int>(unknowns.size()));
+  for (int i = 0; i < static_cast<int>(dofs.size()); ++i)
+    for (FreeBasis::InnerIterator it(T, dofs[i]); it; ++it)
+      (*T_e)(i, std::lower_bound(unknowns.begin(), unknowns.end(), it.col()) - unknowns.begin()) = it.value();
+}
 
-  /// The unknowns an element with functions `dofs` couples (sorted, unique), and T with
-  /// u|element = values|element + T u_unknowns (rows: dofs, columns: unknowns).
-  void element(const std::vector<int>& dofs, std::vector<int>& unknowns, Eigen::MatrixXd* T = nullptr) const {
-    unknowns.clear();
-    for (int d : dofs) {
-      if (free_of_[d] >= 0) unknowns.push_back(free_of_[d]);
-      else if (auto it = change_.find(d); it != change_.end())
-        for (const auto& [k, a] : it->second) unknowns.push_back(k);
-    }
-    std::sort(unknowns.begin(), unknowns.end());
-    unknowns.erase(std::unique(unknowns.begin(), unknowns.end()), unknowns.end());
-    if (!T) return;
-    T->setZero(static_cast<int>(dofs.size()), static_cast<int>(unknowns.size()));
-    const auto column = [&](int k) { return static_cast<int>(std::lower_bound(unknowns.begin(), unknowns.end(), k) - unknowns.begin()); };
-    for (int i = 0; i < static_cast<int>(dofs.size()); ++i) {
-      if (free_of_[dofs[i]] >= 0) (*T)(i, column(free_of_[dofs[i]])) = 1.0;
-      else if (auto it = change_.find(dofs[i]); it != change_.end())
-        for (const auto& [k, a] : it->second) (*T)(i, column(k)) += a;
-    }
-  }
-
- private:
-  std::vector<int> free_of_;
-  std::unordered_map<int, std::vector<std::pair<int, double>>> change_;
-};
+/// hypre keeps a global error flag that its destroy functions return: after a set-up it refused
+/// (an option value it rejects only then), destroying the preconditioner fails again and PETSc's
+/// KSPDestroy returns before freeing the solver and hypre's matrix. Clearing the flag first lets the
+/// destroy free everything. Looked up at run time: libHYPRE is there only as PETSc's dependency (or
+/// not at all), iga-run does not link it.
+void clear_hypre_errors() {
+  using Clear = int (*)();
+  if (auto clear = reinterpret_cast<Clear>(dlsym(RTLD_DEFAULT, "HYPRE_ClearAllErrors"))) clear();
+}
 
 /// PETSc objects destroyed on every path out (PETSc's destroy functions accept null handles).
 struct PetscObjects {
@@ -130,6 +123,7 @@ struct PetscObjects {
     // banner while the error already on its way is reported. Destroying frees what it can anyway.
     QuietPetscErrors quiet;
     VecScatterDestroy(&to_all);
+    clear_hypre_errors();
     KSPDestroy(&ksp);
     VecDestroy(&all);
     VecDestroy(&x);
@@ -273,10 +267,7 @@ int refine_solution(PetscObjects& p, ExtendedResidual& residual, const PetscSett
   return steps;
 }
 
-/// PETSc over the MPI ranks: the elements are partitioned, each rank assembles its elements'
-/// matrices (the assembler's double-double kernel) with the essential conditions eliminated into a
-/// distributed AIJ matrix, keeps them in double-double for the right-hand side and the refinement
-/// residuals (ExtendedResidual), and the KSP of the settings solves.
+/// The backend of petsc_backend.hpp (its file comment says how it works).
 class PetscBackend final : public LinearBackend {
  public:
   PetscBackend(const Space& space, const PetscSettings& settings, const ProgressSink& say)
@@ -317,7 +308,7 @@ class PetscBackend final : public LinearBackend {
   const int rank_, ranks_;
   std::vector<int> owner_, mine_;
   const Constraints* constraints_ = nullptr;
-  std::unique_ptr<ReducedBasis> basis_;
+  FreeBasis basis_;
   UnknownLayout layout_;
   RowCouplings couplings_;
   PetscObjects p_;
@@ -329,14 +320,14 @@ void PetscBackend::lay_out(const Constraints& c, SparseMatrix* pattern, const Pr
   // Local work first (every rank the same, apart from its elements): an error found here is
   // raised on all ranks together before any collective call.
   on_every_rank([&] {
-    basis_ = std::make_unique<ReducedBasis>(c, space_.dimension());
+    basis_ = free_basis(c);
     const ElementDofTable table = collect_element_dofs(space_);
     std::vector<int> unknown_offsets{0}, unknowns, dofs, local;
     ElementDofTable my_table;
     my_table.offsets.push_back(0);
     for (int e = 0; e < table.num_elements(); ++e) {
       dofs.assign(table.begin(e), table.begin(e + 1));
-      basis_->element(dofs, local);
+      element_unknowns(basis_, dofs, local);
       unknowns.insert(unknowns.end(), local.begin(), local.end());
       unknown_offsets.push_back(static_cast<int>(unknowns.size()));
       if (pattern && owner_[e] == rank_) {
@@ -379,7 +370,7 @@ void PetscBackend::matrix(const Formulation& f, const std::vector<FormTerm>& ter
     // Tᵀ A T in double for the factorization; A itself, in double-double, for the residuals.
     const auto add_element = [&](int, const std::vector<int>& dofs, const DoubleDoubleMatrix& A_e) {
       if (extended) extended->add(dofs, A_e);
-      basis_->element(dofs, local, &T);
+      element_unknowns(basis_, dofs, local, &T);
       if (local.empty()) return;
       // Coefficient-wise products: Eigen's blocked ones would start a thread team per element.
       K = T.transpose().lazyProduct(A_e.hi.lazyProduct(T));

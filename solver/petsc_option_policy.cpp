@@ -260,22 +260,18 @@ std::optional<Rule> find_rule(const std::string& name) {
   return std::nullopt;
 }
 
-std::optional<double> to_real(std::string_view s) {
-  double x = 0;
-  const char* end = s.data() + s.size();
-  const char* begin = s.data() + (!s.empty() && s[0] == '+' ? 1 : 0);
-  const auto [ptr, ec] = std::from_chars(begin, end, x, std::chars_format::general);
-  if (ec != std::errc() || ptr != end || begin == end || !std::isfinite(x)) return std::nullopt;
-  return x;
-}
+bool integral(const Rule& r) { return r.kind == Kind::integer || r.kind == Kind::integers; }
 
-std::optional<double> to_integer(std::string_view s) {
+/// The whole of `s` (a leading '+' allowed) as an integer (`integral`) or a finite number.
+std::optional<double> to_number(std::string_view s, bool integral) {
+  double x = 0;
   long long n = 0;
   const char* end = s.data() + s.size();
   const char* begin = s.data() + (!s.empty() && s[0] == '+' ? 1 : 0);
-  const auto [ptr, ec] = std::from_chars(begin, end, n);
-  if (ec != std::errc() || ptr != end || begin == end) return std::nullopt;
-  return static_cast<double>(n);
+  const auto [ptr, ec] =
+      integral ? std::from_chars(begin, end, n) : std::from_chars(begin, end, x, std::chars_format::general);
+  if (ec != std::errc() || ptr != end || begin == end || !std::isfinite(x)) return std::nullopt;
+  return integral ? static_cast<double>(n) : x;
 }
 
 std::vector<std::string_view> split_commas(std::string_view s) {
@@ -289,8 +285,7 @@ std::vector<std::string_view> split_commas(std::string_view s) {
 }
 
 std::string range_text(const Rule& r) {
-  const bool integral = r.kind == Kind::integer || r.kind == Kind::integers;
-  const auto number = [&](double x) { return integral ? std::to_string(static_cast<long long>(x)) : format_number(x); };
+  const auto number = [&](double x) { return integral(r) ? std::to_string(static_cast<long long>(x)) : format_number(x); };
   if (r.lo == -kInf && r.hi == kInf) return "";
   if (r.hi == kInf) return " >= " + number(r.lo);
   if (r.lo == -kInf) return " <= " + number(r.hi);
@@ -316,7 +311,10 @@ std::string expected(const Rule& r) {
 }
 
 bool value_fits(const Rule& r, const std::optional<std::string>& value) {
-  const auto in_range = [&](std::optional<double> x) { return x && *x >= r.lo && *x <= r.hi; };
+  const auto in_range = [&](std::string_view s) {
+    const std::optional<double> x = to_number(s, integral(r));
+    return x && *x >= r.lo && *x <= r.hi;
+  };
   switch (r.kind) {
     case Kind::boolean: {
       if (!value) return true;
@@ -326,17 +324,13 @@ bool value_fits(const Rule& r, const std::optional<std::string>& value) {
       return false;
     }
     case Kind::viewer: return !value || *value == ":stdout" || *value == "ascii:stdout";
-    case Kind::integer: return value && in_range(to_integer(*value));
-    case Kind::real: return value && in_range(to_real(*value));
-    case Kind::reals: {
-      if (!value) return false;
-      const auto parts = split_commas(*value);
-      return std::all_of(parts.begin(), parts.end(), [&](std::string_view p) { return in_range(to_real(p)); });
-    }
+    case Kind::integer:
+    case Kind::real: return value && in_range(*value);
+    case Kind::reals:
     case Kind::integers: {
       if (!value) return false;
       const auto parts = split_commas(*value);
-      return std::all_of(parts.begin(), parts.end(), [&](std::string_view p) { return in_range(to_integer(p)); });
+      return std::all_of(parts.begin(), parts.end(), in_range);
     }
     case Kind::choice: {
       if (!value) return false;

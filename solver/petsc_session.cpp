@@ -29,10 +29,6 @@ bool is_negative_number(const std::string& word) {
   return word.size() > 1 && word[0] == '-' && (std::isdigit(static_cast<unsigned char>(word[1])) || word[1] == '.');
 }
 
-bool ends_with(const std::string& s, const std::string& tail) {
-  return s.size() >= tail.size() && s.compare(s.size() - tail.size(), tail.size(), tail) == 0;
-}
-
 /// iga-run's own options that take a value (the value is not a positional argument).
 bool takes_value(const std::string& word) { return word == "-o" || word == "--output" || word == "-l" || word == "--levels"; }
 
@@ -66,7 +62,7 @@ std::pair<std::vector<std::string>, std::vector<std::string>> split_petsc_argume
       petsc.push_back(w);
       if (i + 1 < args.size()) {
         const std::string& next = args[i + 1];
-        const bool looks_like_config = !config_seen && (ends_with(next, ".yaml") || ends_with(next, ".yml"));
+        const bool looks_like_config = !config_seen && (next.ends_with(".yaml") || next.ends_with(".yml"));
         if ((next.empty() || next[0] != '-' || is_negative_number(next)) && !looks_like_config) petsc.push_back(args[++i]);
       }
       continue;

@@ -48,7 +48,6 @@ DiscreteSolution solve_pipeline(const Formulation& f, LinearBackend& backend, co
   const Constraints c = assemble_step(f, backend, progress);
   r.t_assemble = clock.seconds();
   r.free_dofs = static_cast<int>(c.free.size());
-  out.boundary_constrained = static_cast<int>(c.constrained.size());
 
   clock.restart();
   const WorkShare share = backend.share();

@@ -47,7 +47,6 @@ struct DiscreteSolution {
   Eigen::VectorXd coefficients;  ///< one per global basis function
   LevelResult result;            ///< h, dofs, errors, timings (level and t_space left to the caller)
   SolveReport solve;
-  int boundary_constrained = 0;  ///< coefficients fixed by essential data
   /// Adaptive studies: the residual indicator η_K per element and the elements marked for refinement.
   std::vector<double> indicators;
   std::vector<int> marked;

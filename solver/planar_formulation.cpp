@@ -23,19 +23,17 @@ std::vector<BoundaryEdge> edges_of(const std::vector<BoundaryEdge>& edges, const
 }
 }  // namespace
 
-void check_boundary_parts(const Space& space, const ProblemSpec& problem) {
-  const std::vector<std::string> names = space.boundary_names();
-  for (const BoundaryPart& part : problem.boundary) {
+void PlanarFormulation::check() const {
+  const std::vector<std::string> names = space().boundary_names();
+  for (const BoundaryPart& part : problem().boundary) {
     if (part.name == "all" || std::find(names.begin(), names.end(), part.name) != names.end()) continue;
     std::string list = "all";
     for (const auto& n : names) list += ", " + n;
     const std::string near = nearest_word(part.name, names);
-    throw InputError(part.where + ": unknown boundary part '" + part.name + "' of this " + space.type() +
+    throw InputError(part.where + ": unknown boundary part '" + part.name + "' of this " + space().type() +
                      " domain (parts: " + list + ")" + (near.empty() ? "" : " (did you mean '" + near + "'?)"));
   }
 }
-
-void PlanarFormulation::check() const { check_boundary_parts(space(), problem()); }
 
 const BoundarySplit& PlanarFormulation::boundary() const {
   if (!boundary_) boundary_ = split_boundary(space(), problem());
@@ -44,14 +42,11 @@ const BoundarySplit& PlanarFormulation::boundary() const {
 
 Eigen::VectorXd PlanarFormulation::load(const WorkShare& share) const {
   const int qa = quadrature_degree();
-  Eigen::VectorXd b;
-  if (share.elements) {
-    b = subset_load(space(), *share.elements, problem().source, qa);
-  } else {
-    const FunctionBatch source_batch({problem().source});
-    b = assembler().load(
-        [&source_batch](const Eigen::Matrix2Xd& x, Eigen::MatrixXd& values) { source_batch.evaluate(x, values); }, qa);
-  }
+  const FunctionBatch source_batch({problem().source});
+  const BatchField source = [&source_batch](const Eigen::Matrix2Xd& x, Eigen::MatrixXd& values) {
+    source_batch.evaluate(x, values);
+  };
+  Eigen::VectorXd b = share.elements ? subset_load(space(), *share.elements, source, qa) : assembler().load(source, qa);
   // Natural conditions: Neumann flux ∫ g_N v, and for simply supported plates ∫ Δu ∂v/∂n
   // (from ∫ Δ²u v = ∫ Δu Δv − ∫_Γ Δu ∂v/∂n when v = 0 on Γ).
   const int ne = space().num_elements();

@@ -12,12 +12,10 @@
 
 namespace iga {
 
-/// Validate the problem's boundary part names against the space; throws InputError.
-void check_boundary_parts(const Space& space, const ProblemSpec& problem);
-
 class PlanarFormulation final : public Formulation {
  public:
   using Formulation::Formulation;
+  /// The problem's boundary part names against the space's; throws InputError.
   void check() const override;
   Eigen::VectorXd load(const WorkShare& share) const override;
   Constraints constraints() const override;

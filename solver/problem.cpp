@@ -153,6 +153,8 @@ ProblemSpec parse_surface_problem(const ConfigNode& node) {
   const auto exact = node.find("exact");
   const auto source = node.find("source");
   if (!exact && !source && !p.eigen) node.fail("give 'exact' (a solution in x, y, z), 'source', both, or 'eigen'");
+  // Messages about the problem as a whole (SurfaceFormulation::check) name the eigen block then.
+  if (p.eigen) p.source_where = node["eigen"].where();
   if (exact) {
     p.surface_exact = SymbolicFunction::parse_xyz(exact->as_string(), exact->where());
     p.source_where = p.data_where = exact->where();

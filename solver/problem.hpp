@@ -65,8 +65,6 @@ struct ProblemSpec {
   ExactSolution exact_solution() const;
   /// ∂u/∂n as a boundary field (from ∇u when known).
   BoundaryField normal_derivative_field() const;
-  /// Degree of the differential operator (2 or 4).
-  int order() const { return pde == Pde::biharmonic ? 4 : 2; }
 };
 
 /// A problem with manufactured solution `u`: source and all boundary data derived from it.

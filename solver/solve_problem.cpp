@@ -53,7 +53,6 @@ DiscreteSolution solve_problem(const Space& space, const ProblemSpec& problem, S
     out.spectrum = std::move(e.spectrum);
     out.modes = std::move(e.modes.vectors);
     out.coefficients = out.modes.col(0);
-    out.boundary_constrained = e.result.dofs - e.result.free_dofs;
     return out;
   }
   if (solver != SolverKind::petsc) {

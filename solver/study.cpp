@@ -136,19 +136,12 @@ StudySettings parse_study(const ConfigNode& root, const std::string& config_path
   const SpacePtr coarse = make_space(domain_node, space_node, 0);
   s.level0 = coarse;
   s.level0_seconds = t_coarse.seconds();
-  check_boundary_parts(*coarse, s.problem);
   if ((s.problem.pde == Pde::laplace_beltrami) != (coarse->ambient_dimension() == 3))
     root["problem"]["pde"].fail(s.problem.pde == Pde::laplace_beltrami
                                     ? "laplace_beltrami needs a surface in 3D (domain.type: surface, space.type: surface)"
                                     : "a surface in 3D takes pde: laplace_beltrami");
-  if (s.problem.pde == Pde::laplace_beltrami) {
-    const bool open = !coarse->boundary_edges("all").empty();
-    if (open && !s.problem.surface_dirichlet)
-      root["problem"].fail("this surface has a boundary: give Dirichlet data on it (boundary: {all: dirichlet}, with "
-                           "exact or boundary_value)");
-    if (!open && s.problem.surface_dirichlet)
-      root["problem"]["boundary"].fail("this surface is closed: it has no boundary for Dirichlet data");
-  }
+  // Boundary part names; a surface's boundary against its Dirichlet data (the pipeline's own check).
+  make_formulation(*coarse, s.problem)->check();
   if (s.problem.eigen) {
     if (s.solver == SolverKind::petsc)
       root["solver"].fail("eigenproblems (problem.eigen) are solved serially for now (Spectra + CHOLMOD): remove "

@@ -1,20 +1,16 @@
 #pragma once
 /// @file
 /// Element matrices without quadrature: a property of (local basis, affine map, form) that some
-/// spaces have (a combination of exact reference integrals of an affine-invariant basis). A space
-/// that has them returns a ClosedForms from Space::closed_forms(); the assembler asks it for the
-/// element matrix in the scalar it sums in (double, long double or double-double), and falls back
-/// to quadrature where it answers false.
+/// spaces have (a combination of exact reference integrals of an affine-invariant basis, written
+/// once in affine_element_matrices.hpp). A space that has them returns a ClosedForms from
+/// Space::closed_forms(); the assembler asks it for the element matrix in the scalar it sums in
+/// (double, long double or double-double), and falls back to quadrature where it answers false.
 
-#include <Eigen/Core>
 #include <type_traits>
 
-#include "config/double_double.hpp"
-#include "spaces/bilinear_form.hpp"
+#include "spaces/affine_element_matrices.hpp"
 
 namespace iga {
-
-using LongDoubleMatrix = Eigen::Matrix<long double, Eigen::Dynamic, Eigen::Dynamic>;
 
 class ClosedForms {
  public:

@@ -26,6 +26,9 @@
 ///   void map(int e, const QuadratureRule& rule, const LocalTables& t, int order, std::vector<Jet>& jets) const;
 ///                                            // jets at rule's points; second derivatives when order 2
 ///                                            // (t: the kind's tables there, for isoparametric maps)
+///   // optional: ∇Δu_h and Δ²u_h of the function with local coefficients `local` (C_eᵀ c)
+///   void higher_derivatives(int e, const QuadratureRule& rule, const Eigen::VectorXd& local, unsigned flags,
+///                           FunctionValues& out) const;
 
 #include <Eigen/SparseCore>
 #include <stdexcept>

@@ -27,6 +27,12 @@ namespace iga {
 template <class Core>
 class ExtractedEvaluator final : public Space::Evaluator {
   static constexpr bool surface = std::is_same_v<typename Core::Jet, SurfaceJet>;
+  /// A core whose local basis and map give derivatives of order 3 and 4 (T-meshes: tensor sections
+  /// under a diagonal scaling) fills ∇Δu_h and Δ²u_h from the local coefficients C_eᵀ c.
+  static constexpr bool has_higher_derivatives =
+      requires(const Core& core, const QuadratureRule& rule, const Eigen::VectorXd& local, FunctionValues& out) {
+        core.higher_derivatives(0, rule, local, 0u, out);
+      };
 
  public:
   /// `core` is small (references into its space, which outlives the evaluator).
@@ -45,24 +51,29 @@ class ExtractedEvaluator final : public Space::Evaluator {
   }
 
   /// u_h = Σ c_i N_i with the coefficients contracted first: C_eᵀ c is one local vector, then one
-  /// row per table (instead of extracting every active function at every point).
+  /// row per table (instead of extracting every active function at every point). ∇Δu_h and Δ²u_h
+  /// only from a core that has them (higher_derivatives, below).
   void evaluate_function(int element, const QuadratureRule& rule, const Eigen::VectorXd& coefficients, unsigned flags,
                          PointValues& geometry, FunctionValues& out) override {
-    if (flags & (update_laplacian_gradient | update_bilaplacian))
+    const unsigned higher = flags & (update_laplacian_gradient | update_bilaplacian);
+    if (higher && !has_higher_derivatives)
       throw std::logic_error("evaluate_function: this space provides derivatives up to order 2 only");
     const LocalTables& t = tables(element, rule, basis_order(flags));
     const std::vector<int>& dofs = core_.active(element);
     Eigen::VectorXd c(dofs.size());
     for (std::size_t i = 0; i < dofs.size(); ++i) c(i) = coefficients(dofs[i]);
-    if constexpr (Core::identity) {
-      contract_local_derivatives(t, c, flags, one_);
-    } else {
-      contract_reference_derivatives(core_.extraction(element), t, c, flags, one_);
+    if constexpr (!Core::identity) {  // the local coefficients C_eᵀ c
+      local_.noalias() = core_.extraction(element).transpose() * c;
+      c.swap(local_);
     }
+    contract_local_derivatives(t, c, flags, one_);
     geometry.dofs = dofs;
     core_.map(element, rule, t, map_order(flags), jets_);
     push(one_, flags | update_values, single_);
     take_single_function(single_, flags, geometry, out);
+    if constexpr (has_higher_derivatives) {
+      if (higher) core_.higher_derivatives(element, rule, c, higher, out);
+    }
   }
 
   /// Points and Jacobians alone (VTK points, data checks; the load vector's integrate_values).
@@ -87,14 +98,9 @@ class ExtractedEvaluator final : public Space::Evaluator {
     }
   }
 
- private:
-  /// The map's second derivatives: planar Hessians need them, and on surfaces the curvature too.
-  static int map_order(unsigned flags) {
-    return (flags & (update_hessians | update_surface_curvature)) ? 2 : 1;
-  }
-
   /// The tables of element's local basis at rule's points, built once per (rule, kind) and again
   /// when a higher order is asked (rules are shared by address; the points guard a reused address).
+  /// Public for evaluator specialisations that contract them their own way.
   const LocalTables& tables(int element, const QuadratureRule& rule, int order) {
     const auto key = std::make_pair(&rule, core_.kind(element));
     auto it = cache_.find(key);
@@ -104,6 +110,12 @@ class ExtractedEvaluator final : public Space::Evaluator {
     entry.points = rule.points;
     entry.order = core_.tabulate(key.second, rule.points, order, entry.t);
     return entry.t;
+  }
+
+ private:
+  /// The map's second derivatives: planar Hessians need them, and on surfaces the curvature too.
+  static int map_order(unsigned flags) {
+    return (flags & (update_hessians | update_surface_curvature)) ? 2 : 1;
   }
 
   /// Push-forward of reference data (ReferenceDerivatives, or the tables themselves when C_e = I)
@@ -139,6 +151,7 @@ class ExtractedEvaluator final : public Space::Evaluator {
   std::map<std::pair<const QuadratureRule*, int>, Entry> cache_;
   std::vector<typename Core::Jet> jets_;
   ReferenceDerivatives ref_, one_;
+  Eigen::VectorXd local_;
   PointValues single_;
 };
 

@@ -103,12 +103,6 @@ void extract_reference_derivatives(const Extraction& extraction, const LocalTabl
   }
 }
 
-void contract_reference_derivatives(const Extraction& extraction, const LocalTables& tables,
-                                    const Eigen::VectorXd& active_coefficients, unsigned flags,
-                                    ReferenceDerivatives& one) {
-  contract_local_derivatives(tables, extraction.transpose() * active_coefficients, flags, one);
-}
-
 void contract_local_derivatives(const LocalTables& tables, const Eigen::VectorXd& local, unsigned flags,
                                 ReferenceDerivatives& one) {
   const bool grads = (flags & (update_gradients | update_hessians)) != 0;

@@ -31,14 +31,9 @@ struct ReferenceDerivatives {
 void extract_reference_derivatives(const Extraction& extraction, const LocalTables& tables, unsigned flags,
                                    ReferenceDerivatives& ref);
 
-/// The reference data of one function Σ_i c_i φ_i (c: the element's active coefficients): the
-/// coefficients go through the extraction first (one local vector), then one row per table,
+/// The reference data of one function Σ_l c_l φ_l from its local coefficients (C_eᵀ times the
+/// active ones, or those themselves when the extraction is the identity): one row per table,
 /// instead of extracting every active function at every point.
-void contract_reference_derivatives(const Extraction& extraction, const LocalTables& tables,
-                                    const Eigen::VectorXd& active_coefficients, unsigned flags,
-                                    ReferenceDerivatives& one);
-
-/// The same from the local coefficients (C_eᵀ c, or c itself when the extraction is the identity).
 void contract_local_derivatives(const LocalTables& tables, const Eigen::VectorXd& local, unsigned flags,
                                 ReferenceDerivatives& one);
 

@@ -53,41 +53,6 @@ void integration_weights(const QuadratureRule& rule, const PointValues& geometry
   for (int k = 0; k < q; ++k) jxw(k) = rule.weights[k] * std::abs(geometry.jacobian[k].determinant());
 }
 
-void Space::Evaluator::evaluate_function(int element, const QuadratureRule& points, const Eigen::VectorXd& coefficients,
-                                         unsigned flags, PointValues& geometry, FunctionValues& out) {
-  if (flags & (update_laplacian_gradient | update_bilaplacian))
-    throw std::logic_error("evaluate_function: this space provides derivatives up to order 2 only");
-  evaluate(element, points, flags, geometry);
-  const int n = geometry.num_functions();
-  Eigen::VectorXd c(n);
-  for (int i = 0; i < n; ++i) c(i) = coefficients(geometry.dofs[i]);
-  if (flags & update_values) out.value.noalias() = geometry.value.transpose() * c;
-  if (flags & update_gradients) {
-    out.dx.noalias() = geometry.dx.transpose() * c;
-    out.dy.noalias() = geometry.dy.transpose() * c;
-    if (geometry.dz.size() > 0) out.dz.noalias() = geometry.dz.transpose() * c;
-  }
-  if (flags & update_hessians) {
-    out.dxx.noalias() = geometry.dxx.transpose() * c;
-    out.dxy.noalias() = geometry.dxy.transpose() * c;
-    out.dyy.noalias() = geometry.dyy.transpose() * c;
-    if (geometry.dzz.size() > 0) {  // surfaces in 3D: the z row of the covariant Hessian
-      out.dxz.noalias() = geometry.dxz.transpose() * c;
-      out.dyz.noalias() = geometry.dyz.transpose() * c;
-      out.dzz.noalias() = geometry.dzz.transpose() * c;
-    }
-  }
-}
-
-void Space::Evaluator::evaluate_geometry(int element, const QuadratureRule& points, PointValues& out) {
-  evaluate(element, points, update_values, out);
-}
-
-void Space::Evaluator::integrate_values(int /*element*/, const QuadratureRule& /*points*/, const PointValues& geometry,
-                                        const Eigen::VectorXd& weights, Eigen::VectorXd& local) {
-  local.noalias() = geometry.value * weights;
-}
-
 std::vector<std::string> Space::boundary_names() const {
   std::vector<std::string> names;
   for (const auto& part : facts_.boundary_parts) names.push_back(part.first);

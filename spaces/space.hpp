@@ -155,21 +155,20 @@ class Space : public std::enable_shared_from_this<Space> {
 
     /// u_h = Σ_i coefficients(i) N_i (coefficients: one per global function, dimension() entries)
     /// and, per `flags`, its physical gradient and Hessian at the points of `points`. `geometry`
-    /// receives at least dofs, x and jacobian (other arrays are scratch). The default evaluates all
-    /// active functions and contracts them; a space with a large extraction overrides it and
-    /// contracts the coefficients first (one table product instead of n).
+    /// receives at least dofs, x and jacobian (other arrays are scratch). Evaluators contract the
+    /// coefficients first (one table product instead of one per active function).
     virtual void evaluate_function(int element, const QuadratureRule& points, const Eigen::VectorXd& coefficients,
-                                   unsigned flags, PointValues& geometry, FunctionValues& out);
+                                   unsigned flags, PointValues& geometry, FunctionValues& out) = 0;
 
     /// Geometry for integrate_values: fills out.dofs, out.x and out.jacobian, plus whatever the
-    /// space's integrate_values reads from `out` (the default also fills out.value).
-    virtual void evaluate_geometry(int element, const QuadratureRule& points, PointValues& out);
+    /// space's integrate_values reads from `out`.
+    virtual void evaluate_geometry(int element, const QuadratureRule& points, PointValues& out) = 0;
 
     /// The transposed evaluation (load vectors): local(i) = Σ_q weights(q) N_i(x_q), i in
     /// element_dofs order, for point weights that already include f(x_q) and JxW. `geometry` is the
-    /// output of evaluate_geometry(element, points, geometry). The default is geometry.value * weights.
+    /// output of evaluate_geometry(element, points, geometry).
     virtual void integrate_values(int element, const QuadratureRule& points, const PointValues& geometry,
-                                  const Eigen::VectorXd& weights, Eigen::VectorXd& local);
+                                  const Eigen::VectorXd& weights, Eigen::VectorXd& local) = 0;
   };
   virtual std::unique_ptr<Evaluator> make_evaluator() const = 0;
 

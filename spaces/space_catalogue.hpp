@@ -1,8 +1,9 @@
 #pragma once
 /// @file
 /// What each space says of itself for `iga-run --list`: its config name, one line on its functions
-/// (degree, continuity) and the domain families it is built on. Each space writes its entry in its
-/// own folder (spaces/<type>/<type>_catalogue_entry.cpp); the factory collects them
+/// (degree, continuity) and the domain families it is built on. Each space writes its entry next to
+/// the config reader that builds it (spaces/<type>/<type>_from_config.cpp), so that the domain
+/// types it lists and the ones the reader accepts are edited together; the factory collects them
 /// (space_catalogue in spaces/space_factory.hpp). tests/app/catalogue_test.cpp holds every entry
 /// to what the space's builder accepts.
 

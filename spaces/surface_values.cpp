@@ -48,13 +48,6 @@ void complete_surface_gradients(const std::vector<SurfaceJet>& jets, const Eigen
   }
 }
 
-void complete_surface_gradients(const Eigen::MatrixXd& dxi, const Eigen::MatrixXd& deta, PointValues& out) {
-  std::vector<SurfaceJet> jets;
-  for (std::size_t k = 0; k < out.jacobian3.size(); ++k)
-    jets.push_back(surface_jet(out.x3.col(static_cast<Eigen::Index>(k)), out.jacobian3[k]));
-  complete_surface_gradients(jets, dxi, deta, out);
-}
-
 void complete_surface_hessians(const std::vector<SurfaceJet>& jets, const Eigen::MatrixXd& dxi,
                                const Eigen::MatrixXd& deta, const ReferenceHessians& second, PointValues& out) {
   const int n = static_cast<int>(dxi.rows()), q = static_cast<int>(dxi.cols());

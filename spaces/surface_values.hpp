@@ -34,8 +34,6 @@ void take_surface_geometry(const std::vector<SurfaceJet>& jets, unsigned flags, 
 /// and the jets at the q points.
 void complete_surface_gradients(const std::vector<SurfaceJet>& jets, const Eigen::MatrixXd& dxi,
                                 const Eigen::MatrixXd& deta, PointValues& out);
-/// The same with the jets of out.x3 and out.jacobian3.
-void complete_surface_gradients(const Eigen::MatrixXd& dxi, const Eigen::MatrixXd& deta, PointValues& out);
 
 /// Reference second derivatives of n functions at q points (n x q each).
 struct ReferenceHessians {

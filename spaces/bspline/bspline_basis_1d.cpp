@@ -26,13 +26,13 @@ std::vector<std::vector<double>> cox_de_boor_table(const std::vector<double>& U,
   return table;
 }
 
+}  // namespace
+
 double binomial(int n, int k) {
   double c = 1.0;
-  for (int i = 1; i <= k; ++i) c = c * (n - k + i) / i;
+  for (int i = 1; i <= k; ++i) c = c * (n - k + i) / i;  // exact for the small degrees used
   return c;
 }
-
-}  // namespace
 
 Eigen::MatrixXd bspline_derivatives(const KnotVector& knots, int span, double t, int nder) {
   const int p = knots.degree();

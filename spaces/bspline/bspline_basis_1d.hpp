@@ -17,6 +17,9 @@ namespace iga {
 /// @return (nder+1) x (p+1): entry (k, j) = d^k/dt^k N_{mu-p+j}(t); orders above p are zero.
 Eigen::MatrixXd bspline_derivatives(const KnotVector& knots, int span, double t, int nder);
 
+/// The binomial coefficient C(n, k) in double (exact for polynomial degrees).
+double binomial(int n, int k);
+
 /// Bernstein polynomials B_i(u) = C(p,i) u^i (1-u)^(p-i), i = 0..p, and their derivatives.
 /// @return (nder+1) x (p+1): entry (k, i) = d^k/du^k B_i(u); orders above p are zero.
 Eigen::MatrixXd bernstein_derivatives(int degree, double u, int nder);

@@ -10,6 +10,7 @@
 #include "mesh/mesh_file_from_config.hpp"
 #include "spaces/bspline/knot_vector.hpp"
 #include "spaces/bspline/tensor_bspline_space.hpp"
+#include "spaces/space_catalogue.hpp"
 
 namespace iga {
 
@@ -190,6 +191,15 @@ std::vector<SpaceRequestSize> bspline_requested_sizes(const ConfigNode& space, i
     sizes.push_back(size);
   }
   return sizes;
+}
+
+SpaceCatalogueEntry bspline_catalogue_entry() {
+  return {"bspline",
+          "tensor-product B-splines of degree p >= 1, C^r across element edges, 0 <= r <= p-1 (default p-1)",
+          {{"rectangle", "min: [x, y], max: [x, y]", "", {}},
+           {"quarter_annulus", "inner: r0, outer: r1 (exact NURBS geometry)", "", {}},
+           {"patch", "one B-spline or NURBS patch: degree, knots_u, knots_v, control_points, weights", "", {}},
+           {"mesh_file", "file: one patch of a G+Smo .xml file", "", {}}}};
 }
 
 }  // namespace iga

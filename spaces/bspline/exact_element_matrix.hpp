@@ -12,23 +12,14 @@
 
 #include <Eigen/Core>
 
-#include "config/double_double.hpp"
-#include "spaces/bilinear_form.hpp"
+#include "spaces/affine_element_matrices.hpp"
 #include "spaces/bspline/knot_vector.hpp"
 
 namespace iga {
 
 /// ∫_0^1 N_a^(k)(s) N_c^(l)(s) ds for the p+1 B-splines active on span `span` (reference
 /// coordinate s ∈ [0,1] of the span, derivatives in s), k, l = 0..2: entry [k][l] is (p+1) x (p+1).
-struct SpanIntegrals {
-  DoubleDoubleMatrix moment[3][3];
-};
+using SpanIntegrals = DerivativeMoments<DoubleDoubleMatrix>;
 SpanIntegrals span_integrals(const KnotVector& knots, int span);
-
-/// The element matrix of `form` for the tensor functions N_a(s) M_b(t), ordered a + b (p_u+1), on
-/// an element whose reference square maps to the physical one by the constant Jacobian `jacobian`
-/// (J(i, k) = dx_i/dξ_k). Returns false for forms it does not know.
-bool tensor_element_matrix(const SpanIntegrals& u, const SpanIntegrals& v, const Eigen::Matrix2d& jacobian,
-                           BilinearForm form, DoubleDoubleMatrix& local);
 
 }  // namespace iga

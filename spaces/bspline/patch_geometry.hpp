@@ -42,9 +42,6 @@ class PatchGeometry {
 
   const KnotVector& knots_u() const { return knots_u_; }
   const KnotVector& knots_v() const { return knots_v_; }
-  const std::vector<Point2>& control_points() const { return control_points_; }
-  /// One weight per control point (all 1 for a polynomial patch).
-  const std::vector<double>& weights() const { return weights_; }
   bool is_rational() const { return rational_; }
   /// True for maps known to be affine (rectangles).
   bool is_affine() const { return affine_; }

@@ -342,7 +342,11 @@ bool TensorBSplineSpace::ExactMatrices::double_double(int element, BilinearForm 
   GeometryJet g = s.geometry_->evaluate(lo + 0.5 * h, s.geometry_span_u_[ex], s.geometry_span_v_[ey], false);
   g.jacobian.col(0) *= h.x();
   g.jacobian.col(1) *= h.y();
-  return tensor_element_matrix(s.span_integrals_u_[ex], s.span_integrals_v_[ey], g.jacobian, form, local);
+  // The tensor functions N_a(s) M_b(t), ordered a + b (p_u+1); no extraction (the span integrals
+  // include it). Every standard form has a closed form here.
+  tensor_form_matrix(s.span_integrals_u_[ex], s.span_integrals_v_[ey],
+                     affine_form_terms<DoubleDouble>(form, g.jacobian), local);
+  return true;
 }
 
 void TensorBSplineSpace::element_box(int element, Point2& lo, Point2& hi) const {

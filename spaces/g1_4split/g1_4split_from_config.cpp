@@ -5,14 +5,14 @@
 
 #include "config/config_file_path.hpp"
 #include "config/errors.hpp"
-#include "mesh/mesh_file_from_config.hpp"
 #include "mesh/read_quad_surface_mesh.hpp"
 #include "mesh/validate_quad_surface.hpp"
+#include "spaces/g1/g1_from_config.hpp"
 #include "spaces/g1/multipatch_domains.hpp"
-#include "spaces/g1/patch_mesh_from_file.hpp"
 #include "spaces/g1_4split/g1_4split_meshes.hpp"
 #include "spaces/g1_4split/g1_4split_space.hpp"
 #include "spaces/g1_4split/g1_4split_surface_space.hpp"
+#include "spaces/space_catalogue.hpp"
 
 namespace iga {
 
@@ -44,9 +44,6 @@ SpacePtr build_or_name_the_separable_degree(const G14Options& o, const ConfigNod
   }
 }
 
-/// The file of `domain.file`, relative to the config's folder and confined to it (resolve_config_file).
-std::filesystem::path surface_file(const ConfigNode& node) { return resolve_config_file(node); }
-
 /// A closed quad surface in 3D: a built-in (cube, split_tetrahedron) or a quad .obj/.off file.
 std::pair<QuadTopology, std::vector<Eigen::Vector3d>> surface_mesh(const ConfigNode& domain) {
   domain.check_keys({"type", "mesh", "file"});
@@ -59,7 +56,7 @@ std::pair<QuadTopology, std::vector<Eigen::Vector3d>> surface_mesh(const ConfigN
     return {split_tetrahedron_topology(), split_tetrahedron_vertices()};
   }
   const ConfigNode node = domain["file"];
-  const std::filesystem::path path = surface_file(node);
+  const std::filesystem::path path = resolve_config_file(node);
   const QuadSurfaceFile read = node.guard([&] {
     QuadSurfaceFile file = read_quad_surface_mesh(path.string());
     validate_quad_surface(file);  // degenerate, folded, repeated faces: named here, not as a failed solve
@@ -92,9 +89,7 @@ PatchMesh domain_mesh(const ConfigNode& domain) {
     const auto own = g14_domain_names();
     return std::find(own.begin(), own.end(), name) != own.end() ? g14_domain(name) : multipatch_domain(name);
   }
-  domain.check_keys({"type", "file", "mesh_size", "recombine"});
-  const MeshFileRequest request = mesh_file_request(domain);
-  return domain["file"].guard([&] { return patch_mesh_from_file(request.path.string(), request.options); });
+  return patch_mesh_from_config(domain);
 }
 
 }  // namespace
@@ -112,7 +107,7 @@ std::vector<SpaceRequestSize> g1_4split_requested_sizes(const ConfigNode& domain
     const double r = regularity ? regularity->as_int() : 1;
     if (k < 3 || k > 10 || r < 1 || 2 * k - r < 4) return {};
     // Reading the file is cheap (its size is capped); the space built on it is not.
-    const QuadSurfaceFile read = read_quad_surface_mesh(surface_file(*file).string());
+    const QuadSurfaceFile read = read_quad_surface_mesh(resolve_config_file(*file).string());
     std::vector<std::pair<int, int>> edges;
     std::vector<int> used;
     for (const auto& q : read.quads)
@@ -191,6 +186,22 @@ SpacePtr make_g1_4split_space(const ConfigNode& domain, const ConfigNode& space,
   return build_or_name_the_separable_degree(o, dn, "'" + mesh.name() + "'", level, [&](const G14Options& t) -> SpacePtr {
     return domain.guard([&] { return std::make_shared<const G14Space>(mesh, t); });
   });
+}
+
+SpaceCatalogueEntry g1_4split_catalogue_entry() {
+  // ../shared/notes/g1-4split-macropatch.md: G1 gluing with the geometry in the space (isoparametric)
+  // makes the functions C1 on a planar domain (section 10.3).
+  // Its own fans and grid, and the g1 layouts without triangles (the builder refuses those).
+  std::vector<std::string> layouts = g14_domain_names();
+  for (const std::string& name : multipatch_domain_names())
+    if (!multipatch_domain(name).has_triangles()) layouts.push_back(name);
+  return {"g1_4split",
+          "4-split macro-patches: on each quadrilateral bidegree (k, k) B-splines split at 1/2 in each direction, "
+          "3 <= k <= 10, C^r across the split lines (default r = 1), G1 across mesh edges (C1 in the plane)",
+          {{"multipatch", "name: a built-in layout of quadrilaterals", "name", layouts},
+           {"mesh_file", "file: quadrilaterals from .msh, .geo (mesh_size, recombine), .obj, .off, G+Smo .xml", "", {}},
+           {"surface", "a smooth surface in 3D from a closed quad mesh: mesh, or file: .obj, .off", "mesh",
+            {"cube", "split_tetrahedron"}}}};
 }
 
 }  // namespace iga

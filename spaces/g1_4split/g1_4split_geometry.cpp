@@ -6,6 +6,7 @@
 
 #include "config/errors.hpp"
 #include "quadrature/quadrature_rule.hpp"
+#include "spaces/bspline/bspline_basis_1d.hpp"
 #include "spaces/g1_4split/face_function.hpp"
 
 namespace iga {
@@ -100,13 +101,6 @@ FaceGeometry subdivide_geometry(const SplitBSpline& b, const FaceGeometry& coars
 
 namespace {
 
-/// Binomial coefficient as a double.
-double binom(int n, int k) {
-  double r = 1.0;
-  for (int i = 1; i <= k; ++i) r = r * (n - k + i) / i;
-  return r;
-}
-
 /// Bernstein coefficients of the product of two tensor Bernstein polynomials.
 Eigen::MatrixXd bernstein_product(const Eigen::MatrixXd& A, const Eigen::MatrixXd& B) {
   const int a1 = static_cast<int>(A.rows()) - 1, b1 = static_cast<int>(A.cols()) - 1;
@@ -114,10 +108,10 @@ Eigen::MatrixXd bernstein_product(const Eigen::MatrixXd& A, const Eigen::MatrixX
   Eigen::MatrixXd P = Eigen::MatrixXd::Zero(a1 + a2 + 1, b1 + b2 + 1);
   for (int i1 = 0; i1 <= a1; ++i1)
     for (int i2 = 0; i2 <= a2; ++i2) {
-      const double wu = binom(a1, i1) * binom(a2, i2) / binom(a1 + a2, i1 + i2);
+      const double wu = binomial(a1, i1) * binomial(a2, i2) / binomial(a1 + a2, i1 + i2);
       for (int j1 = 0; j1 <= b1; ++j1)
         for (int j2 = 0; j2 <= b2; ++j2)
-          P(i1 + i2, j1 + j2) += wu * binom(b1, j1) * binom(b2, j2) / binom(b1 + b2, j1 + j2) * A(i1, j1) * B(i2, j2);
+          P(i1 + i2, j1 + j2) += wu * binomial(b1, j1) * binomial(b2, j2) / binomial(b1 + b2, j1 + j2) * A(i1, j1) * B(i2, j2);
     }
   return P;
 }

@@ -104,38 +104,6 @@ std::unique_ptr<Space::Evaluator> G14Space::make_evaluator() const {
   return std::make_unique<ExtractedEvaluator<G14Core>>(G14Core{basis_, geometry_});
 }
 
-RulePtr SplitRuleCache::cell(int degree) const {
-  degree = std::max(degree, 0);
-  std::lock_guard<std::mutex> lock(mutex_);
-  RulePtr& r = cells_[degree];
-  if (!r) {
-    const QuadratureRule ref = tensor_gauss(degree);
-    std::vector<QuadratureRule> parts;
-    for (int hv = 0; hv < 2; ++hv)
-      for (int hu = 0; hu < 2; ++hu) parts.push_back(map_to_box(ref, Point2(0.5 * hu, 0.5 * hv), Point2(0.5 * hu + 0.5, 0.5 * hv + 0.5)));
-    r = std::make_shared<const QuadratureRule>(concatenate(parts));
-  }
-  return r;
-}
-
-RulePtr SplitRuleCache::edge(int edge, int degree) const {
-  degree = std::max(degree, 0);
-  std::lock_guard<std::mutex> lock(mutex_);
-  RulePtr& r = edges_[{edge, degree}];
-  if (!r) {
-    const QuadratureRule g = gauss_legendre_for_degree(degree);
-    QuadratureRule line;
-    line.degree = g.degree;
-    for (int h = 0; h < 2; ++h)
-      for (int q = 0; q < g.size(); ++q) {
-        line.points.emplace_back(0.5 * (h + g.points[q].x()), 0.0);
-        line.weights.push_back(0.5 * g.weights[q]);
-      }
-    r = std::make_shared<const QuadratureRule>(edge_rule(CellShape::quadrilateral, edge, line));
-  }
-  return r;
-}
-
 std::vector<InteriorEdge> quad_interior_edges(const QuadTopology& t) {
   std::vector<InteriorEdge> out;
   for (int e = 0; e < t.num_edges(); ++e) {

@@ -5,13 +5,12 @@
 /// interior knot 1/2 (class C^r there), glued with the symmetric data, and the physical map lies in
 /// the same space. Elements are the mesh faces; their polynomial pieces are the 4 sub-squares.
 
-#include <map>
 #include <memory>
-#include <mutex>
 
 #include "spaces/g1/patch_mesh.hpp"
 #include "spaces/g1_4split/g1_4split_basis.hpp"
 #include "spaces/g1_4split/g1_4split_geometry.hpp"
+#include "spaces/gauss_rule_cache.hpp"
 #include "spaces/space.hpp"
 
 namespace iga {
@@ -24,19 +23,6 @@ struct G14Options {
   Blending blending = Blending::q1;
   int level = 0;
   bool nested = true;
-};
-
-/// Rules on the face's 4 sub-squares (Gauss per sub-square) and on its edges (Gauss per half),
-/// built once per degree; thread-safe.
-class SplitRuleCache {
- public:
-  RulePtr cell(int degree) const;
-  RulePtr edge(int edge, int degree) const;
-
- private:
-  mutable std::mutex mutex_;
-  mutable std::map<int, RulePtr> cells_;
-  mutable std::map<std::pair<int, int>, RulePtr> edges_;
 };
 
 /// Every interior edge of `t` once, with the faces' parameters (t runs the same or opposite way).
@@ -72,7 +58,7 @@ class G14Space final : public Space {
   std::vector<SplitGluing> gluing_;
   G14Basis basis_;
   FaceGeometry geometry_;
-  SplitRuleCache rules_;
+  GaussRuleCache rules_{2};  ///< Gauss on each of the 4 sub-squares and on each half of an edge
 };
 
 }  // namespace iga

@@ -62,7 +62,7 @@ class G14SurfaceSpace final : public Space {
   std::vector<SplitGluing> gluing_;
   G14Surface surface_;
   double mesh_size_ = 0.0, normal_jump_ = 0.0, min_metric_ratio_ = 0.0, fold_bound_ = 0.0;
-  SplitRuleCache rules_;
+  GaussRuleCache rules_{2};  ///< Gauss on each of the 4 sub-squares and on each half of an edge
 };
 
 }  // namespace iga

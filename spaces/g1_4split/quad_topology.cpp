@@ -47,12 +47,6 @@ QuadTopology::QuadTopology(int num_vertices, std::vector<std::array<int, 4>> fac
     if (e.boundary()) vertex_boundary_[e.g0] = vertex_boundary_[e.g1] = true;
 }
 
-int QuadTopology::corner_of(int f, int v) const {
-  for (int c = 0; c < 4; ++c)
-    if (faces_[f][c] == v) return c;
-  return -1;
-}
-
 QuadTopology QuadTopology::refined() const {
   const int mid0 = num_vertices_, centre0 = num_vertices_ + num_edges();
   std::vector<std::array<int, 4>> faces;

@@ -46,8 +46,6 @@ class QuadTopology {
   /// Number of faces at vertex v.
   int vertex_faces(int v) const { return vertex_faces_[v]; }
   bool vertex_on_boundary(int v) const { return vertex_boundary_[v]; }
-  /// Local corner of vertex v in face f, or -1.
-  int corner_of(int f, int v) const;
   /// (face, corner) pairs of the faces at vertex v.
   const std::vector<std::pair<int, int>>& vertex_corners(int v) const { return vertex_corners_[v]; }
   /// Edges at vertex v.

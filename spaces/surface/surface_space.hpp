@@ -42,7 +42,6 @@ class SurfaceBernsteinSpace : public Space {
 
   const rsd::RsdSurface& surface() const { return *surface_; }
   const std::shared_ptr<const rsd::RsdSurface>& shared_surface() const { return surface_; }
-  int subdivisions() const { return subdivisions_; }
   const Element& element(int e) const { return elements_[e]; }
 
  private:

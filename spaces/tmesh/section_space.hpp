@@ -51,7 +51,6 @@ class SectionBernstein {
 
   int n() const { return spec_.n; }
   double h() const { return h_; }
-  const SectionSpec& spec() const { return spec_; }
   /// Reference derivatives at t = x/h: out(d, i) = h^d B_i^{(d)}(x); shape (dmax+1) x (n+1).
   /// Divide row d by h^d for physical derivatives.
   Eigen::MatrixXd derivatives(double t, int dmax) const;

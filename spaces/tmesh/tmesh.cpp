@@ -216,7 +216,6 @@ void TMesh::build_topology() {
   check_no_overlap(cells_);
   // 1. Vertices: all cell corners, numbered in order of first appearance (cell by cell, corners
   // counterclockwise), which the DOF numbering follows.
-  corner_.assign(4 * nc, -1);
   {
     struct At {
       std::int64_t x, y;
@@ -240,8 +239,6 @@ void TMesh::build_topology() {
       const std::size_t i0 = first[v].second;
       vertices_[v].x = all[i0].x;
       vertices_[v].y = all[i0].y;
-      for (std::size_t i = i0; i < all.size() && all[i].x == all[i0].x && all[i].y == all[i0].y; ++i)
-        corner_[all[i].slot] = static_cast<int>(v);
     }
     for (std::size_t v = 0; v < vertices_.size(); ++v) vertex_index_[v] = {vertices_[v].x, vertices_[v].y, static_cast<int>(v)};
     std::sort(vertex_index_.begin(), vertex_index_.end());

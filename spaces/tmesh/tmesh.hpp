@@ -89,8 +89,6 @@ class TMesh {
   bool has_partial_boundary_sides() const { return partial_boundary_; }
   /// Vertex id at lattice point, -1 if none.
   int vertex_at(std::int64_t x, std::int64_t y) const;
-  /// Corner vertex ids of a cell: 0 (x0,y0), 1 (x1,y0), 2 (x1,y1), 3 (x0,y1).
-  int corner(int cell, int k) const { return corner_[4 * cell + k]; }
 
   /// Number of vertices that are not T-junctions (J_NT).
   int num_non_t_vertices() const;
@@ -127,7 +125,7 @@ class TMesh {
   std::vector<TVertex> vertices_;
   std::vector<std::tuple<std::int64_t, std::int64_t, int>> vertex_index_;  ///< (x, y, id), sorted
   std::vector<CompositeEdge> edges_;
-  std::vector<int> side_edge_, corner_;
+  std::vector<int> side_edge_;
   std::vector<char> side_boundary_;
   std::vector<int> edge_order_;
   std::string problem_;

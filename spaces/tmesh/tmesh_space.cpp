@@ -20,11 +20,15 @@ TMeshSpace::TMeshSpace(TMesh mesh, int regularity, bool rectangular, std::string
   extraction_ = hermite_extraction(mesh_, r_);
   normalize_basis();
   // Exact lattice lengths as keys: dyadic meshes have a handful of distinct cell sizes.
+  std::map<std::pair<SideKey, SideKey>, int> kind_of;
   for (int c = 0; c < mesh_.num_cells(); ++c) {
     const TCell& cell = mesh_.cells()[c];
     const SideKey kx = side_x(cell), ky = side_y(cell);
     if (!bernstein_.count(kx)) bernstein_.emplace(kx, SectionBernstein(mesh_.sections()[cell.section_s], mesh_.width(c)));
     if (!bernstein_.count(ky)) bernstein_.emplace(ky, SectionBernstein(mesh_.sections()[cell.section_t], mesh_.height(c)));
+    const auto [it, added] = kind_of.emplace(std::make_pair(kx, ky), static_cast<int>(kinds_.size()));
+    if (added) kinds_.push_back(it->first);
+    cell_kind_.push_back(it->second);
   }
   for (int c = 0; c < mesh_.num_cells(); ++c) mesh_size_ = std::max(mesh_size_, std::hypot(mesh_.width(c), mesh_.height(c)));
   // Extra degree of every rule for the largest w h of a non-polynomial section.
@@ -123,20 +127,10 @@ void TMeshSpace::cell_box(int cell, Point2& lo, Point2& hi) const {
   hi = mesh_.point(c.x1, c.y1);
 }
 
-RulePtr TMeshSpace::quadrature(int, int degree) const {
-  degree = std::max(degree, 0) + extra_degree_;
-  std::lock_guard<std::mutex> lock(rule_mutex_);
-  RulePtr& r = cell_rules_[degree];
-  if (!r) r = std::make_shared<const QuadratureRule>(tensor_gauss(degree));
-  return r;
-}
+RulePtr TMeshSpace::quadrature(int, int degree) const { return rules_.cell(std::max(degree, 0) + extra_degree_); }
 
 RulePtr TMeshSpace::edge_quadrature(int, int edge, int degree) const {
-  degree = std::max(degree, 0) + extra_degree_;
-  std::lock_guard<std::mutex> lock(rule_mutex_);
-  RulePtr& r = edge_rules_[{edge, degree}];
-  if (!r) r = std::make_shared<const QuadratureRule>(edge_rule(CellShape::quadrilateral, edge, gauss_legendre_for_degree(degree)));
-  return r;
+  return rules_.edge(edge, std::max(degree, 0) + extra_degree_);
 }
 
 namespace {

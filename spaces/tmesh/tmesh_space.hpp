@@ -13,10 +13,11 @@
 #include <cstdint>
 #include <map>
 #include <memory>
-#include <mutex>
 #include <tuple>
 #include <vector>
 
+#include "spaces/element_core.hpp"
+#include "spaces/gauss_rule_cache.hpp"
 #include "spaces/space.hpp"
 #include "spaces/tmesh/hermite_extraction.hpp"
 #include "spaces/tmesh/tmesh.hpp"
@@ -30,7 +31,9 @@ int non_polynomial_extra_degree(double wh);
 /// Extra degree of the rules of trigonometric and hyperbolic sections on coarse cells.
 inline constexpr int kFullExtraDegree = 16;
 
-class TMeshSpace final : public Space, public LocallyRefinable {
+/// Its evaluator is a specialisation (element_core.hpp): evaluate_function sum-factorised over the
+/// cell's diagonal map; make_generic_evaluator evaluates the explicit core through the generic path.
+class TMeshSpace final : public Space, public LocallyRefinable, public FastEvaluator {
  public:
   /// C^r space on `mesh` (see hermite_extraction.hpp for the conditions on n). `rectangular` names the boundary parts
   /// left/right/bottom/top (otherwise only "all"). Throws std::invalid_argument when the mesh is
@@ -43,6 +46,8 @@ class TMeshSpace final : public Space, public LocallyRefinable {
   /// cells, higher_derivatives (cells are tensor products of section spaces under a diagonal
   /// scaling: any derivative is exact); boundary parts left, right, bottom, top when rectangular.
   std::unique_ptr<Evaluator> make_evaluator() const override;
+  /// The explicit core: tensor section Bernstein basis, Hermite extraction, diagonal affine map.
+  std::unique_ptr<Evaluator> make_generic_evaluator() const override;
   void element_dofs(int element, std::vector<int>& out) const override { out = extraction_.dofs[element]; }
 
   /// Tensor Gauss rule exact for `degree`; for trigonometric / hyperbolic sections exact for a
@@ -82,6 +87,7 @@ class TMeshSpace final : public Space, public LocallyRefinable {
   int extra_degree() const { return extra_degree_; }
 
  private:
+  struct Core;  // the explicit core and the evaluator specialisation (tmesh_evaluator.cpp)
   class TMeshEvaluator;
   /// Scale every global function to largest Bernstein coefficient 1 (the Hermite DOFs stay the
   /// construction; only the basis is rescaled, so dimension and span are unchanged).
@@ -93,13 +99,13 @@ class TMeshSpace final : public Space, public LocallyRefinable {
   std::string domain_;
   HermiteExtraction extraction_;
   std::map<SideKey, SectionBernstein> bernstein_;
+  /// The local basis of every cell: an index into the distinct pairs (side x, side y) of kinds_.
+  std::vector<int> cell_kind_;
+  std::vector<std::pair<SideKey, SideKey>> kinds_;
   std::unique_ptr<const ClosedForms> closed_forms_;
   double mesh_size_ = 0.0;
   int extra_degree_ = 0;
-
-  mutable std::mutex rule_mutex_;
-  mutable std::map<int, RulePtr> cell_rules_;
-  mutable std::map<std::pair<int, int>, RulePtr> edge_rules_;
+  GaussRuleCache rules_;
 };
 
 }  // namespace iga

@@ -115,7 +115,6 @@ const Ws4Basis& Ws4Basis::reference() {
 
 Ws4Basis::Ws4Basis() : split_(Ws4Split::reference()) {
   const auto& sets = ws4_knot_sets();
-  for (const KnotSet& s : sets) weight_.push_back(s.c * 0.5 / 480.0);
   const int nr = static_cast<int>(split_.regions().size());
   pieces_.resize(static_cast<size_t>(nr) * size);
   pieces_extended_.resize(static_cast<size_t>(nr) * size);

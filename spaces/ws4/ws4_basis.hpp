@@ -34,8 +34,6 @@ class Ws4Basis {
   std::vector<BasicPoly4<DoubleDouble>> pieces_double_double() const;
   /// Origin of the local coordinates of the pieces of region r (its vertex average).
   const Point2& center(int region) const { return split_.regions()[region].centroid; }
-  /// Weight c_i |Δ| / 480 of B_{i+1} = ∫ B_{i+1} over the reference triangle (|Δ| = 1/2).
-  double integral(int i) const { return weight_[i]; }
 
   /// Values, first and second reference derivatives of the 51 functions at `points`
   /// (each located with Ws4Split::locate). Arrays of `out` are 51 x points.size().
@@ -51,7 +49,6 @@ class Ws4Basis {
   const Ws4Split& split_;
   std::vector<Poly4> pieces_;  ///< regions x 51
   std::vector<BasicPoly4<long double>> pieces_extended_;
-  std::vector<double> weight_;
 };
 
 }  // namespace iga::ws4

@@ -1,7 +1,8 @@
 #pragma once
 /// @file
 /// Closed-form element matrices of a Ws4Space: C_Kᵀ K_B C_K with K_B from the universal reference
-/// matrices of the 51 simplex splines (ws4_reference_matrices.hpp) under the element's affine map.
+/// matrices of the 51 simplex splines (ws4_reference_matrices.hpp) under the element's affine map
+/// (affine_element_matrices.hpp).
 /// The double-double matrices are computed once per shape class shared by several elements
 /// (ws4_shape_classes.hpp): the documented fast path behind prepare and shared.
 
@@ -18,7 +19,7 @@ class Ws4ClosedForms final : public ClosedForms {
   explicit Ws4ClosedForms(const Ws4Space& space);
 
  protected:
-  /// The product accumulated in long double, rounded once.
+  /// K_B from the double tables, the product accumulated in long double, rounded once.
   bool rounded(int element, BilinearForm form, Eigen::MatrixXd& local) const override;
   bool extended(int element, BilinearForm form, LongDoubleMatrix& local) const override;
   /// The cached matrix of the element's shape class, or computed.
@@ -29,6 +30,9 @@ class Ws4ClosedForms final : public ClosedForms {
   const DoubleDoubleMatrix* shared_double_double(int element, BilinearForm form) const override;
 
  private:
+  /// The element's own double-double matrix (no cache).
+  void compute_double_double(int element, BilinearForm form, DoubleDoubleMatrix& local) const;
+
   const Ws4Space& space_;
   ElementMatrixCache cache_;
 };

@@ -12,7 +12,9 @@
 
 namespace iga::ws4 {
 
-const Ws4PieceEvaluation::RuleTables& Ws4PieceEvaluation::tables(const QuadratureRule& rule) {
+Ws4Evaluator::Ws4Evaluator(const Ws4Space& space) : space_(space), generic_(space.make_generic_evaluator()) {}
+
+const Ws4Evaluator::RuleTables& Ws4Evaluator::tables(const QuadratureRule& rule) {
   auto it = cache_.find(&rule);
   // Bitwise comparison (memcmp, not point by point): it runs once per element and rule.
   if (it != cache_.end() && it->second.points.size() == rule.points.size() &&
@@ -66,7 +68,7 @@ const Ws4PieceEvaluation::RuleTables& Ws4PieceEvaluation::tables(const Quadratur
   return t;
 }
 
-void Ws4PieceEvaluation::fill_geometry(int element, const RuleTables& t, PointValues& out) const {
+void Ws4Evaluator::fill_geometry(int element, const RuleTables& t, PointValues& out) const {
   space_.element_dofs(element, out.dofs);
   const Eigen::Matrix2d j = space_.jacobian(element);
   const Point2 p0 = space_.mesh().vertices()[space_.mesh().triangle(element)[0]];
@@ -79,12 +81,12 @@ void Ws4PieceEvaluation::fill_geometry(int element, const RuleTables& t, PointVa
   piece_kernels::repeat_matrix(j, q, out.jacobian.data()->data());
 }
 
-void Ws4PieceEvaluation::evaluate_geometry(int element, const QuadratureRule& rule, PointValues& out) {
+void Ws4Evaluator::evaluate_geometry(int element, const QuadratureRule& rule, PointValues& out) {
   fill_geometry(element, tables(rule), out);
 }
 
-void Ws4PieceEvaluation::evaluate_function(int element, const QuadratureRule& rule, const Eigen::VectorXd& coefficients,
-                                           unsigned flags, PointValues& geometry, FunctionValues& out) {
+void Ws4Evaluator::evaluate_function(int element, const QuadratureRule& rule, const Eigen::VectorXd& coefficients,
+                                     unsigned flags, PointValues& geometry, FunctionValues& out) {
   if (flags & (update_laplacian_gradient | update_bilaplacian))
     throw std::logic_error("evaluate_function: this space provides derivatives up to order 2 only");
   const RuleTables& t = tables(rule);
@@ -142,8 +144,8 @@ void Ws4PieceEvaluation::evaluate_function(int element, const QuadratureRule& ru
   }
 }
 
-void Ws4PieceEvaluation::integrate_values(int element, const QuadratureRule& rule, const Eigen::VectorXd& weights,
-                                          Eigen::VectorXd& local) {
+void Ws4Evaluator::integrate_values(int element, const QuadratureRule& rule, const PointValues& /*geometry*/,
+                                    const Eigen::VectorXd& weights, Eigen::VectorXd& local) {
   const RuleTables& t = tables(rule);
   // Weighted monomial moments per region, then Σ_r (pieces of r)ᵀ moments, then C_Kᵀ.
   const int slots = static_cast<int>(t.regions.size());

@@ -1,7 +1,9 @@
 #pragma once
 /// @file
-/// Ws4PieceEvaluation: one discrete WS4 function (and the transposed evaluation of load vectors)
-/// evaluated piece by piece, without the 51 x q tables of the reference basis.
+/// Ws4Evaluator: the evaluator specialisation of Ws4Space (element_core.hpp). evaluate is the
+/// generic one on the explicit core (Ws4Space::make_generic_evaluator); one discrete WS4 function
+/// and the transposed evaluation of load vectors are evaluated piece by piece, without the 51 x q
+/// tables of the reference basis, which is where the time of error norms and loads goes.
 ///
 /// On region r of the split, u_h = Σ_i b_i B_i with b = C_K c_K is one quartic: its 15 monomial
 /// coefficients Σ_i b_i piece(r, i) cost a few hundred operations per region, and then each point
@@ -16,6 +18,7 @@
 #include <Eigen/Core>
 #include <array>
 #include <map>
+#include <memory>
 #include <vector>
 
 #include "spaces/space.hpp"
@@ -25,22 +28,27 @@ namespace iga::ws4 {
 class Ws4Space;
 
 /// Per-thread evaluation state of a Ws4Space (holds per-rule tables; not thread-safe).
-class Ws4PieceEvaluation {
+class Ws4Evaluator final : public Space::Evaluator {
  public:
-  explicit Ws4PieceEvaluation(const Ws4Space& space) : space_(space) {}
+  explicit Ws4Evaluator(const Ws4Space& space);
 
-  /// Space::Evaluator::evaluate_function for WS4: value, gradient and Hessian of Σ c_i N_i at the
-  /// points of `rule`; geometry receives dofs, x and jacobian.
+  /// Every active function: the generic evaluator on the explicit core.
+  void evaluate(int element, const QuadratureRule& rule, unsigned flags, PointValues& out) override {
+    generic_->evaluate(element, rule, flags, out);
+  }
+
+  /// Value, gradient and Hessian of Σ c_i N_i at the points of `rule`, piece by piece; geometry
+  /// receives dofs, x and jacobian.
   void evaluate_function(int element, const QuadratureRule& rule, const Eigen::VectorXd& coefficients,
-                         unsigned flags, PointValues& geometry, FunctionValues& out);
+                         unsigned flags, PointValues& geometry, FunctionValues& out) override;
 
   /// dofs, x and jacobian of `element` at the points of `rule` (no basis values).
-  void evaluate_geometry(int element, const QuadratureRule& rule, PointValues& out);
+  void evaluate_geometry(int element, const QuadratureRule& rule, PointValues& out) override;
 
-  /// local(m) = Σ_q weights(q) N_m(x_q) (Space::Evaluator::integrate_values): per region the
-  /// weighted monomial moments, then the pieces and the extraction.
-  void integrate_values(int element, const QuadratureRule& rule, const Eigen::VectorXd& weights,
-                        Eigen::VectorXd& local);
+  /// local(m) = Σ_q weights(q) N_m(x_q): per region the weighted monomial moments, then the pieces
+  /// and the extraction.
+  void integrate_values(int element, const QuadratureRule& rule, const PointValues& geometry,
+                        const Eigen::VectorXd& weights, Eigen::VectorXd& local) override;
 
  private:
   /// The points of one rule grouped by split region.
@@ -62,6 +70,7 @@ class Ws4PieceEvaluation {
   void fill_geometry(int element, const RuleTables& t, PointValues& out) const;
 
   const Ws4Space& space_;
+  std::unique_ptr<Space::Evaluator> generic_;
   std::map<const QuadratureRule*, RuleTables> cache_;
   Eigen::Matrix<double, 51, 1> c_, b_;
   std::vector<double> values_;  ///< u_h per slot: 15 rows over the slots (rounded up to a block)

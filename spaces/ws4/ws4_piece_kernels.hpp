@@ -1,6 +1,6 @@
 #pragma once
 /// @file
-/// The arithmetic of Ws4PieceEvaluation (ws4_evaluator.hpp), written with the vector types of GCC
+/// The arithmetic of Ws4Evaluator (ws4_evaluator.hpp), written with the vector types of GCC
 /// and Clang over contiguous arrays (compiled for the x86-64 baseline, AVX2 + FMA and AVX-512, the
 /// copy chosen at load time).
 ///

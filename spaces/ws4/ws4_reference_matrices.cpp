@@ -1,9 +1,7 @@
 #include "spaces/ws4/ws4_reference_matrices.hpp"
 
-#include <Eigen/LU>
 #include <algorithm>
 #include <cmath>
-#include <type_traits>
 #include <vector>
 
 #include "spaces/ws4/ws4_basis.hpp"
@@ -23,10 +21,10 @@ void store_derivatives(const Poly& p, int n, int k, std::vector<Poly>& d) {
   d[5 * n + k] = d[2 * n + k].derivative(1);
 }
 
-/// Index in {ξξ, ξη, ηη} of the second derivative ∂_a ∂_b.
-int hessian_index(int a, int b) { return a + b; }
-
 using Real = long double;
+/// The pairs of derivative tables (value, ∂ξ, ∂η, ∂ξξ, ∂ξη, ∂ηη) integrated: ∫ table_k table_lᵀ.
+const int kPairs[10][2] = {{0, 0}, {1, 1}, {1, 2}, {2, 2}, {3, 3}, {3, 4}, {3, 5}, {4, 4}, {4, 5}, {5, 5}};
+using MatrixL = LongDoubleMatrix;
 
 /// g-point Gauss–Legendre (g = 3, 4 or 5, exact to degree 2g - 1) on [0, 1] in T (long double or
 /// double-double): nodes x, weights w.
@@ -61,6 +59,33 @@ void gauss_legendre_unit(int g, T* x, T* w) {
   }
 }
 
+/// The collapsed g x g Gauss rule on fan triangle `f` of the split, in T (long double or
+/// double-double): points relative to the centre of the fan's region (the pieces' origin), from
+/// the corners' exact barycentrics, and weights. Collapsed coordinates:
+/// x = v0 + s (v1 − v0) + (1 − s) t (v2 − v0), dx = (1 − s) 2|T| ds dt.
+template <class T>
+void fan_rule(const Ws4Basis& basis, int f, int g, const T* gx, const T* gw, T* x, T* y, T* w) {
+  using std::abs;
+  const Ws4Split& split = basis.split();
+  const Point2 center = basis.center(split.fan_region()[f]);
+  T vx[3], vy[3];
+  for (int k = 0; k < 3; ++k) {
+    const Triple& b = split.vertices()[split.fan_triangles()[f][k]];
+    const T sum = T(b[0]) + T(b[1]) + T(b[2]);
+    vx[k] = T(b[1]) / sum - T(center.x());
+    vy[k] = T(b[2]) / sum - T(center.y());
+  }
+  const T twice_area = abs((vx[1] - vx[0]) * (vy[2] - vy[0]) - (vy[1] - vy[0]) * (vx[2] - vx[0]));
+  int k = 0;
+  for (int a = 0; a < g; ++a)
+    for (int c = 0; c < g; ++c, ++k) {
+      const T s = gx[a], t = (T(1.0) - s) * gx[c];
+      x[k] = vx[0] + s * (vx[1] - vx[0]) + t * (vx[2] - vx[0]);
+      y[k] = vy[0] + s * (vy[1] - vy[0]) + t * (vy[2] - vy[0]);
+      w[k] = gw[a] * gw[c] * (T(1.0) - s) * twice_area;
+    }
+}
+
 /// The reference matrices in long double, rounded once. Every integrand is a polynomial of degree
 /// <= 8 on each fan triangle of the split: a collapsed 5 x 5 Gauss rule (degree 9 in the collapsed
 /// direction) integrates it exactly, with nodes, split vertices (exact rationals) and the pieces in
@@ -76,7 +101,7 @@ const std::vector<MatrixL>& reference_sums() {
   gauss_legendre_unit(5, gx, gw);
   constexpr int n = Ws4Basis::size, q = 25;
   // Six tables: value, ∂ξ, ∂η, ∂ξξ, ∂ξη, ∂ηη; sums[k][l] = ∫ table_k table_lᵀ for the pairs used.
-  const int pairs[10][2] = {{0, 0}, {1, 1}, {1, 2}, {2, 2}, {3, 3}, {3, 4}, {3, 5}, {4, 4}, {4, 5}, {5, 5}};
+  const auto& pairs = kPairs;
   std::vector<MatrixL> sums(10, MatrixL::Zero(n, n));
   MatrixL table[6];
   Eigen::Matrix<Real, 1, q> weights;
@@ -92,10 +117,7 @@ const std::vector<MatrixL>& reference_sums() {
       active.clear();
       for (int i = 0; i < n; ++i) {
         const BasicPoly4<Real>& p = basis.piece_extended(r, i);
-        bool zero = true;
-        for (int a = 0; a <= 4; ++a)
-          for (int b = 0; a + b <= 4; ++b) zero = zero && p.coefficient(a, b) == 0;
-        if (zero) continue;
+        if (p.is_zero()) continue;
         const int k = static_cast<int>(active.size());
         active.push_back(i);
         store_derivatives(p, n, k, d);
@@ -104,25 +126,11 @@ const std::vector<MatrixL>& reference_sums() {
       for (MatrixL& t : table) t.resize(m, q);
       cached_region = r;
     }
-    Real vx[3], vy[3];  // fan-triangle corners relative to the region's center, from exact barycentrics
-    for (int k = 0; k < 3; ++k) {
-      const Triple& b = split.vertices()[split.fan_triangles()[f][k]];
-      const Real sum = Real(b[0]) + Real(b[1]) + Real(b[2]);
-      vx[k] = Real(b[1]) / sum - Real(basis.center(r).x());
-      vy[k] = Real(b[2]) / sum - Real(basis.center(r).y());
-    }
-    const Real twice_area = std::abs((vx[1] - vx[0]) * (vy[2] - vy[0]) - (vy[1] - vy[0]) * (vx[2] - vx[0]));
-    int k = 0;
-    for (int a = 0; a < 5; ++a)
-      for (int c = 0; c < 5; ++c, ++k) {
-        // Collapsed coordinates: x = v0 + s (v1 − v0) + (1 − s) t (v2 − v0), dx = (1 − s) 2|T| ds dt.
-        const Real s = gx[a], t = (1 - s) * gx[c];
-        const Real x = vx[0] + s * (vx[1] - vx[0]) + t * (vx[2] - vx[0]);
-        const Real y = vy[0] + s * (vy[1] - vy[0]) + t * (vy[2] - vy[0]);
-        weights(k) = gw[a] * gw[c] * (1 - s) * twice_area;
-        for (int j = 0; j < 6; ++j)
-          for (int i = 0; i < m; ++i) table[j](i, k) = d[j * n + i](x, y);
-      }
+    Real x[q], y[q];
+    fan_rule(basis, static_cast<int>(f), 5, gx, gw, x, y, weights.data());
+    for (int k = 0; k < q; ++k)
+      for (int j = 0; j < 6; ++j)
+        for (int i = 0; i < m; ++i) table[j](i, k) = d[j * n + i](x[k], y[k]);
     for (int p = 0; p < 10; ++p) {
       const MatrixL local = table[pairs[p][0]] * weights.asDiagonal() * table[pairs[p][1]].transpose();
       for (int b = 0; b < m; ++b)
@@ -134,12 +142,9 @@ const std::vector<MatrixL>& reference_sums() {
   return sums;
 }
 
-const int kPairs[10][2] = {{0, 0}, {1, 1}, {1, 2}, {2, 2}, {3, 3}, {3, 4}, {3, 5}, {4, 4}, {4, 5}, {5, 5}};
-
 /// The reference matrices from the sums, in double (rounded once) or long double.
-template <class Matrices>
-Matrices build() {
-  using Matrix = std::remove_reference_t<decltype(Matrices{}.mass)>;
+template <class Matrix>
+ReferenceIntegrals<Matrix> build() {
   using Scalar = typename Matrix::Scalar;
   const std::vector<MatrixL>& sums = reference_sums();
   const auto& pairs = kPairs;
@@ -149,7 +154,7 @@ Matrices build() {
     if (pairs[p][0] == pairs[p][1]) m = m.template triangularView<Eigen::Upper>().toDenseMatrix().template selfadjointView<Eigen::Upper>();
     return m;
   };
-  Matrices m;
+  ReferenceIntegrals<Matrix> m;
   m.mass = rounded(0);
   m.grad[0][0] = rounded(1);
   m.grad[0][1] = rounded(2);
@@ -165,115 +170,16 @@ Matrices build() {
   return m;
 }
 
-/// Element matrix of `form` from reference matrices `r`, in their scalar type.
-template <class Matrices>
-auto form_matrix(const Matrices& r, BilinearForm form, const Eigen::Matrix2d& jacobian) {
-  using Matrix = std::remove_cv_t<std::remove_reference_t<decltype(r.mass)>>;
-  using Scalar = typename Matrix::Scalar;
-  using Matrix2 = Eigen::Matrix<Scalar, 2, 2>;
-  const Matrix2 jac = jacobian.cast<Scalar>();
-  const Scalar det = std::abs(jac.determinant());
-  // ∇_x = J^{-T} ∇_ξ and H_x = J^{-T} H_ξ J^{-1}; G = J^{-1} J^{-T} collects the metric.
-  const Matrix2 jinv = jac.inverse();
-  const Matrix2 g = jinv * jinv.transpose();
-  Matrix k = Matrix::Zero(Ws4Basis::size, Ws4Basis::size);
-  switch (form) {
-    case BilinearForm::mass:
-      k = det * r.mass;
-      break;
-    case BilinearForm::laplace:
-      for (int a = 0; a < 2; ++a)
-        for (int b = 0; b < 2; ++b) k += (det * g(a, b)) * r.grad[a][b];
-      break;
-    case BilinearForm::bilaplace: {
-      // Δ_x B = Σ_ab G_ab ∂_ab B = G_00 ∂ξξ + 2 G_01 ∂ξη + G_11 ∂ηη.
-      const Scalar alpha[3] = {g(0, 0), 2 * g(0, 1), g(1, 1)};
-      for (int p = 0; p < 3; ++p)
-        for (int q = 0; q < 3; ++q) k += (det * alpha[p] * alpha[q]) * r.hess[p][q];
-      break;
-    }
-    case BilinearForm::hessian:
-      // H_x(B_i) : H_x(B_j) = Σ_abcd G_ac G_bd ∂_ab B_i ∂_cd B_j.
-      for (int a = 0; a < 2; ++a)
-        for (int b = 0; b < 2; ++b)
-          for (int c = 0; c < 2; ++c)
-            for (int d = 0; d < 2; ++d)
-              k += (det * g(a, c) * g(b, d)) * r.hess[hessian_index(a, b)][hessian_index(c, d)];
-      break;
-  }
-  return k;
-}
-
-/// (Cᵀ K C) in long double for a symmetric K, over the nonzeros of C.
-template <class MatrixK>
-void congruence_long(const Eigen::MatrixXd& c, const MatrixK& k, MatrixL& out) {
-  const int n = static_cast<int>(c.rows());
-  // Only the nonzeros of C enter (a WS4 extraction has ≈ 800 of 2601): skipping exact zeros
-  // changes no term of the long double sums, and cuts the work ≈ 4×.
-  struct Nonzero {
-    int row;
-    double value;
-  };
-  thread_local std::vector<Nonzero> nonzeros;
-  thread_local std::vector<int> column_start;
-  thread_local std::vector<long double> ctk;
-  std::vector<Nonzero>& nz = nonzeros;
-  std::vector<int>& start = column_start;
-  nz.clear();
-  start.assign(n + 1, 0);
-  for (int m = 0; m < n; ++m) {
-    start[m] = static_cast<int>(nz.size());
-    for (int i = 0; i < n; ++i)
-      if (c(i, m) != 0) nz.push_back({i, c(i, m)});
-  }
-  start[n] = static_cast<int>(nz.size());
-  // (Cᵀ K)(m, j) = Σ_i C(i, m) K(i, j), kept in long double, row m contiguous; then the upper
-  // triangle of (Cᵀ K) C, mirrored.
-  std::vector<long double>& t = ctk;
-  t.resize(static_cast<size_t>(n) * n);
-  for (int m = 0; m < n; ++m)
-    for (int j = 0; j < n; ++j) {
-      const auto* kj = k.col(j).data();
-      long double s = 0;
-      for (int e = start[m]; e < start[m + 1]; ++e) s += static_cast<long double>(nz[e].value) * kj[nz[e].row];
-      t[static_cast<size_t>(m) * n + j] = s;
-    }
-  out.resize(n, n);
-  for (int m = 0; m < n; ++m) {
-    const long double* row = &t[static_cast<size_t>(m) * n];
-    for (int p = m; p < n; ++p) {
-      long double s = 0;
-      for (int e = start[p]; e < start[p + 1]; ++e) s += static_cast<long double>(nz[e].value) * row[nz[e].row];
-      out(m, p) = out(p, m) = s;
-    }
-  }
-}
-
 }  // namespace
 
-const Ws4ReferenceMatrices& Ws4ReferenceMatrices::get() {
-  static const Ws4ReferenceMatrices m = build<Ws4ReferenceMatrices>();
+const ReferenceIntegrals<Eigen::MatrixXd>& ws4_reference_integrals() {
+  static const ReferenceIntegrals<Eigen::MatrixXd> m = build<Eigen::MatrixXd>();
   return m;
 }
 
-const Ws4ReferenceMatricesExtended& Ws4ReferenceMatricesExtended::get() {
-  static const Ws4ReferenceMatricesExtended m = build<Ws4ReferenceMatricesExtended>();
+const ReferenceIntegrals<LongDoubleMatrix>& ws4_reference_integrals_extended() {
+  static const ReferenceIntegrals<LongDoubleMatrix> m = build<LongDoubleMatrix>();
   return m;
-}
-
-Eigen::MatrixXd ws4_form_matrix(BilinearForm form, const Eigen::Matrix2d& jacobian) {
-  return form_matrix(Ws4ReferenceMatrices::get(), form, jacobian);
-}
-
-Eigen::MatrixXd symmetric_congruence_extended(const Eigen::MatrixXd& c, const Eigen::MatrixXd& k) {
-  thread_local MatrixL out;
-  congruence_long(c, k, out);
-  return out.cast<double>();
-}
-
-void ws4_element_matrix_extended(BilinearForm form, const Eigen::Matrix2d& jacobian, const Eigen::MatrixXd& c,
-                                 MatrixL& local) {
-  congruence_long(c, form_matrix(Ws4ReferenceMatricesExtended::get(), form, jacobian), local);
 }
 
 namespace {
@@ -336,25 +242,12 @@ std::vector<DoubleDoubleMatrix> reference_sums_double_double(int first_pair, int
       m = static_cast<int>(active.size());
       cached_region = r;
     }
-    DD vx[3], vy[3];
-    for (int k = 0; k < 3; ++k) {
-      const Triple& b = split.vertices()[split.fan_triangles()[f][k]];
-      const DD sum = DD(b[0]) + DD(b[1]) + DD(b[2]);
-      vx[k] = DD(b[1]) / sum - DD(basis.center(r).x());
-      vy[k] = DD(b[2]) / sum - DD(basis.center(r).y());
-    }
-    const DD twice_area = abs((vx[1] - vx[0]) * (vy[2] - vy[0]) - (vy[1] - vy[0]) * (vx[2] - vx[0]));
-    int k = 0;
-    for (int a = 0; a < g; ++a)
-      for (int c = 0; c < g; ++c, ++k) {
-        const DD s = gx[a], t = (DD(1.0) - s) * gx[c];
-        const DD x = vx[0] + s * (vx[1] - vx[0]) + t * (vx[2] - vx[0]);
-        const DD y = vy[0] + s * (vy[1] - vy[0]) + t * (vy[2] - vy[0]);
-        weights[k] = gw[a] * gw[c] * (DD(1.0) - s) * twice_area;
-        for (int j = 0; j < 6; ++j)
-          if (needed[j])
-            for (int i = 0; i < m; ++i) table[(j * n + i) * q + k] = d[j * n + i](x, y);
-      }
+    DD x[kMaxPoints], y[kMaxPoints];
+    fan_rule(basis, f, g, gx, gw, x, y, weights);
+    for (int k = 0; k < q; ++k)
+      for (int j = 0; j < 6; ++j)
+        if (needed[j])
+          for (int i = 0; i < m; ++i) table[(j * n + i) * q + k] = d[j * n + i](x[k], y[k]);
     // (table · weight) once per function and point, as hi/lo doubles; then each integral is a
     // compensated dot product (exact products of the hi parts, the rest in the error term).
     for (int j = 0; j < 6; ++j)
@@ -415,17 +308,16 @@ DoubleDoubleMatrix transposed(const DoubleDoubleMatrix& m) {
   return t;
 }
 
-/// The group of reference matrices `form` uses: 0 the mass matrix, 1 the gradient ones, 2 the Hessian
-/// ones (bilaplace and hessian forms).
-int group_of(BilinearForm form) { return form == BilinearForm::mass ? 0 : form == BilinearForm::laplace ? 1 : 2; }
+}  // namespace
 
-/// The double-double reference matrices of one group of kPairs, built on first use: 0 the mass
-/// matrix, 1 the gradient ones, 2 the Hessian ones (the other members are left empty).
-const Ws4ReferenceMatricesDoubleDouble& reference_group_double_double(int group) {
+const ReferenceIntegrals<DoubleDoubleMatrix>& ws4_reference_integrals_double_double(BilinearForm form) {
+  // The group of kPairs `form` uses: 0 the mass matrix, 1 the gradient ones, 2 the Hessian ones
+  // (bilaplace and hessian forms); the other members are left empty.
+  const int group = form == BilinearForm::mass ? 0 : form == BilinearForm::laplace ? 1 : 2;
   auto build_group = [](int group) {
     const int first[3] = {0, 1, 4}, last[3] = {1, 4, 10};
     const std::vector<DoubleDoubleMatrix> sums = reference_sums_double_double(first[group], last[group]);
-    Ws4ReferenceMatricesDoubleDouble d;
+    ReferenceIntegrals<DoubleDoubleMatrix> d;
     if (group == 0) d.mass = sums[0];
     if (group == 1) {
       d.grad[0][0] = sums[1];
@@ -445,163 +337,16 @@ const Ws4ReferenceMatricesDoubleDouble& reference_group_double_double(int group)
   };
   switch (group) {
     case 0: {
-      static const Ws4ReferenceMatricesDoubleDouble mass = build_group(0);
+      static const ReferenceIntegrals<DoubleDoubleMatrix> mass = build_group(0);
       return mass;
     }
     case 1: {
-      static const Ws4ReferenceMatricesDoubleDouble grad = build_group(1);
+      static const ReferenceIntegrals<DoubleDoubleMatrix> grad = build_group(1);
       return grad;
     }
     default: {
-      static const Ws4ReferenceMatricesDoubleDouble hess = build_group(2);
+      static const ReferenceIntegrals<DoubleDoubleMatrix> hess = build_group(2);
       return hess;
-    }
-  }
-}
-
-}  // namespace
-
-const Ws4ReferenceMatricesDoubleDouble& Ws4ReferenceMatricesDoubleDouble::get() {
-  static const Ws4ReferenceMatricesDoubleDouble m = [] {
-    Ws4ReferenceMatricesDoubleDouble d = reference_group_double_double(2);
-    d.mass = reference_group_double_double(0).mass;
-    for (int a = 0; a < 2; ++a)
-      for (int b = 0; b < 2; ++b) d.grad[a][b] = reference_group_double_double(1).grad[a][b];
-    return d;
-  }();
-  return m;
-}
-
-namespace {
-
-/// One term of a compensated dot product (Ogita–Rump–Oishi Dot2): s + e += a b with the product
-/// exact and the rounding of the sum kept in e.
-inline void dot2_step(double& s, double& e, double a, double b) {
-  const DoubleDouble p = dd_detail::two_prod(a, b);
-  const DoubleDouble t = dd_detail::two_sum(s, p.hi);
-  s = t.hi;
-  e += t.lo + p.lo;
-}
-
-/// K = Σ_k coefficient_k R_k (upper triangle, mirrored): the element matrix in the B-basis.
-void combine(const std::vector<std::pair<DoubleDouble, const DoubleDoubleMatrix*>>& terms, DoubleDoubleMatrix& k) {
-  constexpr int n = Ws4Basis::size;
-  k.resize(n, n);
-  for (int j = 0; j < n; ++j)
-    for (int i = 0; i <= j; ++i) {
-      DoubleDouble s(0.0);
-      for (const auto& [coefficient, r] : terms) s += coefficient * (*r)(i, j);
-      k.set(i, j, s);
-      k.set(j, i, s);
-    }
-}
-
-/// Element matrix of `form` on the triangle of `jacobian` in the B-basis, in double-double.
-void form_matrix_double_double(BilinearForm form, const Eigen::Matrix2d& jac, DoubleDoubleMatrix& k) {
-  // Only the group of reference matrices this form uses (each built on first use).
-  const Ws4ReferenceMatricesDoubleDouble& r = reference_group_double_double(group_of(form));
-  using dd_detail::two_prod;
-  // det J exactly, and M = adj(J) adj(J)ᵀ = det² J⁻¹J⁻ᵀ (entries of adj(J) are entries of J).
-  const DoubleDouble det = two_prod(jac(0, 0), jac(1, 1)) - two_prod(jac(0, 1), jac(1, 0));
-  const DoubleDouble area = abs(det);
-  const DoubleDouble m00 = two_prod(jac(1, 1), jac(1, 1)) + two_prod(jac(0, 1), jac(0, 1));
-  const DoubleDouble m01 = -(two_prod(jac(1, 1), jac(1, 0)) + two_prod(jac(0, 1), jac(0, 0)));
-  const DoubleDouble m11 = two_prod(jac(1, 0), jac(1, 0)) + two_prod(jac(0, 0), jac(0, 0));
-  const DoubleDouble m[2][2] = {{m00, m01}, {m01, m11}};
-  std::vector<std::pair<DoubleDouble, const DoubleDoubleMatrix*>> terms;
-  switch (form) {
-    case BilinearForm::mass:
-      terms.emplace_back(area, &r.mass);
-      break;
-    case BilinearForm::laplace:  // |det| G_ab = M_ab / |det|
-      for (int a = 0; a < 2; ++a)
-        for (int b = 0; b < 2; ++b) terms.emplace_back(m[a][b] / area, &r.grad[a][b]);
-      break;
-    case BilinearForm::bilaplace: {  // |det| α_p α_q = β_p β_q / |det|³, β = (M00, 2 M01, M11)
-      const DoubleDouble beta[3] = {m00, m01 * 2.0, m11};
-      const DoubleDouble cube = area * area * area;
-      for (int p = 0; p < 3; ++p)
-        for (int q = 0; q < 3; ++q) terms.emplace_back(beta[p] * beta[q] / cube, &r.hess[p][q]);
-      break;
-    }
-    case BilinearForm::hessian: {  // Σ_abcd |det| G_ac G_bd ∂_ab ∂_cd = Σ M_ac M_bd / |det|³
-      DoubleDouble coefficient[3][3];
-      for (int a = 0; a < 2; ++a)
-        for (int b = 0; b < 2; ++b)
-          for (int c = 0; c < 2; ++c)
-            for (int d = 0; d < 2; ++d) coefficient[hessian_index(a, b)][hessian_index(c, d)] += m[a][c] * m[b][d];
-      const DoubleDouble cube = area * area * area;
-      for (int p = 0; p < 3; ++p)
-        for (int q = 0; q < 3; ++q) terms.emplace_back(coefficient[p][q] / cube, &r.hess[p][q]);
-      break;
-    }
-  }
-  combine(terms, k);
-}
-
-}  // namespace
-
-void prepare_reference_matrices_double_double(BilinearForm form) {
-  reference_group_double_double(group_of(form));
-}
-
-void ws4_element_matrix_double_double(BilinearForm form, const Eigen::Matrix2d& jacobian, const Eigen::MatrixXd& c,
-                                      DoubleDoubleMatrix& local) {
-  constexpr int n = Ws4Basis::size;
-  thread_local DoubleDoubleMatrix k;
-  form_matrix_double_double(form, jacobian, k);
-  // Nonzeros of C by column (≈ 800 of 2601).
-  thread_local std::vector<std::pair<int, double>> nz;
-  thread_local std::vector<int> start;
-  nz.clear();
-  start.assign(n + 1, 0);
-  for (int m = 0; m < n; ++m) {
-    start[m] = static_cast<int>(nz.size());
-    for (int i = 0; i < n; ++i)
-      if (c(i, m) != 0) nz.emplace_back(i, c(i, m));
-  }
-  start[n] = static_cast<int>(nz.size());
-  // T = Cᵀ K (column-major: column i holds T(·, i), which the second product runs over).
-  thread_local Eigen::MatrixXd tt_hi, tt_lo;
-  tt_hi.resize(n, n);
-  tt_lo.resize(n, n);
-  double s[n], e[n];
-  for (int m = 0; m < n; ++m) {
-    std::fill(s, s + n, 0.0);
-    std::fill(e, e + n, 0.0);
-    for (int p = start[m]; p < start[m + 1]; ++p) {
-      const auto [i, v] = nz[p];
-      const double* khi = k.hi.col(i).data();  // K symmetric: column i is row i
-      const double* klo = k.lo.col(i).data();
-      for (int j = 0; j < n; ++j) {
-        dot2_step(s[j], e[j], v, khi[j]);
-        e[j] += v * klo[j];
-      }
-    }
-    for (int j = 0; j < n; ++j) {
-      const DoubleDouble t = dd_detail::quick_two_sum(s[j], e[j]);
-      tt_hi(m, j) = t.hi;
-      tt_lo(m, j) = t.lo;
-    }
-  }
-  // (Cᵀ K C)(m, q) = Σ_i T(m, i) C(i, q) for m <= q, mirrored.
-  local.resize(n, n);
-  for (int q = 0; q < n; ++q) {
-    std::fill(s, s + q + 1, 0.0);
-    std::fill(e, e + q + 1, 0.0);
-    for (int p = start[q]; p < start[q + 1]; ++p) {
-      const auto [i, v] = nz[p];
-      const double* thi = tt_hi.col(i).data();
-      const double* tlo = tt_lo.col(i).data();
-      for (int m = 0; m <= q; ++m) {
-        dot2_step(s[m], e[m], v, thi[m]);
-        e[m] += v * tlo[m];
-      }
-    }
-    for (int m = 0; m <= q; ++m) {
-      const DoubleDouble t = dd_detail::quick_two_sum(s[m], e[m]);
-      local.set(m, q, t);
-      local.set(q, m, t);
     }
   }
 }

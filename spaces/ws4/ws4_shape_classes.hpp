@@ -74,7 +74,7 @@ class ElementMatrixCache {
   }
 
  private:
-  static constexpr std::size_t kForms = 4;  // BilinearForm's values
+  static constexpr std::size_t kForms = kNumBilinearForms;
   static std::size_t slot(int cls, BilinearForm form) {
     return static_cast<std::size_t>(cls) * kForms + static_cast<std::size_t>(form);
   }

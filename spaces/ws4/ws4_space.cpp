@@ -4,7 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "spaces/push_forward.hpp"
+#include "spaces/extracted_evaluator.hpp"
 #include "spaces/ws4/ws4_basis.hpp"
 #include "spaces/ws4/ws4_closed_forms.hpp"
 #include "spaces/ws4/ws4_dof_layout.hpp"
@@ -39,80 +39,45 @@ double directional_from_jet(const std::array<double, 10>& d, const std::vector<P
 }  // namespace
 
 // ---------------------------------------------------------------------------------------------
-// Evaluator: all active functions from reference tables per rule (51 x q), C_Kᵀ times them and the
-// affine push-forward; one discrete function and load vectors piece by piece (ws4_evaluator.hpp).
+// The explicit core (element_core.hpp): the 51 reference simplex splines B_i (one kind), C_K of
+// the element's shape class (stored local × active: active m = Σ_i C_K(i, m) B_i), the affine map
+// onto the triangle. The evaluator is a specialisation (ws4_evaluator.hpp).
 
-class Ws4Space::Ws4Evaluator final : public Space::Evaluator {
- public:
-  explicit Ws4Evaluator(const Ws4Space& space) : space_(space) {}
+struct Ws4Space::Core {
+  using Jet = GeometryJet;
+  static constexpr bool identity = false;
+  const Ws4Space& space;
+  mutable Eigen::SparseMatrix<double> c_k;  ///< C_K compressed, per core (one core per thread)
 
-  void evaluate(int element, const QuadratureRule& rule, unsigned flags, PointValues& out) override {
-    const Tables& t = tables(rule);
-    const Eigen::MatrixXd& c = space_.extraction(element);
-    const bool grads = (flags & (update_gradients | update_hessians)) != 0;
-    const bool hess = (flags & update_hessians) != 0;
-    if (flags & update_values) ref_.value.noalias() = c.transpose() * t.ref.value;
-    if (grads) {
-      ref_.dxi.noalias() = c.transpose() * t.ref.dxi;
-      ref_.deta.noalias() = c.transpose() * t.ref.deta;
-    }
-    if (hess) {
-      ref_.dxixi.noalias() = c.transpose() * t.ref.dxixi;
-      ref_.dxieta.noalias() = c.transpose() * t.ref.dxieta;
-      ref_.detaeta.noalias() = c.transpose() * t.ref.detaeta;
-    }
-    space_.element_dofs(element, out.dofs);
-    fill_jets(element, rule);
-    push_forward(jets_, ref_, flags, out);
+  int kind(int /*e*/) const { return 0; }
+  int tabulate(int /*kind*/, const std::vector<Point2>& points, int /*order*/, LocalTables& t) const {
+    ReferenceDerivatives r;
+    Ws4Basis::reference().tabulate(points, r);
+    Eigen::MatrixXd* arrays[6] = {&r.value, &r.dxi, &r.deta, &r.dxixi, &r.dxieta, &r.detaeta};
+    for (int d = 0; d < 6; ++d) t[d] = std::move(*arrays[d]);
+    return 2;
   }
-
-  /// Piece by piece (ws4_evaluator.hpp): no 51 x q tables.
-  void evaluate_function(int element, const QuadratureRule& rule, const Eigen::VectorXd& coefficients, unsigned flags,
-                         PointValues& geometry, FunctionValues& out) override {
-    pieces_.evaluate_function(element, rule, coefficients, flags, geometry, out);
+  std::vector<int> active(int e) const {
+    std::vector<int> dofs;
+    space.element_dofs(e, dofs);
+    return dofs;
   }
-
-  /// Geometry only; integrate_values then takes the moments of each region from the points.
-  void evaluate_geometry(int element, const QuadratureRule& rule, PointValues& out) override {
-    pieces_.evaluate_geometry(element, rule, out);
+  Extraction extraction(int e) const {
+    c_k = space.extraction(e).sparseView();
+    c_k.makeCompressed();
+    return extraction_view(c_k);
   }
-
-  /// local = C_Kᵀ Σ_r (pieces of region r)ᵀ (weighted monomial moments of r) (ws4_evaluator.hpp).
-  void integrate_values(int element, const QuadratureRule& rule, const PointValues& /*geometry*/,
-                        const Eigen::VectorXd& weights, Eigen::VectorXd& local) override {
-    pieces_.integrate_values(element, rule, weights, local);
-  }
-
- private:
-  void fill_jets(int element, const QuadratureRule& rule) {
-    const Eigen::Matrix2d j = space_.jacobian(element);
-    const Point2 p0 = space_.mesh_.vertices()[space_.mesh_.triangle(element)[0]];
-    jets_.resize(rule.size());
+  void map(int e, const QuadratureRule& rule, const LocalTables& /*t*/, int /*order*/, std::vector<Jet>& jets) const {
+    const Eigen::Matrix2d j = space.jacobian(e);
+    const Point2 p0 = space.mesh_.vertices()[space.mesh_.triangle(e)[0]];
+    jets.resize(rule.size());
     for (int k = 0; k < rule.size(); ++k) {
-      jets_[k].x = p0 + j * rule.points[k];
-      jets_[k].jacobian = j;
+      jets[k].x = p0 + j * rule.points[k];
+      jets[k].jacobian = j;
+      jets[k].hessian_x.setZero();
+      jets[k].hessian_y.setZero();
     }
   }
-
-  struct Tables {
-    std::vector<Point2> points;  // copy, to detect a different rule at a reused address
-    ReferenceDerivatives ref;
-  };
-  const Tables& tables(const QuadratureRule& rule) {
-    auto it = cache_.find(&rule);
-    if (it != cache_.end() && it->second.points == rule.points) return it->second;
-    if (it == cache_.end() && cache_.size() >= 64) cache_.clear();  // bound temporary rules
-    Tables& t = cache_[&rule];
-    t.points = rule.points;
-    Ws4Basis::reference().tabulate(rule.points, t.ref);
-    return t;
-  }
-
-  const Ws4Space& space_;
-  Ws4PieceEvaluation pieces_{space_};
-  std::map<const QuadratureRule*, Tables> cache_;
-  ReferenceDerivatives ref_;
-  std::vector<GeometryJet> jets_;
 };
 
 // ---------------------------------------------------------------------------------------------
@@ -189,6 +154,10 @@ void Ws4Space::compute_vertex_frames() {
 }
 
 std::unique_ptr<Space::Evaluator> Ws4Space::make_evaluator() const { return std::make_unique<Ws4Evaluator>(*this); }
+
+std::unique_ptr<Space::Evaluator> Ws4Space::make_generic_evaluator() const {
+  return std::make_unique<ExtractedEvaluator<Core>>(Core{*this, {}});
+}
 
 void Ws4Space::element_dofs(int element, std::vector<int>& out) const {
   out.resize(dofs_per_element);
@@ -298,30 +267,10 @@ Eigen::VectorXd Ws4Space::interpolate(const Jet3& f) const {
 }
 
 RulePtr Ws4Space::quadrature(int, int degree) const {
-  degree = std::max(degree, 0);
-  std::lock_guard<std::mutex> lock(rule_mutex_);
-  RulePtr& r = cell_rules_[degree];
-  if (!r) r = std::make_shared<const QuadratureRule>(Ws4Split::reference().composite_rule(degree));
-  return r;
+  return rules_.made(degree, [&] { return Ws4Split::reference().composite_rule(std::max(degree, 0)); });
 }
 
-RulePtr Ws4Space::edge_quadrature(int, int edge, int degree) const {
-  degree = std::max(degree, 0);
-  std::lock_guard<std::mutex> lock(rule_mutex_);
-  RulePtr& r = edge_rules_[{edge, degree}];
-  if (!r) {
-    const QuadratureRule g = gauss_legendre_for_degree(degree);
-    QuadratureRule quarters;
-    quarters.degree = g.degree;
-    for (int piece = 0; piece < 4; ++piece)
-      for (int k = 0; k < g.size(); ++k) {
-        quarters.points.emplace_back(0.25 * (piece + g.points[k].x()), 0.0);
-        quarters.weights.push_back(0.25 * g.weights[k]);
-      }
-    r = std::make_shared<const QuadratureRule>(edge_rule(CellShape::triangle, edge, quarters));
-  }
-  return r;
-}
+RulePtr Ws4Space::edge_quadrature(int, int edge, int degree) const { return rules_.triangle_edge(edge, degree); }
 
 std::vector<BoundaryEdge> Ws4Space::part_edges(int part) const {
   std::vector<BoundaryEdge> out;

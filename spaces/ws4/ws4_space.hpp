@@ -26,9 +26,9 @@
 /// ws4_hermite_transform.hpp). Both neighbours of an edge use the same normal and points, hence C³
 /// (notes §2.3).
 
-#include <map>
-#include <mutex>
 
+#include "spaces/element_core.hpp"
+#include "spaces/gauss_rule_cache.hpp"
 #include "spaces/space.hpp"
 #include "spaces/ws4/triangulation.hpp"
 #include "spaces/ws4/ws4_hermite_transform.hpp"
@@ -36,7 +36,9 @@
 
 namespace iga::ws4 {
 
-class Ws4Space final : public Space {
+/// Its evaluator is a specialisation (ws4_evaluator.hpp): one function and load vectors piece by
+/// piece; make_generic_evaluator evaluates the explicit core through the generic path.
+class Ws4Space final : public Space, public FastEvaluator {
  public:
   static constexpr int dofs_per_vertex = 10, dofs_per_edge = 6, dofs_per_triangle = 3, dofs_per_element = 51;
 
@@ -50,6 +52,8 @@ class Ws4Space final : public Space {
   /// constructor); drawn on its pieces (ws4_sample_cell.hpp), so that linear cells never straddle
   /// one; boundary parts of the triangulation (InputError for an unknown name).
   std::unique_ptr<Evaluator> make_evaluator() const override;
+  /// The explicit core: the 51 reference simplex splines, C_K, the affine map.
+  std::unique_ptr<Evaluator> make_generic_evaluator() const override;
   void element_dofs(int element, std::vector<int>& out) const override;
 
   /// triangle_rule(degree) on each of the 342 fan triangles of the WS4 split (shared by all elements).
@@ -61,8 +65,6 @@ class Ws4Space final : public Space {
   const ClosedForms* closed_forms() const override;
 
   const Triangulation& mesh() const { return mesh_; }
-  /// The factor h of the scaled DOFs (see the file comment).
-  double dof_scale() const { return h_; }
   /// J = [P1 - P0, P2 - P0] of element t.
   Eigen::Matrix2d jacobian(int element) const;
   /// Extraction C_K of element t (51 x 51, see the file comment), shared by its shape class.
@@ -77,9 +79,6 @@ class Ws4Space final : public Space {
   /// Corners, frames, edge orientations and DOF scales of element t (ws4_exact_extraction's input).
   ElementDofGeometry dof_geometry(int element) const;
 
-  /// Vertex frame (d1, d2) of vertex v as columns (see the file comment).
-  const Eigen::Matrix2d& vertex_frame(int v) const { return vertex_frame_[v]; }
-
   /// Cartesian derivatives ∂x^a ∂y^b f(x) for a + b <= 3, indexed like the vertex DOFs
   /// (0: f, 1: f_x, 2: f_y, 3: f_xx, 4: f_xy, 5: f_yy, 6: f_xxx, 7: f_xxy, 8: f_xyy, 9: f_yyy).
   using Jet3 = std::function<std::array<double, 10>(const Point2& x)>;
@@ -87,7 +86,7 @@ class Ws4Space final : public Space {
   Eigen::VectorXd interpolate(const Jet3& f) const;
 
  private:
-  class Ws4Evaluator;
+  struct Core;
   void compute_vertex_frames();
   /// Boundary edges of part `part` of the triangulation (-1: every boundary edge).
   std::vector<BoundaryEdge> part_edges(int part) const;
@@ -99,10 +98,7 @@ class Ws4Space final : public Space {
   std::vector<Eigen::MatrixXd> class_extraction_;
   std::unique_ptr<const ClosedForms> closed_forms_;
   std::vector<Eigen::Matrix2d> vertex_frame_;
-
-  mutable std::mutex rule_mutex_;
-  mutable std::map<int, RulePtr> cell_rules_;
-  mutable std::map<std::pair<int, int>, RulePtr> edge_rules_;
+  GaussRuleCache rules_{4};  ///< edges: Gauss on each quarter (the pieces of the split along it)
 };
 
 }  // namespace iga::ws4

@@ -130,9 +130,10 @@ class ClosedFormSpace final : public Space {
 
    protected:
     bool rounded(int e, BilinearForm form, Eigen::MatrixXd& local) const override {
-      ElementValues ev(inner_, flags_for(form));
+      const Form integrator(form);
+      ElementValues ev(inner_, integrator->flags());
       ev.reinit(e, *inner_.quadrature(e, 8));
-      iga::element_matrix(form, ev, local);  // the integrator, not ClosedForms::element_matrix
+      integrator->element_matrix(ev, local);  // the integrator, not ClosedForms::element_matrix
       local *= 2.0;
       return true;
     }
@@ -211,8 +212,8 @@ TEST(Assembly, DoubleDoubleElementMatricesAgreeWithLongDouble) {
           (ev.num_points() + 2) * std::ldexp(1.0, -64) + (form == BilinearForm::bilaplace ? std::ldexp(1.0, -52) : 0.0);
       DoubleDoubleMatrix dd;
       MatrixXld ld;
-      element_matrix_double_double(form, ev, dd);
-      element_matrix_extended(form, ev, ld);
+      Form(form)->element_matrix(ev, dd);
+      Form(form)->element_matrix(ev, ld);
       for (Eigen::Index j = 0; j < ld.cols(); ++j)
         for (Eigen::Index i = 0; i < ld.rows(); ++i) {
           const long double exact = static_cast<long double>(dd.hi(i, j)) + static_cast<long double>(dd.lo(i, j));

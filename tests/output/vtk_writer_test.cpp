@@ -21,6 +21,9 @@
 #include <map>
 #include <stdexcept>
 
+#include "spaces/extracted_evaluator.hpp"
+#include "spaces/g1/bernstein_face.hpp"
+
 namespace iga {
 namespace {
 
@@ -35,9 +38,11 @@ struct AffineElement {
   std::vector<int> dofs;
 };
 
-/// Test-only space of continuous Q1 / P1 Lagrange functions on affine elements. Evaluates in
-/// physical coordinates with the affine chain rule and fills only the arrays it is asked for, so
-/// a writer that forgets update_hessians would read empty arrays.
+/// Test-only space of continuous Q1 / P1 Lagrange functions on affine elements, built the way a
+/// space is (spaces/element_core.hpp): a local basis (the degree-1 Bernstein basis, whose local
+/// order is the corner order above), C_e = I and the affine map, evaluated by the generic
+/// evaluator. It fills only the arrays it is asked for, so a writer that forgets update_hessians
+/// would read empty arrays.
 class AffineLagrangeSpace : public Space {
  public:
   AffineLagrangeSpace(std::vector<AffineElement> elements, std::vector<Point2> nodes)
@@ -50,6 +55,11 @@ class AffineLagrangeSpace : public Space {
     facts.degree = 1;
     facts.affine_elements = true;
     set_facts(std::move(facts));
+    for (CellShape shape : {CellShape::quadrilateral, CellShape::triangle}) {
+      const int n = bernstein_count(shape, 1);
+      identity_[static_cast<int>(shape)].resize(n, n);
+      identity_[static_cast<int>(shape)].setIdentity();
+    }
   }
 
   /// 2 x 2 grid of parameter-space unit squares [i,i+1] x [j,j+1], mapped by x = A s + b;
@@ -84,61 +94,31 @@ class AffineLagrangeSpace : public Space {
     return c;
   }
 
-  class AffineEvaluator : public Evaluator {
-   public:
-    explicit AffineEvaluator(const AffineLagrangeSpace& space) : space_(space) {}
-    void evaluate(int element, const QuadratureRule& points, unsigned flags, PointValues& out) override {
-      const AffineElement& el = space_.elements_.at(element);
-      const int n = static_cast<int>(el.dofs.size()), q = points.size();
-      const Eigen::Matrix2d Jinv_t = el.J.inverse().transpose();
-      out.dofs = el.dofs;
-      out.x.resize(2, q);
-      out.jacobian.assign(q, el.J);
-      if (flags & update_values) out.value.resize(n, q);
-      if (flags & update_gradients) out.dx.resize(n, q), out.dy.resize(n, q);
-      if (flags & update_hessians) out.dxx.resize(n, q), out.dxy.resize(n, q), out.dyy.resize(n, q);
-      for (int k = 0; k < q; ++k) {
-        const Point2& r = points.points[k];
-        out.x.col(k) = el.origin + el.J * r;
-        for (int i = 0; i < n; ++i) {
-          double value, mixed = 0;  // mixed: d2/dxi deta, the only nonzero second derivative
-          Point2 grad;
-          if (el.shape == CellShape::quadrilateral) {
-            const int a = i % 2, b = i / 2;
-            const double fa = a ? r.x() : 1 - r.x(), fb = b ? r.y() : 1 - r.y();
-            const double da = a ? 1 : -1, db = b ? 1 : -1;
-            value = fa * fb;
-            grad = {da * fb, fa * db};
-            mixed = da * db;
-          } else {
-            const double lambda[3] = {1 - r.x() - r.y(), r.x(), r.y()};
-            const Point2 dlambda[3] = {{-1, -1}, {1, 0}, {0, 1}};
-            value = lambda[i];
-            grad = dlambda[i];
-          }
-          if (flags & update_values) out.value(i, k) = value;
-          if (flags & update_gradients) {
-            const Point2 g = Jinv_t * grad;
-            out.dx(i, k) = g.x();
-            out.dy(i, k) = g.y();
-          }
-          if (flags & update_hessians) {
-            Eigen::Matrix2d H;
-            H << 0, mixed, mixed, 0;
-            const Eigen::Matrix2d Hx = Jinv_t * H * Jinv_t.transpose();
-            out.dxx(i, k) = Hx(0, 0);
-            out.dxy(i, k) = Hx(0, 1);
-            out.dyy(i, k) = Hx(1, 1);
-          }
-        }
+  struct Core {
+    using Jet = GeometryJet;
+    static constexpr bool identity = false;  // planar cores state their extraction: here I
+    const AffineLagrangeSpace& space;
+
+    int kind(int e) const { return static_cast<int>(space.elements_.at(e).shape); }
+    int tabulate(int kind, const std::vector<Point2>& points, int /*order*/, LocalTables& t) const {
+      bernstein_tables(static_cast<CellShape>(kind), 1, points, t);
+      return 2;
+    }
+    const std::vector<int>& active(int e) const { return space.elements_.at(e).dofs; }
+    Extraction extraction(int e) const { return extraction_view(space.identity_[kind(e)]); }
+    void map(int e, const QuadratureRule& rule, const LocalTables& /*t*/, int /*order*/, std::vector<Jet>& jets) const {
+      const AffineElement& el = space.elements_.at(e);
+      jets.resize(rule.size());
+      for (int k = 0; k < rule.size(); ++k) {
+        jets[k].x = el.origin + el.J * rule.points[k];
+        jets[k].jacobian = el.J;
       }
     }
-
-   private:
-    const AffineLagrangeSpace& space_;
   };
 
-  std::unique_ptr<Evaluator> make_evaluator() const override { return std::make_unique<AffineEvaluator>(*this); }
+  std::unique_ptr<Evaluator> make_evaluator() const override {
+    return std::make_unique<ExtractedEvaluator<Core>>(Core{*this});
+  }
   void element_dofs(int element, std::vector<int>& out) const override { out = elements_.at(element).dofs; }
   // The writer never integrates: these two throw so a test would notice if it started to.
   RulePtr quadrature(int, int) const override { throw std::logic_error("quadrature not used by the writer"); }
@@ -147,6 +127,7 @@ class AffineLagrangeSpace : public Space {
  private:
   std::vector<AffineElement> elements_;
   std::vector<Point2> nodes_;
+  Eigen::SparseMatrix<double> identity_[2];  // C_e of a quadrilateral (4 x 4) and a triangle (3 x 3)
 };
 
 double linear(const Point2& p) { return 1 + 2 * p.x() + 3 * p.y(); }

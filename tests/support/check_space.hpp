@@ -9,7 +9,7 @@
 ///    (∇²N J = ∂∇N/∂ξ in the plane; on surfaces the covariant Hessian, H J = P ∂∇_ΓN/∂ξ);
 ///  - jumps of values and of gradients across interior edges (Space::interior_edges());
 ///  - quadrature exactness of quadrature(e, d) on the monomials ξ^a η^b of degree ≤ d;
-///  - Evaluator::evaluate_function (a space's own contraction, or the default) against the
+///  - Evaluator::evaluate_function (each evaluator contracts the coefficients its own way) against the
 ///    contraction of evaluate's arrays with the same coefficients: values, gradients, Hessians;
 ///  - evaluator vs extraction: a space with an evaluator specialisation (FastEvaluator,
 ///    spaces/element_core.hpp) against the generic evaluator on its explicit core, every array of

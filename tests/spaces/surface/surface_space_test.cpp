@@ -46,11 +46,13 @@ TEST(SurfaceSpace, SurfaceGradientOfALinearFunctionIsTheProjectedGradient) {
     PointValues pv = ev.values();
     const int q = pv.num_points();
     Eigen::MatrixXd dxi(1, q), deta(1, q);
+    std::vector<SurfaceJet> jets;
     for (int k = 0; k < q; ++k) {
       dxi(0, k) = a.dot(pv.jacobian3[k].col(0));
       deta(0, k) = a.dot(pv.jacobian3[k].col(1));
+      jets.push_back(surface_jet(pv.x3.col(k), pv.jacobian3[k]));
     }
-    complete_surface_gradients(dxi, deta, pv);
+    complete_surface_gradients(jets, dxi, deta, pv);
     for (int k = 0; k < q; ++k) {
       const Eigen::Vector3d n = pv.jacobian3[k].col(0).cross(pv.jacobian3[k].col(1)).normalized();
       const Eigen::Vector3d expected = a - a.dot(n) * n;

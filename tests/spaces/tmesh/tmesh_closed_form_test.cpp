@@ -33,7 +33,7 @@ TEST(TMeshClosedForm, MatchesTheQuadratureMatrices) {
       for (int e = 0; e < space.num_elements(); ++e) {
         ev.reinit(e, *space.quadrature(e, 2 * space.degree() + 1));
         MatrixXld quadrature, closed;
-        element_matrix_extended(form, ev, quadrature);
+        Form(form)->element_matrix(ev, quadrature);
         ASSERT_TRUE(space.closed_forms()->element_matrix(e, form, closed));
         ASSERT_EQ(closed.rows(), quadrature.rows());
         ASSERT_EQ(closed.cols(), quadrature.cols());
@@ -62,7 +62,7 @@ TEST(TMeshClosedForm, DoubleDoubleMatchesTheQuadratureAndLongDoubleMatrices) {
       for (int e = 0; e < space.num_elements(); ++e) {
         ev.reinit(e, *space.quadrature(e, 2 * space.degree() + 1));
         DoubleDoubleMatrix quadrature, closed;
-        element_matrix_double_double(form, ev, quadrature);
+        Form(form)->element_matrix(ev, quadrature);
         ASSERT_TRUE(space.closed_forms()->element_matrix(e, form, closed));
         MatrixXld extended;
         ASSERT_TRUE(space.closed_forms()->element_matrix(e, form, extended));
@@ -116,7 +116,7 @@ TEST(TMeshClosedForm, FineCellsNeedFewerExtraPointsAndStayExact) {
     for (int e = 0; e < space.num_elements(); e += 97) {
       ev.reinit(e, *space.quadrature(e, degree));
       MatrixXld quadrature, closed;
-      element_matrix_extended(form, ev, quadrature);
+      Form(form)->element_matrix(ev, quadrature);
       ASSERT_TRUE(space.closed_forms()->element_matrix(e, form, closed));
       worst = std::max(worst, static_cast<double>((closed - quadrature).cwiseAbs().maxCoeff() / quadrature.cwiseAbs().maxCoeff()));
     }

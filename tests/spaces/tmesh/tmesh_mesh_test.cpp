@@ -4,7 +4,7 @@
 
 #include <numbers>
 
-#include "spaces/tmesh/brute_force_dimension.hpp"
+#include "tests/spaces/tmesh/brute_force_dimension.hpp"
 #include "spaces/tmesh/tmesh.hpp"
 
 using namespace iga;

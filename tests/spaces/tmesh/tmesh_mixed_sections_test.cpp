@@ -11,7 +11,7 @@
 
 #include "config/errors.hpp"
 #include "solver/solve_problem.hpp"
-#include "spaces/tmesh/brute_force_dimension.hpp"
+#include "tests/spaces/tmesh/brute_force_dimension.hpp"
 #include "spaces/tmesh/tmesh_space.hpp"
 #include "tests/support/test_support.hpp"
 

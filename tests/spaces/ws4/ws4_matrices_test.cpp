@@ -17,7 +17,7 @@ namespace iga::ws4 {
 namespace {
 
 TEST(Ws4Matrices, ReferenceNumbersOfTheNotes) {
-  const Ws4ReferenceMatrices& r = Ws4ReferenceMatrices::get();
+  const ReferenceIntegrals<Eigen::MatrixXd>& r = ws4_reference_integrals();
   const Eigen::MatrixXd lap = r.grad[0][0] + r.grad[1][1];
   EXPECT_NEAR(lap(0, 0), 4.0 / 7, 1e-13);
   EXPECT_NEAR(r.mass(0, 0), 1.0 / 1440, 1e-16);
@@ -41,12 +41,12 @@ TEST(Ws4Matrices, ClosedFormEqualsQuadratureOnPerturbedTriangles) {
   mesh.move_vertex(4, Point2(0.57, 0.43));  // the centre vertex: all 8 triangles distorted
   const Ws4Space space(mesh);
   for (BilinearForm form : {BilinearForm::mass, BilinearForm::laplace, BilinearForm::bilaplace, BilinearForm::hessian}) {
-    ElementValues ev(space, flags_for(form));
+    ElementValues ev(space, Form(form)->flags());
     for (int t = 0; t < space.num_elements(); ++t) {
       Eigen::MatrixXd closed, quad;
       ASSERT_TRUE(space.closed_forms()->element_matrix(t, form, closed));
       ev.reinit(t, *space.quadrature(t, 8));
-      element_matrix(form, ev, quad);
+      Form(form)->element_matrix(ev, quad);
       EXPECT_LT((closed - quad).cwiseAbs().maxCoeff(), 1e-11 * quad.cwiseAbs().maxCoeff())
           << "form " << static_cast<int>(form) << " element " << t;
     }
@@ -57,7 +57,7 @@ TEST(Ws4Matrices, ClosedFormEqualsQuadratureOnPerturbedTriangles) {
 TEST(Ws4Matrices, DoubleDoubleReferenceMatricesAnnihilateConstantsBeyondLongDouble) {
   // Σ_i B_i = 1: the row sums of every derivative matrix vanish exactly. Long double sums leave
   // ≈ 1e-19 of the entries; the double-double ones must be far below (here: 1e-25 relative).
-  const Ws4ReferenceMatricesDoubleDouble& r = Ws4ReferenceMatricesDoubleDouble::get();
+  const ReferenceIntegrals<DoubleDoubleMatrix>& r = ws4_reference_integrals_double_double(BilinearForm::hessian);
   for (int p = 0; p < 3; ++p)
     for (int q = 0; q < 3; ++q) {
       const DoubleDoubleMatrix& m = r.hess[p][q];
@@ -68,7 +68,7 @@ TEST(Ws4Matrices, DoubleDoubleReferenceMatricesAnnihilateConstantsBeyondLongDoub
       }
     }
   // And they agree with the long double ones to those ones' accuracy.
-  const Ws4ReferenceMatricesExtended& e = Ws4ReferenceMatricesExtended::get();
+  const ReferenceIntegrals<LongDoubleMatrix>& e = ws4_reference_integrals_extended();
   for (int i = 0; i < 51; ++i)
     for (int j = 0; j < 51; ++j)
       EXPECT_NEAR(static_cast<double>(e.hess[0][0](i, j) - r.hess[0][0](i, j).to_long_double()), 0.0,
@@ -81,11 +81,11 @@ TEST(Ws4Matrices, DoubleDoubleTablesLeaveLongDoubleArithmeticWorking) {
   // load after it then gives NaN (seen as NaN long double element matrices in the next test).
   // Whether that happens depends on the compiler's register allocation, so this guards the build
   // flag (-mno-mmx) rather than a line of code.
-  Ws4ReferenceMatricesDoubleDouble::get();
+  ws4_reference_integrals_double_double(BilinearForm::hessian);
   volatile long double one = 1;
   const long double sum = one + one + one + one + one + one + one + one + one;
   EXPECT_EQ(sum, 9.0L);
-  const Ws4ReferenceMatricesExtended& e = Ws4ReferenceMatricesExtended::get();
+  const ReferenceIntegrals<LongDoubleMatrix>& e = ws4_reference_integrals_extended();
   EXPECT_TRUE(e.hess[0][0].allFinite());
 }
 

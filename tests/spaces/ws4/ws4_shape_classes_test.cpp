@@ -51,7 +51,8 @@ TEST(Ws4ShapeClasses, CachedDoubleDoubleElementMatricesAreTheElementsOwn) {
     for (int t = 0; t < space.num_elements(); ++t) {
       DoubleDoubleMatrix cached, own;
       ASSERT_TRUE(space.closed_forms()->element_matrix(t, form, cached));
-      ws4_element_matrix_double_double(form, space.jacobian(t), ws4_exact_extraction(space.dof_geometry(t)), own);
+      affine_element_matrix(form, space.jacobian(t), ws4_reference_integrals_double_double(form),
+                            ws4_exact_extraction(space.dof_geometry(t)), own);
       const double scale = own.hi.cwiseAbs().maxCoeff();
       for (int j = 0; j < 51; ++j)
         for (int i = 0; i < 51; ++i)
@@ -59,7 +60,8 @@ TEST(Ws4ShapeClasses, CachedDoubleDoubleElementMatricesAreTheElementsOwn) {
       // Every element of a class gets exactly the matrix of the class.
       const int rep = space.shape_classes().representative[space.shape_classes().of_element[t]];
       DoubleDoubleMatrix of_rep;
-      ws4_element_matrix_double_double(form, space.jacobian(rep), space.extraction(rep), of_rep);
+      affine_element_matrix(form, space.jacobian(rep), ws4_reference_integrals_double_double(form), space.extraction(rep),
+                            of_rep);
       EXPECT_EQ(cached.hi, of_rep.hi) << t;
       EXPECT_EQ(cached.lo, of_rep.lo) << t;
     }
