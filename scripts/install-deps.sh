@@ -16,6 +16,7 @@ packages=(
   pybind11-dev python3-dev python3-numpy   # the Python module iga_run (python/), for Debian's /usr/bin/python3
   python3-scipy python3-matplotlib          # its tests (Matrix Market read-back) and python/examples/
   petsc-dev              # PETSc with OpenMPI, MUMPS and hypre: solver.type petsc, mpirun -np N (solver/petsc_*)
+  libslepc-real-dev      # SLEPc 3.18 (matches PETSc 3.18): eigenproblems under solver.type petsc (solver/slepc_eigen_backend.cpp)
   libopenblas0-pthread   # optimized BLAS/LAPACK for CHOLMOD's supernodal factorization (reference BLAS is ~5x slower)
   xvfb xauth             # an X server for ctest vtk_render (Debian's VTK renders off-screen only through X)
   clang libclang-rt-14-dev libomp-14-dev   # scripts/fuzz.sh: libFuzzer and the sanitizers for clang, OpenMP for clang

@@ -14,6 +14,7 @@
 #include "solver/resource_checks.hpp"
 #include "config/errors.hpp"
 #include "config/progress.hpp"
+#include "solver/slepc_eigen_backend.hpp"
 #include "solver/solve_problem.hpp"
 #include "spaces/space_factory.hpp"
 
@@ -143,9 +144,16 @@ StudySettings parse_study(const ConfigNode& root, const std::string& config_path
   // Boundary part names; a surface's boundary against its Dirichlet data (the pipeline's own check).
   make_formulation(*coarse, s.problem)->check();
   if (s.problem.eigen) {
-    if (s.solver == SolverKind::petsc)
-      root["solver"].fail("eigenproblems (problem.eigen) are solved serially for now (Spectra + CHOLMOD): remove "
-                          "solver.type: petsc");
+    if (s.solver == SolverKind::petsc) {
+      if (!slepc_available())
+        root["solver"]["type"].fail("eigenproblems under solver.type: petsc need SLEPc, and this iga-run was built "
+                                    "without it (install libslepc-real-dev and rebuild); the serial eigensolver "
+                                    "needs no solver.type");
+      // The eigensolve factors K − σM with MUMPS (shift-and-invert): no Krylov solve to choose.
+      for (const char* key : {"ksp", "pc", "rtol", "max_iterations"})
+        if (const auto k = root["solver"].find(key))
+          k->fail("not used by the eigensolver (SLEPc shift-and-invert with a MUMPS Cholesky factor): remove it");
+    }
     if (s.adaptive) refinement->fail("adaptive refinement of eigenproblems (problem.eigen) is not supported yet");
   }
   if (s.problem.pde == Pde::biharmonic && coarse->continuity() < 1)
