@@ -19,6 +19,8 @@
 #include "geometry/geometry_study.hpp"
 #include "output/comparison.hpp"
 #include "output/convergence_plot.hpp"
+#include "output/eigen_plot.hpp"
+#include "output/eigen_report.hpp"
 #include "output/geometry_study_outputs.hpp"
 #include "output/parallel_vtk.hpp"
 #include "config/errors.hpp"
@@ -90,11 +92,30 @@ StudyResult run_into(const StudySettings& settings, const std::string& config_pa
   progress("writing tables and plot");
   write_convergence_csv(result.rows, (dir / "convergence.csv").string(), result.adaptive,
                         functional_names(settings));
-  if (settings.write_plot) plot_convergence(result.rows, result.expected, plot_title(settings, result),
+  const std::vector<EigenRow> eigen =
+      settings.problem.eigen ? eigen_rows(result.eigen, settings.problem.eigen->exact) : std::vector<EigenRow>{};
+  // Eigenvalue errors fall like twice the energy-norm order (docs/eigen.md).
+  const int eigen_rate = 2 * (settings.problem.pde == Pde::biharmonic ? result.expected.h2 : result.expected.h1);
+  if (settings.problem.eigen) {
+    write_eigenvalues_csv(eigen, (dir / "eigenvalues.csv").string());
+    if (settings.write_plot)
+      plot_eigen_errors(eigen, eigen_rate, plot_title(settings, result), (dir / "eigenvalues.svg").string());
+    write_spectrum_files(*settings.problem.eigen, result.eigen, dir.string(), plot_title(settings, result),
+                         settings.write_plot);
+  }
+  if (settings.write_plot && !settings.problem.eigen) plot_convergence(result.rows, result.expected, plot_title(settings, result),
                                             (dir / "convergence.svg").string(), result.adaptive);
   result.total_seconds = std::chrono::duration<double>(Clock::now() - t_start).count();
   write_summary_json(settings, result, (dir / "summary.json").string());
 
+  if (settings.problem.eigen) {
+    std::cout << result.space_type << " / " << to_string(settings.problem.pde) << " eigenvalues — " << config_path
+              << '\n'
+              << format_eigen_table(eigen);
+    if (!settings.problem.eigen->exact.empty())
+      std::cout << "expected rate for smooth eigenfunctions: twice the energy-norm order, h^" << eigen_rate << '\n';
+    return result;
+  }
   std::cout << result.space_type << " / " << to_string(settings.problem.pde) << " — " << config_path << '\n'
             << format_convergence_table(result.rows, result.adaptive, functional_names(settings));
   if (!has_errors(result.rows)) {
@@ -179,7 +200,15 @@ int run_configs(const std::vector<std::string>& paths, const std::string& output
   const std::filesystem::path dir(staged.path());
   write_comparison_csv(compared, (dir / "comparison.csv").string());
   std::string table;
-  if (const auto norm = compared_norm(compared)) {
+  if (const auto& eigen = studies.front().second.problem.eigen) {
+    // Eigenproblems: the largest relative eigenvalue error of each level against DOFs, per space.
+    std::vector<std::pair<std::string, std::vector<EigenRow>>> spaces;
+    for (const ComparedStudy& c : compared) spaces.emplace_back(c.label, eigen_rows(c.result.eigen, eigen->exact));
+    const std::string name = std::filesystem::path(paths.front()).stem().string();
+    plot_eigen_comparison(spaces, "eigenvalues — " + name, (dir / "comparison.svg").string());
+    table = format_eigen_comparison(spaces);
+    std::ofstream(dir / "comparison.txt") << table;
+  } else if (const auto norm = compared_norm(compared)) {
     const std::string name = std::filesystem::path(paths.front()).stem().string();
     plot_comparison(compared, *norm, to_string(studies.front().second.problem.pde) + " — " + name,
                     (dir / "comparison.svg").string());

@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "output/eigen_report.hpp"
 #include "output/surface_report.hpp"
 
 namespace iga {
@@ -349,6 +350,10 @@ std::string summary_json(const StudySettings& settings, const StudyResult& resul
   j["total_seconds"] = result.total_seconds > 0 ? result.total_seconds : total;
   // Text was checked to be UTF-8 where it was read; a path from the command line (a file name is
   // bytes) may still not be: replaced, never an exception after the study.
+  if (settings.problem.eigen) {
+    j["problem"]["eigen"] = {{"count", settings.problem.eigen->count}, {"spectrum", settings.problem.eigen->spectrum}};
+    j["eigenvalues"] = eigen_json(eigen_rows(result.eigen, settings.problem.eigen->exact));
+  }
   return j.dump(2, ' ', false, nlohmann::json::error_handler_t::replace);
 }
 

@@ -61,6 +61,8 @@ StudyResult run_study_with_vtk(const StudySettings& settings, const std::string&
       for (int e : sol.marked) marked.at(e) = 1.0;
       opt.element_fields.emplace_back("marked", std::move(marked));
     }
+    for (int j = 0; j < sol.modes.cols(); ++j)  // eigenproblems: every mode (the first is also u)
+      opt.point_functions.emplace_back("mode_" + std::to_string(j + 1), sol.modes.col(j));
     const bool pieces = parallel_vtk_output();
     const std::string name = "solution_" + std::to_string(level) + (pieces ? ".pvtu" : ".vtu");
     const bool lagrange = pieces ? write_solution_pvtu(space, sol.coefficients, opt, (dir / name).string())

@@ -141,6 +141,12 @@ bool write_solution_vtu(const Space& space, const Eigen::VectorXd& coefficients,
   vtkSmartPointer<vtkFloatArray> laplace_u, u_exact, error;
   if (options.laplacian) laplace_u = make_field("laplace_u", 1, num_points);
   if (has_exact) u_exact = make_field("u_exact", 1, num_points), error = make_field("error", 1, num_points);
+  std::vector<vtkSmartPointer<vtkFloatArray>> further;
+  for (const auto& [name, c] : options.point_functions) {
+    if (c.size() != space.dimension())
+      throw std::invalid_argument("write_solution_vtu: field " + name + " has the wrong length");
+    further.push_back(make_field(name, 1, num_points));
+  }
   std::vector<double> element_l2(has_exact ? num_elements : 0), element_h1(has_gradient ? num_elements : 0),
       element_h2(has_hessian ? num_elements : 0);
   const unsigned flags = update_values | update_gradients | (options.laplacian || has_hessian ? update_hessians : 0u);
@@ -154,9 +160,15 @@ bool write_solution_vtu(const Space& space, const Eigen::VectorXd& coefficients,
       if (!evaluator) continue;
       try {
         progress_tick();
-        evaluator->evaluate_function(e, *drawing.rule[e], coefficients, flags, geometry, uh);
         const std::int64_t first = drawing.offset[e];
         const int q = static_cast<int>(drawing.offset[e + 1] - first);
+        for (std::size_t j = 0; j < further.size(); ++j) {
+          const Eigen::VectorXd& c = options.point_functions[j].second;
+          evaluator->evaluate_function(e, *drawing.rule[e], c, update_values, geometry, uh);
+          for (int k = 0; k < q; ++k)
+            if (owner[first + k]) further[j]->SetValue(merged_id[first + k], static_cast<float>(uh.value(k)));
+        }
+        evaluator->evaluate_function(e, *drawing.rule[e], coefficients, flags, geometry, uh);
         const bool ambient = geometry.x3.cols() == q;
         // Sampled errors of the element: the mean over its drawn points times its area (a map of
         // where the error is; the norms of the convergence table integrate with the error rule).
@@ -233,6 +245,7 @@ bool write_solution_vtu(const Space& space, const Eigen::VectorXd& coefficients,
     grid->GetPointData()->AddArray(normals);  // not the active normals: Warp By Scalar would warp along them
   if (laplace_u) grid->GetPointData()->AddArray(laplace_u);
   if (u_exact) grid->GetPointData()->AddArray(u_exact), grid->GetPointData()->AddArray(error);
+  for (const auto& f : further) grid->GetPointData()->AddArray(f);
 
   auto cell_field = [&](const std::string& name, const std::vector<double>& per_element) {
     auto a = make_field(name, 1, num_cells);

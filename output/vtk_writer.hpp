@@ -43,6 +43,9 @@ struct VtkFieldOptions {
   bool laplacian = false;
   /// Further cell fields, one value per element (e.g. the estimator η_K, marked elements).
   std::vector<std::pair<std::string, std::vector<double>>> element_fields;
+  /// Further functions of the space (coefficient vectors) as point fields of their values, e.g.
+  /// the eigenmodes mode_1, mode_2, ... of an eigenproblem.
+  std::vector<std::pair<std::string, Eigen::VectorXd>> point_functions;
   VtkCompression compression = VtkCompression::lz4;
 };
 

@@ -13,6 +13,7 @@ run_packages=(
   libeigen3-dev libsuitesparse-dev libyaml-cpp-dev libvtk9-dev
   libginac-dev libmuparser-dev libplplot-dev plplot-driver-cairo
   libcli11-dev nlohmann-json3-dev
+  libspectra-dev         # Spectra, header-only Lanczos/Arnoldi: the eigensolver of problem.eigen (solver/eigen_solver.cpp)
   libgmsh-dev            # Gmsh SDK: reading .msh, meshing .geo domains and polygons (mesh/)
   libseccomp-dev         # system-call filter of the Gmsh worker process (mesh/worker_sandbox.cpp)
   libtinyxml2-dev        # G+Smo XML geometry files (mesh/gismo_xml.cpp)
@@ -25,6 +26,7 @@ test_packages=(
   pybind11-dev python3-dev python3-numpy   # the Python module iga_run (python/), for Debian's /usr/bin/python3
   python3-scipy python3-matplotlib          # its tests (Matrix Market read-back) and python/examples/
   petsc-dev              # PETSc with OpenMPI, MUMPS and hypre: solver.type petsc, mpirun -np N (solver/petsc_*)
+  libslepc-real-dev      # SLEPc 3.18 (matches PETSc 3.18): eigenproblems under solver.type petsc (solver/slepc_eigen_backend.cpp)
   xvfb xauth             # an X server for ctest vtk_render (Debian's VTK renders off-screen only through X)
   python3-vtk9           # scripts/render-gallery.py: VTK's Python bindings (docs/gallery.md, ctest render_gallery)
   clang libclang-rt-14-dev libomp-14-dev   # scripts/fuzz.sh: libFuzzer and the sanitizers for clang, OpenMP for clang

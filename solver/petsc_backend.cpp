@@ -19,40 +19,16 @@
 #include "assembly/element_subset_assembly.hpp"
 #include "assembly/sparsity.hpp"
 #include "solver/linear_solver.hpp"
+#include "solver/petsc_distribution.hpp"
 #include "solver/petsc_extended_residual.hpp"
 #include "solver/petsc_option_policy.hpp"
-#include "solver/petsc_partition.hpp"
 #include "solver/petsc_session.hpp"
 
 namespace iga {
 
 namespace {
 
-/// PETSc's message for the error it last raised ("Input string abc has no integer value").
-std::string petsc_message(PetscErrorCode code) {
-  const char* text = nullptr;
-  char* specific = nullptr;
-  PetscErrorMessage(code, &text, &specific);
-  if (specific && *specific) return specific;
-  return text ? text : "error " + std::to_string(code);
-}
-
-void check(PetscErrorCode code, const char* what) {
-  if (code != 0)
-    throw std::runtime_error(std::string("PETSc failed in ") + what + " (error " + std::to_string(code) +
-                             "): " + petsc_message(code));
-}
-
-/// While alive, a PETSc error returns its code without PETSc printing its "[0]PETSC ERROR" banner:
-/// the calls made meanwhile (setting up, solving, destroying) may fail on option values, and
-/// iga-run reports every failure itself, in one line with PETSc's message.
-class QuietPetscErrors {
- public:
-  QuietPetscErrors() { PetscPushErrorHandler(PetscReturnErrorHandler, nullptr); }
-  ~QuietPetscErrors() { PetscPopErrorHandler(); }
-  QuietPetscErrors(const QuietPetscErrors&) = delete;
-  QuietPetscErrors& operator=(const QuietPetscErrors&) = delete;
-};
+const auto check = petsc_check;
 
 /// An error PETSc raised on the options: named at solver.options when the config gave some (the
 /// command line and PETSC_OPTIONS may have set the option instead; both are named).
@@ -82,24 +58,6 @@ void ksp_step(const std::function<PetscErrorCode()>& step, const char* name, con
 
 void solve_quietly(KSP ksp, Vec b, Vec x, const PetscSettings& s, const std::string& method) {
   ksp_step([&] { return KSPSolve(ksp, b, x); }, "KSPSolve", "solving with " + method, "failed solving with " + method, s);
-}
-
-/// The unknowns an element with functions `dofs` couples (sorted, unique), and T_e with
-/// u|element = values|element + T_e u_unknowns: the rows `dofs` of free_basis (boundary_conditions.hpp)
-/// on those columns.
-using FreeBasis = Eigen::SparseMatrix<double, Eigen::RowMajor>;
-void element_unknowns(const FreeBasis& T, const std::vector<int>& dofs, std::vector<int>& unknowns,
-                      Eigen::MatrixXd* T_e = nullptr) {
-  unknowns.clear();
-  for (int d : dofs)
-    for (FreeBasis::InnerIterator it(T, d); it; ++it) unknowns.push_back(static_cast<int>(it.col()));
-  std::sort(unknowns.begin(), unknowns.end());
-  unknowns.erase(std::unique(unknowns.begin(), unknowns.end()), unknowns.end());
-  if (!T_e) return;
-  T_e->setZero(static_cast<int>(dofs.size()), static_cast<int>(unknowns.size()));
-  for (int i = 0; i < static_cast<int>(dofs.size()); ++i)
-    for (FreeBasis::InnerIterator it(T, dofs[i]); it; ++it)
-      (*T_e)(i, std::lower_bound(unknowns.begin(), unknowns.end(), it.col()) - unknowns.begin()) = it.value();
 }
 
 /// hypre keeps a global error flag that its destroy functions return: after a set-up it refused
@@ -271,119 +229,20 @@ int refine_solution(PetscObjects& p, ExtendedResidual& residual, const PetscSett
 class PetscBackend final : public LinearBackend {
  public:
   PetscBackend(const Space& space, const PetscSettings& settings, const ProgressSink& say)
-      : space_(space), settings_(settings), rank_(mpi_rank()), ranks_(mpi_size()) {
-    on_every_rank([&] {
-      if (say)
-        say("partitioning " + std::to_string(space.num_elements()) + " elements over " + std::to_string(ranks_) +
-            " rank(s)");
-      owner_ = partition_elements(element_centres(space), ranks_);
-      for (int e = 0; e < space.num_elements(); ++e)
-        if (owner_[e] == rank_) mine_.push_back(e);
-    });
-  }
+      : settings_(settings), d_(space, say) {}
 
-  WorkShare share() const override {
-    return {&mine_, [](double part) {
-              MPI_Allreduce(MPI_IN_PLACE, &part, 1, MPI_DOUBLE, MPI_SUM, PETSC_COMM_WORLD);
-              return part;
-            }};
-  }
+  WorkShare share() const override { return d_.share(); }
   void locally(const std::function<void()>& work) const override { on_every_rank(work); }
   void assemble(const Formulation& f, const Constraints& c, const Eigen::VectorXd& load,
                 const ProgressSink& say) override;
   Eigen::VectorXd solve(SolveReport& report, const ProgressSink& say) override;
 
  private:
-  /// The distributed numbering of the unknowns under the conditions `c` (layout_, couplings_,
-  /// basis_), and with `pattern` the couplings of this rank's elements' functions. Collective.
-  void lay_out(const Constraints& c, SparseMatrix* pattern, const ProgressSink& say);
-  /// Create `A`, the distributed matrix Σ terms on the unknowns of lay_out (Tᵀ A T in double),
-  /// each element matrix also handed to `extended` in double-double when given; the caller owns
-  /// `A` (and destroys it on every path). Collective. An eigensolver (SLEPc) asks it for the
-  /// stiffness f.terms() and for a mass term on the same layout.
-  void matrix(const Formulation& f, const std::vector<FormTerm>& terms, ExtendedResidual* extended, Mat& A) const;
-
-  const Space& space_;
   const PetscSettings& settings_;
-  const int rank_, ranks_;
-  std::vector<int> owner_, mine_;
-  const Constraints* constraints_ = nullptr;
-  FreeBasis basis_;
-  UnknownLayout layout_;
-  RowCouplings couplings_;
+  PetscDistribution d_;
   PetscObjects p_;
   std::unique_ptr<ExtendedResidual> extended_;
 };
-
-void PetscBackend::lay_out(const Constraints& c, SparseMatrix* pattern, const ProgressSink& say) {
-  constraints_ = &c;
-  // Local work first (every rank the same, apart from its elements): an error found here is
-  // raised on all ranks together before any collective call.
-  on_every_rank([&] {
-    basis_ = free_basis(c);
-    const ElementDofTable table = collect_element_dofs(space_);
-    std::vector<int> unknown_offsets{0}, unknowns, dofs, local;
-    ElementDofTable my_table;
-    my_table.offsets.push_back(0);
-    for (int e = 0; e < table.num_elements(); ++e) {
-      dofs.assign(table.begin(e), table.begin(e + 1));
-      element_unknowns(basis_, dofs, local);
-      unknowns.insert(unknowns.end(), local.begin(), local.end());
-      unknown_offsets.push_back(static_cast<int>(unknowns.size()));
-      if (pattern && owner_[e] == rank_) {
-        my_table.dofs.insert(my_table.dofs.end(), dofs.begin(), dofs.end());
-        my_table.offsets.push_back(static_cast<int>(my_table.dofs.size()));
-      }
-    }
-    layout_ = layout_unknowns(unknown_offsets, unknowns, owner_, static_cast<int>(c.free.size()), ranks_);
-    couplings_ = row_couplings(unknown_offsets, unknowns, layout_, rank_);
-    if (pattern) *pattern = sparsity_pattern(my_table, space_.dimension());
-  });
-  long long totals[2] = {couplings_.off_rank, couplings_.total};
-  MPI_Allreduce(MPI_IN_PLACE, totals, 2, MPI_LONG_LONG, MPI_SUM, PETSC_COMM_WORLD);
-  if (ranks_ > 1 && say) {
-    char share[32];
-    std::snprintf(share, sizeof share, "%.3g %%", 100.0 * static_cast<double>(totals[0]) / std::max(1LL, totals[1]));
-    say("matrix couplings between ranks: " + std::to_string(totals[0]) + " of " + std::to_string(totals[1]) + " (" +
-        share + ")");
-  }
-}
-
-void PetscBackend::matrix(const Formulation& f, const std::vector<FormTerm>& terms, ExtendedResidual* extended,
-                          Mat& A) const {
-  const PetscInt n_global = static_cast<PetscInt>(constraints_->free.size());
-  const PetscInt n_local = layout_.first_row[rank_ + 1] - layout_.first_row[rank_];
-  check(MatCreate(PETSC_COMM_WORLD, &A), "MatCreate");
-  check(MatSetSizes(A, n_local, n_local, n_global, n_global), "MatSetSizes");
-  check(MatSetType(A, MATAIJ), "MatSetType");
-  const std::vector<PetscInt> d_nnz(couplings_.on_rank_columns.begin(), couplings_.on_rank_columns.end());
-  const std::vector<PetscInt> o_nnz(couplings_.off_rank_columns.begin(), couplings_.off_rank_columns.end());
-  check(MatSeqAIJSetPreallocation(A, 0, d_nnz.data()), "MatSeqAIJSetPreallocation");
-  check(MatMPIAIJSetPreallocation(A, 0, d_nnz.data(), 0, o_nnz.data()), "MatMPIAIJSetPreallocation");
-  check(MatSetOption(A, MAT_SYMMETRIC, PETSC_TRUE), "MatSetOption");
-  check(MatSetOption(A, MAT_SPD, PETSC_TRUE), "MatSetOption");
-  on_every_rank([&] {
-    std::vector<int> local;
-    std::vector<PetscInt> rows;
-    Eigen::MatrixXd T;
-    Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> K;
-    // Tᵀ A T in double for the factorization; A itself, in double-double, for the residuals.
-    const auto add_element = [&](int, const std::vector<int>& dofs, const DoubleDoubleMatrix& A_e) {
-      if (extended) extended->add(dofs, A_e);
-      element_unknowns(basis_, dofs, local, &T);
-      if (local.empty()) return;
-      // Coefficient-wise products: Eigen's blocked ones would start a thread team per element.
-      K = T.transpose().lazyProduct(A_e.hi.lazyProduct(T));
-      rows.resize(local.size());
-      for (std::size_t i = 0; i < local.size(); ++i) rows[i] = layout_.global[local[i]];
-      const PetscInt m = static_cast<PetscInt>(rows.size());
-      check(MatSetValues(A, m, rows.data(), m, rows.data(), K.data(), ADD_VALUES), "MatSetValues");
-    };
-    for_each_element_matrix(space_, mine_, terms, f.quadrature_degree(), add_element);
-  });
-  check(MatAssemblyBegin(A, MAT_FINAL_ASSEMBLY), "MatAssemblyBegin");
-  check(MatAssemblyEnd(A, MAT_FINAL_ASSEMBLY), "MatAssemblyEnd");
-}
 
 void PetscBackend::assemble(const Formulation& f, const Constraints& c, const Eigen::VectorXd& load,
                             const ProgressSink& say) {
@@ -392,11 +251,12 @@ void PetscBackend::assemble(const Formulation& f, const Constraints& c, const Ei
   // matrix. Krylov solves stop at their tolerance anyway (the right-hand side is exact for both).
   const bool refine = settings_.pc == "mumps" || settings_.pc == "cholesky";
   SparseMatrix pattern;
-  lay_out(c, refine ? &pattern : nullptr, say);
-  extended_ = std::make_unique<ExtendedResidual>(c, layout_.global, layout_.first_row, rank_, std::move(pattern));
+  d_.lay_out(c, refine ? &pattern : nullptr, say);
+  extended_ = std::make_unique<ExtendedResidual>(c, d_.layout().global, d_.layout().first_row, d_.rank(),
+                                                 std::move(pattern));
   if (say) say("assembling (" + std::to_string(c.free.size()) + " unknowns, in extended precision)");
   on_every_rank([&] { extended_->add_load(load); });
-  matrix(f, f.terms(), extended_.get(), p_.A);
+  d_.matrix(f, f.terms(), extended_.get(), p_.A);
   check(MatCreateVecs(p_.A, &p_.x, &p_.b), "MatCreateVecs");
   // The right-hand side Tᵀ(b − A g), rounded once from the double-double sums over the ranks.
   set_owned(p_.b, extended_->owned_rows(nullptr));
@@ -411,7 +271,7 @@ Eigen::VectorXd PetscBackend::solve(SolveReport& report, const ProgressSink& say
   check(KSPSetOperators(p.ksp, p.A, p.A), "KSPSetOperators");
   // Every rank has the same options (the command line, PETSC_OPTIONS and ~/.petscrc reach all
   // ranks from rank 0), so an option PETSc refuses fails on all ranks together.
-  on_every_rank([&] { configure_ksp(p.ksp, settings_, ranks_); });
+  on_every_rank([&] { configure_ksp(p.ksp, settings_, d_.ranks()); });
   const std::string method = describe(p.ksp);
   if (say) say("solving with PETSc " + method);
   // Options PETSc reads only when it builds the preconditioner (a factorization package that
@@ -456,14 +316,12 @@ Eigen::VectorXd PetscBackend::solve(SolveReport& report, const ProgressSink& say
   report.method = "petsc " + method + ", " + std::to_string(its) + " iterations" +
                   (report.refinement_steps > 0 ? ", " + std::to_string(report.refinement_steps) + " refinement steps"
                                                : std::string()) +
-                  (ranks_ > 1 ? ", " + std::to_string(ranks_) + " ranks" : "");
+                  (d_.ranks() > 1 ? ", " + std::to_string(d_.ranks()) + " ranks" : "");
 
   // Every rank gets the whole solution (the space, the outputs and the error integrals need it).
-  Eigen::VectorXd u_free(constraints_->free.size());
-  with_whole_solution(p, [&](const PetscScalar* all) {
-    for (Eigen::Index k = 0; k < u_free.size(); ++k) u_free(k) = all[layout_.global[k]];
-  });
-  return expand_solution(u_free, *constraints_);
+  Eigen::VectorXd u_free;
+  with_whole_solution(p, [&](const PetscScalar* all) { u_free = d_.free_values(all); });
+  return expand_solution(u_free, d_.constraints());
 }
 
 }  // namespace

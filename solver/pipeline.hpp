@@ -50,6 +50,11 @@ struct DiscreteSolution {
   /// Adaptive studies: the residual indicator η_K per element and the elements marked for refinement.
   std::vector<double> indicators;
   std::vector<int> marked;
+  /// Eigenproblems (solver/eigen_pipeline.hpp): the eigenvalues, ascending, and the M-normalised
+  /// modes, one per column; `coefficients` is the first.
+  Eigen::VectorXd eigenvalues;
+  Eigen::MatrixXd modes;
+  Eigen::VectorXd spectrum;  ///< eigen.spectrum: every eigenvalue (small problems; else empty)
 };
 
 /// The assemble step alone: load, essential conditions (checked finite, InputError naming the

@@ -11,6 +11,7 @@
 #include "assembly/integrators.hpp"
 #include "config/config_node.hpp"
 #include "config/expression.hpp"
+#include "solver/eigen_spec.hpp"
 
 namespace iga {
 
@@ -60,6 +61,9 @@ struct ProblemSpec {
   /// Surface problems: c in −Δ_Γu + c u = f or Δ_Γ²u + c u = f (laplace_beltrami with c = 0: the
   /// solution is fixed up to a constant; surface_biharmonic needs c > 0).
   double reaction = 1.0;
+  /// An eigenproblem (problem.eigen): the smallest eigenvalues of the operator under homogeneous
+  /// essential conditions; no source, no data, no exact solution.
+  std::optional<EigenSpec> eigen;
 
   /// u, ∇u, D²u of the exact solution as callables (empty members when there is none).
   ExactSolution exact_solution() const;
@@ -71,11 +75,11 @@ struct ProblemSpec {
 /// `boundary` lists parts as in the config ("all" first).
 ProblemSpec manufactured_problem(Pde pde, const SymbolicFunction& u, std::vector<BoundaryPart> boundary);
 
-/// Parse and validate the `problem:` section (keys pde, exact, source, boundary, data, form).
+/// Parse and validate the `problem:` section (keys pde, exact, source, boundary, data, form, eigen).
 ProblemSpec parse_problem(const ConfigNode& node);
 
-/// `problem:` with `pde: laplace_beltrami` or `surface_biharmonic` (keys pde, exact, source, reaction;
-/// expressions in x, y, z; boundary keys for laplace_beltrami only). With
+/// `problem:` with `pde: laplace_beltrami` or `surface_biharmonic` (keys pde, exact, source, reaction,
+/// eigen; expressions in x, y, z; boundary and boundary_value for laplace_beltrami only). With
 /// both exact and source, the source is used as given and exact measures the errors.
 ProblemSpec parse_surface_problem(const ConfigNode& node);
 

@@ -3,8 +3,10 @@
 #include <optional>
 
 #include "config/progress.hpp"
+#include "solver/eigen_pipeline.hpp"
 #include "solver/petsc_backend.hpp"
 #include "solver/petsc_session.hpp"
+#include "solver/slepc_eigen_backend.hpp"
 #include "solver/surface_problem.hpp"
 
 namespace iga {
@@ -43,14 +45,28 @@ LinearSystem assemble_linear_system(const Space& space, const ProblemSpec& probl
 DiscreteSolution solve_problem(const Space& space, const ProblemSpec& problem, SolverKind solver,
                                const ProgressSink& progress, const PetscSettings& petsc) {
   const std::unique_ptr<Formulation> f = make_formulation(space, problem);
+  // Under PETSc every rank runs the pipeline; rank 0 reports its progress.
+  const ProgressSink say = [&](const std::string& msg) {
+    if (progress && is_root_rank()) progress(msg);
+  };
+  if (problem.eigen) {
+    std::unique_ptr<EigenBackend> backend;
+    if (solver == SolverKind::petsc) backend = make_slepc_eigen_backend(space, say);
+    else backend = std::make_unique<SerialEigenBackend>();
+    EigenSolution e = solve_eigen_pipeline(*f, *backend, solver == SolverKind::petsc ? say : progress);
+    DiscreteSolution out;
+    out.result = e.result;
+    out.solve = {e.report.method, e.report.t_factorize, e.report.t_solve, e.report.max_residual, 0};
+    out.eigenvalues = e.modes.values;
+    out.spectrum = std::move(e.spectrum);
+    out.modes = std::move(e.modes.vectors);
+    out.coefficients = out.modes.col(0);
+    return out;
+  }
   if (solver != SolverKind::petsc) {
     SerialBackend backend(solver);
     return solve_pipeline(*f, backend, progress);
   }
-  // Every rank runs the pipeline; rank 0 reports its progress.
-  const ProgressSink say = [&](const std::string& msg) {
-    if (progress && is_root_rank()) progress(msg);
-  };
   const std::unique_ptr<LinearBackend> backend = make_petsc_backend(space, petsc, say);
   return solve_pipeline(*f, *backend, say);
 }

@@ -53,6 +53,8 @@ std::unique_ptr<Formulation> make_formulation(const Space& space, const ProblemS
 LinearSystem assemble_linear_system(const Space& space, const ProblemSpec& problem, const ProgressSink& progress = {});
 
 /// `progress`, when given, is told when each phase starts (assemble, factorize and solve, errors).
+/// With problem.eigen, the eigenproblem instead (eigen_pipeline.hpp): eigenvalues and modes, by
+/// Spectra serially and by SLEPc with SolverKind::petsc (slepc_eigen_backend.hpp).
 /// SolverKind::petsc solves with PETSc as `petsc` says (make_petsc_backend; collective over the ranks).
 DiscreteSolution solve_problem(const Space& space, const ProblemSpec& problem, SolverKind solver,
                                const ProgressSink& progress = {}, const PetscSettings& petsc = {});

@@ -14,6 +14,7 @@
 #include "solver/resource_checks.hpp"
 #include "config/errors.hpp"
 #include "config/progress.hpp"
+#include "solver/slepc_eigen_backend.hpp"
 #include "solver/solve_problem.hpp"
 #include "spaces/space_factory.hpp"
 
@@ -143,6 +144,19 @@ StudySettings parse_study(const ConfigNode& root, const std::string& config_path
                                     : "a surface in 3D takes pde: laplace_beltrami or surface_biharmonic");
   // Boundary part names; a surface's boundary against its Dirichlet data (the pipeline's own check).
   make_formulation(*coarse, s.problem)->check();
+  if (s.problem.eigen) {
+    if (s.solver == SolverKind::petsc) {
+      if (!slepc_available())
+        root["solver"]["type"].fail("eigenproblems under solver.type: petsc need SLEPc, and this iga-run was built "
+                                    "without it (install libslepc-real-dev and rebuild); the serial eigensolver "
+                                    "needs no solver.type");
+      // The eigensolve factors K − σM with MUMPS (shift-and-invert): no Krylov solve to choose.
+      for (const char* key : {"ksp", "pc", "rtol", "max_iterations"})
+        if (const auto k = root["solver"].find(key))
+          k->fail("not used by the eigensolver (SLEPc shift-and-invert with a MUMPS Cholesky factor): remove it");
+    }
+    if (s.adaptive) refinement->fail("adaptive refinement of eigenproblems (problem.eigen) is not supported yet");
+  }
   if ((s.problem.pde == Pde::biharmonic || s.problem.pde == Pde::surface_biharmonic) && coarse->continuity() < 1)
     space_node.fail("the " + to_string(s.problem.pde) + " problem needs a C1 (H2-conforming) space; this " + coarse->type() +
                        " space is only C" + std::to_string(coarse->continuity()) +
@@ -214,7 +228,8 @@ StudyResult run_study(const StudySettings& settings, const ProgressSink& progres
   double t_next = 0.0;
   // Without an exact solution: the previous level's solution, located by its own space, for the
   // differences between successive levels (planar problems).
-  const bool differences = !settings.problem.exact && !on_surface(settings.problem.pde);
+  const bool differences =
+      !settings.problem.exact && !on_surface(settings.problem.pde) && !settings.problem.eigen;
   std::shared_ptr<const PointLocator> previous_locator;
   Eigen::VectorXd previous_coefficients;
   for (int level = 0; level < settings.levels; ++level) {
@@ -242,6 +257,9 @@ StudyResult run_study(const StudySettings& settings, const ProgressSink& progres
                                          [&](const std::string& msg) { progress(tag + msg); }, settings.petsc);
     sol.result.level = level;
     sol.result.t_space = t_space;
+    if (settings.problem.eigen)
+      result.eigen.push_back(
+          {level, sol.result.h, sol.result.dofs, sol.result.free_dofs, sol.eigenvalues, sol.spectrum});
     if (!result.rows.empty() && result.rows.back().energy && sol.result.energy)
       sol.result.energy_difference = std::sqrt(std::abs(*sol.result.energy - *result.rows.back().energy));
     std::shared_ptr<const PointLocator> locator;

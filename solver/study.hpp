@@ -9,6 +9,7 @@
 
 #include "config/config_node.hpp"
 #include "config/resource_limits.hpp"
+#include "solver/eigen_table.hpp"
 #include "solver/level_result.hpp"
 #include "solver/linear_solver.hpp"
 #include "solver/petsc_settings.hpp"
@@ -86,6 +87,8 @@ struct StudyResult {
   /// Per level, (Σ η_K²)^{1/2} of the residual indicator (adaptive runs; nullopt otherwise).
   std::vector<std::optional<double>> estimators;
   bool adaptive = false;
+  /// problem.eigen: every level's eigenvalues (rows[i].result has no errors then).
+  std::vector<EigenLevel> eigen;
   /// Adaptive runs that ended before refinement.levels: "max_dofs", "tolerance" or why refinement failed.
   std::string stop_reason;
   double t_vtk = 0;          ///< seconds spent writing VTK files (all levels)

@@ -69,7 +69,7 @@ void SurfaceFormulation::check() const {
     throw InputError(p.source_where + ": laplace_beltrami needs a space on a surface in 3D");
   if (open() && !p.surface_dirichlet)
     throw InputError(p.source_where + ": this surface has a boundary: give Dirichlet data on it (problem.boundary: "
-                                      "{all: dirichlet}, with exact or boundary_value)");
+                                      "{all: dirichlet}" + (p.eigen ? ")" : ", with exact or boundary_value)"));
   if (!open() && p.surface_dirichlet)
     throw InputError(p.boundary.front().where + ": this surface is closed: it has no boundary for Dirichlet data");
 }

@@ -36,8 +36,9 @@ class SurfaceFormulation final : public Formulation {
 
  private:
   bool open() const { return !space().boundary_edges("all").empty(); }
-  /// Closed surface without reaction: the solution is fixed up to a constant.
-  bool pure() const { return problem().reaction == 0 && !open(); }
+  /// −Δ_Γu = f on a closed surface: u fixed up to a constant (pinned in the solve, shifted to its
+  /// mean after). Not for eigenproblems, where the constants are the eigenfunctions of λ = 0.
+  bool pure() const { return problem().reaction == 0 && !open() && !problem().eigen; }
   /// Pure problems: this share's ∫ N_i and the area (set by load, used by finish).
   mutable Eigen::VectorXd mass_of_one_;
   mutable double area_ = 0;

@@ -26,6 +26,7 @@
 #include <vector>
 
 #include "solver/petsc_settings.hpp"
+#include "solver/slepc_eigen_backend.hpp"
 #include "tests/support/scratch_files.hpp"
 
 namespace fs = std::filesystem;
@@ -79,6 +80,8 @@ struct Case {
   int exit_code = 2;
   int timeout_seconds = kTimeoutSeconds;
   bool needs_petsc = false;                  ///< skipped (and reported so) in a build without PETSc
+  bool needs_slepc = false;                  ///< skipped in a build without SLEPc (eigenproblems under PETSc)
+  bool needs_no_slepc = false;               ///< skipped in a build with SLEPc (its absence is the error)
   std::vector<std::string> stderr_patterns;  ///< ECMAScript regexes, each must match somewhere
   std::vector<std::string> stderr_absent;    ///< regexes that must match nowhere (leaked file contents)
   std::vector<std::string> absent;           ///< paths a malicious input tries to create
@@ -139,9 +142,10 @@ std::vector<Case> load_catalogue() {
       c.stderr_absent = strings(node["stderr_absent"]);
       c.absent = strings(node["absent"]);
       for (const std::string& feature : strings(node["requires"])) {
-        if (feature != "petsc")
-          throw std::runtime_error(manifest.string() + ": case " + c.name + ": unknown requirement " + feature);
-        c.needs_petsc = true;
+        if (feature == "petsc") c.needs_petsc = true;
+        else if (feature == "slepc") c.needs_slepc = true;
+        else if (feature == "no_slepc") c.needs_no_slepc = true;
+        else throw std::runtime_error(manifest.string() + ": case " + c.name + ": unknown requirement " + feature);
       }
       cases.push_back(std::move(c));
     }
@@ -259,6 +263,8 @@ TEST_P(BadInput, Run) {
   const Case& c = GetParam();
   // Without PETSc, `solver.type: petsc` itself is the input error, before what the case is about.
   if (c.needs_petsc && !iga::petsc_available()) GTEST_SKIP() << "built without PETSc";
+  if (c.needs_slepc && !iga::slepc_available()) GTEST_SKIP() << "built without SLEPc";
+  if (c.needs_no_slepc && iga::slepc_available()) GTEST_SKIP() << "built with SLEPc (the case is its absence)";
   const fs::path root = iga::test::scratch_folder() / (c.group + "_" + c.name);
   const fs::path dir = root / "case", tmp = root / "tmp";
   fs::remove_all(root);

@@ -155,6 +155,27 @@ class VtkWriterTest : public ::testing::Test {
   fs::path dir_;
 };
 
+TEST_F(VtkWriterTest, FurtherFunctionsBecomePointFieldsOfTheirValues) {
+  // The eigenmodes of an eigenproblem are written this way (mode_1, mode_2, ...), beside u.
+  const auto space = AffineLagrangeSpace::q1_grid(Eigen::Matrix2d::Identity(), Point2(0, 0));
+  VtkFieldOptions options;
+  const auto other = [](const Point2& p) { return 2 - p.x() + 5 * p.y(); };
+  options.point_functions.emplace_back("mode_2", space.interpolate(other));
+  const std::string file = path("modes.vtu");
+  write_solution_vtu(space, space.interpolate(linear), options, file);
+  const auto grid = read_vtu(file);
+  vtkDataArray* u = grid->GetPointData()->GetArray("u");
+  vtkDataArray* mode = grid->GetPointData()->GetArray("mode_2");
+  ASSERT_NE(mode, nullptr);
+  for (vtkIdType i = 0; i < grid->GetNumberOfPoints(); ++i) {
+    const double* x = grid->GetPoint(i);
+    EXPECT_NEAR(mode->GetComponent(i, 0), other(Point2(x[0], x[1])), 1e-5);  // float32 fields
+    EXPECT_NEAR(u->GetComponent(i, 0), linear(Point2(x[0], x[1])), 1e-5);
+  }
+  options.point_functions.front().second.resize(3);
+  EXPECT_THROW(write_solution_vtu(space, space.interpolate(linear), options, file), std::invalid_argument);
+}
+
 TEST_F(VtkWriterTest, Q1GridReproducesLinearFunctionWithAllFields) {
   Eigen::Matrix2d A;
   A << 1.0, 0.25, 0.0, 1.5;  // sheared, stretched: physical and reference gradients differ

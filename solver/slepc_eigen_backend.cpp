@@ -1,0 +1,241 @@
+#include "solver/slepc_eigen_backend.hpp"
+
+#include "config/errors.hpp"
+
+#ifdef IGA_WITH_SLEPC
+
+#include <slepceps.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <numeric>
+
+#include "assembly/boundary_conditions.hpp"
+#include "assembly/integrators.hpp"
+#include "config/progress.hpp"
+#include "solver/petsc_distribution.hpp"
+#include "solver/petsc_session.hpp"
+
+namespace iga {
+
+bool slepc_available() { return true; }
+
+namespace {
+
+const auto check = petsc_check;
+
+/// SLEPc's objects, destroyed on every path out.
+struct SlepcObjects {
+  Mat K = nullptr, M = nullptr;
+  EPS eps = nullptr;
+  Vec x = nullptr, all = nullptr;
+  VecScatter to_all = nullptr;
+  ~SlepcObjects() {
+    QuietPetscErrors quiet;
+    VecScatterDestroy(&to_all);
+    VecDestroy(&all);
+    VecDestroy(&x);
+    EPSDestroy(&eps);
+    MatDestroy(&M);
+    MatDestroy(&K);
+  }
+};
+
+class SlepcEigenBackend final : public EigenBackend {
+ public:
+  SlepcEigenBackend(const Space& space, const ProgressSink& say) : d_(space, say) {}
+
+  WorkShare share() const override { return d_.share(); }
+  void locally(const std::function<void()>& work) const override { on_every_rank(work); }
+
+  void assemble(const Formulation& f, const Constraints& c, const Eigen::VectorXd&, const ProgressSink& say) override {
+    f_ = &f;
+    constraints_ = c;
+    d_.lay_out(constraints_, nullptr, say);
+    if (say) say("assembling K and M (" + std::to_string(c.free.size()) + " unknowns, distributed)");
+    d_.matrix(f, f.terms(), nullptr, p_.K);
+    d_.matrix(f, {mass_integrator()}, nullptr, p_.M);
+  }
+
+  EigenPairs eigensolve(int count, EigenReport& report, const ProgressSink& say) override;
+  Eigen::VectorXd spectrum(EigenReport& report) override;
+
+ private:
+  /// σ of the serial path: 0, or below the spectrum when nothing is constrained (eigen_solver.cpp).
+  double shift() const;
+
+  PetscDistribution d_;
+  const Formulation* f_ = nullptr;
+  Constraints constraints_;
+  SlepcObjects p_;
+};
+
+double SlepcEigenBackend::shift() const {
+  if (!constraints_.constrained.empty()) return 0.0;
+  // −10⁻⁶ max K_ii / max M_ii, as serially: the constants are in K's kernel.
+  Vec diagonal;
+  PetscReal k_max = 0, m_max = 0;
+  check(MatCreateVecs(p_.K, &diagonal, nullptr), "MatCreateVecs");
+  check(MatGetDiagonal(p_.K, diagonal), "MatGetDiagonal");
+  check(VecMax(diagonal, nullptr, &k_max), "VecMax");
+  check(MatGetDiagonal(p_.M, diagonal), "MatGetDiagonal");
+  check(VecMax(diagonal, nullptr, &m_max), "VecMax");
+  VecDestroy(&diagonal);
+  return -k_max / m_max * 1e-6;
+}
+
+EigenPairs SlepcEigenBackend::eigensolve(int count, EigenReport& report, const ProgressSink& say) {
+  const int n = static_cast<int>(constraints_.free.size());
+  if (count < 1 || count >= n)
+    throw InputError("eigen.count = " + std::to_string(count) + " needs more free unknowns than that (the space has " +
+                     std::to_string(n) + ")");
+  if (say) say("eigensolve: " + std::to_string(count) + " eigenpairs of " + std::to_string(n) + " unknowns (SLEPc)");
+  ProgressPhase phase("eigensolve", 0);
+  report = {};
+  report.shift = shift();
+  // The serial path's pair count (a few more than asked for: a multiple eigenvalue at the edge of
+  // the wanted set keeps all its copies) and its tolerance.
+  const int wanted = std::min(n - 1, count + std::max(5, count / 4));
+  const int ncv = std::min(n, std::max(2 * wanted + 1, wanted + 20));
+  const MPI_Comm comm = PETSC_COMM_WORLD;
+  check(EPSCreate(comm, &p_.eps), "EPSCreate");
+  check(EPSSetOperators(p_.eps, p_.K, p_.M), "EPSSetOperators");
+  check(EPSSetProblemType(p_.eps, EPS_GHEP), "EPSSetProblemType");
+  check(EPSSetType(p_.eps, EPSKRYLOVSCHUR), "EPSSetType");
+  check(EPSSetDimensions(p_.eps, wanted, ncv, PETSC_DEFAULT), "EPSSetDimensions");
+  check(EPSSetTolerances(p_.eps, 1e-12, 1000), "EPSSetTolerances");
+  check(EPSSetTarget(p_.eps, report.shift), "EPSSetTarget");
+  check(EPSSetWhichEigenpairs(p_.eps, EPS_TARGET_MAGNITUDE), "EPSSetWhichEigenpairs");
+  ST st;
+  KSP ksp;
+  PC pc;
+  check(EPSGetST(p_.eps, &st), "EPSGetST");
+  check(STSetType(st, STSINVERT), "STSetType");
+  check(STGetKSP(st, &ksp), "STGetKSP");
+  check(KSPSetType(ksp, KSPPREONLY), "KSPSetType");
+  check(KSPGetPC(ksp, &pc), "KSPGetPC");
+  check(PCSetType(pc, PCCHOLESKY), "PCSetType");
+  check(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS), "PCFactorSetMatSolverType");
+  {
+    // Options of the command line and PETSC_OPTIONS (-eps_*, -st_*) win, as for the linear solve.
+    QuietPetscErrors quiet;
+    const PetscErrorCode code = EPSSetFromOptions(p_.eps);
+    if (code != 0) throw InputError("PETSc options (command line or PETSC_OPTIONS): SLEPc refused an option: " +
+                                    petsc_message(code));
+  }
+  report.method = "slepc krylovschur shift-invert + mumps cholesky" +
+                  (d_.ranks() > 1 ? ", " + std::to_string(d_.ranks()) + " ranks" : std::string());
+  Stopwatch clock;
+  {
+    QuietPetscErrors quiet;
+    check(EPSSetUp(p_.eps), "EPSSetUp (the factorization of K - σM)");
+  }
+  report.t_factorize = clock.seconds();
+  clock.restart();
+  {
+    QuietPetscErrors quiet;
+    check(EPSSolve(p_.eps), "EPSSolve");
+  }
+  report.t_solve = clock.seconds();
+  PetscInt converged = 0, its = 0;
+  check(EPSGetConverged(p_.eps, &converged), "EPSGetConverged");
+  check(EPSGetIterationNumber(p_.eps, &its), "EPSGetIterationNumber");
+  report.operations = static_cast<int>(its);
+  if (converged < count)
+    throw NumericalError("eigenproblem: SLEPc converged " + std::to_string(converged) + " of " + std::to_string(count) +
+                         " eigenpairs");
+  // The pairs SLEPc returned, whole on every rank; sorted ascending, the smallest `count` kept,
+  // M-normalised and signed (the largest entry positive) as serially (eigen_solver.cpp).
+  const int got = static_cast<int>(std::min<PetscInt>(converged, wanted));
+  Eigen::VectorXd values(got);
+  Eigen::MatrixXd vectors(n, got);
+  std::vector<double> residuals(got);
+  check(MatCreateVecs(p_.K, &p_.x, nullptr), "MatCreateVecs");
+  check(VecScatterCreateToAll(p_.x, &p_.to_all, &p_.all), "VecScatterCreateToAll");
+  Vec Mx;
+  check(VecDuplicate(p_.x, &Mx), "VecDuplicate");
+  for (int i = 0; i < got; ++i) {
+    PetscScalar lambda = 0;
+    check(EPSGetEigenpair(p_.eps, i, &lambda, nullptr, p_.x, nullptr), "EPSGetEigenpair");
+    PetscReal error = 0;
+    check(EPSComputeError(p_.eps, i, EPS_ERROR_BACKWARD, &error), "EPSComputeError");
+    PetscScalar xMx = 0;
+    check(MatMult(p_.M, p_.x, Mx), "MatMult");
+    check(VecDot(p_.x, Mx, &xMx), "VecDot");
+    check(VecScale(p_.x, 1.0 / std::sqrt(xMx)), "VecScale");
+    check(VecScatterBegin(p_.to_all, p_.x, p_.all, INSERT_VALUES, SCATTER_FORWARD), "VecScatterBegin");
+    check(VecScatterEnd(p_.to_all, p_.x, p_.all, INSERT_VALUES, SCATTER_FORWARD), "VecScatterEnd");
+    const PetscScalar* all = nullptr;
+    check(VecGetArrayRead(p_.all, &all), "VecGetArrayRead");
+    vectors.col(i) = d_.free_values(all);
+    check(VecRestoreArrayRead(p_.all, &all), "VecRestoreArrayRead");
+    values(i) = lambda;
+    residuals[i] = error;
+  }
+  VecDestroy(&Mx);
+  std::vector<int> order(got);
+  std::iota(order.begin(), order.end(), 0);
+  std::sort(order.begin(), order.end(), [&](int a, int b) { return values(a) < values(b); });
+  EigenPairs out{Eigen::VectorXd(count), Eigen::MatrixXd(constraints_.values.size(), count)};
+  Constraints homogeneous = constraints_;
+  homogeneous.values.setZero();
+  for (int i = 0; i < count; ++i) {
+    Eigen::VectorXd x = vectors.col(order[i]);
+    Eigen::Index big;
+    x.cwiseAbs().maxCoeff(&big);
+    if (x(big) < 0) x = -x;
+    out.values(i) = values(order[i]);
+    out.vectors.col(i) = expand_solution(x, homogeneous);
+    report.max_residual = std::max(report.max_residual, residuals[order[i]]);
+  }
+  if (!(report.max_residual < 1e-6))
+    throw NumericalError("eigenproblem: eigenpair residual " + std::to_string(report.max_residual) + " is not small");
+  if (say) {
+    char line[200];
+    std::snprintf(line, sizeof line, "eigensolve: %d restarts (factorize %.3f s, Krylov-Schur %.3f s), "
+                  "largest residual %.1e", report.operations, report.t_factorize, report.t_solve, report.max_residual);
+    say(line);
+  }
+  return out;
+}
+
+Eigen::VectorXd SlepcEigenBackend::spectrum(EigenReport& report) {
+  // Whole spectra are for a few thousand unknowns: every rank assembles the whole pencil and runs
+  // the serial dense solver (the same numbers on every rank).
+  SparseMatrix K_free, M_free;
+  Eigen::VectorXd unused;
+  const Eigen::VectorXd zero = Eigen::VectorXd::Zero(f_->space().dimension());
+  on_every_rank([&] {
+    reduce_system(f_->matrix(f_->terms()), zero, constraints_, K_free, unused);
+    reduce_system(f_->matrix({mass_integrator()}), zero, constraints_, M_free, unused);
+  });
+  return all_eigenpairs(K_free, M_free, report).values;
+}
+
+}  // namespace
+
+std::unique_ptr<EigenBackend> make_slepc_eigen_backend(const Space& space, const ProgressSink& progress) {
+  ensure_petsc_initialised();
+  PetscBool initialised = PETSC_FALSE;
+  check(SlepcInitialized(&initialised), "SlepcInitialized");
+  // PETSc runs already: SLEPc registers its packages on top of it (and leaves finalising to PETSc).
+  if (!initialised) check(SlepcInitializeNoArguments(), "SlepcInitializeNoArguments");
+  return std::make_unique<SlepcEigenBackend>(space, progress);
+}
+
+}  // namespace iga
+
+#else  // built without SLEPc
+
+namespace iga {
+
+bool slepc_available() { return false; }
+
+std::unique_ptr<EigenBackend> make_slepc_eigen_backend(const Space&, const ProgressSink&) {
+  throw InputError("solver.type: petsc with problem.eigen: this iga-run was built without SLEPc");
+}
+
+}  // namespace iga
+
+#endif
