@@ -49,14 +49,8 @@ EigenSolution solve_eigen_pipeline(const Formulation& f, EigenBackend& backend, 
   const Space& space = f.space();
   EigenSolution out;
   LevelResult& r = out.result;
-  r.h = space.mesh_size();
-  r.dofs = space.dimension();
-  r.elements = space.num_elements();
+  const Constraints c = assemble_level(f, backend, r, progress);
   Stopwatch clock;
-  const Constraints c = assemble_step(f, backend, progress);
-  r.t_assemble = clock.seconds();
-  r.free_dofs = static_cast<int>(c.free.size());
-  clock.restart();
   out.modes = backend.eigensolve(f.problem().eigen->count, out.report, progress);
   r.t_solve = clock.seconds();
   if (f.problem().eigen->spectrum && r.free_dofs <= max_spectrum_unknowns) {

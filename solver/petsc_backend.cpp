@@ -252,7 +252,7 @@ void PetscBackend::assemble(const Formulation& f, const Constraints& c, const Ei
   const bool refine = settings_.pc == "mumps" || settings_.pc == "cholesky";
   SparseMatrix pattern;
   d_.lay_out(c, refine ? &pattern : nullptr, say);
-  extended_ = std::make_unique<ExtendedResidual>(c, d_.layout().global, d_.layout().first_row, d_.rank(),
+  extended_ = std::make_unique<ExtendedResidual>(d_.constraints(), d_.layout().global, d_.layout().first_row, d_.rank(),
                                                  std::move(pattern));
   if (say) say("assembling (" + std::to_string(c.free.size()) + " unknowns, in extended precision)");
   on_every_rank([&] { extended_->add_load(load); });

@@ -72,7 +72,7 @@ WorkShare PetscDistribution::share() const {
 
 void PetscDistribution::lay_out(const Constraints& c, SparseMatrix* pattern,
                                 const std::function<void(const std::string&)>& say) {
-  constraints_ = &c;
+  constraints_ = c;
   // Local work first (every rank the same, apart from its elements): an error found here is
   // raised on all ranks together before any collective call.
   on_every_rank([&] {
@@ -107,7 +107,7 @@ void PetscDistribution::lay_out(const Constraints& c, SparseMatrix* pattern,
 
 void PetscDistribution::matrix(const Formulation& f, const std::vector<FormTerm>& terms, ExtendedResidual* extended,
                                Mat& A) const {
-  const PetscInt n_global = static_cast<PetscInt>(constraints_->free.size());
+  const PetscInt n_global = static_cast<PetscInt>(constraints_.free.size());
   const PetscInt n_local = layout_.first_row[rank_ + 1] - layout_.first_row[rank_];
   petsc_check(MatCreate(PETSC_COMM_WORLD, &A), "MatCreate");
   petsc_check(MatSetSizes(A, n_local, n_local, n_global, n_global), "MatSetSizes");
@@ -142,7 +142,7 @@ void PetscDistribution::matrix(const Formulation& f, const std::vector<FormTerm>
 }
 
 Eigen::VectorXd PetscDistribution::free_values(const PetscScalar* all) const {
-  Eigen::VectorXd u_free(constraints_->free.size());
+  Eigen::VectorXd u_free(constraints_.free.size());
   for (Eigen::Index k = 0; k < u_free.size(); ++k) u_free(k) = all[layout_.global[k]];
   return u_free;
 }

@@ -43,8 +43,8 @@ class PetscDistribution {
 
   /// This rank's elements and the sum over the ranks.
   WorkShare share() const;
-  /// The distributed numbering of the free unknowns of `c` (kept by reference: `c` must outlive
-  /// this), and with `pattern` the couplings of this rank's elements' functions. Collective.
+  /// The distributed numbering of the free unknowns of `c` (kept as a copy), and with `pattern`
+  /// the couplings of this rank's elements' functions. Collective.
   void lay_out(const Constraints& c, SparseMatrix* pattern, const std::function<void(const std::string&)>& say);
   /// Create `A`, the distributed matrix Σ terms on the unknowns of lay_out (Tᵀ A T in double, T the
   /// free basis), symmetric positive definite; each element matrix also handed to `extended` in
@@ -55,7 +55,7 @@ class PetscDistribution {
   Eigen::VectorXd free_values(const PetscScalar* all) const;
 
   const Space& space() const { return space_; }
-  const Constraints& constraints() const { return *constraints_; }
+  const Constraints& constraints() const { return constraints_; }
   const UnknownLayout& layout() const { return layout_; }
   int rank() const { return rank_; }
   int ranks() const { return ranks_; }
@@ -64,7 +64,9 @@ class PetscDistribution {
   const Space& space_;
   const int rank_, ranks_;
   std::vector<int> owner_, mine_;
-  const Constraints* constraints_ = nullptr;
+  /// A copy: the caller's conditions may be a temporary of the assemble step (the solve and the
+  /// refinement residuals read them after it returned).
+  Constraints constraints_;
   Eigen::SparseMatrix<double, Eigen::RowMajor> basis_;
   UnknownLayout layout_;
   RowCouplings couplings_;

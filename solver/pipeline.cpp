@@ -36,20 +36,25 @@ Constraints assemble_step(const Formulation& f, LinearBackend& backend, const Pr
   return c;
 }
 
+Constraints assemble_level(const Formulation& f, LinearBackend& backend, LevelResult& r, const ProgressSink& progress) {
+  const Space& space = f.space();
+  r.h = space.mesh_size();
+  r.dofs = space.dimension();
+  r.elements = space.num_elements();
+  Stopwatch clock;
+  Constraints c = assemble_step(f, backend, progress);
+  r.t_assemble = clock.seconds();
+  r.free_dofs = static_cast<int>(c.free.size());
+  return c;
+}
+
 DiscreteSolution solve_pipeline(const Formulation& f, LinearBackend& backend, const ProgressSink& progress) {
   const Space& space = f.space();
   DiscreteSolution out;
   LevelResult& r = out.result;
-  r.h = space.mesh_size();
-  r.dofs = space.dimension();
-  r.elements = space.num_elements();
+  const Constraints c = assemble_level(f, backend, r, progress);
 
   Stopwatch clock;
-  const Constraints c = assemble_step(f, backend, progress);
-  r.t_assemble = clock.seconds();
-  r.free_dofs = static_cast<int>(c.free.size());
-
-  clock.restart();
   const WorkShare share = backend.share();
   out.coefficients = backend.solve(out.solve, progress);
   f.finish(out.coefficients, share);

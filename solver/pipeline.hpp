@@ -61,6 +61,11 @@ struct DiscreteSolution {
 /// datum) and the backend's assembly. Returns the conditions.
 Constraints assemble_step(const Formulation& f, LinearBackend& backend, const ProgressSink& progress = {});
 
+/// The assemble step of a level: fills `r`'s h, DOFs, elements, free unknowns and t_assemble (the
+/// linear and the eigen pipelines start the same way). Returns the conditions.
+Constraints assemble_level(const Formulation& f, LinearBackend& backend, LevelResult& r,
+                           const ProgressSink& progress = {});
+
 /// The whole pipeline: assemble, solve, finish, errors; `progress` is told when each phase starts.
 DiscreteSolution solve_pipeline(const Formulation& f, LinearBackend& backend, const ProgressSink& progress = {});
 
