@@ -46,10 +46,9 @@ Eigen::VectorXd SerialEigenBackend::spectrum(EigenReport& report) {
 
 EigenSolution solve_eigen_pipeline(const Formulation& f, EigenBackend& backend, const ProgressSink& progress) {
   if (!f.problem().eigen) throw std::logic_error("solve_eigen_pipeline: the problem has no eigen block");
-  const Space& space = f.space();
   EigenSolution out;
   LevelResult& r = out.result;
-  const Constraints c = assemble_level(f, backend, r, progress);
+  assemble_level(f, backend, r, progress);
   Stopwatch clock;
   out.modes = backend.eigensolve(f.problem().eigen->count, out.report, progress);
   r.t_solve = clock.seconds();
