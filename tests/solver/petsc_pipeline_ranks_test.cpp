@@ -25,6 +25,7 @@
 #include "solver/petsc_session.hpp"
 #include "solver/petsc_settings.hpp"
 #include "solver/solve_problem.hpp"
+#include "tests/support/rerun_under_mpirun.hpp"
 #include "tests/support/test_support.hpp"
 
 namespace iga {
@@ -37,12 +38,6 @@ space: {type: ws4, elements: 2}
 )yaml";
 constexpr int kLevel = 4;  // 35 850 DOFs (docs/spaces/ws4.md)
 
-/// The rank count the mpirun of TwoRanks asked for (1 when run directly).
-int expected_ranks() {
-  const char* v = std::getenv("IGA_PLATE_TEST_RANKS");
-  return v && *v ? std::atoi(v) : 1;
-}
-
 TEST(PetscWs4Plate, InSpaceQuarticAtRoundOffOnTheRanksOfThisRun) {
   if (!petsc_available()) GTEST_SKIP() << "built without PETSc";
   const ProblemSpec problem = test::problem_from_yaml(kPlate);
@@ -52,7 +47,7 @@ TEST(PetscWs4Plate, InSpaceQuarticAtRoundOffOnTheRanksOfThisRun) {
   petsc.ksp = "preonly";
   petsc.pc = "mumps";
   const DiscreteSolution p = solve_problem(*space, problem, SolverKind::petsc, {}, petsc);
-  ASSERT_EQ(mpi_size(), expected_ranks());
+  ASSERT_EQ(mpi_size(), test::expected_ranks("IGA_PLATE_TEST_RANKS"));
   // ‖u‖_L2: the error of the zero function.
   const double norm = error_norms(*space, Eigen::VectorXd::Zero(space->dimension()), problem.exact_solution(),
                                   space->error_quadrature_degree())
@@ -89,7 +84,7 @@ space: {type: surface, degree: 3}
     petsc.ksp = "preonly";
     petsc.pc = "mumps";
     const DiscreteSolution p = solve_problem(*space, problem, SolverKind::petsc, {}, petsc);
-    ASSERT_EQ(mpi_size(), expected_ranks());
+    ASSERT_EQ(mpi_size(), test::expected_ranks("IGA_PLATE_TEST_RANKS"));
     const DiscreteSolution serial = solve_problem(*space, problem, SolverKind::cholmod);
     const double difference = (p.coefficients - serial.coefficients).norm() / serial.coefficients.norm();
     std::printf("rank %d of %d: %d dofs, L2 %.6e (serial %.6e), coefficients differ by %.1e\n", mpi_rank(),
@@ -104,17 +99,8 @@ space: {type: surface, degree: 3}
 
 TEST(PetscPipeline, TheCasesAboveOnTwoRanks) {
   if (!petsc_available()) GTEST_SKIP() << "built without PETSc";
-  if (expected_ranks() != 1) GTEST_SKIP() << "this is the run started by mpirun";
-  // As root (CI) and oversubscribed (CI machines may have one core), as tests/app/mpi_run_test.cpp;
-  // without the variables Open MPI set in this process if an earlier test started MPI here (mpirun
-  // would take itself for a child of this singleton).
-  const std::string command =
-      "for v in $(env | grep -o '^\\(OMPI\\|PMIX\\|OPAL\\)[A-Za-z0-9_]*'); do unset $v; done; "
-      "IGA_PLATE_TEST_RANKS=2 mpirun --allow-run-as-root --oversubscribe -np 2 " +
-      std::filesystem::read_symlink("/proc/self/exe").string() + " --gtest_filter=*OnTheRanksOfThisRun";
-  const int status = std::system(command.c_str());
-  ASSERT_TRUE(WIFEXITED(status));
-  EXPECT_EQ(WEXITSTATUS(status), 0) << command;
+  if (test::expected_ranks("IGA_PLATE_TEST_RANKS") != 1) GTEST_SKIP() << "this is the run started by mpirun";
+  EXPECT_EQ(test::rerun_under_mpirun("IGA_PLATE_TEST_RANKS", 2, "*OnTheRanksOfThisRun"), 0);
 }
 
 }  // namespace

@@ -25,16 +25,11 @@
 #include "solver/petsc_settings.hpp"
 #include "solver/slepc_eigen_backend.hpp"
 #include "solver/solve_problem.hpp"
+#include "tests/support/rerun_under_mpirun.hpp"
 #include "tests/support/test_support.hpp"
 
 namespace iga {
 namespace {
-
-/// The rank count the mpirun of TwoRanks asked for (1 when run directly).
-int expected_ranks() {
-  const char* v = std::getenv("IGA_SLEPC_TEST_RANKS");
-  return v && *v ? std::atoi(v) : 1;
-}
 
 struct Case {
   const char* yaml;
@@ -73,7 +68,7 @@ TEST(SlepcEigen, SerialEigenvaluesOnTheRanksOfThisRun) {
     const ProblemSpec problem = test::problem_from_yaml(c.yaml);
     const SpacePtr space = test::space_from_yaml(c.yaml, c.level);
     const DiscreteSolution p = solve_problem(*space, problem, SolverKind::petsc);
-    ASSERT_EQ(mpi_size(), expected_ranks());
+    ASSERT_EQ(mpi_size(), test::expected_ranks("IGA_SLEPC_TEST_RANKS"));
     const DiscreteSolution s = solve_problem(*space, problem, SolverKind::cholmod);
     if (c.free_dofs > 0) EXPECT_EQ(p.result.free_dofs, c.free_dofs);
     EXPECT_EQ(p.result.free_dofs, s.result.free_dofs);
@@ -105,15 +100,8 @@ TEST(SlepcEigen, SerialEigenvaluesOnTheRanksOfThisRun) {
 
 TEST(SlepcEigen, TheCasesAboveOnTwoRanks) {
   if (!slepc_available()) GTEST_SKIP() << "built without SLEPc";
-  if (expected_ranks() != 1) GTEST_SKIP() << "this is the run started by mpirun";
-  // As petsc_pipeline_ranks_test: as root, oversubscribed, without the variables of a singleton MPI.
-  const std::string command =
-      "for v in $(env | grep -o '^\\(OMPI\\|PMIX\\|OPAL\\)[A-Za-z0-9_]*'); do unset $v; done; "
-      "IGA_SLEPC_TEST_RANKS=2 mpirun --allow-run-as-root --oversubscribe -np 2 " +
-      std::filesystem::read_symlink("/proc/self/exe").string() + " --gtest_filter=*OnTheRanksOfThisRun";
-  const int status = std::system(command.c_str());
-  ASSERT_TRUE(WIFEXITED(status));
-  EXPECT_EQ(WEXITSTATUS(status), 0) << command;
+  if (test::expected_ranks("IGA_SLEPC_TEST_RANKS") != 1) GTEST_SKIP() << "this is the run started by mpirun";
+  EXPECT_EQ(test::rerun_under_mpirun("IGA_SLEPC_TEST_RANKS", 2, "*OnTheRanksOfThisRun"), 0);
 }
 
 }  // namespace
