@@ -12,6 +12,7 @@
 #include <iostream>
 #include <new>
 #include <optional>
+#include <thread>
 
 #include "app/catalogue.hpp"
 #include "app/progress_bar.hpp"
@@ -28,6 +29,7 @@
 #include "output/staged_directory.hpp"
 #include "output/study_outputs.hpp"
 #include "solver/output_location.hpp"
+#include "solver/blas_threads.hpp"
 #include "solver/petsc_session.hpp"
 #include "solver/study.hpp"
 
@@ -106,6 +108,8 @@ StudyResult run_into(const StudySettings& settings, const std::string& config_pa
   if (settings.write_plot && !settings.problem.eigen) plot_convergence(result.rows, result.expected, plot_title(settings, result),
                                             (dir / "convergence.svg").string(), result.adaptive);
   result.total_seconds = std::chrono::duration<double>(Clock::now() - t_start).count();
+  result.ranks = mpi_size();
+  result.threads = omp_get_max_threads();
   write_summary_json(settings, result, (dir / "summary.json").string());
 
   if (settings.problem.eigen) {
@@ -272,6 +276,25 @@ int guarded(const std::string& what, const std::function<int()>& body) {
 
 }  // namespace
 
+namespace {
+/// Threads of each process: --threads, else OMP_NUM_THREADS (OpenMP reads it), else under mpirun
+/// the node's cores shared among the ranks on it — OpenMP's and OpenBLAS's default of one thread per
+/// core in every rank would run ranks × cores threads on the cores.
+void set_threads(const std::string& threads_text) {
+  const int ranks_here = ranks_on_this_node();  // collective: every rank asks, whatever it decides
+  int threads = 0;
+  if (!threads_text.empty()) {
+    threads = parse_count("--threads", threads_text, 1, 1024);
+  } else if (ranks_here > 1 && !std::getenv("OMP_NUM_THREADS")) {
+    const int cores = static_cast<int>(std::thread::hardware_concurrency());
+    threads = std::max(1, std::min(omp_get_num_procs(), cores / ranks_here));  // omp_get_num_procs: this rank's binding
+  }
+  if (threads == 0) return;
+  omp_set_num_threads(threads);
+  if (ranks_here > 1) set_blas_threads(threads);
+}
+}  // namespace
+
 int run_cli(int argc, char** argv) {
   CLI::App app{"iga-run: smooth spline spaces for Poisson and biharmonic problems, with convergence studies.\n"
                "  iga-run CONFIG.yaml              run a study (results/<config name>/ by default)\n"
@@ -317,7 +340,7 @@ int run_cli(int argc, char** argv) {
   if (configs.empty()) return fail(2, "a config file is required (iga-run CONFIG.yaml; see --help)");
   return guarded(configs.front(), [&] {
     const int levels = levels_text.empty() ? 0 : parse_count("--levels", levels_text, 1, 12);
-    if (!threads_text.empty()) omp_set_num_threads(parse_count("--threads", threads_text, 1, 1024));
+    set_threads(threads_text);
     if (!quiet) set_progress_listener(terminal_progress_bar());
     return run_configs(configs, output, levels, quiet);
   });

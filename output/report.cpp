@@ -348,6 +348,7 @@ std::string summary_json(const StudySettings& settings, const StudyResult& resul
   j["t_vtk"] = result.t_vtk;
   // The whole run as its caller measured it (reading the config to the last file), else the phases' sum.
   j["total_seconds"] = result.total_seconds > 0 ? result.total_seconds : total;
+  j["processes"] = {{"ranks", result.ranks}, {"threads_per_rank", result.threads}};
   // Text was checked to be UTF-8 where it was read; a path from the command line (a file name is
   // bytes) may still not be: replaced, never an exception after the study.
   if (settings.problem.eigen) {

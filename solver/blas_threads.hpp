@@ -16,5 +16,7 @@ inline constexpr int kParallelBlasUnknowns = 80000;
 /// as OpenMP uses. No effect when the user set OPENBLAS_NUM_THREADS, or with a BLAS that has no
 /// openblas_set_num_threads (looked up at run time: whichever BLAS Debian's alternatives select).
 void set_blas_threads_for(int unknowns);
+/// `threads` BLAS threads (MUMPS's dense kernels under PETSc too), with the same exceptions.
+void set_blas_threads(int threads);
 
 }  // namespace iga

@@ -197,6 +197,16 @@ int mpi_size() {
   return size;
 }
 
+int ranks_on_this_node() {
+  if (!petsc_up()) return 1;
+  MPI_Comm node = MPI_COMM_NULL;
+  MPI_Comm_split_type(PETSC_COMM_WORLD, MPI_COMM_TYPE_SHARED, 0, MPI_INFO_NULL, &node);
+  int size = 1;
+  MPI_Comm_size(node, &size);
+  MPI_Comm_free(&node);
+  return size;
+}
+
 void on_every_rank(const std::function<void()>& work) {
   if (!petsc_up()) return work();
   int code = 0;  // 0 ok, 1 numerical, 2 input, 3 other
@@ -254,6 +264,7 @@ PetscSession::PetscSession(int&, char**) {}
 PetscSession::~PetscSession() = default;
 int mpi_rank() { return 0; }
 int mpi_size() { return 1; }
+int ranks_on_this_node() { return 1; }
 void on_every_rank(const std::function<void()>& work) { work(); }
 std::string broadcast_from_root(const std::string& text) { return text; }
 bool failure_shared_by_all_ranks() { return false; }

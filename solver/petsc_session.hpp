@@ -35,6 +35,9 @@ std::pair<std::vector<std::string>, std::vector<std::string>> split_petsc_argume
 /// This process's rank and the number of ranks (0 and 1 when PETSc is not running).
 int mpi_rank();
 int mpi_size();
+/// The ranks that share this process's node (MPI's shared-memory communicator; 1 when PETSc is not
+/// running). Collective.
+int ranks_on_this_node();
 /// Rank 0: the one that prints and writes files.
 inline bool is_root_rank() { return mpi_rank() == 0; }
 

@@ -93,6 +93,7 @@ struct StudyResult {
   std::string stop_reason;
   double t_vtk = 0;          ///< seconds spent writing VTK files (all levels)
   double total_seconds = 0;  ///< wall time of the whole run, set by the caller that measures it
+  int ranks = 1, threads = 1;  ///< MPI ranks and OpenMP threads per rank of the run, set by the same caller
 };
 
 /// Called once a level is solved, before the next level is built: how the outputs (VTK files) see

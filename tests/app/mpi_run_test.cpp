@@ -7,10 +7,13 @@
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <regex>
+#include <thread>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -47,10 +50,12 @@ std::string slurp(const fs::path& p) {
 
 /// Run iga-run with `args`, under `mpirun -np ranks` when ranks > 0 (as root too: CI runs as root;
 /// oversubscribed: CI machines may have one core), in `folder` if given.
-RunResult run(int ranks, const std::string& args, const fs::path& folder = {}) {
+/// `environment`: a prefix of the launch ("env -u OMP_NUM_THREADS ").
+RunResult run(int ranks, const std::string& args, const fs::path& folder = {}, const std::string& environment = {}) {
   const fs::path err = iga::test::scratch_folder() / "stderr.txt";
   std::string launcher;
   if (!folder.empty()) launcher = "cd " + folder.string() + " && ";
+  launcher += environment;
   if (ranks > 0) launcher += std::string(IGA_MPIEXEC) + " --allow-run-as-root --oversubscribe -np " + std::to_string(ranks) + " ";
   const std::string cmd = launcher + IGA_RUN_BINARY + " " + args + " >/dev/null 2>" + err.string();
   const int status = std::system(cmd.c_str());
@@ -192,6 +197,33 @@ INSTANTIATE_TEST_SUITE_P(TwoSpaces, TwoRanksVtk, ::testing::Values("bspline-pois
                            return name;
                          });
 #endif
+
+/// summary.json's processes block: (ranks, threads_per_rank).
+std::pair<int, int> processes(const fs::path& summary) {
+  const std::string text = slurp(summary);
+  std::smatch m;
+  if (!std::regex_search(text, m, std::regex(R"("ranks":\s*(\d+),\s*"threads_per_rank":\s*(\d+))"))) return {0, 0};
+  return {std::stoi(m[1]), std::stoi(m[2])};
+}
+
+TEST(TwoRanksThreads, EachRankTakesItsShareOfTheCoresUnlessTheUserSaysOtherwise) {
+  if (!iga::petsc_available()) GTEST_SKIP() << "built without PETSc";
+  const fs::path cfg = config_with_solver("bspline-poisson", "{type: petsc}", "threads");
+  const fs::path dir = iga::test::scratch_folder() / "threads";
+  const std::string args = cfg.string() + " --quiet --levels 1 --output ";
+  // OpenMP's default would be one thread per core in each rank: 2 × cores threads on the cores.
+  ASSERT_EQ(run(2, args + (dir / "default").string(), {}, "env -u OMP_NUM_THREADS ").exit_code, 0);
+  const auto [ranks, threads] = processes(dir / "default" / "summary.json");
+  EXPECT_EQ(ranks, 2);
+  const int cores = static_cast<int>(std::thread::hardware_concurrency());
+  // At most the node's cores per rank (fewer when mpirun binds each rank to fewer cores).
+  EXPECT_GE(threads, 1);
+  EXPECT_LE(threads, std::max(1, cores / 2));
+  ASSERT_EQ(run(2, args + (dir / "option").string() + " --threads 3").exit_code, 0);
+  EXPECT_EQ(processes(dir / "option" / "summary.json"), std::make_pair(2, 3));
+  ASSERT_EQ(run(2, args + (dir / "environment").string(), {}, "env OMP_NUM_THREADS=2 ").exit_code, 0);
+  EXPECT_EQ(processes(dir / "environment" / "summary.json"), std::make_pair(2, 2));
+}
 
 TEST(TwoRanksFailures, AnUnconvergedSolveIsExitOneOnEveryRankWithTheReason) {
   if (!iga::petsc_available()) GTEST_SKIP() << "built without PETSc";
