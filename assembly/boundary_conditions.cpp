@@ -1,5 +1,6 @@
 #include "assembly/parallel.hpp"
 #include "assembly/boundary_conditions.hpp"
+#include "assembly/boundary_projection.hpp"
 
 #include <Eigen/Cholesky>
 #include <Eigen/QR>
@@ -156,6 +157,14 @@ Constraints impose_essential(const Space& space, const EssentialBoundary& bounda
     }
   }
 
+  return solve_boundary_projection(dim, triplets, rhs_entries, order, local_of);
+}
+
+Constraints solve_boundary_projection(int dim, const std::vector<Eigen::Triplet<double>>& triplets,
+                                      const std::vector<std::pair<int, double>>& rhs_entries,
+                                      const std::vector<int>& order, const std::vector<int>& local_of) {
+  Constraints c;
+  c.values = Eigen::VectorXd::Zero(dim);
   // Pass 2: solve the small SPD projection system.
   const int m = static_cast<int>(order.size());
   SparseMatrix M(m, m);

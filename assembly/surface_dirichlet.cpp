@@ -7,6 +7,7 @@
 #include <map>
 #include <stdexcept>
 
+#include "assembly/surface_essential.hpp"
 #include "config/errors.hpp"
 
 namespace iga {
@@ -71,8 +72,11 @@ Constraints surface_dirichlet_constraints(const Space& space, const std::vector<
   Eigen::SparseMatrix<double> M(n, n);
   M.setFromTriplets(triplets.begin(), triplets.end());
   Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt(M);
-  if (ldlt.info() != Eigen::Success || (n > 0 && ldlt.vectorD().minCoeff() <= 0))
-    throw NumericalError("the boundary mass matrix of the surface's boundary functions is singular");
+  // Dependent traces (the G1 vertex functions of a 4-split surface at a boundary corner): the
+  // general projection constrains an independent subset and changes the basis of the others.
+  if (ldlt.info() != Eigen::Success ||
+      (n > 0 && ldlt.vectorD().minCoeff() <= 1e-13 * ldlt.vectorD().cwiseAbs().maxCoeff()))
+    return surface_essential_constraints(space, edges, g, {}, quad_degree);
   const Eigen::VectorXd values = n > 0 ? Eigen::VectorXd(ldlt.solve(rhs)) : Eigen::VectorXd();
   c.values = Eigen::VectorXd::Zero(space.dimension());
   for (int r = 0; r < n; ++r) c.values(c.constrained[r]) = values(r);

@@ -14,8 +14,9 @@
 namespace iga {
 
 /// Constraints (constrained, free, values) for u = g on `edges` of a space with
-/// ambient_dimension() == 3; edge rules of degree `quad_degree`. NumericalError when the boundary
-/// mass matrix of the constrained functions is singular (their traces are dependent).
+/// ambient_dimension() == 3; edge rules of degree `quad_degree`. When the boundary mass matrix of
+/// the constrained functions is singular (dependent traces, as the G1 vertex functions of a
+/// 4-split surface at a boundary corner), the general projection of surface_essential.hpp.
 Constraints surface_dirichlet_constraints(const Space& space, const std::vector<BoundaryEdge>& edges,
                                           const SurfaceField& g, int quad_degree);
 

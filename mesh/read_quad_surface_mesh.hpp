@@ -1,8 +1,8 @@
 #pragma once
 /// @file
-/// Readers of quad meshes in 3D (closed quad surfaces for the 4-split G1 space): Wavefront OBJ and
+/// Readers of quad meshes in 3D (closed or open quad surfaces for the 4-split G1 space): Wavefront OBJ and
 /// OFF whose faces are all quadrilaterals. They only parse; the geometry is checked by
-/// validate_quad_surface (validate_quad_surface.hpp), the topology (manifold, closed) by the space,
+/// validate_quad_surface (validate_quad_surface.hpp), the topology (at most two faces per edge) by the space,
 /// which names the file in its messages.
 
 #include <Eigen/Core>

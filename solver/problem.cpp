@@ -158,14 +158,22 @@ ProblemSpec parse_surface_problem(const ConfigNode& node) {
   p.pde = node["pde"].as_string() == "surface_biharmonic" ? Pde::surface_biharmonic : Pde::laplace_beltrami;
   if (p.pde == Pde::surface_biharmonic) {
     // Δ_Γ²u + c u = f: ∫ Δ_Γu Δ_Γv + c ∫ u v (the planar bilaplace integrator reads the covariant
-    // Hessian on a surface). Closed surfaces only, and c > 0: without it constants are the kernel.
-    if (p.reaction <= 0)
+    // Hessian on a surface). Closed surfaces need c > 0 (constants are the kernel); open ones are
+    // clamped on their whole boundary (u, ∂_ν u from `exact`), which fixes u for any c >= 0.
+    const auto boundary = node.find("boundary");
+    if (p.reaction <= 0 && !boundary)
       (node.has("reaction") ? node["reaction"] : node).fail(
-          "surface_biharmonic needs reaction > 0 (a closed surface's constants are the kernel of Δ_Γ²)");
-    if (const auto boundary = node.find("boundary"))
-      boundary->fail("surface_biharmonic is solved on closed surfaces only (no boundary conditions yet)");
+          "surface_biharmonic needs reaction > 0 on a closed surface (its constants are the kernel of Δ_Γ²)");
+    if (boundary) {
+      for (const std::string& key : boundary->keys())
+        if (key != "all") (*boundary)[key].fail("a surface has one boundary part, 'all' (its whole boundary curve)");
+      const ConfigNode all = (*boundary)["all"];
+      all.as_choice({"clamped"});
+      p.boundary.push_back({"all", BoundaryKind::clamped, all.where()});
+      if (!node.has("exact")) boundary->fail("clamped data (u and its conormal derivative) are taken from 'exact': give it");
+    }
     if (const auto value = node.find("boundary_value"))
-      value->fail("surface_biharmonic is solved on closed surfaces only (no boundary data)");
+      value->fail("surface_biharmonic takes its clamped data from 'exact' (no boundary_value)");
     // Not yet verified against a known spectrum (the smooth cube has none in closed form).
     if (const auto eigen = node.find("eigen"))
       eigen->fail("eigenproblems of surface_biharmonic are not supported yet (laplace_beltrami's are)");
@@ -188,7 +196,7 @@ ProblemSpec parse_surface_problem(const ConfigNode& node) {
     p.source_where = source->where();
   }
   // Open surfaces: u = g on the whole boundary curve, g from boundary_value or else from exact.
-  if (const auto boundary = node.find("boundary")) {
+  if (const auto boundary = node.find("boundary"); boundary && p.pde == Pde::laplace_beltrami) {
     // Not check_keys: part names are free names elsewhere; a surface has only `all`.
     for (const std::string& key : boundary->keys())
       if (key != "all") (*boundary)[key].fail("a surface has one boundary part, 'all' (its whole boundary curve)");
@@ -205,7 +213,7 @@ ProblemSpec parse_surface_problem(const ConfigNode& node) {
     } else {
       boundary->fail("Dirichlet data need 'boundary_value' (a function of x, y, z) or 'exact'");
     }
-  } else if (const auto value = node.find("boundary_value")) {
+  } else if (const auto value = node.find("boundary_value"); value && p.pde == Pde::laplace_beltrami) {
     value->fail("'boundary_value' needs 'boundary: {all: dirichlet}'");
   }
   return p;

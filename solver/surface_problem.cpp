@@ -5,6 +5,7 @@
 #include "assembly/error_norms.hpp"
 #include "assembly/surface_calculus.hpp"
 #include "assembly/surface_dirichlet.hpp"
+#include "assembly/surface_essential.hpp"
 #include "assembly/surface_load.hpp"
 #include "config/errors.hpp"
 #include "spaces/lifted_space.hpp"
@@ -130,10 +131,14 @@ void SurfaceBiharmonicFormulation::check() const {
   const ProblemSpec& p = problem();
   if (space().ambient_dimension() != 3)
     throw InputError(p.source_where + ": surface_biharmonic needs a space on a surface in 3D");
-  if (space().boundary_edges("all").empty()) return;
-  if (!dynamic_cast<const LiftedSpace*>(&space()))
-    throw InputError(p.source_where + ": surface_biharmonic on an open surface needs a lifted (graph) surface; this "
-                                      "surface's boundary conditions are not implemented");
+  const bool open = !space().boundary_edges("all").empty();
+  if (!open && !p.boundary.empty())
+    throw InputError(p.boundary.front().where + ": this surface is closed: it has no boundary for clamped data");
+  if (!open) return;
+  // Lifted (graph) surfaces are built in code, where the clamped condition is implied.
+  if (p.boundary.empty() && !dynamic_cast<const LiftedSpace*>(&space()))
+    throw InputError(p.source_where + ": this surface has a boundary: give problem.boundary: {all: clamped} "
+                                      "(u and its conormal derivative from exact)");
   if (!p.surface_exact)
     throw InputError(p.source_where + ": surface_biharmonic on an open surface takes its clamped data from 'exact'");
 }
@@ -180,6 +185,18 @@ Constraints SurfaceBiharmonicFormulation::constraints() const {
     };
     const std::vector<BoundaryEdge> all = lifted->planar().boundary_edges("all");
     return impose_essential(lifted->planar(), EssentialBoundary{all, all}, value, normal, quadrature_degree());
+  }
+  // Any other open surface: clamped through the surface's own conormal ν, u = u_exact and
+  // ∂_ν u = ∇u_exact · ν (ν tangent to Γ, so the ambient gradient gives the surface one's component).
+  if (!space().boundary_edges("all").empty()) {
+    const SymbolicFunction u = *problem().surface_exact;
+    const SymbolicFunction ux = u.diff_x(), uy = u.diff_y(), uz = u.diff_z();
+    return surface_essential_constraints(
+        space(), space().boundary_edges("all"), [u](const Eigen::Vector3d& x) { return u.at(x); },
+        [ux, uy, uz](const Eigen::Vector3d& x, const Eigen::Vector3d& nu) {
+          return ux.at(x) * nu(0) + uy.at(x) * nu(1) + uz.at(x) * nu(2);
+        },
+        quadrature_degree());
   }
   // Closed surface, c > 0: no essential condition.
   Constraints c;

@@ -44,8 +44,10 @@ class SurfaceFormulation final : public Formulation {
   mutable double area_ = 0;
 };
 
-/// The surface biharmonic problem Δ_Γ²u + c u = f (c = `reaction` > 0, default 1) on a closed
-/// surface, as a Formulation: matrix ∫ Δ_Γu Δ_Γv + c ∫ u v (ProblemSpec::terms: the bilaplace
+/// The surface biharmonic problem Δ_Γ²u + c u = f (c = `reaction`, default 1; > 0 on a closed
+/// surface) on a closed surface, or on an open one clamped on its whole boundary (u and the
+/// conormal derivative ∂_ν u from the exact solution: surface_essential.hpp; lifted graph surfaces
+/// through their planar space), as a Formulation: matrix ∫ Δ_Γu Δ_Γv + c ∫ u v (ProblemSpec::terms: the bilaplace
 /// integrator on the covariant Hessians, and mass), on C1 surface spaces. The load is the given
 /// source, or with an exact solution u the bilinear form applied to u,
 ///   ℓ(v) = ∫ Δ_Γu Δ_Γv + c u v,   Δ_Γu = tr ∇²u − n·∇²u n − H ∂_n u   pointwise,

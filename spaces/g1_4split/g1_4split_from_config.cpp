@@ -12,11 +12,19 @@
 #include "spaces/g1_4split/g1_4split_meshes.hpp"
 #include "spaces/g1_4split/g1_4split_space.hpp"
 #include "spaces/g1_4split/g1_4split_surface_space.hpp"
+#include "spaces/g1_4split/open_quad_surfaces.hpp"
 #include "spaces/space_catalogue.hpp"
 
 namespace iga {
 
 namespace {
+
+/// The built-in surfaces: closed, then open.
+std::vector<std::string> g14_surface_names() {
+  std::vector<std::string> names = {"cube", "split_tetrahedron"};
+  for (const std::string& n : open_quad_surface_names()) names.push_back(n);
+  return names;
+}
 
 /// Builds the space with `build(options)`; if the degree is below the separability degree, fails
 /// at `degree_node` naming `what` and the smallest degree (up to 10) that works.
@@ -44,16 +52,18 @@ SpacePtr build_or_name_the_separable_degree(const G14Options& o, const ConfigNod
   }
 }
 
-/// A closed quad surface in 3D: a built-in (cube, split_tetrahedron) or a quad .obj/.off file.
+/// A quad surface in 3D, closed or open: a built-in (cube, split_tetrahedron, or one of
+/// open_quad_surfaces.hpp) or a quad .obj/.off file.
 std::pair<QuadTopology, std::vector<Eigen::Vector3d>> surface_mesh(const ConfigNode& domain) {
   domain.check_keys({"type", "mesh", "file"});
   const bool builtin = domain.has("mesh"), file = domain.has("file");
   if (builtin == file)
-    domain.fail("give either 'mesh' (cube or split_tetrahedron) or 'file' (a quad mesh in .obj or .off), not both");
+    domain.fail("give either 'mesh' (a built-in surface) or 'file' (a quad mesh in .obj or .off), not both");
   if (builtin) {
-    const std::string name = domain["mesh"].as_choice({"cube", "split_tetrahedron"});
+    const std::string name = domain["mesh"].as_choice(g14_surface_names());
     if (name == "cube") return {cube_topology(), cube_vertices()};
-    return {split_tetrahedron_topology(), split_tetrahedron_vertices()};
+    if (name == "split_tetrahedron") return {split_tetrahedron_topology(), split_tetrahedron_vertices()};
+    return open_quad_surface(name);
   }
   const ConfigNode node = domain["file"];
   const std::filesystem::path path = resolve_config_file(node);
@@ -200,8 +210,8 @@ SpaceCatalogueEntry g1_4split_catalogue_entry() {
           "3 <= k <= 10, C^r across the split lines (default r = 1), G1 across mesh edges (C1 in the plane)",
           {{"multipatch", "name: a built-in layout of quadrilaterals", "name", layouts},
            {"mesh_file", "file: quadrilaterals from .msh, .geo (mesh_size, recombine), .obj, .off, G+Smo .xml", "", {}},
-           {"surface", "a smooth surface in 3D from a closed quad mesh: mesh, or file: .obj, .off", "mesh",
-            {"cube", "split_tetrahedron"}}}};
+           {"surface", "a smooth surface in 3D from a quad mesh, closed or open: mesh, or file: .obj, .off", "mesh",
+            g14_surface_names()}}};
 }
 
 }  // namespace iga
