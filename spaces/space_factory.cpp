@@ -4,6 +4,7 @@
 #include "spaces/g1/g1_from_config.hpp"
 #include "spaces/g1_4split/g1_4split_from_config.hpp"
 #include "spaces/surface/surface_space_from_config.hpp"
+#include "spaces/surface_patch/surface_patch_from_config.hpp"
 #include "spaces/tmesh/tmesh_from_config.hpp"
 #include "spaces/ws4/ws4_from_config.hpp"
 
@@ -18,7 +19,13 @@ std::vector<SpaceCatalogueEntry> space_catalogue() {
 
 SpacePtr make_space(const ConfigNode& domain, const ConfigNode& space, int level, const Space* coarser) {
   const std::string type = space["type"].as_choice(space_types());
-  if (type == "bspline") return make_bspline_space(domain, space, level);
+  if (type == "bspline") {
+    // B-splines on a NURBS patch in 3D are a surface space of their own (spaces/surface_patch/).
+    const auto domain_type = domain.is_map() ? domain.find("type") : std::nullopt;
+    if (domain_type && domain_type->is_scalar() && domain_type->as_string() == "surface_patch")
+      return make_surface_patch_bspline_space(domain, space, level);
+    return make_bspline_space(domain, space, level);
+  }
   if (type == "ws4") return make_ws4_space(domain, space, level);
   if (type == "tmesh") return make_tmesh_space(domain, space, level);
   if (type == "g1") return make_g1_space(domain, space, level);
@@ -29,7 +36,10 @@ SpacePtr make_space(const ConfigNode& domain, const ConfigNode& space, int level
 
 std::vector<SpaceRequestSize> requested_space_sizes(const ConfigNode& domain, const ConfigNode& space, int levels) {
   const auto type = space.is_map() ? space.find("type") : std::nullopt;
-  if (type && type->is_scalar() && type->as_string() == "bspline") return bspline_requested_sizes(space, levels);
+  const auto domain_type = domain.is_map() ? domain.find("type") : std::nullopt;
+  const bool surface_patch = domain_type && domain_type->is_scalar() && domain_type->as_string() == "surface_patch";
+  if (type && type->is_scalar() && type->as_string() == "bspline" && !surface_patch)
+    return bspline_requested_sizes(space, levels);
   if (type && type->is_scalar() && type->as_string() == "g1_4split")
     return g1_4split_requested_sizes(domain, space, levels);
   return {};

@@ -11,6 +11,7 @@
 #include "spaces/bspline/knot_vector.hpp"
 #include "spaces/bspline/tensor_bspline_space.hpp"
 #include "spaces/space_catalogue.hpp"
+#include "spaces/surface_patch/surface_patch_from_config.hpp"
 
 namespace iga {
 
@@ -199,7 +200,8 @@ SpaceCatalogueEntry bspline_catalogue_entry() {
           {{"rectangle", "min: [x, y], max: [x, y]", "", {}},
            {"quarter_annulus", "inner: r0, outer: r1 (exact NURBS geometry)", "", {}},
            {"patch", "one B-spline or NURBS patch: degree, knots_u, knots_v, control_points, weights", "", {}},
-           {"mesh_file", "file: one patch of a G+Smo .xml file", "", {}}}};
+           {"mesh_file", "file: one patch of a G+Smo .xml file", "", {}},
+           surface_patch_domain_family()}};
 }
 
 }  // namespace iga
