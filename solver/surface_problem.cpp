@@ -132,8 +132,9 @@ void SurfaceBiharmonicFormulation::check() const {
     throw InputError(p.source_where + ": surface_biharmonic needs a space on a surface in 3D");
   if (space().boundary_edges("all").empty()) return;
   if (!dynamic_cast<const LiftedSpace*>(&space()))
-    throw InputError(p.source_where + ": surface_biharmonic on an open surface needs a lifted (graph) surface; this "
-                                      "surface's boundary conditions are not implemented");
+    throw InputError(p.source_where + ": surface_biharmonic on an open surface needs a lifted surface (a graph surface, "
+                                      "or a surface_patch with no periodic direction); this surface's boundary "
+                                      "conditions are not implemented");
   if (!p.surface_exact)
     throw InputError(p.source_where + ": surface_biharmonic on an open surface takes its clamped data from 'exact'");
 }
