@@ -4,7 +4,6 @@
 #include "spaces/g1/g1_from_config.hpp"
 #include "spaces/g1_4split/g1_4split_from_config.hpp"
 #include "spaces/surface/surface_space_from_config.hpp"
-#include "spaces/surface_patch/surface_patch_from_config.hpp"
 #include "spaces/tmesh/tmesh_from_config.hpp"
 #include "spaces/ws4/ws4_from_config.hpp"
 
@@ -19,13 +18,7 @@ std::vector<SpaceCatalogueEntry> space_catalogue() {
 
 SpacePtr make_space(const ConfigNode& domain, const ConfigNode& space, int level, const Space* coarser) {
   const std::string type = space["type"].as_choice(space_types());
-  if (type == "bspline") {
-    // B-splines on a NURBS patch in 3D are a surface space of their own (spaces/surface_patch/).
-    const auto domain_type = domain.is_map() ? domain.find("type") : std::nullopt;
-    if (domain_type && domain_type->is_scalar() && domain_type->as_string() == "surface_patch")
-      return make_surface_patch_bspline_space(domain, space, level);
-    return make_bspline_space(domain, space, level);
-  }
+  if (type == "bspline") return make_bspline_space(domain, space, level);
   if (type == "ws4") return make_ws4_space(domain, space, level);
   if (type == "tmesh") return make_tmesh_space(domain, space, level);
   if (type == "g1") return make_g1_space(domain, space, level);

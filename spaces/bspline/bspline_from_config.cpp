@@ -128,6 +128,10 @@ std::shared_ptr<const PatchGeometry> make_patch_geometry(const ConfigNode& domai
 }
 
 SpacePtr make_bspline_space(const ConfigNode& domain, const ConfigNode& space, int level) {
+  // B-splines on a NURBS patch in 3D are a surface space of their own (spaces/surface_patch/).
+  if (domain["type"].as_choice({"rectangle", "quarter_annulus", "patch", "mesh_file", "surface_patch"}) ==
+      "surface_patch")
+    return make_surface_patch_bspline_space(domain, space, level);
   space.check_keys({"type", "degree", "regularity", "elements"});
   if (space.has("type")) space["type"].as_choice({"bspline"});
   const ConfigNode dn = space["degree"];
