@@ -8,7 +8,10 @@
 #include <cmath>
 #include <string>
 
+#include "config/errors.hpp"
 #include "spaces/lifted_space.hpp"
+#include "tests/support/check_space.hpp"
+#include "tests/support/scratch_files.hpp"
 #include "tests/support/test_support.hpp"
 
 namespace iga {
@@ -154,6 +157,46 @@ TEST(SurfacePatch, XmlRoofIsTheBuiltInSector) {
                       (pa.mean_curvature - pb.mean_curvature).cwiseAbs().maxCoeff()});
   }
   EXPECT_LT(worst, 1e-14);  // the file's 17 digits
+}
+
+/// A closed unit cylinder about the z axis, 0 ≤ z ≤ 1, as a G+Smo file: the circle of four quarter
+/// arcs (9 control points, the first repeated last, weights 1, 1/√2, …) in u, a segment in v.
+std::string closed_cylinder_xml() {
+  const double cx[9] = {1, 1, 0, -1, -1, -1, 0, 1, 1}, cy[9] = {0, 1, 1, 1, 0, -1, -1, -1, 0};
+  std::string coefs, weights;
+  for (int j = 0; j < 2; ++j)
+    for (int i = 0; i < 9; ++i) {
+      coefs += std::to_string(cx[i]) + " " + std::to_string(cy[i]) + " " + std::to_string(j) + "\n";
+      weights += (i % 2 ? "0.70710678118654752 " : "1 ");
+    }
+  return "<xml><Geometry type=\"TensorNurbs2\" id=\"0\"><Basis type=\"TensorNurbsBasis2\">"
+         "<Basis type=\"TensorBSplineBasis2\">"
+         "<Basis type=\"BSplineBasis\" index=\"0\"><KnotVector degree=\"2\">0 0 0 1 1 2 2 3 3 4 4 4</KnotVector></Basis>"
+         "<Basis type=\"BSplineBasis\" index=\"1\"><KnotVector degree=\"1\">0 0 1 1</KnotVector></Basis>"
+         "</Basis><weights>" + weights + "</weights></Basis><coefs geoDim=\"3\">" + coefs + "</coefs></Geometry></xml>\n";
+}
+
+TEST(SurfacePatch, PeriodicFilePatchClosesC1) {
+  const std::filesystem::path file = test::scratch_file("closed_cylinder.xml", closed_cylinder_xml());
+  const std::string domain = "{type: surface_patch, file: \"" + file.string() + "\", periodic: u}";
+  const SpacePtr s = test::space_from_yaml("domain: " + domain + "\nspace: {type: bspline, degree: 3, elements: [8, 2]}\n");
+  // u: the seam and three more arc joints at C1 (2 knots each) and 4 simple knots; v open: p + 2.
+  EXPECT_EQ(s->dimension(), (4 * 2 + 4) * (3 + 2));
+  EXPECT_EQ(s->continuity(), 1);  // the file's double knots are C0 by multiplicity, C1 as measured
+  EXPECT_EQ(s->boundary_edges("all").size(), 2u * 8);  // the two rims only
+  const test::SpaceCheck r = test::check_space(*s, 1, 1e-3);
+  EXPECT_EQ(r.edges_checked, 2 * 8 + 8);  // 8 per row along u (the seam included), 8 across v
+  EXPECT_LT(r.partition_of_unity, 1e-14);
+  EXPECT_LT(r.value_jump, 1e-12);
+  EXPECT_LT(r.gradient_jump, 1e-12);
+  // Declared periodic in v, where it does not close: refused.
+  try {
+    test::space_from_yaml("domain: {type: surface_patch, file: \"" + file.string() +
+                          "\", periodic: both}\nspace: {type: bspline, degree: 3}\n");
+    ADD_FAILURE() << "a patch that does not close in v was accepted as periodic";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("does not close"), std::string::npos) << e.what();
+  }
 }
 
 // Expected p + 1 / p / p − 1 for the C1 cubic spaces (exact geometry: nothing geometric limits them).
