@@ -141,10 +141,11 @@ GismoPatch read_patch(const std::string& source, const XMLElement* g, const Gism
                                std::to_string(dim) + " coordinates = " + std::to_string(nu * nv * dim) + " numbers (got " +
                                std::to_string(c.size()) + ")");
   for (size_t i = 0; i < nu * nv; ++i) {
-    if (dim == 3 && c[dim * i + 2] != 0.0)
+    if (dim == 3 && limits.planar && c[dim * i + 2] != 0.0)
       fail_at(source, coefs, "control point " + std::to_string(i) + " has z = " + format_number(c[dim * i + 2]) +
                                  " (planar domains need z = 0)");
     p.control_points.emplace_back(c[dim * i], c[dim * i + 1]);
+    p.z.push_back(dim == 3 ? c[dim * i + 2] : 0.0);
   }
   if (weights) {
     p.weights = numbers(source, weights, limits);

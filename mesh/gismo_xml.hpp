@@ -28,6 +28,7 @@ struct GismoPatch {
   std::array<int, 2> degree{};                 ///< (u, v)
   std::array<std::vector<double>, 2> knots;    ///< full knot vectors (u, v), as in the file
   std::vector<Eigen::Vector2d> control_points; ///< numbered i + j * n_u (u fastest, as G+Smo stores them)
+  std::vector<double> z;                       ///< their z (geoDim 3; zeros for geoDim 2)
   std::vector<double> weights;                 ///< TensorNurbs2 only (one per control point), else empty
   /// "patch 2 (Geometry id 7, line 40)", for messages.
   std::string describe() const;
@@ -60,6 +61,8 @@ struct GismoXmlLimits {
   int max_patches = 10000;
   std::size_t max_numbers = 4000000;  ///< numbers in one element (knots, coefficients, weights)
   int max_degree = 20;
+  /// Planar domains refuse control points with z != 0; surface patches in 3D read them (GismoPatch::z).
+  bool planar = true;
 };
 
 /// Read and check `path` (see the file comment). A file of one or more `<Geometry>` elements and no

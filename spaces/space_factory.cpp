@@ -29,7 +29,10 @@ SpacePtr make_space(const ConfigNode& domain, const ConfigNode& space, int level
 
 std::vector<SpaceRequestSize> requested_space_sizes(const ConfigNode& domain, const ConfigNode& space, int levels) {
   const auto type = space.is_map() ? space.find("type") : std::nullopt;
-  if (type && type->is_scalar() && type->as_string() == "bspline") return bspline_requested_sizes(space, levels);
+  const auto domain_type = domain.is_map() ? domain.find("type") : std::nullopt;
+  const bool surface_patch = domain_type && domain_type->is_scalar() && domain_type->as_string() == "surface_patch";
+  if (type && type->is_scalar() && type->as_string() == "bspline" && !surface_patch)
+    return bspline_requested_sizes(space, levels);
   if (type && type->is_scalar() && type->as_string() == "g1_4split")
     return g1_4split_requested_sizes(domain, space, levels);
   return {};

@@ -11,6 +11,7 @@
 #include "spaces/bspline/knot_vector.hpp"
 #include "spaces/bspline/tensor_bspline_space.hpp"
 #include "spaces/space_catalogue.hpp"
+#include "spaces/surface_patch/surface_patch_from_config.hpp"
 
 namespace iga {
 
@@ -127,6 +128,10 @@ std::shared_ptr<const PatchGeometry> make_patch_geometry(const ConfigNode& domai
 }
 
 SpacePtr make_bspline_space(const ConfigNode& domain, const ConfigNode& space, int level) {
+  // B-splines on a NURBS patch in 3D are a surface space of their own (spaces/surface_patch/).
+  if (domain["type"].as_choice({"rectangle", "quarter_annulus", "patch", "mesh_file", "surface_patch"}) ==
+      "surface_patch")
+    return make_surface_patch_bspline_space(domain, space, level);
   space.check_keys({"type", "degree", "regularity", "elements"});
   if (space.has("type")) space["type"].as_choice({"bspline"});
   const ConfigNode dn = space["degree"];
@@ -199,7 +204,8 @@ SpaceCatalogueEntry bspline_catalogue_entry() {
           {{"rectangle", "min: [x, y], max: [x, y]", "", {}},
            {"quarter_annulus", "inner: r0, outer: r1 (exact NURBS geometry)", "", {}},
            {"patch", "one B-spline or NURBS patch: degree, knots_u, knots_v, control_points, weights", "", {}},
-           {"mesh_file", "file: one patch of a G+Smo .xml file", "", {}}}};
+           {"mesh_file", "file: one patch of a G+Smo .xml file", "", {}},
+           surface_patch_domain_family()}};
 }
 
 }  // namespace iga

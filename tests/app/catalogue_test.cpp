@@ -116,9 +116,9 @@ TEST(Catalogue, NamesTheBuiltInLayoutsEachSpaceIsBuiltOn) {
       }
       EXPECT_EQ(taken, d.builtins) << entry.type << " on " << d.type << ": listed names its builder does not take";
     }
-  // g1 and g1_4split on multipatch, g1_4split and surface on surface; g1_4split refuses the three
-  // g1 layouts with triangles (4t_crisscross, 4t_star, 2q2t_square).
-  EXPECT_EQ(families, 4);
+  // g1 and g1_4split on multipatch, g1_4split and surface on surface, bspline on surface_patch
+  // (shapes); g1_4split refuses the three g1 layouts with triangles (4t_crisscross, 4t_star, 2q2t_square).
+  EXPECT_EQ(families, 5);
   EXPECT_EQ(refused, 3);
 }
 
