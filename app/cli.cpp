@@ -212,6 +212,12 @@ int run_configs(const std::vector<std::string>& paths, const std::string& output
     plot_eigen_comparison(spaces, "eigenvalues — " + name, (dir / "comparison.svg").string());
     table = format_eigen_comparison(spaces);
     std::ofstream(dir / "comparison.txt") << table;
+    // eigen.spectrum: the spaces' normalized spectra in one figure (each space's finest whole one).
+    std::vector<SpectrumCurve> spectra;
+    for (const ComparedStudy& c : compared)
+      if (auto curve = finest_normalized_spectrum(*eigen, c.result.eigen, c.label)) spectra.push_back(std::move(*curve));
+    if (!spectra.empty())
+      plot_normalized_spectrum(spectra, "normalized spectra — " + name, (dir / "spectrum_comparison.svg").string());
   } else if (const auto norm = compared_norm(compared)) {
     const std::string name = std::filesystem::path(paths.front()).stem().string();
     plot_comparison(compared, *norm, to_string(studies.front().second.problem.pde) + " — " + name,

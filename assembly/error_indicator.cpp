@@ -71,12 +71,17 @@ std::vector<double> boundary_laplacian_residuals(const Space& space, const Eigen
 
 }  // namespace
 
-std::vector<double> poisson_residual_indicators(const Space& space, const Eigen::VectorXd& coefficients,
-                                                const ScalarField& source, int quadrature_degree) {
-  // h_K² ‖f − (−Δu_h)‖², h_K² = |K|.
+namespace {
+/// η_K of −Δu + c u = f: h_K² ‖f − (−Δu_h + c u_h)‖²_K (h_K² = |K|) and, for C0 spaces, the jumps.
+std::vector<double> second_order_residual_indicators(const Space& space, const Eigen::VectorXd& coefficients,
+                                                     const ScalarField& source, double reaction, int quadrature_degree) {
+  const unsigned flags = update_gradients | update_hessians | (reaction != 0.0 ? update_values : 0u);
   std::vector<double> eta = element_residuals(
-      space, coefficients, source, quadrature_degree, update_gradients | update_hessians,
-      [](const FunctionValues& u, int q) { return -(u.dxx[q] + u.dyy[q]); }, 1);
+      space, coefficients, source, quadrature_degree, flags,
+      [reaction](const FunctionValues& u, int q) {
+        return -(u.dxx[q] + u.dyy[q]) + (reaction != 0.0 ? reaction * u.value[q] : 0.0);
+      },
+      1);
   // The normal-derivative jumps vanish identically in C1 spaces; only C0 spaces pay for them.
   if (space.continuity() == 0) {
     const std::vector<double> jumps = normal_derivative_jump_terms(space, coefficients, quadrature_degree);
@@ -84,6 +89,19 @@ std::vector<double> poisson_residual_indicators(const Space& space, const Eigen:
   }
   for (double& x : eta) x = std::sqrt(x);
   return eta;
+}
+}  // namespace
+
+std::vector<double> poisson_residual_indicators(const Space& space, const Eigen::VectorXd& coefficients,
+                                                const ScalarField& source, int quadrature_degree) {
+  return second_order_residual_indicators(space, coefficients, source, 0.0, quadrature_degree);
+}
+
+std::vector<double> eigen_residual_indicators(const Space& space, const Eigen::VectorXd& coefficients, double eigenvalue,
+                                              int quadrature_degree) {
+  // −Δu_h − λ_h u_h against f = 0.
+  return second_order_residual_indicators(
+      space, coefficients, [](const Point2&) { return 0.0; }, -eigenvalue, quadrature_degree);
 }
 
 std::vector<double> plate_residual_indicators(const Space& space, const Eigen::VectorXd& coefficients,

@@ -28,6 +28,13 @@ namespace iga {
 std::vector<double> poisson_residual_indicators(const Space& space, const Eigen::VectorXd& coefficients,
                                                 const ScalarField& source, int quadrature_degree);
 
+/// η_K of an eigenpair (λ_h, u_h) of −Δu = λu: the Poisson indicator with f = λ_h u_h, i.e.
+/// η_K² = h_K² ‖λ_h u_h + Δu_h‖²_K (+ the jump terms of C0 spaces). For a simple eigenvalue it
+/// bounds the eigenfunction's energy error up to higher-order terms (Durán, Padra, Rodríguez 2003),
+/// whose square the eigenvalue error is.
+std::vector<double> eigen_residual_indicators(const Space& space, const Eigen::VectorXd& coefficients, double eigenvalue,
+                                              int quadrature_degree);
+
 /// η_K of the plate residual above, one per element (not squared); `simply_supported` are the
 /// boundary edges where Δu = `laplacian` (g_L) is the natural condition (empty: all clamped). Throws
 /// std::invalid_argument unless space.higher_derivatives() and the space lists its interior edges

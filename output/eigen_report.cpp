@@ -57,6 +57,23 @@ std::string format_eigen_table(const std::vector<EigenRow>& rows) {
   return out;
 }
 
+namespace {
+/// The references of a whole spectrum of N eigenvalues: the formula's N smallest, or the list.
+std::vector<double> spectrum_references(const EigenSpec& spec, int N) {
+  return spec.formula.empty() ? spec.exact : eigenvalues_from_formula(spec.formula, spec.formula_where, N);
+}
+
+/// The ratios of one level's rows, when every eigenvalue has a reference.
+std::optional<std::vector<double>> all_ratios(const std::vector<SpectrumRow>& rows) {
+  std::vector<double> ratios;
+  for (const SpectrumRow& r : rows) {
+    if (!r.ratio) return std::nullopt;
+    ratios.push_back(*r.ratio);
+  }
+  return ratios;
+}
+}  // namespace
+
 void write_spectrum_files(const EigenSpec& spec, const std::vector<EigenLevel>& levels, const std::string& directory,
                           const std::string& title, bool plot) {
   std::vector<SpectrumRow> rows;
@@ -64,14 +81,10 @@ void write_spectrum_files(const EigenSpec& spec, const std::vector<EigenLevel>& 
   for (const EigenLevel& level : levels) {
     const int N = static_cast<int>(level.spectrum.size());
     if (N == 0) continue;
-    const std::vector<double> exact =
-        spec.formula.empty() ? spec.exact : eigenvalues_from_formula(spec.formula, spec.formula_where, N);
-    const std::vector<SpectrumRow> mine = spectrum_rows(level, exact);
+    const std::vector<SpectrumRow> mine = spectrum_rows(level, spectrum_references(spec, N));
     rows.insert(rows.end(), mine.begin(), mine.end());
-    if (static_cast<int>(exact.size()) < N) continue;
-    SpectrumCurve curve{"level " + std::to_string(level.level) + ", N = " + std::to_string(N), {}};
-    for (const SpectrumRow& r : mine) curve.ratios.push_back(*r.ratio);
-    curves.push_back(std::move(curve));
+    if (auto ratios = all_ratios(mine))
+      curves.push_back({"level " + std::to_string(level.level) + ", N = " + std::to_string(N), std::move(*ratios)});
   }
   if (rows.empty()) return;
   const std::string csv = directory + "/spectrum.csv";
@@ -82,6 +95,17 @@ void write_spectrum_files(const EigenSpec& spec, const std::vector<EigenLevel>& 
     out << r.level << ',' << r.n << ',' << r.N << ',' << number(r.eigenvalue, "%.17e") << ','
         << number(r.reference, "%.17e") << ',' << number(r.ratio, "%.15f") << '\n';
   if (plot && !curves.empty()) plot_normalized_spectrum(curves, title, directory + "/spectrum.svg");
+}
+
+std::optional<SpectrumCurve> finest_normalized_spectrum(const EigenSpec& spec, const std::vector<EigenLevel>& levels,
+                                                        const std::string& label) {
+  for (auto level = levels.rbegin(); level != levels.rend(); ++level) {
+    const int N = static_cast<int>(level->spectrum.size());
+    if (N == 0) continue;
+    if (auto ratios = all_ratios(spectrum_rows(*level, spectrum_references(spec, N))))
+      return SpectrumCurve{label + ", N = " + std::to_string(N), std::move(*ratios)};
+  }
+  return std::nullopt;
 }
 
 std::string format_eigen_comparison(const std::vector<std::pair<std::string, std::vector<EigenRow>>>& spaces) {

@@ -5,9 +5,11 @@
 /// where there is no reference or no previous level), and the same as aligned text.
 
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "output/eigen_plot.hpp"
 #include "solver/eigen_spec.hpp"
 #include "solver/eigen_table.hpp"
 
@@ -25,6 +27,12 @@ std::string format_eigen_table(const std::vector<EigenRow>& rows);
 /// for its whole spectrum. Nothing when no level has one.
 void write_spectrum_files(const EigenSpec& spec, const std::vector<EigenLevel>& levels, const std::string& directory,
                           const std::string& title, bool plot);
+
+/// The normalized spectrum λ_h,n / λ_n of the finest level with a whole spectrum and references for
+/// all of it, labelled `label` and its N (for a comparison of spaces: one curve per space); none
+/// when no level has both.
+std::optional<SpectrumCurve> finest_normalized_spectrum(const EigenSpec& spec, const std::vector<EigenLevel>& levels,
+                                                        const std::string& label);
 
 /// A comparison of spaces: per space and level, the DOFs and the largest relative eigenvalue error.
 std::string format_eigen_comparison(const std::vector<std::pair<std::string, std::vector<EigenRow>>>& spaces);

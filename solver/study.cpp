@@ -155,7 +155,10 @@ StudySettings parse_study(const ConfigNode& root, const std::string& config_path
         if (const auto k = root["solver"].find(key))
           k->fail("not used by the eigensolver (SLEPc shift-and-invert with a MUMPS Cholesky factor): remove it");
     }
-    if (s.adaptive) refinement->fail("adaptive refinement of eigenproblems (problem.eigen) is not supported yet");
+    // The indicator of −Δu = λu (eigen_residual_indicators); plates and surfaces have none yet.
+    if (s.adaptive && s.problem.pde != Pde::poisson)
+      refinement->fail("adaptive refinement of eigenproblems (problem.eigen) is for pde: poisson (driven by the first "
+                       "eigenfunction of −Δu = λu), not " + to_string(s.problem.pde));
   }
   if ((s.problem.pde == Pde::biharmonic || s.problem.pde == Pde::surface_biharmonic) && coarse->continuity() < 1)
     space_node.fail("the " + to_string(s.problem.pde) + " problem needs a C1 (H2-conforming) space; this " + coarse->type() +
@@ -289,8 +292,11 @@ StudyResult run_study(const StudySettings& settings, const ProgressSink& progres
     next.reset();
     if (settings.adaptive) {
       const ScalarField f = settings.problem.source;
+      // An eigenproblem refines for its first eigenpair: the residual of −Δu_h = λ_h u_h.
       const std::vector<double> eta =
-          settings.problem.pde == Pde::poisson
+          settings.problem.eigen
+              ? eigen_residual_indicators(*space, sol.coefficients, sol.eigenvalues[0], space->error_quadrature_degree())
+          : settings.problem.pde == Pde::poisson
               ? poisson_residual_indicators(*space, sol.coefficients, f, space->error_quadrature_degree())
               : plate_residual_indicators(
                     *space, sol.coefficients, f, space->error_quadrature_degree(),

@@ -211,6 +211,10 @@ TEST_P(ShippedConfig, RunsAndWritesReadableOutput) {
     EXPECT_EQ(comparison.rfind("space,level,h,dofs,l2,h1,h2,t_solution,t_errors", 0), 0u);
     EXPECT_GT(fs::file_size(out / "comparison.svg"), 1000u);
     EXPECT_TRUE(fs::exists(out / "comparison.txt"));
+    // Eigenproblems with whole spectra: the spaces' normalized spectra in one figure.
+    const iga::ConfigNode problem = iga::ConfigNode::load_file(config.string())["problem"];
+    if (problem.has("eigen") && problem["eigen"].has("spectrum") && problem["eigen"]["spectrum"].as_bool())
+      EXPECT_GT(fs::file_size(out / "spectrum_comparison.svg"), 1000u) << name;
     int studies = 0;
     for (const auto& entry : fs::directory_iterator(out))
       if (entry.is_directory()) ++studies, check_study(entry.path(), name + "/" + entry.path().filename().string());
