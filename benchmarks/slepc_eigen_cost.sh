@@ -5,10 +5,10 @@
 #   serial eigen (Spectra + CHOLMOD), SLEPc eigen (solver.type: petsc, 1 rank, MUMPS Cholesky),
 #   the CHOLMOD linear solve and the PETSc MUMPS linear solve (ksp: preonly, pc: mumps, with its refinement steps) of
 #   the same operator (exact sin(pi x) sin(pi y)),
-# and prints the `t_solve` of each run (summary.json, wall clock), the CPU time of the whole process
-# (assembly included; robust against the load of a shared machine, where wall times are not) and
-# the load average before it. Not a test: numbers for docs/eigen.md; compare runs made side by
-# side only.
+# and prints the `solve` time of each run (summary.json, wall clock), the CPU time of the whole
+# process (assembly included) and the load average before it. Not a test: numbers for
+# docs/eigen.md; compare runs made side by side only, on a machine that is not saturated (under
+# heavy oversubscription neither wall nor CPU times measured the work: docs/eigen.md).
 # Usage: benchmarks/slepc_eigen_cost.sh BUILD_DIR [ROUNDS] [ELEMENTS_PER_SIDE]
 # SLEPC_OPTIONS (e.g. "-eps_ncv 60") reach the SLEPc run only, as its PETSC_OPTIONS. RUNS lists
 # the runs of a round (default: the four above); `eigen-slepc-purify` is the SLEPc run with
@@ -55,8 +55,8 @@ level = summary["levels"][-1]
 t = level["timings"]
 user, system = map(float, open(out + ".time").read().split()[-2:])
 cpu, wall = user + system, summary["total_seconds"]
-# On a saturated machine the process gets a small, varying share of a core: its CPU time spent in
-# the solve is estimated as the solve's share of the wall time times the process's CPU time.
+# The CPU time spent in the solve, estimated as the solve's share of the wall time times the
+# process's CPU time.
 print(f"{name:18s} round {rnd}  load {load:>5s}  dofs {level['dofs']}  solve {t['solve']:7.2f} s  "
       f"assemble {t['assemble']:7.2f} s  wall {wall:7.2f} s  process CPU {cpu:6.2f} s  "
       f"solve CPU ~ {cpu * t['solve'] / wall:6.2f} s")
