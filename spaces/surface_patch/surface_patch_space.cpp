@@ -6,6 +6,7 @@
 
 #include "config/errors.hpp"
 #include "spaces/bspline/bspline_basis_1d.hpp"
+#include "spaces/bspline/tensor_bernstein_tables.hpp"
 #include "spaces/bspline/patch_geometry.hpp"
 #include "spaces/bspline/tensor_bspline_space.hpp"
 #include "spaces/extracted_evaluator.hpp"
@@ -21,17 +22,7 @@ struct SurfacePatchSpace::Core {
 
   int kind(int /*e*/) const { return 0; }
   int tabulate(int /*kind*/, const std::vector<Point2>& points, int /*order*/, LocalTables& t) const {
-    const int pu = space.dir_[0].degree, pv = space.dir_[1].degree, q = static_cast<int>(points.size());
-    const int du[6] = {0, 1, 0, 2, 1, 0}, dv[6] = {0, 0, 1, 0, 1, 2};
-    for (auto& table : t) table.resize((pu + 1) * (pv + 1), q);
-    for (int k = 0; k < q; ++k) {
-      const Eigen::MatrixXd bu = bernstein_derivatives(pu, points[k].x(), 2);
-      const Eigen::MatrixXd bv = bernstein_derivatives(pv, points[k].y(), 2);
-      for (int d = 0; d < 6; ++d)
-        for (int b = 0; b <= pv; ++b)
-          for (int a = 0; a <= pu; ++a) t[d](a + b * (pu + 1), k) = bu(du[d], a) * bv(dv[d], b);
-    }
-    return 2;
+    return tabulate_tensor_bernstein(space.dir_[0].degree, space.dir_[1].degree, points, t);
   }
   const std::vector<int>& active(int e) const { return space.dofs_[e]; }
   Extraction extraction(int e) const { return extraction_view(space.extraction_[e]); }
