@@ -24,7 +24,7 @@ cd build-sanitize
 # The tests that start MPI (PETSc solves, mpirun) need LeakSanitizer's full stacks: Open MPI's own
 # allocations are suppressed by the functions they come from (sanitize-leaks.supp), which the fast
 # unwinder does not reach. The slow unwinder costs every allocation, so only those tests get it.
-mpi_tests='petsc|Petsc|PETSc|TwoRanks|Mpi|mpi'
+mpi_tests='petsc|Petsc|PETSc|slepc|Slepc|SLEPc|TwoRanks|Mpi|mpi'
 slow_unwind="ASAN_OPTIONS=${ASAN_OPTIONS}:fast_unwind_on_malloc=0"
 if [ $# -gt 0 ]; then  # a selection of the caller's: one pass, full stacks
   env "$slow_unwind" ctest --output-on-failure -j "$jobs" "$@"
