@@ -27,7 +27,8 @@ Constraints surface_essential_constraints(const Space& space, const std::vector<
   std::vector<std::pair<int, double>> rhs_entries;
   for (const BoundaryEdge& edge : edges) {
     const RulePtr rule = space.edge_quadrature(edge.element, edge.local_edge, quad_degree);
-    evaluator->evaluate(edge.element, *rule, update_values | (conormal ? update_gradients : 0u), v);
+    evaluator->evaluate(edge.element, *rule,
+                        update_values | (conormal ? update_gradients | update_surface_curvature : 0u), v);
     const CellShape shape = space.cell_shape(edge.element);
     const Point2 t2 = reference_edge_tangent(shape, edge.local_edge);
     const int q = rule->size(), n = v.num_functions();
@@ -42,8 +43,7 @@ Constraints surface_essential_constraints(const Space& space, const std::vector<
       if (!conormal) continue;
       // ν ⟂ t in the tangent plane, turned away from the element: the reference point moved
       // towards the cell's centre maps to an inward tangent vector.
-      const Eigen::Vector3d normal = J.col(0).cross(J.col(1)).normalized();
-      Eigen::Vector3d nu = t.cross(normal).normalized();
+      Eigen::Vector3d nu = t.cross(Eigen::Vector3d(v.normal3.col(k))).normalized();
       const Point2 p = reference_edge_point(shape, edge.local_edge, 0.5);
       const Eigen::Vector2d centre =
           shape == CellShape::quadrilateral ? Eigen::Vector2d(0.5, 0.5) : Eigen::Vector2d(1.0 / 3, 1.0 / 3);
