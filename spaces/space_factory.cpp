@@ -3,6 +3,7 @@
 #include "spaces/bspline/bspline_from_config.hpp"
 #include "spaces/g1/g1_from_config.hpp"
 #include "spaces/g1_4split/g1_4split_from_config.hpp"
+#include "spaces/graph/graph_from_config.hpp"
 #include "spaces/surface/surface_space_from_config.hpp"
 #include "spaces/tmesh/tmesh_from_config.hpp"
 #include "spaces/ws4/ws4_from_config.hpp"
@@ -17,6 +18,11 @@ std::vector<SpaceCatalogueEntry> space_catalogue() {
 }
 
 SpacePtr make_space(const ConfigNode& domain, const ConfigNode& space, int level, const Space* coarser) {
+  // A graph surface z = g(x, y): the planar space on domain.over, lifted.
+  if (is_graph_domain(domain))
+    return make_graph_space(domain, space, [&](const ConfigNode& over) {
+      return make_space(over, space, level, planar_of_graph(coarser));
+    });
   const std::string type = space["type"].as_choice(space_types());
   if (type == "bspline") return make_bspline_space(domain, space, level);
   if (type == "ws4") return make_ws4_space(domain, space, level);
@@ -28,6 +34,7 @@ SpacePtr make_space(const ConfigNode& domain, const ConfigNode& space, int level
 }
 
 std::vector<SpaceRequestSize> requested_space_sizes(const ConfigNode& domain, const ConfigNode& space, int levels) {
+  if (is_graph_domain(domain) && domain.find("over")) return requested_space_sizes(domain["over"], space, levels);
   const auto type = space.is_map() ? space.find("type") : std::nullopt;
   const auto domain_type = domain.is_map() ? domain.find("type") : std::nullopt;
   const bool surface_patch = domain_type && domain_type->is_scalar() && domain_type->as_string() == "surface_patch";
