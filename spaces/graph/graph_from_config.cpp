@@ -78,6 +78,12 @@ SpacePtr make_graph_space(const ConfigNode& domain, const ConfigNode& space,
                        "surface lifts a planar space: bspline, ws4, tmesh, g1 or g1_4split");
   const std::string text = height.as_string();
   const SymbolicFunction g = SymbolicFunction::parse(text, height.where());
+  // Functions whose derivatives jump make a crease anywhere (not only where a probe point falls);
+  // SymbolicFunction::str() prints GiNaC's abs, csgn and step under these names.
+  for (const char* kink : {"abs(", "sign(", "step("})
+    if (g.str().find(kink) != std::string::npos)
+      height.fail("the height of a graph surface must be smooth (twice differentiable): abs, sign and step make "
+                  "creases, where the lifted space is not C1 (got '" + text + "')");
   SpacePtr planar = build_planar(over);
   if (planar->ambient_dimension() != 2) over.fail("a graph surface lifts a planar domain; this one is in 3D");
   std::shared_ptr<const GraphSurfaceSpace> lifted;
@@ -85,8 +91,7 @@ SpacePtr make_graph_space(const ConfigNode& domain, const ConfigNode& space,
     lifted = std::make_shared<const GraphSurfaceSpace>(std::move(planar), g, text);
   } catch (const InputError& e) {
     throw InputError(std::string(e.what()) +
-                     " (the height of a graph surface must be twice differentiable in closed form: a smooth "
-                     "surface; abs, sign and step make creases)");
+                     " (the height of a graph surface must be twice differentiable in closed form)");
   }
   check_height_finite(*lifted, height);
   return lifted;

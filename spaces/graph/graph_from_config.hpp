@@ -4,9 +4,9 @@
 /// `space:` block: the planar space built on `over` (by its own reader, so its keys and messages
 /// are those of that domain under `domain.over`), lifted onto the graph z = g(x, y)
 /// (graph_surface_space.hpp). The height is refused, naming `domain.height`, when it is not an
-/// expression in x and y, not twice differentiable in closed form (abs, sign, step: a crease), or
-/// not finite with its first and second derivatives at the corners, edge midpoints and a few
-/// interior points of every element of the level.
+/// expression in x and y, when it uses abs, sign or step (a crease), when it is not twice
+/// differentiable in closed form, or when it is not finite with its first and second derivatives
+/// at the corners, edge midpoints and a few interior points of every element of the level.
 
 #include <functional>
 
