@@ -58,8 +58,9 @@ class Formulation {
   virtual Constraints constraints() const = 0;
   /// The whole matrix Σ terms, for a process that assembles every element: terms() for the
   /// linear system; a mass term too for an eigenproblem K x = λ M x under the same constraints.
-  /// Summed in double-double where extended_precision() says (one term then).
-  SplitMatrix matrix(const std::vector<FormTerm>& terms) const;
+  /// Summed in double-double where extended_precision() says (one term then). A formulation with
+  /// terms beyond the element integrals (the C0 interior penalty edges) adds them here.
+  virtual SplitMatrix matrix(const std::vector<FormTerm>& terms) const;
   /// The coefficients after the solve (problems fixed up to a constant shift to their mean here).
   virtual void finish(Eigen::VectorXd& /*coefficients*/, const WorkShare& /*share*/) const {}
   /// An exact solution (in x, y or in x, y, z) to measure the errors against.

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "assembly/error_norms.hpp"
+#include "assembly/interior_penalty.hpp"
 #include "assembly/surface_calculus.hpp"
 #include "assembly/surface_dirichlet.hpp"
 #include "assembly/surface_essential.hpp"
@@ -127,11 +128,23 @@ Formulation::Messages SurfaceFormulation::messages() const {
           problem().data_where + ": the exact solution or its gradient is not finite somewhere on the surface"};
 }
 
+double c0ip_penalty(int degree) { return 4.0 * degree * degree; }
+
 void SurfaceBiharmonicFormulation::check() const {
   const ProblemSpec& p = problem();
   if (space().ambient_dimension() != 3)
     throw InputError(p.source_where + ": surface_biharmonic needs a space on a surface in 3D");
   const bool open = !space().boundary_edges("all").empty();
+  if (space().continuity() < 1) {  // the C0 interior penalty form
+    if (space().num_elements() > 1 && space().interior_edges().empty())
+      throw InputError(p.source_where + ": surface_biharmonic on a C0 space needs its interior edges (the interior "
+                                        "penalty form); the " + space().type() + " space lists none");
+    // Clamped data through a lift are the planar space's own (u and ∂_n u imposed on the boundary
+    // edges, so the test functions have no boundary terms); other open surfaces have no such terms yet.
+    if (open && !dynamic_cast<const LiftedSpace*>(&space()))
+      throw InputError(p.source_where + ": the C0 interior penalty form of surface_biharmonic is for closed surfaces "
+                                        "and graph surfaces (no boundary edge terms yet); use a C1 space here");
+  }
   if (!open && !p.boundary.empty())
     throw InputError(p.boundary.front().where + ": this surface is closed: it has no boundary for clamped data");
   if (!open) return;
@@ -166,7 +179,17 @@ Eigen::VectorXd SurfaceBiharmonicFormulation::load(const WorkShare& share) const
     D << uxx.at(x), uxy.at(x), uxz.at(x), uxy.at(x), uyy.at(x), uyz.at(x), uxz.at(x), uyz.at(x), uzz.at(x);
     return surface_laplacian_of_ambient(D, g, n, H);
   };
-  return surface_form_load(space(), value_part, laplacian_part, quadrature_degree(), share.elements);
+  Eigen::VectorXd b = surface_form_load(space(), value_part, laplacian_part, quadrature_degree(), share.elements);
+  if (space().continuity() < 1) b += c0ip_edge_load(space(), laplacian_part, quadrature_degree());
+  return b;
+}
+
+SplitMatrix SurfaceBiharmonicFormulation::matrix(const std::vector<FormTerm>& terms) const {
+  SplitMatrix m = Formulation::matrix(terms);
+  if (space().continuity() >= 1) return m;
+  m.high = m.high + c0ip_edge_matrix(space(), c0ip_penalty(space().degree()), quadrature_degree());
+  m.low.resize(0);  // the pattern changed; the element part is summed in double anyway
+  return m;
 }
 
 Constraints SurfaceBiharmonicFormulation::constraints() const {

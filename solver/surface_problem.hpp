@@ -55,11 +55,21 @@ class SurfaceFormulation final : public Formulation {
 /// patch edges) Δ_Γu jumps there and the strong form f = Δ_Γ²u + c u would miss the edge terms;
 /// the weak load has none to miss, and its solution is u's Galerkin projection. Errors: L2, H1
 /// (surface gradient) and the surface H2 seminorm (covariant Hessian).
+///
+/// On a C0 space (Bernstein triangles on RSD surfaces) the form is the C0 interior penalty one
+/// (assembly/interior_penalty.hpp): the element integrals plus, over the interior edges, the
+/// consistency and symmetry terms and the penalty c0ip_penalty(p) / h_E on the conormal jumps; the
+/// load a_h(u, ·) gains the edge term −∫ {Δ_Γu}[∂_ν v]. Closed surfaces and the serial solvers only.
+/// η of the C0 interior penalty for degree p (docs/surface-biharmonic.md: large enough that the
+/// discrete form stays coercive; the inverse inequality constant grows like p²).
+double c0ip_penalty(int degree);
+
 class SurfaceBiharmonicFormulation final : public Formulation {
  public:
   using Formulation::Formulation;
   void check() const override;
   Eigen::VectorXd load(const WorkShare& share) const override;
+  SplitMatrix matrix(const std::vector<FormTerm>& terms) const override;
   Constraints constraints() const override;
   ErrorNorms errors(const Eigen::VectorXd& coefficients, const WorkShare& share) const override;
   Messages messages() const override;

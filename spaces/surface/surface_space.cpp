@@ -49,6 +49,9 @@ SurfaceBernsteinSpace::SurfaceBernsteinSpace(std::shared_ptr<const rsd::RsdSurfa
     for (int a = 0; a < 3; ++a) ++edge_count[std::minmax(t[a], t[(a + 1) % 3])];
 
   std::map<Key, int> numbering;
+  // Element edges by their end points (global lattice keys of the m-lattice): the first element
+  // seen and the key its edge starts at; the second one closes an interior edge.
+  std::map<std::pair<Key, Key>, std::pair<BoundaryEdge, Key>> open_edges;
   for (int n = 0; n < mesh.num_triangles(); ++n) {
     const auto& tri = mesh.triangles[n];
     // Lattice point (i, j) of the patch reference coordinates (ξ, η) = (i/m, j/m) has barycentrics
@@ -74,8 +77,25 @@ SurfaceBernsteinSpace::SurfaceBernsteinSpace(std::shared_ptr<const rsd::RsdSurfa
           if (inserted) ++dimension_;
           dofs[bernstein_triangle_index(p, b2, b3)] = it->second;
         }
-      // Edges of the reference triangle: 0 = corners (0,1), 1 = (1,2), 2 = (2,0). An element edge
-      // lies on a mesh edge when both corners have the same zero barycentric.
+      // Edges of the reference triangle: 0 = corners (0,1), 1 = (1,2), 2 = (2,0), each running from
+      // its first corner to its second (reference_edge_point).
+      for (int edge = 0; edge < 3; ++edge) {
+        const Key from = lattice_key(tri, n, s[edge]), to = lattice_key(tri, n, s[(edge + 1) % 3]);
+        const auto key = std::minmax(from, to);
+        const BoundaryEdge here{static_cast<int>(elements_.size()), edge};
+        const auto it = open_edges.find(key);
+        if (it == open_edges.end()) {
+          open_edges.emplace(key, std::make_pair(here, from));
+          continue;
+        }
+        const auto& [first, first_from] = it->second;
+        // The same parameter t on both sides when both edges start at the same point.
+        const bool reversed = first_from != from;
+        interior_.push_back({first.element, first.local_edge, 0.0, 1.0, here.element, here.local_edge,
+                             reversed ? 1.0 : 0.0, reversed ? 0.0 : 1.0});
+        open_edges.erase(it);
+      }
+      // An element edge lies on a mesh edge when both corners have the same zero barycentric.
       for (int edge = 0; edge < 3; ++edge) {
         const auto& u = s[edge];
         const auto& v = s[(edge + 1) % 3];

@@ -38,7 +38,9 @@ class SurfaceBernsteinSpace : public Space {
   void element_dofs(int element, std::vector<int>& out) const override { out = dofs_[element]; }
   RulePtr quadrature(int, int degree) const override { return rules_.triangle(degree); }
   RulePtr edge_quadrature(int, int edge, int degree) const override { return rules_.triangle_edge(edge, degree); }
-
+  /// Every edge shared by two elements, within a patch and across patch edges (the C0 interior
+  /// penalty form of the surface biharmonic integrates over them).
+  std::vector<InteriorEdge> interior_edges() const override { return interior_; }
 
   const rsd::RsdSurface& surface() const { return *surface_; }
   const std::shared_ptr<const rsd::RsdSurface>& shared_surface() const { return surface_; }
@@ -55,6 +57,7 @@ class SurfaceBernsteinSpace : public Space {
   std::vector<Element> elements_;
   std::vector<std::vector<int>> dofs_;   ///< per element, local Bernstein order (bezier_index)
   std::vector<BoundaryEdge> boundary_;   ///< element edges on boundary (single) mesh edges
+  std::vector<InteriorEdge> interior_;   ///< element edges shared by two elements
   GaussRuleCache rules_;
 };
 

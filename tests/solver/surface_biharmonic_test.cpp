@@ -103,7 +103,7 @@ space: {type: bspline, degree: 3}
                                                    "t.yaml"),
                            "t.yaml", 0, ""),
                InputError);
-  // A C0 surface space.
+  // A C0 surface space (the interior penalty form is taken on graph surfaces only).
   EXPECT_THROW(parse_study(ConfigNode::load_string(R"(
 problem: {pde: surface_biharmonic, exact: "x*y"}
 domain: {type: surface, mesh: icosphere, level: 0}
