@@ -59,7 +59,8 @@ class SurfaceFormulation final : public Formulation {
 /// On a C0 space (Bernstein triangles on RSD surfaces) the form is the C0 interior penalty one
 /// (assembly/interior_penalty.hpp): the element integrals plus, over the interior edges, the
 /// consistency and symmetry terms and the penalty c0ip_penalty(p) / h_E on the conormal jumps; the
-/// load a_h(u, ·) gains the edge term −∫ {Δ_Γu}[∂_ν v]. Closed surfaces and the serial solvers only.
+/// load a_h(u, ·) gains the edge term −∫ {Δ_Γu}[∂_ν v]. The study takes it on graph surfaces with the
+/// serial solvers only (solver/study.cpp; on the RSD surfaces its numbers are not right yet).
 /// η of the C0 interior penalty for degree p (docs/surface-biharmonic.md: large enough that the
 /// discrete form stays coercive; the inverse inequality constant grows like p²).
 double c0ip_penalty(int degree);
