@@ -44,6 +44,10 @@ class SurfaceFormulation final : public Formulation {
   mutable double area_ = 0;
 };
 
+/// η of the C0 interior penalty for degree p (docs/surface-biharmonic.md: large enough that the
+/// discrete form stays coercive; the inverse inequality constant grows like p²).
+double c0ip_penalty(int degree);
+
 /// The surface biharmonic problem Δ_Γ²u + c u = f (c = `reaction`, default 1; > 0 on a closed
 /// surface) on a closed surface, or on an open one clamped on its whole boundary (u and the
 /// conormal derivative ∂_ν u from the exact solution: surface_essential.hpp; lifted graph surfaces
@@ -56,15 +60,11 @@ class SurfaceFormulation final : public Formulation {
 /// the weak load has none to miss, and its solution is u's Galerkin projection. Errors: L2, H1
 /// (surface gradient) and the surface H2 seminorm (covariant Hessian).
 ///
-/// On a C0 space (Bernstein triangles on RSD surfaces) the form is the C0 interior penalty one
+/// On a C0 space with interior edges the form is the C0 interior penalty one
 /// (assembly/interior_penalty.hpp): the element integrals plus, over the interior edges, the
 /// consistency and symmetry terms and the penalty c0ip_penalty(p) / h_E on the conormal jumps; the
 /// load a_h(u, ·) gains the edge term −∫ {Δ_Γu}[∂_ν v]. The study takes it on graph surfaces with the
 /// serial solvers only (solver/study.cpp; on the RSD surfaces its numbers are not right yet).
-/// η of the C0 interior penalty for degree p (docs/surface-biharmonic.md: large enough that the
-/// discrete form stays coercive; the inverse inequality constant grows like p²).
-double c0ip_penalty(int degree);
-
 class SurfaceBiharmonicFormulation final : public Formulation {
  public:
   using Formulation::Formulation;
