@@ -7,6 +7,7 @@
 #include "solver/petsc_backend.hpp"
 #include "solver/petsc_session.hpp"
 #include "solver/slepc_eigen_backend.hpp"
+#include "solver/shell_problem.hpp"
 #include "solver/surface_problem.hpp"
 
 namespace iga {
@@ -32,6 +33,7 @@ Eigen::VectorXd SerialBackend::solve(SolveReport& report, const ProgressSink& pr
 std::unique_ptr<Formulation> make_formulation(const Space& space, const ProblemSpec& problem) {
   if (problem.pde == Pde::laplace_beltrami) return std::make_unique<SurfaceFormulation>(space, problem);
   if (problem.pde == Pde::surface_biharmonic) return std::make_unique<SurfaceBiharmonicFormulation>(space, problem);
+  if (problem.pde == Pde::kirchhoff_love_shell) return std::make_unique<ShellFormulation>(space, problem);
   return std::make_unique<PlanarFormulation>(space, problem);
 }
 

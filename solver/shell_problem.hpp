@@ -1,0 +1,29 @@
+#pragma once
+/// @file
+/// The linear Kirchhoff–Love shell as a Formulation (docs/shells.md): the displacement u: Γ → R³
+/// in one C1 scalar space per component (3N unknowns in blocks, component c of function i at
+/// c·N + i), matrix = membrane + bending energy (assembly/shell_integrators.hpp: tangential
+/// calculus with the surface's normal and covariant Hessians, so any C1 surface space of the
+/// project carries it), load ∫ f·v per unit area, supports that hold any subset of the
+/// displacement components on named boundary parts (each a boundary L2 projection of that
+/// component, surface_dirichlet.hpp; zero, or the exact displacement's component when one is
+/// given). Errors: L2, H1 (surface gradient) and H2 (covariant Hessian) of the displacement vector,
+/// sqrt of the sums of the components' squares.
+
+#include "solver/formulation.hpp"
+
+namespace iga {
+
+class ShellFormulation final : public Formulation {
+ public:
+  using Formulation::Formulation;
+  int components() const override { return 3; }
+  void check() const override;
+  Eigen::VectorXd load(const WorkShare& share) const override;
+  Constraints constraints() const override;
+  bool has_exact() const override { return problem().shell->exact.has_value(); }
+  ErrorNorms errors(const Eigen::VectorXd& coefficients, const WorkShare& share) const override;
+  Messages messages() const override;
+};
+
+}  // namespace iga
