@@ -62,6 +62,11 @@ void ShellFormulation::check() const {
       throw InputError(s.where + ": this surface is closed: it has no boundary edges to hold");
 }
 
+bool ShellFormulation::held(int c) const {
+  const auto& supports = problem().shell->supports;
+  return std::any_of(supports.begin(), supports.end(), [c](const ShellSupport& s) { return s.fixed[c]; });
+}
+
 Eigen::VectorXd ShellFormulation::load(const WorkShare& share) const {
   const int n = space().dimension();
   Eigen::VectorXd b(3 * n);
@@ -71,7 +76,28 @@ Eigen::VectorXd ShellFormulation::load(const WorkShare& share) const {
         space(), [f](const Eigen::Vector3d& x, const Eigen::Vector3d&, double) { return f.at(x); },
         quadrature_degree(), share.elements);
   }
+  mass_of_one_ = surface_load(
+      space(), [](const Eigen::Vector3d&, const Eigen::Vector3d&, double) { return 1.0; }, quadrature_degree(),
+      share.elements);
+  // A component no support holds: the load must not push the shell along it (Σ_i b_i = ∫ f_c,
+  // the functions summing to 1), or there is no equilibrium.
+  for (int c = 0; c < 3; ++c) {
+    if (held(c)) continue;
+    const double resultant = share.sum(b.segment(c * n, n).sum());
+    const double size = share.sum(b.segment(c * n, n).cwiseAbs().sum());
+    if (std::abs(resultant) > 1e-10 * size)
+      throw InputError(problem().source_where + ": the load has a resultant " + format_number(resultant) +
+                       " along " + std::string(1, "xyz"[c]) + " that no support holds (problem.boundary: add " +
+                       std::string(1, "xyz"[c]) + " to some part's fixed components)");
+  }
   return b;
+}
+
+void ShellFormulation::finish(Eigen::VectorXd& coefficients, const WorkShare& share) const {
+  const int n = space().dimension();
+  const double area = share.sum(mass_of_one_.sum());
+  for (int c = 0; c < 3; ++c)
+    if (!held(c)) coefficients.segment(c * n, n).array() -= share.sum(mass_of_one_.dot(coefficients.segment(c * n, n))) / area;
 }
 
 Constraints ShellFormulation::constraints() const {
@@ -91,8 +117,10 @@ Constraints ShellFormulation::constraints() const {
             edges.push_back(e);
     Constraints one;
     if (edges.empty()) {
+      // Unheld: coefficient 0 pinned against the translation along c (finish shifts it to zero mean).
       one.values = Eigen::VectorXd::Zero(n);
-      for (int i = 0; i < n; ++i) one.free.push_back(i);
+      one.constrained = {0};
+      for (int i = 1; i < n; ++i) one.free.push_back(i);
     } else {
       const SurfaceField g = shell.exact ? field((*shell.exact)[c]) : SurfaceField([](const Eigen::Vector3d&) { return 0.0; });
       one = surface_dirichlet_constraints(space(), edges, g, quadrature_degree());

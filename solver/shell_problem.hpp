@@ -9,6 +9,13 @@
 /// component, surface_dirichlet.hpp; zero, or the exact displacement's component when one is
 /// given). Errors: L2, H1 (surface gradient) and H2 (covariant Hessian) of the displacement vector,
 /// sqrt of the sums of the components' squares.
+///
+/// A component that no support holds (the axial one of the Scordelis–Lo roof, whose diaphragms
+/// hold y and z) leaves the translation along it in the kernel: its coefficient 0 is pinned (an
+/// essential condition like any other; the load must have no resultant along it, else an
+/// InputError), which changes that component by a constant only (the constants are in the space:
+/// Σ N_i = 1), and the solution is shifted after the solve so that the component has zero mean.
+/// Rotations must be held by the supports (else the factorization reports a singular matrix).
 
 #include "solver/formulation.hpp"
 
@@ -23,7 +30,14 @@ class ShellFormulation final : public Formulation {
   Constraints constraints() const override;
   bool has_exact() const override { return problem().shell->exact.has_value(); }
   ErrorNorms errors(const Eigen::VectorXd& coefficients, const WorkShare& share) const override;
+  void finish(Eigen::VectorXd& coefficients, const WorkShare& share) const override;
   Messages messages() const override;
+
+ private:
+  /// True when some support holds component c.
+  bool held(int c) const;
+  /// ∫ N_i over the share (set by load; the zero-mean shift of unheld components).
+  mutable Eigen::VectorXd mass_of_one_;
 };
 
 }  // namespace iga
