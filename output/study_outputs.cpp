@@ -69,6 +69,8 @@ StudyResult run_study_with_vtk(const StudySettings& settings, const std::string&
     const bool vector = sol.coefficients.size() == 3 * n;
     const Eigen::VectorXd u = vector ? Eigen::VectorXd(sol.coefficients.segment(2 * n, n)) : sol.coefficients;
     if (vector) opt.vector_functions.emplace_back("displacement", sol.coefficients);
+    if (vector && settings.problem.shell && settings.problem.shell->exact)  // u_exact and error of u_z
+      opt.exact3 = [u = (*settings.problem.shell->exact)[2]](const Eigen::Vector3d& x) { return u.at(x); };
     const bool pieces = parallel_vtk_output();
     const std::string name = "solution_" + std::to_string(level) + (pieces ? ".pvtu" : ".vtu");
     const bool lagrange = pieces ? write_solution_pvtu(space, u, opt, (dir / name).string())

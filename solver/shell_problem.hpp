@@ -31,6 +31,9 @@ class ShellFormulation final : public Formulation {
   bool has_exact() const override { return problem().shell->exact.has_value(); }
   ErrorNorms errors(const Eigen::VectorXd& coefficients, const WorkShare& share) const override;
   void finish(Eigen::VectorXd& coefficients, const WorkShare& share) const override;
+  /// a(u_h, u_h), twice the strain energy: the table's energy and, without an exact solution, its
+  /// change between levels (the convergence plot).
+  bool reports_energy() const override { return true; }
   Messages messages() const override;
 
  private:

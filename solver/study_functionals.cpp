@@ -45,7 +45,9 @@ std::vector<FunctionalSpec> parse_functionals(const ConfigNode& node, const Spac
       if (p.size() != 3) f["point"].fail("a point of a surface is [x, y, z]");
       spec.point3 = Eigen::Vector3d(p[0], p[1], p[2]);
       if (components == 3) {
-        const std::string c = f["component"].as_choice({"x", "y", "z"});
+        const ConfigNode cn = f["component"];
+        const std::string c = cn.is_scalar() ? cn.as_string() : "";
+        if (c != "x" && c != "y" && c != "z") cn.fail("a displacement component is x, y or z");
         spec.component = c == "x" ? 0 : c == "y" ? 1 : 2;
       }
       if (!evaluator) evaluator = coarse.make_evaluator();
