@@ -14,11 +14,39 @@
 
 namespace iga {
 
+namespace {
 
-Assembler::Assembler(const Space& space)
+/// A vector field with `components` components on one scalar space (a shell's displacement):
+/// the unknowns are numbered in blocks, component c of function i at c · dimension + i, and an
+/// element's rows are its functions for component 0, then for component 1, ... (the row order of
+/// a vector-valued integrator's element matrix, assembly/shell_integrators.hpp).
+void expand_component_dofs(std::vector<int>& dofs, int components, int dimension) {
+  if (components == 1) return;
+  const std::size_t n = dofs.size();
+  dofs.resize(n * components);
+  for (int c = 1; c < components; ++c)
+    for (std::size_t i = 0; i < n; ++i) dofs[c * n + i] = c * dimension + dofs[i];
+}
+
+ElementDofTable component_dofs(const ElementDofTable& scalar, int components, int dimension) {
+  if (components == 1) return scalar;
+  ElementDofTable t;
+  t.offsets.resize(scalar.offsets.size());
+  for (std::size_t e = 0; e < scalar.offsets.size(); ++e) t.offsets[e] = components * scalar.offsets[e];
+  t.dofs.reserve(scalar.dofs.size() * components);
+  for (int e = 0; e < scalar.num_elements(); ++e)
+    for (int c = 0; c < components; ++c)
+      for (const int* d = scalar.begin(e); d != scalar.begin(e + 1); ++d) t.dofs.push_back(c * dimension + *d);
+  return t;
+}
+
+}  // namespace
+
+Assembler::Assembler(const Space& space, int components)
     : space_(space),
-      table_(collect_element_dofs(space)),
-      pattern_(sparsity_pattern(table_, space.dimension())) {
+      table_(component_dofs(collect_element_dofs(space), components, space.dimension())),
+      pattern_(sparsity_pattern(table_, components * space.dimension())),
+      components_(components) {
   for (int e = 0; e < table_.num_elements(); ++e) max_local_ = std::max(max_local_, table_.size(e));
 }
 
@@ -73,7 +101,8 @@ void scatter_owned_columns(const std::vector<int>& dofs, const Local& local, con
 /// (closed forms: element_dofs order, read from `table`).
 template <class Local>
 const Local* element_local(const Space& space, const ElementDofTable* table, int e, const Integrator& form,
-                           int quad_degree, ElementValues& ev, Local& local, std::vector<int>& dofs) {
+                           int quad_degree, ElementValues& ev, Local& local, std::vector<int>& dofs,
+                           int components = 1) {
   const auto table_dofs = [&] {
     if (table) dofs.assign(table->begin(e), table->begin(e + 1));
     else space.element_dofs(e, dofs);
@@ -98,6 +127,7 @@ const Local* element_local(const Space& space, const ElementDofTable* table, int
   ev.reinit(e, *space.quadrature(e, quad_degree));
   form.element_matrix(ev, local);
   dofs = ev.dofs();
+  expand_component_dofs(dofs, components, space.dimension());  // a vector field's unknowns
   return &local;
 }
 
@@ -132,7 +162,7 @@ void Assembler::assemble(const Integrator& form, int quad_degree, Values values)
   // order, as the table); quadrature otherwise.
   prepare_closed_forms<Local>(space_, form);
   const int ne = space_.num_elements();
-  const int dim = space_.dimension();
+  const int dim = static_cast<int>(pattern_.rows());  // unknowns: components · functions
   using Scalar = typename Local::Scalar;
   constexpr long kBlockBytes = 16L << 20;  // slots of one block: well inside the last-level cache
   const long per_element = std::max<long>(1, static_cast<long>(max_local_) * max_local_ * sizeof(Scalar));
@@ -152,7 +182,8 @@ void Assembler::assemble(const Integrator& form, int quad_degree, Values values)
       for (int e = first; e < last; ++e) {
         progress_tick();
         slot_matrix[e - first] =
-            element_local(space_, &table_, e, form, quad_degree, ev, slots[e - first], slot_dofs[e - first]);
+            element_local(space_, &table_, e, form, quad_degree, ev, slots[e - first], slot_dofs[e - first],
+                          components_);
       }
       for (int e = first; e < last; ++e)
         scatter_owned_columns(slot_dofs[e - first], *slot_matrix[e - first], pattern_, values, own_first, own_last);

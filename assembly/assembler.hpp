@@ -17,8 +17,12 @@ namespace iga {
 
 class Assembler {
  public:
-  /// The space must outlive the assembler.
-  explicit Assembler(const Space& space);
+  /// The space must outlive the assembler. With components > 1 the matrices are those of a
+  /// vector field on the space (a shell's displacement), unknowns in blocks: component c of
+  /// function i is unknown c · dimension + i, and the forms must be vector-valued integrators of
+  /// as many components (element rows: the functions for component 0, then 1, ...;
+  /// assembly/shell_integrators.hpp).
+  explicit Assembler(const Space& space, int components = 1);
 
   /// Global matrix of `form` (closed-form element matrices where the space has them, else
   /// integrated with rules of polynomial degree `quad_degree`).
@@ -27,7 +31,7 @@ class Assembler {
   /// what the residual of iterative refinement needs (see split_matrix.hpp). About as fast as
   /// `matrix` when the basis evaluation dominates; the double-double sums cost more at high degree.
   SplitMatrix matrix_extended(const Form& form, int quad_degree) const;
-  /// Load vector ∫ f N_i.
+  /// Load vector ∫ f N_i (of the scalar space).
   Eigen::VectorXd load(const ScalarField& f, int quad_degree) const;
   /// The same with f evaluated at all points of an element at once (row 0 of its values).
   Eigen::VectorXd load(const BatchField& f, int quad_degree) const;
@@ -44,7 +48,8 @@ class Assembler {
   const Space& space_;
   ElementDofTable table_;
   SparseMatrix pattern_;
-  int max_local_ = 0;  ///< most active functions on one element
+  int components_ = 1;
+  int max_local_ = 0;  ///< most active unknowns on one element
 };
 
 /// One element's matrix of `form` in double-double, computed as matrix_extended computes it (the

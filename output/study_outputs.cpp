@@ -63,10 +63,18 @@ StudyResult run_study_with_vtk(const StudySettings& settings, const std::string&
     }
     for (int j = 0; j < sol.modes.cols(); ++j)  // eigenproblems: every mode (the first is also u)
       opt.point_functions.emplace_back("mode_" + std::to_string(j + 1), sol.modes.col(j));
+    // A shell's displacement (three components in blocks): the vector field `displacement`, and
+    // its vertical component u_z as the scalar `u`.
+    const int n = space.dimension();
+    const bool vector = sol.coefficients.size() == 3 * n;
+    const Eigen::VectorXd u = vector ? Eigen::VectorXd(sol.coefficients.segment(2 * n, n)) : sol.coefficients;
+    if (vector) opt.vector_functions.emplace_back("displacement", sol.coefficients);
+    if (vector && settings.problem.shell && settings.problem.shell->exact)  // u_exact and error of u_z
+      opt.exact3 = [u = (*settings.problem.shell->exact)[2]](const Eigen::Vector3d& x) { return u.at(x); };
     const bool pieces = parallel_vtk_output();
     const std::string name = "solution_" + std::to_string(level) + (pieces ? ".pvtu" : ".vtu");
-    const bool lagrange = pieces ? write_solution_pvtu(space, sol.coefficients, opt, (dir / name).string())
-                                 : write_solution_vtu(space, sol.coefficients, opt, (dir / name).string());
+    const bool lagrange = pieces ? write_solution_pvtu(space, u, opt, (dir / name).string())
+                                 : write_solution_vtu(space, u, opt, (dir / name).string());
     vtu_files.push_back(name);
     if (!root) return;
     const std::string mesh = "mesh_" + std::to_string(level) + ".vtu";

@@ -147,6 +147,12 @@ bool write_solution_vtu(const Space& space, const Eigen::VectorXd& coefficients,
       throw std::invalid_argument("write_solution_vtu: field " + name + " has the wrong length");
     further.push_back(make_field(name, 1, num_points));
   }
+  std::vector<vtkSmartPointer<vtkFloatArray>> vectors;
+  for (const auto& [name, c] : options.vector_functions) {
+    if (c.size() != 3 * space.dimension())
+      throw std::invalid_argument("write_solution_vtu: vector field " + name + " has the wrong length");
+    vectors.push_back(make_field(name, 3, num_points));
+  }
   std::vector<double> element_l2(has_exact ? num_elements : 0), element_h1(has_gradient ? num_elements : 0),
       element_h2(has_hessian ? num_elements : 0);
   const unsigned flags = update_values | update_gradients | (options.laplacian || has_hessian ? update_hessians : 0u);
@@ -168,6 +174,15 @@ bool write_solution_vtu(const Space& space, const Eigen::VectorXd& coefficients,
           for (int k = 0; k < q; ++k)
             if (owner[first + k]) further[j]->SetValue(merged_id[first + k], static_cast<float>(uh.value(k)));
         }
+        const int n = space.dimension();
+        for (std::size_t j = 0; j < vectors.size(); ++j)
+          for (int c = 0; c < 3; ++c) {
+            const Eigen::VectorXd component = options.vector_functions[j].second.segment(c * n, n);
+            evaluator->evaluate_function(e, *drawing.rule[e], component, update_values, geometry, uh);
+            for (int k = 0; k < q; ++k)
+              if (owner[first + k])
+                vectors[j]->SetComponent(merged_id[first + k], c, static_cast<float>(uh.value(k)));
+          }
         evaluator->evaluate_function(e, *drawing.rule[e], coefficients, flags, geometry, uh);
         const bool ambient = geometry.x3.cols() == q;
         // Sampled errors of the element: the mean over its drawn points times its area (a map of
@@ -246,6 +261,7 @@ bool write_solution_vtu(const Space& space, const Eigen::VectorXd& coefficients,
   if (laplace_u) grid->GetPointData()->AddArray(laplace_u);
   if (u_exact) grid->GetPointData()->AddArray(u_exact), grid->GetPointData()->AddArray(error);
   for (const auto& f : further) grid->GetPointData()->AddArray(f);
+  for (const auto& f : vectors) grid->GetPointData()->AddArray(f);
 
   auto cell_field = [&](const std::string& name, const std::vector<double>& per_element) {
     auto a = make_field(name, 1, num_cells);

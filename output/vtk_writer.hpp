@@ -46,6 +46,10 @@ struct VtkFieldOptions {
   /// Further functions of the space (coefficient vectors) as point fields of their values, e.g.
   /// the eigenmodes mode_1, mode_2, ... of an eigenproblem.
   std::vector<std::pair<std::string, Eigen::VectorXd>> point_functions;
+  /// Vector fields in 3D whose components are functions of the space (a shell's displacement:
+  /// coefficients in blocks of dimension(), x then y then z), as 3-component point fields that
+  /// ParaView warps by.
+  std::vector<std::pair<std::string, Eigen::VectorXd>> vector_functions;
   VtkCompression compression = VtkCompression::lz4;
 };
 

@@ -15,7 +15,7 @@ Formulation::Formulation(const Space& space, const ProblemSpec& problem)
     : space_(space), problem_(problem), quadrature_degree_(assembly_quadrature_degree(space)) {}
 
 const Assembler& Formulation::assembler() const {
-  if (!assembler_) assembler_ = std::make_unique<Assembler>(space_);
+  if (!assembler_) assembler_ = std::make_unique<Assembler>(space_, components());
   return *assembler_;
 }
 

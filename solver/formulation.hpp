@@ -43,6 +43,11 @@ class Formulation {
 
   const Space& space() const { return space_; }
   const ProblemSpec& problem() const { return problem_; }
+  /// Components of the unknown field on the scalar space: 1, or 3 for a shell's displacement.
+  /// The unknowns are numbered in blocks, component c of function i at c · dimension + i
+  /// (assembler.hpp): loads, constraints and coefficients have unknowns() entries.
+  virtual int components() const { return 1; }
+  int unknowns() const { return components() * space_.dimension(); }
   int quadrature_degree() const { return quadrature_degree_; }
   /// The problem's operator as Σ coefficient · form (ProblemSpec::terms): what the backends
   /// assemble, whole (matrix) or element by element (for_each_element_matrix).
@@ -52,7 +57,7 @@ class Formulation {
   /// data, ...), before any work.
   virtual void check() const {}
   /// The load of the share's elements, natural boundary terms on their edges included; the
-  /// shares' loads add up to the whole load (length: dimension).
+  /// shares' loads add up to the whole load (length: unknowns()).
   virtual Eigen::VectorXd load(const WorkShare& share) const = 0;
   /// The essential conditions (every process computes them whole: a boundary-sized problem).
   virtual Constraints constraints() const = 0;
@@ -64,7 +69,7 @@ class Formulation {
   /// The coefficients after the solve (problems fixed up to a constant shift to their mean here).
   virtual void finish(Eigen::VectorXd& /*coefficients*/, const WorkShare& /*share*/) const {}
   /// An exact solution (in x, y or in x, y, z) to measure the errors against.
-  bool has_exact() const { return problem_.exact || problem_.surface_exact; }
+  virtual bool has_exact() const { return problem_.exact || problem_.surface_exact; }
   /// Errors over the share's elements against the exact solution.
   virtual ErrorNorms errors(const Eigen::VectorXd& coefficients, const WorkShare& share) const = 0;
   /// True when a(u_h, u_h) means the energy of the solution (reported for planar problems).

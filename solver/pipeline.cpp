@@ -1,5 +1,6 @@
 #include "solver/pipeline.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <optional>
 
@@ -39,7 +40,7 @@ Constraints assemble_step(const Formulation& f, LinearBackend& backend, const Pr
 Constraints assemble_level(const Formulation& f, LinearBackend& backend, LevelResult& r, const ProgressSink& progress) {
   const Space& space = f.space();
   r.h = space.mesh_size();
-  r.dofs = space.dimension();
+  r.dofs = f.unknowns();
   r.elements = space.num_elements();
   Stopwatch clock;
   Constraints c = assemble_step(f, backend, progress);
@@ -61,7 +62,11 @@ DiscreteSolution solve_pipeline(const Formulation& f, LinearBackend& backend, co
   if (f.reports_energy()) r.energy = backend.energy(out.coefficients);  // for studies without an exact solution
   r.t_solve = clock.seconds();
 
-  r.g1_jump = space.max_gradient_jump(out.coefficients);
+  // Each component's gradient jump (a vector field: the largest of its components').
+  const int n = space.dimension();
+  for (int c = 0; c < f.components(); ++c)
+    if (const auto jump = space.max_gradient_jump(out.coefficients.segment(c * n, n)))
+      r.g1_jump = std::max(r.g1_jump.value_or(0.0), *jump);
   if (f.has_exact()) {
     if (progress) progress("computing errors");
     clock.restart();

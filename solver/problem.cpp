@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "solver/shell_config.hpp"
+
 namespace iga {
 
 std::string to_string(Pde pde) {
@@ -10,6 +12,7 @@ std::string to_string(Pde pde) {
     case Pde::biharmonic: return "biharmonic";
     case Pde::laplace_beltrami: return "laplace_beltrami";
     case Pde::surface_biharmonic: return "surface_biharmonic";
+    case Pde::kirchhoff_love_shell: return "kirchhoff_love_shell";
   }
   return "?";
 }
@@ -92,10 +95,13 @@ ProblemSpec parse_problem(const ConfigNode& node) {
   if (const auto pde = node.find("pde");
       pde && pde->is_scalar() && (pde->as_string() == "laplace_beltrami" || pde->as_string() == "surface_biharmonic"))
     return parse_surface_problem(node);
+  if (const auto pde = node.find("pde"); pde && pde->is_scalar() && pde->as_string() == "kirchhoff_love_shell")
+    return parse_shell_problem(node);
   node.check_keys({"pde", "exact", "source", "boundary", "data", "form", "eigen"});
   ProblemSpec p;
   p.eigen = parse_eigen_of(node, {"exact", "source", "data"});
-  const std::string pde = node["pde"].as_choice({"poisson", "biharmonic", "laplace_beltrami", "surface_biharmonic"});
+  const std::string pde =
+      node["pde"].as_choice({"poisson", "biharmonic", "laplace_beltrami", "surface_biharmonic", "kirchhoff_love_shell"});
   p.pde = pde == "poisson" ? Pde::poisson : Pde::biharmonic;  // the surface problems returned above
 
   bool hessian = false;

@@ -12,14 +12,18 @@
 #include "config/config_node.hpp"
 #include "config/expression.hpp"
 #include "solver/eigen_spec.hpp"
+#include "solver/shell_spec.hpp"
 
 namespace iga {
 
 /// laplace_beltrami: −Δ_Γu + c u = f on a surface in 3D; surface_biharmonic: Δ_Γ²u + c u = f on a
-/// closed surface in 3D (both solver/surface_problem.hpp).
-enum class Pde { poisson, biharmonic, laplace_beltrami, surface_biharmonic };
+/// closed surface in 3D (both solver/surface_problem.hpp); kirchhoff_love_shell: the linear
+/// Kirchhoff–Love shell, a displacement with three components (solver/shell_problem.hpp).
+enum class Pde { poisson, biharmonic, laplace_beltrami, surface_biharmonic, kirchhoff_love_shell };
 /// The problems posed on a surface in 3D (space with ambient_dimension() == 3).
-inline bool on_surface(Pde pde) { return pde == Pde::laplace_beltrami || pde == Pde::surface_biharmonic; }
+inline bool on_surface(Pde pde) {
+  return pde == Pde::laplace_beltrami || pde == Pde::surface_biharmonic || pde == Pde::kirchhoff_love_shell;
+}
 enum class BoundaryKind { dirichlet, neumann, clamped, simply_supported };
 
 std::string to_string(Pde pde);
@@ -64,6 +68,8 @@ struct ProblemSpec {
   /// An eigenproblem (problem.eigen): the smallest eigenvalues of the operator under homogeneous
   /// essential conditions; no source, no data, no exact solution.
   std::optional<EigenSpec> eigen;
+  /// kirchhoff_love_shell: material, load, supports (the members above stay unused).
+  std::optional<ShellSpec> shell;
 
   /// u, ∇u, D²u of the exact solution as callables (empty members when there is none).
   ExactSolution exact_solution() const;

@@ -2,11 +2,13 @@
 
 #include <optional>
 
+#include "config/errors.hpp"
 #include "config/progress.hpp"
 #include "solver/eigen_pipeline.hpp"
 #include "solver/petsc_backend.hpp"
 #include "solver/petsc_session.hpp"
 #include "solver/slepc_eigen_backend.hpp"
+#include "solver/shell_problem.hpp"
 #include "solver/surface_problem.hpp"
 
 namespace iga {
@@ -32,6 +34,7 @@ Eigen::VectorXd SerialBackend::solve(SolveReport& report, const ProgressSink& pr
 std::unique_ptr<Formulation> make_formulation(const Space& space, const ProblemSpec& problem) {
   if (problem.pde == Pde::laplace_beltrami) return std::make_unique<SurfaceFormulation>(space, problem);
   if (problem.pde == Pde::surface_biharmonic) return std::make_unique<SurfaceBiharmonicFormulation>(space, problem);
+  if (problem.pde == Pde::kirchhoff_love_shell) return std::make_unique<ShellFormulation>(space, problem);
   return std::make_unique<PlanarFormulation>(space, problem);
 }
 
@@ -45,6 +48,11 @@ LinearSystem assemble_linear_system(const Space& space, const ProblemSpec& probl
 DiscreteSolution solve_problem(const Space& space, const ProblemSpec& problem, SolverKind solver,
                                const ProgressSink& progress, const PetscSettings& petsc) {
   const std::unique_ptr<Formulation> f = make_formulation(space, problem);
+  // The PETSc layouts and the eigen backends count one unknown per function (parse_study refuses
+  // these combinations for configs; this guards library callers).
+  if (f->components() != 1 && (solver == SolverKind::petsc || problem.eigen))
+    throw InputError(problem.source_where + ": " + to_string(problem.pde) +
+                     " is solved serially only (cholmod or umfpack), without problem.eigen, for now");
   // Under PETSc every rank runs the pipeline; rank 0 reports its progress.
   const ProgressSink say = [&](const std::string& msg) {
     if (progress && is_root_rank()) progress(msg);

@@ -5,9 +5,14 @@
 #include <cmath>
 #include <memory>
 
+#include "spaces/surface_point_location.hpp"
+
 namespace iga {
 
 namespace {
+
+/// Points of a surface given in a config: found to 1e-7 of their size (the configs write 16 digits).
+double surface_point_tolerance(const Eigen::Vector3d& x) { return 1e-7 * (1.0 + x.norm()); }
 
 std::shared_ptr<QuadratureRule> one_point(const Point2& r) {
   auto rule = std::make_shared<QuadratureRule>();
@@ -18,19 +23,41 @@ std::shared_ptr<QuadratureRule> one_point(const Point2& r) {
 
 }  // namespace
 
-std::vector<FunctionalSpec> parse_functionals(const ConfigNode& node, const Space& coarse) {
+std::vector<FunctionalSpec> parse_functionals(const ConfigNode& node, const Space& coarse, int components) {
   std::vector<FunctionalSpec> out;
-  if (coarse.ambient_dimension() != 2) node.fail("functionals are available for planar problems only");
+  const bool surface = coarse.ambient_dimension() == 3;
   std::optional<PointLocator> locator;
+  std::unique_ptr<Space::Evaluator> evaluator;
   for (const std::string& name : node.keys()) {
     const ConfigNode f = node[name];
-    // The entries are named by the user, so their keys are checked here rather than declared.
-    if (!f.is_map() || f.keys().size() != 1 || (!f.has("point") && !f.has("integral")))
-      f.fail("a functional is {point: [x, y]} or {integral: u}");
     FunctionalSpec spec;
     spec.name = name;
     if (name.empty() || name.find_first_of(",\" \t") != std::string::npos)
       f.fail("a functional's name becomes a CSV column: no commas, quotes or spaces");
+    if (surface) {
+      // The entries are named by the user, so their keys are checked here rather than declared.
+      const std::string form = components == 3 ? "{point: [x, y, z], component: x|y|z}" : "{point: [x, y, z]}";
+      if (!f.is_map() || !f.has("point") || f.keys().size() != (components == 3 ? 2u : 1u) ||
+          (components == 3 && !f.has("component")))
+        f.fail("a functional on a surface is " + form);
+      spec.kind = FunctionalSpec::Kind::surface_point;
+      const std::vector<double> p = f["point"].as_doubles();
+      if (p.size() != 3) f["point"].fail("a point of a surface is [x, y, z]");
+      spec.point3 = Eigen::Vector3d(p[0], p[1], p[2]);
+      if (components == 3) {
+        const ConfigNode cn = f["component"];
+        const std::string c = cn.is_scalar() ? cn.as_string() : "";
+        if (c != "x" && c != "y" && c != "z") cn.fail("a displacement component is x, y or z");
+        spec.component = c == "x" ? 0 : c == "y" ? 1 : 2;
+      }
+      if (!evaluator) evaluator = coarse.make_evaluator();
+      if (!locate_on_surface(coarse, spec.point3, *evaluator, surface_point_tolerance(spec.point3)))
+        f["point"].fail("the point is not on the surface (to 1e-7 relative)");
+      out.push_back(spec);
+      continue;
+    }
+    if (!f.is_map() || f.keys().size() != 1 || (!f.has("point") && !f.has("integral")))
+      f.fail("a functional is {point: [x, y]} or {integral: u}");
     if (f.has("point")) {
       spec.kind = FunctionalSpec::Kind::point;
       spec.point = f["point"].as_point();
@@ -54,8 +81,17 @@ std::vector<double> evaluate_functionals(const std::vector<FunctionalSpec>& func
   const std::unique_ptr<Space::Evaluator> evaluator = space.make_evaluator();
   PointValues geometry;
   FunctionValues uh;
+  const int n = space.dimension();
   for (const FunctionalSpec& f : functionals) {
-    if (f.kind == FunctionalSpec::Kind::point) {
+    if (f.kind == FunctionalSpec::Kind::surface_point) {
+      const auto at = locate_on_surface(space, f.point3, *evaluator, surface_point_tolerance(f.point3));
+      if (!at) throw std::runtime_error("functional '" + f.name + "': point not found on this level's surface");
+      const auto rule = one_point(at->reference);
+      const bool vector = coefficients.size() > n;
+      const Eigen::VectorXd c = vector ? Eigen::VectorXd(coefficients.segment(f.component * n, n)) : coefficients;
+      evaluator->evaluate_function(at->element, *rule, c, update_values, geometry, uh);
+      values.push_back(uh.value(0));
+    } else if (f.kind == FunctionalSpec::Kind::point) {
       const auto at = locator->locate(f.point, *evaluator);
       if (!at) throw std::runtime_error("functional '" + f.name + "': point not found on this level's mesh");
       const auto rule = one_point(at->reference);

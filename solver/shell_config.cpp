@@ -1,0 +1,83 @@
+#include "solver/shell_config.hpp"
+
+#include <cmath>
+
+namespace iga {
+
+namespace {
+
+/// A list of three expressions in x, y, z (numbers allowed).
+std::vector<SymbolicFunction> parse_vector(const ConfigNode& node, const std::string& what) {
+  if (!node.is_sequence() || node.items().size() != 3)
+    node.fail(what + " is a list of three expressions in x, y, z (its x, y and z components), e.g. [0, 0, -90]");
+  std::vector<SymbolicFunction> out;
+  for (const ConfigNode& item : node.items()) {
+    if (!item.is_scalar()) item.fail(what + ": each component is a number or an expression in x, y, z");
+    out.push_back(SymbolicFunction::parse_xyz(item.as_string(), item.where()));
+  }
+  return out;
+}
+
+double positive(const ConfigNode& node, const std::string& what) {
+  const double v = node.as_double();
+  if (!(v > 0.0 && std::isfinite(v))) node.fail(what + " must be a number > 0");
+  return v;
+}
+
+}  // namespace
+
+ProblemSpec parse_shell_problem(const ConfigNode& node) {
+  node.check_keys({"pde", "material", "load", "exact", "boundary"});
+  ProblemSpec p;
+  p.pde = Pde::kirchhoff_love_shell;
+  ShellSpec shell;
+
+  const ConfigNode material = node["material"];
+  material.check_keys({"youngs_modulus", "poisson_ratio", "thickness"});
+  shell.material.youngs_modulus = positive(material["youngs_modulus"], "youngs_modulus");
+  shell.material.thickness = positive(material["thickness"], "thickness");
+  if (const auto nu = material.find("poisson_ratio")) {
+    shell.material.poisson_ratio = nu->as_double();
+    // ν in [0, 1/2): the energy's ν (tr ε)² term is then a nonnegative square (shell_integrators.hpp).
+    if (!(shell.material.poisson_ratio >= 0.0 && shell.material.poisson_ratio < 0.5))
+      nu->fail("poisson_ratio must be in [0, 0.5)");
+  }
+
+  const auto load = node.find("load");
+  if (!load) node.fail("give 'load': the force per unit area as [fx, fy, fz] (expressions in x, y, z)");
+  shell.load = parse_vector(*load, "load");
+  p.source_where = load->where();
+  if (const auto exact = node.find("exact")) {
+    shell.exact = parse_vector(*exact, "exact");
+    p.data_where = exact->where();
+  }
+
+  const auto boundary = node.find("boundary");
+  if (!boundary) node.fail("give 'boundary': the supports, e.g. {bottom: {fixed: [y, z]}} (a free shell moves rigidly)");
+  if (!boundary->is_map() || boundary->keys().empty())
+    boundary->fail("expected a map from boundary part (all, left, ...) to {fixed: [components]}");
+  for (const std::string& name : boundary->keys()) {
+    const ConfigNode entry = (*boundary)[name];
+    // The parts are named by the user, so their keys are checked here rather than declared.
+    if (!entry.is_map() || entry.keys() != std::vector<std::string>{"fixed"})
+      entry.fail("a shell's support is {fixed: [x, y, z]} (the displacement components held)");
+    const ConfigNode fixed = entry["fixed"];
+    if (!fixed.is_sequence() || fixed.items().empty())
+      fixed.fail("fixed is a list of displacement components: any of x, y, z, e.g. [y, z]");
+    ShellSupport support{name, {false, false, false}, entry.where()};
+    for (const ConfigNode& c : fixed.items()) {
+      const std::string k = c.is_scalar() ? c.as_string() : "";
+      if (k != "x" && k != "y" && k != "z") c.fail("a displacement component is x, y or z");
+      const int i = k == "x" ? 0 : k == "y" ? 1 : 2;
+      if (support.fixed[i]) c.fail("component '" + k + "' is listed twice");
+      support.fixed[i] = true;
+    }
+    shell.supports.push_back(support);
+  }
+  p.shell = std::move(shell);
+  p.terms = {shell_integrator(ShellEnergy::membrane, p.shell->material),
+             shell_integrator(ShellEnergy::bending, p.shell->material)};
+  return p;
+}
+
+}  // namespace iga

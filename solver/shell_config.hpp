@@ -1,0 +1,18 @@
+#pragma once
+/// @file
+/// The `problem:` block of a linear Kirchhoff–Love shell (docs/shells.md):
+///   pde: kirchhoff_love_shell
+///   material: {youngs_modulus: E, poisson_ratio: ν, thickness: t}
+///   load: [fx, fy, fz]            force per unit area, expressions in x, y, z
+///   exact: [ux, uy, uz]           optional: the exact displacement (errors; values of fixed components)
+///   boundary: {PART: {fixed: [x, y, z]}, ...}   displacement components held (any subset), per part
+
+#include "config/config_node.hpp"
+#include "solver/problem.hpp"
+
+namespace iga {
+
+/// Parse and check the shell's `problem:` block (InputError at the key at fault, exit 2).
+ProblemSpec parse_shell_problem(const ConfigNode& node);
+
+}  // namespace iga

@@ -1,0 +1,21 @@
+#pragma once
+/// @file
+/// Where a point of a surface in 3D lies on a surface space: the element and reference
+/// coordinates whose image is the point (Gauss–Newton on |X(ξ) − p|² in the reference cell,
+/// started from the nearest of a few samples per element). Through the Space interface only, so it
+/// works for every surface space (patches, 4-split surfaces, graphs); PointLocator is the planar one.
+
+#include <Eigen/Core>
+#include <optional>
+
+#include "spaces/point_location.hpp"
+#include "spaces/space.hpp"
+
+namespace iga {
+
+/// The element holding `x` and its reference coordinates, or nullopt when no point of the surface
+/// is within `tolerance` of x. On an edge shared by elements, one of them.
+std::optional<PointLocation> locate_on_surface(const Space& space, const Eigen::Vector3d& x,
+                                               Space::Evaluator& evaluator, double tolerance);
+
+}  // namespace iga
