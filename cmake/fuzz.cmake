@@ -11,7 +11,7 @@ if(IGA_FUZZ)
   add_link_options(-fsanitize=address,undefined)
 
   # target -> the layers it links; problem_fuzz and petsc_options_fuzz compile the one solver file
-  # they exercise (problem_fuzz also the eigen block's reader and the integrator objects a parsed
+  # they exercise (problem_fuzz also the eigen and shell blocks' readers and the integrator objects a parsed
   # problem holds, which need nothing beyond config) instead of linking the whole solver (and with
   # it spaces, assembly, Gmsh meshing, PETSc).
   set(IGA_FUZZ_LAYERS_config_node_fuzz iga_config)
@@ -19,7 +19,9 @@ if(IGA_FUZZ)
   set(IGA_FUZZ_LAYERS_problem_fuzz iga_config)
   set(IGA_FUZZ_SOURCES_problem_fuzz ${CMAKE_CURRENT_SOURCE_DIR}/solver/problem.cpp
                                     ${CMAKE_CURRENT_SOURCE_DIR}/solver/eigen_spec.cpp
-                                    ${CMAKE_CURRENT_SOURCE_DIR}/assembly/integrators.cpp)
+                                    ${CMAKE_CURRENT_SOURCE_DIR}/solver/shell_config.cpp
+                                    ${CMAKE_CURRENT_SOURCE_DIR}/assembly/integrators.cpp
+                                    ${CMAKE_CURRENT_SOURCE_DIR}/assembly/shell_integrators.cpp)
   set(IGA_FUZZ_LAYERS_obj_mesh_fuzz iga_mesh)
   set(IGA_FUZZ_LAYERS_off_mesh_fuzz iga_mesh)
   set(IGA_FUZZ_LAYERS_gismo_xml_fuzz iga_mesh)
