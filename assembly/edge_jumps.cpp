@@ -4,20 +4,12 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "assembly/edge_points.hpp"
 #include "assembly/parallel.hpp"
 
 namespace iga {
 
 namespace {
-
-/// The points of `line` (on [0,1]) on the sub-range [t0, t1] of edge `edge` of a reference cell.
-QuadratureRule points_on_edge(CellShape shape, int edge, double t0, double t1, const QuadratureRule& line) {
-  QuadratureRule out;
-  out.degree = line.degree;
-  out.weights = line.weights;
-  for (const Point2& s : line.points) out.points.push_back(reference_edge_point(shape, edge, t0 + s.x() * (t1 - t0)));
-  return out;
-}
 
 /// Jumps of up to two quantities at point q of a piece, given the unit normal of side a.
 using JumpAt = std::array<double, 2> (*)(const FunctionValues& a, const FunctionValues& b, int q, const Eigen::Vector2d& n);

@@ -7,18 +7,11 @@
 
 #include <Eigen/Geometry>
 
+#include "assembly/edge_points.hpp"
+
 namespace iga {
 
 namespace {
-
-/// The points of `line` (on [0,1]) on the sub-range [t0, t1] of edge `edge` of a reference cell.
-QuadratureRule points_on_edge(CellShape shape, int edge, double t0, double t1, const QuadratureRule& line) {
-  QuadratureRule out;
-  out.degree = line.degree;
-  out.weights = line.weights;
-  for (const Point2& s : line.points) out.points.push_back(reference_edge_point(shape, edge, t0 + s.x() * (t1 - t0)));
-  return out;
-}
 
 /// One side of an edge at its points: per active function the conormal derivative and Δ_Γ.
 struct Side {

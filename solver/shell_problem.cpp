@@ -7,6 +7,7 @@
 #include "assembly/surface_load.hpp"
 #include "config/errors.hpp"
 #include "config/config_node.hpp"
+#include "solver/surface_problem.hpp"
 
 namespace iga {
 
@@ -16,21 +17,6 @@ SurfaceField field(const SymbolicFunction& f) {
   return [f](const Eigen::Vector3d& x) { return f.at(x); };
 }
 
-SurfaceExactSolution exact_component(const SymbolicFunction& u) {
-  SurfaceExactSolution s;
-  const SymbolicFunction ux = u.diff_x(), uy = u.diff_y(), uz = u.diff_z();
-  s.u = field(u);
-  s.ux = field(ux);
-  s.uy = field(uy);
-  s.uz = field(uz);
-  s.uxx = field(ux.diff_x());
-  s.uxy = field(ux.diff_y());
-  s.uxz = field(ux.diff_z());
-  s.uyy = field(uy.diff_y());
-  s.uyz = field(uy.diff_z());
-  s.uzz = field(uz.diff_z());
-  return s;
-}
 
 /// Append one component's scalar constraints to the vector field's (component c, N functions).
 void append_component(Constraints& all, const Constraints& one, int c, int n) {
@@ -135,7 +121,7 @@ ErrorNorms ShellFormulation::errors(const Eigen::VectorXd& coefficients, const W
   double l2 = 0, h1 = 0, h2 = 0;
   for (int c = 0; c < 3; ++c) {
     const ErrorNorms e = surface_error_norms(space(), coefficients.segment(c * n, n),
-                                             exact_component((*problem().shell->exact)[c]),
+                                             surface_exact_solution((*problem().shell->exact)[c], true),
                                              space().error_quadrature_degree(), share.elements);
     l2 += e.l2 * e.l2;
     h1 += e.h1.value_or(0) * e.h1.value_or(0);

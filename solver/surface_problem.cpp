@@ -18,24 +18,20 @@ SurfaceField field(const SymbolicFunction& f) {
   return [f](const Eigen::Vector3d& x) { return f.at(x); };
 }
 
-/// u and its ambient gradient as callables (empty when the problem has no exact solution).
-SurfaceExactSolution surface_exact_solution(const ProblemSpec& problem) {
-  SurfaceExactSolution s;
-  if (!problem.surface_exact) return s;
-  const SymbolicFunction& u = *problem.surface_exact;
-  s.u = field(u);
-  s.ux = field(u.diff_x());
-  s.uy = field(u.diff_y());
-  s.uz = field(u.diff_z());
-  return s;
+/// The exact solution's callables (empty when the problem has none).
+SurfaceExactSolution surface_exact_solution(const ProblemSpec& problem, bool with_hessian) {
+  return problem.surface_exact ? surface_exact_solution(*problem.surface_exact, with_hessian) : SurfaceExactSolution{};
 }
+}  // namespace
 
-/// The same with the ambient Hessian (the surface H2 seminorm of fourth-order problems).
-SurfaceExactSolution surface_exact_solution_with_hessian(const ProblemSpec& problem) {
-  SurfaceExactSolution s = surface_exact_solution(problem);
-  if (!problem.surface_exact) return s;
-  const SymbolicFunction& u = *problem.surface_exact;
+SurfaceExactSolution surface_exact_solution(const SymbolicFunction& u, bool with_hessian) {
+  SurfaceExactSolution s;
   const SymbolicFunction ux = u.diff_x(), uy = u.diff_y(), uz = u.diff_z();
+  s.u = field(u);
+  s.ux = field(ux);
+  s.uy = field(uy);
+  s.uz = field(uz);
+  if (!with_hessian) return s;
   s.uxx = field(ux.diff_x());
   s.uxy = field(ux.diff_y());
   s.uxz = field(ux.diff_z());
@@ -44,7 +40,6 @@ SurfaceExactSolution surface_exact_solution_with_hessian(const ProblemSpec& prob
   s.uzz = field(uz.diff_z());
   return s;
 }
-}  // namespace
 
 SurfaceSource surface_source(const ProblemSpec& problem) {
   if (problem.surface_source || !problem.surface_exact) {
@@ -118,7 +113,7 @@ void SurfaceFormulation::finish(Eigen::VectorXd& coefficients, const WorkShare& 
 }
 
 ErrorNorms SurfaceFormulation::errors(const Eigen::VectorXd& coefficients, const WorkShare& share) const {
-  return surface_error_norms(space(), coefficients, surface_exact_solution(problem()),
+  return surface_error_norms(space(), coefficients, surface_exact_solution(problem(), false),
                              space().error_quadrature_degree(), share.elements);
 }
 
@@ -229,7 +224,7 @@ Constraints SurfaceBiharmonicFormulation::constraints() const {
 }
 
 ErrorNorms SurfaceBiharmonicFormulation::errors(const Eigen::VectorXd& coefficients, const WorkShare& share) const {
-  return surface_error_norms(space(), coefficients, surface_exact_solution_with_hessian(problem()),
+  return surface_error_norms(space(), coefficients, surface_exact_solution(problem(), true),
                              space().error_quadrature_degree(), share.elements);
 }
 

@@ -17,6 +17,10 @@ namespace iga {
 /// The given source, else f(x, n, H) = −Δ_Γu + u from the exact solution (laplace_beltrami).
 SurfaceSource surface_source(const ProblemSpec& problem);
 
+/// u given in x, y, z as callables: u and its ambient gradient, and the ambient Hessian when
+/// `with_hessian` (the surface H2 seminorm of fourth-order problems; a shell's components too).
+SurfaceExactSolution surface_exact_solution(const SymbolicFunction& u, bool with_hessian);
+
 /// The Laplace–Beltrami problem as a Formulation: matrix laplace + c mass (ProblemSpec::terms,
 /// summed in double: conditioned like h⁻², far from the plates' need), the load from
 /// surface_source, Dirichlet data on open surfaces (surface_dirichlet.hpp). Without reaction on a
