@@ -23,12 +23,9 @@ std::vector<double> edge_terms(const Space& space, const Eigen::VectorXd& coeffi
   const QuadratureRule line = gauss_legendre_for_degree(quadrature_degree);
   const int ne = static_cast<int>(edges.size());
   // Point sets of both sides, alive for the whole call: evaluators may cache tables by rule address.
-  std::vector<QuadratureRule> side_a(ne), side_b(ne);
-  for (int k = 0; k < ne; ++k) {
-    const InteriorEdge& e = edges[k];
-    side_a[k] = points_on_edge(space.cell_shape(e.element_a), e.edge_a, e.a0, e.a1, line);
-    side_b[k] = points_on_edge(space.cell_shape(e.element_b), e.edge_b, e.b0, e.b1, line);
-  }
+  const EdgeSideRules sides = edge_side_rules(space, edges, line);
+  const std::vector<QuadratureRule>& side_a = sides.a;
+  const std::vector<QuadratureRule>& side_b = sides.b;
   std::vector<double> piece(ne, 0.0);
 #pragma omp parallel if (worth_threads(ne))
   {

@@ -4,6 +4,8 @@
 /// (the estimator's jump terms, the C0 interior penalty): both sides of an edge are evaluated by
 /// their own elements at the same physical points.
 
+#include <vector>
+
 #include "quadrature/quadrature_rule.hpp"
 #include "spaces/space.hpp"
 
@@ -17,6 +19,23 @@ inline QuadratureRule points_on_edge(CellShape shape, int edge, double t0, doubl
   out.weights = line.weights;
   for (const Point2& s : line.points) out.points.push_back(reference_edge_point(shape, edge, t0 + s.x() * (t1 - t0)));
   return out;
+}
+
+/// The points of both sides of every edge piece, side a and side b, at the same physical points.
+/// Kept alive by the caller for the whole loop: evaluators may cache tables by a rule's address.
+struct EdgeSideRules {
+  std::vector<QuadratureRule> a, b;
+};
+inline EdgeSideRules edge_side_rules(const Space& space, const std::vector<InteriorEdge>& edges,
+                                     const QuadratureRule& line) {
+  EdgeSideRules r;
+  r.a.reserve(edges.size());
+  r.b.reserve(edges.size());
+  for (const InteriorEdge& e : edges) {
+    r.a.push_back(points_on_edge(space.cell_shape(e.element_a), e.edge_a, e.a0, e.a1, line));
+    r.b.push_back(points_on_edge(space.cell_shape(e.element_b), e.edge_b, e.b0, e.b1, line));
+  }
+  return r;
 }
 
 }  // namespace iga

@@ -49,12 +49,9 @@ void for_each_edge(const Space& space, int quadrature_degree, Visit&& visit) {
   const QuadratureRule line = gauss_legendre_for_degree(quadrature_degree);
   const int ne = static_cast<int>(edges.size());
   // Point sets of both sides, alive for the whole call: evaluators may cache tables by rule address.
-  std::vector<QuadratureRule> side_a(ne), side_b(ne);
-  for (int k = 0; k < ne; ++k) {
-    const InteriorEdge& e = edges[k];
-    side_a[k] = points_on_edge(space.cell_shape(e.element_a), e.edge_a, e.a0, e.a1, line);
-    side_b[k] = points_on_edge(space.cell_shape(e.element_b), e.edge_b, e.b0, e.b1, line);
-  }
+  const EdgeSideRules sides = edge_side_rules(space, edges, line);
+  const std::vector<QuadratureRule>& side_a = sides.a;
+  const std::vector<QuadratureRule>& side_b = sides.b;
   const unsigned flags = update_values | update_gradients | update_hessians | update_surface_curvature;
   std::unique_ptr<Space::Evaluator> evaluator = space.make_evaluator();
   PointValues a, b;
