@@ -33,6 +33,10 @@ std::string catalogue_text() {
             << '\n';
     }
   }
+  // A graph lifts the planar domain of any space, so it is listed once rather than under each.
+  out << "\nand, for every space above on a planar domain:\n";
+  for (const DomainFamily& domain : lifted_domain_families())
+    out << "    " << padded(domain.type, 18) << domain.keys << '\n';
   return out.str();
 }
 

@@ -17,6 +17,8 @@ std::vector<SpaceCatalogueEntry> space_catalogue() {
           g1_catalogue_entry(),      g1_4split_catalogue_entry(), surface_catalogue_entry()};
 }
 
+std::vector<DomainFamily> lifted_domain_families() { return {graph_domain_family()}; }
+
 SpacePtr make_space(const ConfigNode& domain, const ConfigNode& space, int level, const Space* coarser) {
   // A graph surface z = g(x, y): the planar space on domain.over, lifted.
   if (is_graph_domain(domain))

@@ -19,6 +19,9 @@ std::vector<std::string> space_types();
 /// `iga-run --list` prints these.
 std::vector<SpaceCatalogueEntry> space_catalogue();
 
+/// The domain types built from a planar domain of any space above (a graph surface over it).
+std::vector<DomainFamily> lifted_domain_families();
+
 /// Build the space named by space["type"] on `domain`, uniformly refined `level` times.
 /// `coarser`, when given, is a space built from the same two nodes at a lower level: the new space
 /// may share its expensive level-independent parts (the smooth surface of a surface space) instead

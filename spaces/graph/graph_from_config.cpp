@@ -97,4 +97,9 @@ SpacePtr make_graph_space(const ConfigNode& domain, const ConfigNode& space,
   return lifted;
 }
 
+DomainFamily graph_domain_family() {
+  return {"graph", "height: g(x, y), over: a planar domain block (the space built on it, lifted onto z = g(x, y))", "",
+          {}};
+}
+
 }  // namespace iga

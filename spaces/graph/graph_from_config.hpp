@@ -12,6 +12,7 @@
 
 #include "config/config_node.hpp"
 #include "spaces/space.hpp"
+#include "spaces/space_catalogue.hpp"
 
 namespace iga {
 
@@ -21,6 +22,10 @@ bool is_graph_domain(const ConfigNode& domain);
 /// The graph surface of `domain` over the planar space `build_planar(domain["over"])`.
 SpacePtr make_graph_space(const ConfigNode& domain, const ConfigNode& space,
                           const std::function<SpacePtr(const ConfigNode& over)>& build_planar);
+
+/// What `iga-run --list` says of `domain.type: graph`: not one space's domain family but a lift of
+/// every planar one, so the listing prints it once after the spaces.
+DomainFamily graph_domain_family();
 
 /// The planar space of a graph surface built earlier (the study's previous level), or null.
 const Space* planar_of_graph(const Space* space);

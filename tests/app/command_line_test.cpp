@@ -38,6 +38,7 @@ TEST(CommandLine, ListPrintsTheCatalogue) {
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_EQ(r.out, iga::catalogue_text());
   for (const std::string& type : iga::space_types()) EXPECT_NE(r.out.find("  " + type + " "), std::string::npos) << type;
+  EXPECT_NE(r.out.find("    graph "), std::string::npos) << "the lift of every planar space";
 }
 
 TEST(CommandLine, HelpShowsTheCommands) {
