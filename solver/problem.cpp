@@ -164,12 +164,10 @@ ProblemSpec parse_surface_problem(const ConfigNode& node) {
   p.pde = node["pde"].as_string() == "surface_biharmonic" ? Pde::surface_biharmonic : Pde::laplace_beltrami;
   if (p.pde == Pde::surface_biharmonic) {
     // Δ_Γ²u + c u = f: ∫ Δ_Γu Δ_Γv + c ∫ u v (the planar bilaplace integrator reads the covariant
-    // Hessian on a surface). Closed surfaces need c > 0 (constants are the kernel); open ones are
-    // clamped on their whole boundary (u, ∂_ν u from `exact`), which fixes u for any c >= 0.
+    // Hessian on a surface). On a closed surface with c = 0 the constants are the kernel (fixed by
+    // the mean, as for Laplace–Beltrami); open ones are clamped on their whole boundary (u, ∂_ν u
+    // from `exact`), which fixes u for any c >= 0.
     const auto boundary = node.find("boundary");
-    if (p.reaction <= 0 && !boundary)
-      (node.has("reaction") ? node["reaction"] : node).fail(
-          "surface_biharmonic needs reaction > 0 on a closed surface (its constants are the kernel of Δ_Γ²)");
     if (boundary) {
       for (const std::string& key : boundary->keys())
         if (key != "all") (*boundary)[key].fail("a surface has one boundary part, 'all' (its whole boundary curve)");

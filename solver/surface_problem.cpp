@@ -73,13 +73,7 @@ void SurfaceFormulation::check() const {
 
 Eigen::VectorXd SurfaceFormulation::load(const WorkShare& share) const {
   Eigen::VectorXd b = surface_load(space(), surface_source(problem()), quadrature_degree(), share.elements);
-  if (pure()) {
-    mass_of_one_ = surface_load(
-        space(), [](const Eigen::Vector3d&, const Eigen::Vector3d&, double) { return 1.0; }, quadrature_degree(),
-        share.elements);
-    area_ = share.sum(mass_of_one_.sum());
-    b -= (share.sum(b.sum()) / area_) * mass_of_one_;
-  }
+  if (pure()) kernel_.make_load_orthogonal(b, space(), quadrature_degree(), share);
   return b;
 }
 
@@ -91,25 +85,15 @@ Constraints SurfaceFormulation::constraints() const {
         space(), space().boundary_edges("all"), [g](const Eigen::Vector3d& x) { return g.at(x); },
         quadrature_degree());
   }
+  if (pure()) return kernel_.pinned(space());
   Constraints c;
   c.values = Eigen::VectorXd::Zero(n);
-  if (pure()) c.constrained = {0};
-  for (int i = pure() ? 1 : 0; i < n; ++i) c.free.push_back(i);
+  for (int i = 0; i < n; ++i) c.free.push_back(i);
   return c;
 }
 
 void SurfaceFormulation::finish(Eigen::VectorXd& coefficients, const WorkShare& share) const {
-  if (!pure()) return;
-  coefficients.array() -= share.sum(mass_of_one_.dot(coefficients)) / area_;
-  // With an exact solution, compare with its own mean: ∫u = Σ_i ∫u N_i.
-  if (problem().surface_exact) {
-    const SymbolicFunction u = *problem().surface_exact;
-    const double integral =
-        surface_load(space(), [u](const Eigen::Vector3d& x, const Eigen::Vector3d&, double) { return u.at(x); },
-                     space().error_quadrature_degree(), share.elements)
-            .sum();
-    coefficients.array() += share.sum(integral) / area_;
-  }
+  if (pure()) kernel_.finish(coefficients, space(), problem().surface_exact, share);
 }
 
 ErrorNorms SurfaceFormulation::errors(const Eigen::VectorXd& coefficients, const WorkShare& share) const {
@@ -155,9 +139,11 @@ Eigen::VectorXd SurfaceBiharmonicFormulation::load(const WorkShare& share) const
   const ProblemSpec& p = problem();
   if (p.surface_source || !p.surface_exact) {
     const SymbolicFunction f = p.surface_source.value_or(SymbolicFunction::constant(0.0));
-    return surface_load(
+    Eigen::VectorXd b = surface_load(
         space(), [f](const Eigen::Vector3d& x, const Eigen::Vector3d&, double) { return f.at(x); },
         quadrature_degree(), share.elements);
+    if (pure()) kernel_.make_load_orthogonal(b, space(), quadrature_degree(), share);
+    return b;
   }
   // ℓ(v) = a(u, v) = ∫ Δ_Γu Δ_Γv + c u v with Δ_Γu from u's ambient derivatives, n and H.
   const SymbolicFunction u = *p.surface_exact;
@@ -176,6 +162,7 @@ Eigen::VectorXd SurfaceBiharmonicFormulation::load(const WorkShare& share) const
   };
   Eigen::VectorXd b = surface_form_load(space(), value_part, laplacian_part, quadrature_degree(), share.elements);
   if (space().continuity() < 1) b += c0ip_edge_load(space(), laplacian_part, quadrature_degree());
+  if (pure()) kernel_.make_load_orthogonal(b, space(), quadrature_degree(), share);
   return b;
 }
 
@@ -216,11 +203,16 @@ Constraints SurfaceBiharmonicFormulation::constraints() const {
         },
         quadrature_degree());
   }
+  if (pure()) return kernel_.pinned(space());
   // Closed surface, c > 0: no essential condition.
   Constraints c;
   c.values = Eigen::VectorXd::Zero(space().dimension());
   for (int i = 0; i < space().dimension(); ++i) c.free.push_back(i);
   return c;
+}
+
+void SurfaceBiharmonicFormulation::finish(Eigen::VectorXd& coefficients, const WorkShare& share) const {
+  if (pure()) kernel_.finish(coefficients, space(), problem().surface_exact, share);
 }
 
 ErrorNorms SurfaceBiharmonicFormulation::errors(const Eigen::VectorXd& coefficients, const WorkShare& share) const {

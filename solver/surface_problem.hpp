@@ -10,6 +10,7 @@
 
 #include "assembly/fields.hpp"
 #include "config/config_node.hpp"
+#include "solver/constant_kernel.hpp"
 #include "solver/formulation.hpp"
 
 namespace iga {
@@ -25,9 +26,8 @@ SurfaceExactSolution surface_exact_solution(const SymbolicFunction& u, bool with
 /// summed in double: conditioned like h⁻², far from the plates' need), the load from
 /// surface_source, Dirichlet data on open surfaces (surface_dirichlet.hpp). Without reaction on a
 /// closed surface, constants (Σ N_i = 1) span the kernel: the load is made orthogonal to them
-/// (∫f = 0 holds for exact data only up to quadrature), coefficient 0 is pinned (an essential
-/// condition like any other) and the solution is shifted to zero mean, or to the exact solution's
-/// mean when one is given.
+/// (ConstantKernel: the load orthogonal to them, coefficient 0 pinned, the solution shifted to
+/// zero mean or to the exact solution's mean).
 class SurfaceFormulation final : public Formulation {
  public:
   using Formulation::Formulation;
@@ -43,17 +43,15 @@ class SurfaceFormulation final : public Formulation {
   /// −Δ_Γu = f on a closed surface: u fixed up to a constant (pinned in the solve, shifted to its
   /// mean after). Not for eigenproblems, where the constants are the eigenfunctions of λ = 0.
   bool pure() const { return problem().reaction == 0 && !open() && !problem().eigen; }
-  /// Pure problems: this share's ∫ N_i and the area (set by load, used by finish).
-  mutable Eigen::VectorXd mass_of_one_;
-  mutable double area_ = 0;
+  mutable ConstantKernel kernel_;  ///< pure problems: set by load, used by finish
 };
 
 /// η of the C0 interior penalty for degree p (docs/surface-biharmonic.md: large enough that the
 /// discrete form stays coercive; the inverse inequality constant grows like p²).
 double c0ip_penalty(int degree);
 
-/// The surface biharmonic problem Δ_Γ²u + c u = f (c = `reaction`, default 1; > 0 on a closed
-/// surface) on a closed surface, or on an open one clamped on its whole boundary (u and the
+/// The surface biharmonic problem Δ_Γ²u + c u = f (c = `reaction`, default 1; with c = 0 on a
+/// closed surface u is fixed up to a constant as for Laplace–Beltrami: ConstantKernel) on a closed surface, or on an open one clamped on its whole boundary (u and the
 /// conormal derivative ∂_ν u from the exact solution: surface_essential.hpp; lifted graph surfaces
 /// through their planar space), as a Formulation: matrix ∫ Δ_Γu Δ_Γv + c ∫ u v (ProblemSpec::terms: the bilaplace
 /// integrator on the covariant Hessians, and mass), on C1 surface spaces. The load is the given
@@ -76,8 +74,14 @@ class SurfaceBiharmonicFormulation final : public Formulation {
   Eigen::VectorXd load(const WorkShare& share) const override;
   SplitMatrix matrix(const std::vector<FormTerm>& terms) const override;
   Constraints constraints() const override;
+  void finish(Eigen::VectorXd& coefficients, const WorkShare& share) const override;
   ErrorNorms errors(const Eigen::VectorXd& coefficients, const WorkShare& share) const override;
   Messages messages() const override;
+
+ private:
+  /// Δ_Γ²u = f on a closed surface: the constants are the kernel (ConstantKernel).
+  bool pure() const { return problem().reaction == 0 && space().boundary_edges("all").empty() && !problem().eigen; }
+  mutable ConstantKernel kernel_;  ///< pure problems: set by load, used by finish
 };
 
 }  // namespace iga
