@@ -9,6 +9,7 @@
 #include "spaces/g1_4split/face_function.hpp"
 #include "spaces/g1_4split/g1_4split_meshes.hpp"
 #include "spaces/g1_4split/fan_values.hpp"
+#include "spaces/g1_4split/fair_geometry.hpp"
 #include "spaces/g1_4split/line_gluing.hpp"
 
 namespace iga {
@@ -49,6 +50,12 @@ struct G14Core {
   }
 };
 
+/// The level-0 map (or every level's, for `rebuild`) by the chosen fit.
+FaceGeometry fitted_geometry(const G14Basis& basis, const QuadTopology& topology, const PatchMesh& mesh, GeometryFit fit) {
+  return fit == GeometryFit::fair ? fair_geometry(basis, topology, mesh)
+                                  : project_geometry(basis, bilinear_geometry(mesh, basis.bspline));
+}
+
 }  // namespace
 
 G14Space::G14Space(const PatchMesh& coarse, const G14Options& options) : options_(options) {
@@ -58,7 +65,7 @@ G14Space::G14Space(const PatchMesh& coarse, const G14Options& options) : options
   gluing_ = options.blending == Blending::lines ? planar_line_gluing(mesh, topology, &lines)
                                                 : symmetric_gluing(topology, options.blending, vertex_angles(mesh));
   basis_ = build_g14_basis(topology, gluing_, options.degree, options.regularity);
-  geometry_ = project_geometry(basis_, bilinear_geometry(mesh, basis_.bspline));
+  geometry_ = fitted_geometry(basis_, topology, mesh, options.fit);
   double jacobian = 1e300;  // of the level-0 geometry (refinement keeps the map)
   for (int f = 0; f < topology.num_faces(); ++f)
     jacobian = std::min(jacobian, certified_jacobian_bound(basis_.bspline, geometry_.x[f], geometry_.y[f]));
@@ -73,12 +80,12 @@ G14Space::G14Space(const PatchMesh& coarse, const G14Options& options) : options
       gluing_ = options.blending == Blending::lines ? planar_line_gluing(finer, fine, nullptr)
                                                     : symmetric_gluing(fine, options.blending, vertex_angles(finer));
       basis_ = build_g14_basis(fine, gluing_, options.degree, options.regularity);
-      geometry_ = project_geometry(basis_, bilinear_geometry(finer, basis_.bspline));
+      geometry_ = fitted_geometry(basis_, fine, finer, options.fit);
     }
     mesh = std::move(finer);
     topology = std::move(fine);
   }
-  check_geometry(basis_.bspline, geometry_, mesh.name());
+  check_geometry(basis_.bspline, geometry_, mesh.name(), options.fit == GeometryFit::fair);
   mesh_ = std::make_shared<const PatchMesh>(std::move(mesh));
   topology_ = std::make_shared<const QuadTopology>(std::move(topology));
   SpaceFacts facts;
@@ -87,6 +94,7 @@ G14Space::G14Space(const PatchMesh& coarse, const G14Options& options) : options
                       {"regularity", std::to_string(options_.regularity)},
                       {"blending", blending_name(options_.blending)},
                       {"refinement", options_.nested ? "nested" : "rebuild"},
+                      {"geometry_fit", options_.fit == GeometryFit::fair ? "fair" : "least_squares"},
                       {"faces", std::to_string(topology_->num_faces())},
                       {"domain", mesh_->name()}};
   if (options_.blending == Blending::lines) {
