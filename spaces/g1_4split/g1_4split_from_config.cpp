@@ -178,6 +178,7 @@ SpacePtr make_g1_4split_space(const ConfigNode& domain, const ConfigNode& space,
   // The fair map is the default with the default gluing; the other blendings keep the
   // least-squares map their tables were measured with (docs/spaces/g1_4split.md).
   o.fit = o.blending == Blending::lines ? GeometryFit::fair : GeometryFit::least_squares;
+  o.fit_required = space.has("geometry_fit");
   if (space.has("geometry_fit"))
     o.fit = space["geometry_fit"].as_choice({"fair", "least_squares"}) == "fair" ? GeometryFit::fair
                                                                                 : GeometryFit::least_squares;

@@ -56,6 +56,14 @@ FaceGeometry fitted_geometry(const G14Basis& basis, const QuadTopology& topology
                                   : project_geometry(basis, bilinear_geometry(mesh, basis.bspline));
 }
 
+/// The smallest certified det J bound over the faces (check_geometry's margin below).
+constexpr double kCertifiedJacobian = 1e-8;
+double level0_jacobian_bound(const SplitBSpline& b, const FaceGeometry& g) {
+  double bound = 1e300;
+  for (std::size_t f = 0; f < g.x.size(); ++f) bound = std::min(bound, certified_jacobian_bound(b, g.x[f], g.y[f]));
+  return bound;
+}
+
 }  // namespace
 
 G14Space::G14Space(const PatchMesh& coarse, const G14Options& options) : options_(options) {
@@ -66,9 +74,15 @@ G14Space::G14Space(const PatchMesh& coarse, const G14Options& options) : options
                                                 : symmetric_gluing(topology, options.blending, vertex_angles(mesh));
   basis_ = build_g14_basis(topology, gluing_, options.degree, options.regularity);
   geometry_ = fitted_geometry(basis_, topology, mesh, options.fit);
-  double jacobian = 1e300;  // of the level-0 geometry (refinement keeps the map)
-  for (int f = 0; f < topology.num_faces(); ++f)
-    jacobian = std::min(jacobian, certified_jacobian_bound(basis_.bspline, geometry_.x[f], geometry_.y[f]));
+  double jacobian = level0_jacobian_bound(basis_.bspline, geometry_);  // refinement keeps the map
+  GeometryFit fit = options.fit;
+  if (fit == GeometryFit::fair && jacobian <= kCertifiedJacobian && !options.fit_required) {
+    // The default fit where the fair map folds (a Gmsh L-shape: the re-entrant corner): the
+    // least-squares map, said in summary.json; asked for explicitly, the fair map is refused below.
+    fit = GeometryFit::least_squares;
+    geometry_ = fitted_geometry(basis_, topology, mesh, fit);
+    jacobian = level0_jacobian_bound(basis_.bspline, geometry_);
+  }
   for (int l = 0; l < options.level; ++l) {
     PatchMesh finer = mesh.refined();
     QuadTopology fine = quad_topology(finer);
@@ -80,12 +94,12 @@ G14Space::G14Space(const PatchMesh& coarse, const G14Options& options) : options
       gluing_ = options.blending == Blending::lines ? planar_line_gluing(finer, fine, nullptr)
                                                     : symmetric_gluing(fine, options.blending, vertex_angles(finer));
       basis_ = build_g14_basis(fine, gluing_, options.degree, options.regularity);
-      geometry_ = fitted_geometry(basis_, fine, finer, options.fit);
+      geometry_ = fitted_geometry(basis_, fine, finer, fit);
     }
     mesh = std::move(finer);
     topology = std::move(fine);
   }
-  check_geometry(basis_.bspline, geometry_, mesh.name(), options.fit == GeometryFit::fair);
+  check_geometry(basis_.bspline, geometry_, mesh.name(), fit == GeometryFit::fair);
   mesh_ = std::make_shared<const PatchMesh>(std::move(mesh));
   topology_ = std::make_shared<const QuadTopology>(std::move(topology));
   SpaceFacts facts;
@@ -94,7 +108,9 @@ G14Space::G14Space(const PatchMesh& coarse, const G14Options& options) : options
                       {"regularity", std::to_string(options_.regularity)},
                       {"blending", blending_name(options_.blending)},
                       {"refinement", options_.nested ? "nested" : "rebuild"},
-                      {"geometry_fit", options_.fit == GeometryFit::fair ? "fair" : "least_squares"},
+                      {"geometry_fit", fit == GeometryFit::fair ? "fair"
+                                       : options.fit == GeometryFit::fair ? "least_squares (the fair map is not certified regular)"
+                                                                          : "least_squares"},
                       {"faces", std::to_string(topology_->num_faces())},
                       {"domain", mesh_->name()}};
   if (options_.blending == Blending::lines) {

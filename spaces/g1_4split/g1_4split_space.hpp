@@ -28,6 +28,9 @@ struct G14Options {
   int level = 0;
   bool nested = true;
   GeometryFit fit = GeometryFit::fair;
+  /// false (the default fit): a fair map that is not certified regular gives way to the
+  /// least-squares map; true (asked for): it is refused (InputError).
+  bool fit_required = false;
 };
 
 /// Every interior edge of `t` once, with the faces' parameters (t runs the same or opposite way).
