@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include "config/config_node.hpp"
+#include "config/errors.hpp"
 #include "solver/solve_problem.hpp"
 #include "spaces/g1/g1_from_config.hpp"
 #include "spaces/g1_4split/face_function.hpp"
@@ -121,4 +122,21 @@ TEST(G14FairGeometry, FansKeepTheBilinearMap) {
       EXPECT_LT((fair.geometry().y[f] - exact.y[f]).lpNorm<Eigen::Infinity>(), 1e-10) << name << f;
     }
   }
+}
+
+TEST(G14FairGeometry, WhereTheFairMapFoldsTheDefaultIsTheLeastSquaresMap) {
+  // Gmsh's recombined L-shape (configs/domains/l_shape.geo at 0.5): the fair map is not certified
+  // regular there; the default fit takes the least-squares map (certified) and says so, the fit
+  // asked for is refused.
+  const std::string domain = "domain: {type: mesh_file, file: " + std::string(IGA_SOURCE_DIR) +
+                             "/configs/domains/l_shape.geo, mesh_size: 0.5, recombine: true}\n";
+  const SpacePtr s = test::space_from_yaml(domain + "space: {type: g1_4split, degree: 5}\n");
+  std::string fit, bound;
+  for (const auto& [key, value] : s->facts().parameters) {
+    if (key == "geometry_fit") fit = value;
+    if (key == "jacobian_bound") bound = value;
+  }
+  EXPECT_EQ(fit, "least_squares (the fair map is not certified regular)");
+  EXPECT_GT(std::stod(bound), 1e-2);
+  EXPECT_THROW(test::space_from_yaml(domain + "space: {type: g1_4split, degree: 5, geometry_fit: fair}\n"), InputError);
 }
