@@ -174,6 +174,7 @@ FaceGeometry fair_geometry(const G14Basis& basis, const QuadTopology& topology, 
   const double off = std::max((gx - B * c0.head(dim)).lpNorm<Eigen::Infinity>(),
                               (gy - B * c0.tail(dim)).lpNorm<Eigen::Infinity>());
   if (off <= 1e-8 * scale && d.lpNorm<Eigen::Infinity>() <= 1e-8 * scale) return project_geometry(basis, bilinear);
+  if (nc == 0) return project_geometry(basis, bilinear);  // no boundary: not a planar domain
   // Minimise with the conditions by the Schur complement S = C H⁻¹ Cᵀ, H = diag(A, A): nc sparse
   // solves (nc = the boundary's conditions, few), S dense nc x nc. Conditions repeat at straight
   // boundary vertices (both edges' first derivatives on one line), so S is singular: a
