@@ -88,3 +88,31 @@ for i in range(0, 10, 2):
     faces.append([1, ring(i + 3), ring(i + 2), ring(i + 1)])  # bottom kite: lower, upper, lower
 write("g14_trapezohedron.obj", ["Pentagonal trapezohedron: 10 kites, 2 vertices of valence 5 and 10 of valence 3 (scripts/g14_meshes.py)."],
       v, faces)
+
+# 3 x 3 grids of the unit square, irregular: the bilinear map is not in the 4-split space with the
+# default gluing, so the level-0 map is fitted (the "fair map" table of docs/spaces/g1_4split.md).
+def grid3(move):
+    v = [move(i, j, (i / 3.0, j / 3.0)) for j in range(4) for i in range(4)]
+    faces = [[4 * j + i, 4 * j + i + 1, 4 * (j + 1) + i + 1, 4 * (j + 1) + i] for j in range(3) for i in range(3)]
+    return v, faces
+
+
+def bump_boundary(i, j, p):  # the 8 boundary points between the corners pushed out by 0.05
+    x, y = p
+    if (i in (0, 3)) and (j in (0, 3)):
+        return p
+    return (x - 0.05 * (i == 0) + 0.05 * (i == 3), y - 0.05 * (j == 0) + 0.05 * (j == 3))
+
+
+def move_inner(i, j, p):  # the 4 inner points moved by 0.07 along one axis and 0.05 along the other
+    shift = {(1, 1): (0.07, 0.05), (2, 1): (-0.05, 0.07), (1, 2): (0.05, -0.07), (2, 2): (-0.07, -0.05)}
+    d = shift.get((i, j), (0.0, 0.0))
+    return (p[0] + d[0], p[1] + d[1])
+
+
+write("g14_grid3_bumped.obj", ["3 x 3 quads of the unit square, the 8 boundary points between the corners pushed out by 0.05",
+                               "(scripts/g14_meshes.py): every inner vertex is a crossing of two bent mesh lines."],
+      *grid3(bump_boundary))
+write("g14_grid3_moved.obj", ["3 x 3 quads of the unit square, the 4 inner points moved by (0.07, 0.05) in four directions",
+                              "(scripts/g14_meshes.py): straight boundary, kinked mesh lines inside."],
+      *grid3(move_inner))

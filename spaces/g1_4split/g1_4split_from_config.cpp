@@ -154,7 +154,7 @@ std::vector<SpaceRequestSize> g1_4split_requested_sizes(const ConfigNode& domain
 }
 
 SpacePtr make_g1_4split_space(const ConfigNode& domain, const ConfigNode& space, int level) {
-  space.check_keys({"type", "degree", "regularity", "blending", "refinement"});
+  space.check_keys({"type", "degree", "regularity", "blending", "refinement", "geometry_fit"});
   G14Options o;
   const ConfigNode dn = space["degree"];
   o.degree = dn.as_int();
@@ -175,9 +175,20 @@ SpacePtr make_g1_4split_space(const ConfigNode& domain, const ConfigNode& space,
     o.blending = blending_from_name(b);
   }
   if (space.has("refinement")) o.nested = space["refinement"].as_choice({"nested", "rebuild"}) == "nested";
+  // The fair map is the default with the default gluing; the other blendings keep the
+  // least-squares map their tables were measured with (docs/spaces/g1_4split.md).
+  o.fit = o.blending == Blending::lines ? GeometryFit::fair : GeometryFit::least_squares;
+  o.fit_required = space.has("geometry_fit");
+  if (space.has("geometry_fit"))
+    o.fit = space["geometry_fit"].as_choice({"fair", "least_squares"}) == "fair" ? GeometryFit::fair
+                                                                                : GeometryFit::least_squares;
   if (level < 0 || level > 6) space.fail("refinement level must be in 0..6 (got " + std::to_string(level) + ")");
   o.level = level;
   if (domain["type"].as_choice({"multipatch", "mesh_file", "surface"}) == "surface") {
+    if (space.has("geometry_fit") && o.fit == GeometryFit::fair)
+      space["geometry_fit"].fail(
+          "geometry_fit fair is planar only (it keeps the boundary on the mesh's straight segments); a g1_4split "
+          "surface is fitted by least squares");
     if (!o.nested)
       space["refinement"].fail(
           "a g1_4split surface is refined nested only (rebuilding would fit a different surface at every level)");

@@ -165,14 +165,15 @@ double certified_jacobian_bound(const SplitBSpline& b, const Eigen::VectorXd& x,
   return bound;
 }
 
-void check_geometry(const SplitBSpline& b, const FaceGeometry& g, const std::string& mesh_name) {
+void check_geometry(const SplitBSpline& b, const FaceGeometry& g, const std::string& mesh_name, bool fair) {
   for (std::size_t f = 0; f < g.x.size(); ++f)
     // A margin: det J vanishing at a point (q0 blending) leaves Bernstein coefficients at round-off.
     if (certified_jacobian_bound(b, g.x[f], g.y[f]) <= 1e-8)
-      throw InputError("g1_4split geometry of '" + mesh_name + "': det J of the projected map is not positive on face " +
-                       std::to_string(f) +
-                       " (the mesh does not fit the symmetric gluing there: an extraordinary vertex needs its edges "
-                       "spread like a regular fan, a valence-4 vertex straight mesh lines)");
+      throw InputError("g1_4split geometry of '" + mesh_name + "': det J of the " +
+                       (fair ? "fair" : "least-squares") + " map is not certified positive on face " + std::to_string(f) +
+                       (fair ? " (the map is not injective; try space.geometry_fit: least_squares)"
+                             : " (the mesh does not fit the symmetric gluing there: an extraordinary vertex needs its "
+                               "edges spread like a regular fan, a valence-4 vertex straight mesh lines)"));
 }
 
 }  // namespace iga

@@ -34,7 +34,8 @@ FaceGeometry subdivide_geometry(const SplitBSpline& b, const FaceGeometry& coars
 double certified_jacobian_bound(const SplitBSpline& b, const Eigen::VectorXd& x, const Eigen::VectorXd& y);
 
 /// Throws InputError naming the first face of `mesh_name` whose det J is not certified positive
-/// (bound above 1e-8: a zero of det J leaves coefficients at round-off).
-void check_geometry(const SplitBSpline& b, const FaceGeometry& g, const std::string& mesh_name);
+/// (bound above 1e-8: a zero of det J leaves coefficients at round-off); `fair`: the map is the
+/// fair one (the message names the other fit).
+void check_geometry(const SplitBSpline& b, const FaceGeometry& g, const std::string& mesh_name, bool fair = false);
 
 }  // namespace iga

@@ -9,6 +9,7 @@
 #include "spaces/g1_4split/face_function.hpp"
 #include "spaces/g1_4split/g1_4split_meshes.hpp"
 #include "spaces/g1_4split/fan_values.hpp"
+#include "spaces/g1_4split/fair_geometry.hpp"
 #include "spaces/g1_4split/line_gluing.hpp"
 
 namespace iga {
@@ -49,6 +50,23 @@ struct G14Core {
   }
 };
 
+/// The level-0 map (or every level's, for `rebuild`) by the chosen fit; `order` of the fair energy.
+FaceGeometry fitted_geometry(const G14Basis& basis, const QuadTopology& topology, const PatchMesh& mesh, GeometryFit fit,
+                             int order = 3) {
+  FairFit fair;
+  fair.order = order;
+  return fit == GeometryFit::fair ? fair_geometry(basis, topology, mesh, fair)
+                                  : project_geometry(basis, bilinear_geometry(mesh, basis.bspline));
+}
+
+/// The smallest certified det J bound over the faces (check_geometry's margin below).
+constexpr double kCertifiedJacobian = 1e-8;
+double level0_jacobian_bound(const SplitBSpline& b, const FaceGeometry& g) {
+  double bound = 1e300;
+  for (std::size_t f = 0; f < g.x.size(); ++f) bound = std::min(bound, certified_jacobian_bound(b, g.x[f], g.y[f]));
+  return bound;
+}
+
 }  // namespace
 
 G14Space::G14Space(const PatchMesh& coarse, const G14Options& options) : options_(options) {
@@ -58,10 +76,26 @@ G14Space::G14Space(const PatchMesh& coarse, const G14Options& options) : options
   gluing_ = options.blending == Blending::lines ? planar_line_gluing(mesh, topology, &lines)
                                                 : symmetric_gluing(topology, options.blending, vertex_angles(mesh));
   basis_ = build_g14_basis(topology, gluing_, options.degree, options.regularity);
-  geometry_ = project_geometry(basis_, bilinear_geometry(mesh, basis_.bspline));
-  double jacobian = 1e300;  // of the level-0 geometry (refinement keeps the map)
-  for (int f = 0; f < topology.num_faces(); ++f)
-    jacobian = std::min(jacobian, certified_jacobian_bound(basis_.bspline, geometry_.x[f], geometry_.y[f]));
+  geometry_ = fitted_geometry(basis_, topology, mesh, options.fit);
+  double jacobian = level0_jacobian_bound(basis_.bspline, geometry_);  // refinement keeps the map
+  GeometryFit fit = options.fit;
+  int order = 3;  // of the fair energy
+  std::string fit_name = fit == GeometryFit::fair ? "fair" : "least_squares";
+  if (fit == GeometryFit::fair && jacobian <= kCertifiedJacobian) {
+    // Where the D3 map folds (Gmsh's pentagon at mesh size 0.2) the thin-plate one (D2), stiffer
+    // against folding, then (default fit only: asked for, `fair` is refused below) the
+    // least-squares map (Gmsh's L-shape); summary.json says which.
+    order = 2;
+    geometry_ = fitted_geometry(basis_, topology, mesh, fit, order);
+    jacobian = level0_jacobian_bound(basis_.bspline, geometry_);
+    fit_name = "fair, thin plate (the D3 map is not certified regular)";
+    if (jacobian <= kCertifiedJacobian && !options.fit_required) {
+      fit = GeometryFit::least_squares;
+      geometry_ = fitted_geometry(basis_, topology, mesh, fit);
+      jacobian = level0_jacobian_bound(basis_.bspline, geometry_);
+      fit_name = "least_squares (the fair map is not certified regular)";
+    }
+  }
   for (int l = 0; l < options.level; ++l) {
     PatchMesh finer = mesh.refined();
     QuadTopology fine = quad_topology(finer);
@@ -73,12 +107,12 @@ G14Space::G14Space(const PatchMesh& coarse, const G14Options& options) : options
       gluing_ = options.blending == Blending::lines ? planar_line_gluing(finer, fine, nullptr)
                                                     : symmetric_gluing(fine, options.blending, vertex_angles(finer));
       basis_ = build_g14_basis(fine, gluing_, options.degree, options.regularity);
-      geometry_ = project_geometry(basis_, bilinear_geometry(finer, basis_.bspline));
+      geometry_ = fitted_geometry(basis_, fine, finer, fit, order);
     }
     mesh = std::move(finer);
     topology = std::move(fine);
   }
-  check_geometry(basis_.bspline, geometry_, mesh.name());
+  check_geometry(basis_.bspline, geometry_, mesh.name(), fit == GeometryFit::fair);
   mesh_ = std::make_shared<const PatchMesh>(std::move(mesh));
   topology_ = std::make_shared<const QuadTopology>(std::move(topology));
   SpaceFacts facts;
@@ -87,6 +121,7 @@ G14Space::G14Space(const PatchMesh& coarse, const G14Options& options) : options
                       {"regularity", std::to_string(options_.regularity)},
                       {"blending", blending_name(options_.blending)},
                       {"refinement", options_.nested ? "nested" : "rebuild"},
+                      {"geometry_fit", fit_name},
                       {"faces", std::to_string(topology_->num_faces())},
                       {"domain", mesh_->name()}};
   if (options_.blending == Blending::lines) {

@@ -15,6 +15,10 @@
 
 namespace iga {
 
+/// How the level-0 map is fitted into the space: `fair` (fair_geometry.hpp: boundary on the mesh's
+/// segments, smoothest correction of the bilinear map) or `least_squares` (project_geometry).
+enum class GeometryFit { fair, least_squares };
+
 /// What to build: degree, regularity, blending, levels of uniform refinement and whether the
 /// refined spaces inherit the coarse gluing and geometry (nested) or rebuild both per level.
 struct G14Options {
@@ -23,6 +27,10 @@ struct G14Options {
   Blending blending = Blending::lines;
   int level = 0;
   bool nested = true;
+  GeometryFit fit = GeometryFit::fair;
+  /// false (the default fit): a fair map that is not certified regular gives way to the
+  /// least-squares map; true (asked for): it is refused (InputError).
+  bool fit_required = false;
 };
 
 /// Every interior edge of `t` once, with the faces' parameters (t runs the same or opposite way).

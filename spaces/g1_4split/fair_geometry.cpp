@@ -1,0 +1,213 @@
+#include "spaces/g1_4split/fair_geometry.hpp"
+
+#include <Eigen/Dense>
+#include <Eigen/SparseCholesky>
+#include <algorithm>
+#include <cmath>
+
+#include "config/errors.hpp"
+#include "quadrature/quadrature_rule.hpp"
+#include "spaces/bspline/bspline_basis_1d.hpp"
+#include "spaces/g1_4split/edge_equations.hpp"
+
+namespace iga {
+
+Eigen::MatrixXd derivative_gram_1d(const SplitBSpline& b, int n) {
+  const int k = b.degree();
+  Eigen::MatrixXd G = Eigen::MatrixXd::Zero(b.size(), b.size());
+  if (n > k) return G;
+  const QuadratureRule g = gauss_legendre(k + 1);
+  for (int h = 0; h < 2; ++h) {
+    // n-th derivative of the Bernstein form on the half: n forward differences, degree k - n; the
+    // half has length 1/2, so d/dt = 2 d/ds.
+    Eigen::MatrixXd D = b.bernstein_extraction(h);
+    for (int j = 0; j < n; ++j) D = ((k - j) * (D.bottomRows(D.rows() - 1) - D.topRows(D.rows() - 1))).eval();
+    D *= std::pow(2.0, n);
+    for (int q = 0; q < g.size(); ++q) {
+      const Eigen::RowVectorXd N = bernstein_values(k - n, g.points[q].x()).transpose() * D;
+      G += 0.5 * g.weights[q] * N.transpose() * N;
+    }
+  }
+  return G;
+}
+
+namespace {
+
+/// The face matrix of ∫ |D^n f|² + w f² (all ordered n-th partials: Σ_i C(n,i) ∂u^i ∂v^(n-i)).
+Eigen::MatrixXd face_energy(const SplitBSpline& b, const FairFit& fit) {
+  const int s = b.size();
+  std::vector<Eigen::MatrixXd> G;
+  for (int j = 0; j <= fit.order; ++j) G.push_back(derivative_gram_1d(b, j));
+  Eigen::MatrixXd E = Eigen::MatrixXd::Zero(s * s, s * s);
+  auto add = [&](const Eigen::MatrixXd& Gu, const Eigen::MatrixXd& Gv, double c) {
+    for (int j = 0; j < s; ++j)
+      for (int i = 0; i < s; ++i)
+        for (int l = 0; l < s; ++l)
+          for (int kk = 0; kk < s; ++kk) E(i + j * s, kk + l * s) += c * Gu(i, kk) * Gv(j, l);
+  };
+  for (int i = 0; i <= fit.order; ++i) add(G[i], G[fit.order - i], binomial(fit.order, i));
+  add(G[0], G[0], fit.fit_weight);
+  return E;
+}
+
+/// The same face matrix on each of F faces (broken coefficients).
+Eigen::SparseMatrix<double> block_diagonal(const Eigen::MatrixXd& Mf, int F) {
+  const int fs = static_cast<int>(Mf.rows());
+  std::vector<Eigen::Triplet<double>> trip;
+  for (int f = 0; f < F; ++f)
+    for (int r = 0; r < fs; ++r)
+      for (int c = 0; c < fs; ++c)
+        if (Mf(r, c) != 0.0) trip.emplace_back(f * fs + r, f * fs + c, Mf(r, c));
+  Eigen::SparseMatrix<double> M(F * fs, F * fs);
+  M.setFromTriplets(trip.begin(), trip.end());
+  return M;
+}
+
+/// The faces' coefficients of the map with coefficients c = (c_x, c_y) in the basis B.
+FaceGeometry to_faces(const Eigen::SparseMatrix<double>& B, const Eigen::VectorXd& c, int F, int fs) {
+  const int dim = static_cast<int>(B.cols());
+  const Eigen::VectorXd hx = B * c.head(dim), hy = B * c.tail(dim);
+  FaceGeometry out;
+  for (int f = 0; f < F; ++f) {
+    out.x.push_back(hx.segment(f * fs, fs));
+    out.y.push_back(hy.segment(f * fs, fs));
+  }
+  return out;
+}
+
+/// One linear condition on a broken coefficient (x, y): cx x + cy y = value.
+struct PointCondition {
+  int row;
+  double cx, cy, value;
+};
+
+/// Boundary vertices at their mesh positions; every other trace coefficient of a boundary edge on
+/// the line through its two vertices (a trace is a spline in t: on the line iff its coefficients are).
+std::vector<PointCondition> boundary_conditions(const QuadTopology& t, const PatchMesh& mesh, const SplitBSpline& b) {
+  std::vector<PointCondition> out;
+  std::vector<bool> fixed(t.num_vertices(), false);
+  const int fs = b.face_size(), m = b.last();
+  for (int e = 0; e < t.num_edges(); ++e) {
+    const QuadEdge& edge = t.edge(e);
+    if (!edge.boundary()) continue;
+    const QuadSide side = edge.sides[0];
+    const int v0 = t.face(side.face)[side.local_edge], v1 = t.face(side.face)[(side.local_edge + 1) % 4];
+    const Point2 p0 = mesh.vertex(v0), p1 = mesh.vertex(v1);
+    const Point2 d = (p1 - p0).normalized(), n(-d.y(), d.x());
+    const std::vector<int> row = side_row(b, side.local_edge, 0);
+    for (int i = 0; i <= m; ++i) {
+      const int r = side.face * fs + row[i];
+      if (i == 0 || i == m) {
+        const int v = i == 0 ? v0 : v1;
+        if (fixed[v]) continue;
+        fixed[v] = true;
+        out.push_back({r, 1.0, 0.0, mesh.vertex(v).x()});
+        out.push_back({r, 0.0, 1.0, mesh.vertex(v).y()});
+      } else {
+        out.push_back({r, n.x(), n.y(), n.dot(p0)});
+      }
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+FaceGeometry fair_geometry(const G14Basis& basis, const QuadTopology& topology, const PatchMesh& mesh,
+                           const FairFit& fit) {
+  const SplitBSpline& b = basis.bspline;
+  const int fs = b.face_size(), F = topology.num_faces(), dim = basis.dimension();
+  const FaceGeometry bilinear = bilinear_geometry(mesh, b);
+  const Eigen::SparseMatrix<double> E = block_diagonal(face_energy(b, fit), F);
+  const Eigen::SparseMatrix<double>& B = basis.functions;
+  const Eigen::SparseMatrix<double> EB = E * B;
+  const Eigen::SparseMatrix<double> A = Eigen::SparseMatrix<double>(B.transpose()) * EB;
+
+  // Constraints on (c_x, c_y): rows of B combined per condition, scaled to unit norm.
+  const std::vector<PointCondition> conditions = boundary_conditions(topology, mesh, b);
+  const Eigen::SparseMatrix<double, Eigen::RowMajor> Br = B;
+  const int nc = static_cast<int>(conditions.size());
+  std::vector<Eigen::Triplet<double>> ct;
+  Eigen::VectorXd d(nc);
+  for (int i = 0; i < nc; ++i) {
+    const PointCondition& p = conditions[i];
+    double norm2 = 0.0;
+    for (Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator it(Br, p.row); it; ++it)
+      norm2 += it.value() * it.value() * (p.cx * p.cx + p.cy * p.cy);
+    const double s = 1.0 / std::sqrt(std::max(norm2, 1e-300));
+    for (Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator it(Br, p.row); it; ++it) {
+      if (p.cx != 0.0) ct.emplace_back(i, static_cast<int>(it.col()), s * p.cx * it.value());
+      if (p.cy != 0.0) ct.emplace_back(i, dim + static_cast<int>(it.col()), s * p.cy * it.value());
+    }
+    d(i) = s * p.value;
+  }
+  Eigen::SparseMatrix<double> C(nc, 2 * dim);
+  C.setFromTriplets(ct.begin(), ct.end());
+
+  Eigen::VectorXd gx(F * fs), gy(F * fs);
+  for (int f = 0; f < F; ++f) {
+    gx.segment(f * fs, fs) = bilinear.x[f];
+    gy.segment(f * fs, fs) = bilinear.y[f];
+  }
+  // Solve for the change from the least-squares map c0: where the bilinear map is in the space,
+  // c0 is it and every right-hand side below is round-off, so the map stays at round-off
+  // (the energy's conditioning multiplies residuals, not the data).
+  FairFit mass_only;
+  mass_only.order = 0;
+  mass_only.fit_weight = 0.0;
+  const Eigen::SparseMatrix<double> MB = block_diagonal(face_energy(b, mass_only), F) * B;
+  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> gram(Eigen::SparseMatrix<double>(B.transpose()) * MB);
+  if (gram.info() != Eigen::Success) throw NumericalError("g1_4split: fair geometry: singular Gram matrix");
+  Eigen::VectorXd c0(2 * dim);
+  c0.head(dim) = gram.solve(Eigen::VectorXd(MB.transpose() * gx));
+  c0.tail(dim) = gram.solve(Eigen::VectorXd(MB.transpose() * gy));
+  Eigen::VectorXd r(2 * dim);
+  r.head(dim) = EB.transpose() * Eigen::VectorXd(gx - B * c0.head(dim));
+  r.tail(dim) = EB.transpose() * Eigen::VectorXd(gy - B * c0.tail(dim));
+  d -= C * c0;
+  // The bilinear map in the space (regular and once-split fans): it is the minimum (energy 0, the
+  // conditions hold), and the least-squares map is it to the rounding of the Gram solve: keep that
+  // map bit for bit, rather than add the energy's rounding to it. Rounding: the misfit is ~1e-11
+  // of the domain's size on the split fans; a map within 1e-8 of the bilinear one is as fair.
+  double scale = 1.0;
+  for (int v = 0; v < mesh.num_vertices(); ++v) scale = std::max(scale, mesh.vertex(v).norm());
+  const double off = std::max((gx - B * c0.head(dim)).lpNorm<Eigen::Infinity>(),
+                              (gy - B * c0.tail(dim)).lpNorm<Eigen::Infinity>());
+  if (off <= 1e-8 * scale && d.lpNorm<Eigen::Infinity>() <= 1e-8 * scale) return project_geometry(basis, bilinear);
+  if (nc == 0) return project_geometry(basis, bilinear);  // no boundary: not a planar domain
+  // Minimise with the conditions by the Schur complement S = C H⁻¹ Cᵀ, H = diag(A, A): nc sparse
+  // solves (nc = the boundary's conditions, few), S dense nc x nc. Conditions repeat at straight
+  // boundary vertices (both edges' first derivatives on one line), so S is singular: a
+  // rank-revealing solve picks one set of multipliers, the map is the same. A last minimum-norm
+  // correction puts the conditions at round-off whatever the conditioning of the energy.
+  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver(A);
+  if (solver.info() != Eigen::Success) throw NumericalError("g1_4split: fair geometry: singular energy matrix");
+  const Eigen::SparseMatrix<double> Cx = C.leftCols(dim), Cy = C.rightCols(dim);
+  auto solve_h = [&](const Eigen::VectorXd& v) {
+    Eigen::VectorXd out(2 * dim);
+    out.head(dim) = solver.solve(Eigen::VectorXd(v.head(dim)));
+    out.tail(dim) = solver.solve(Eigen::VectorXd(v.tail(dim)));
+    return out;
+  };
+  Eigen::MatrixXd S = Eigen::MatrixXd::Zero(nc, nc);
+  const Eigen::SparseMatrix<double> Ct = C.transpose();
+  for (int j0 = 0; j0 < nc; j0 += 64) {  // blocks of columns: memory 2 dim x 64
+    const int w = std::min(64, nc - j0);
+    const Eigen::MatrixXd block = Eigen::MatrixXd(Ct.middleCols(j0, w));
+    const Eigen::MatrixXd sx = solver.solve(block.topRows(dim)), sy = solver.solve(block.bottomRows(dim));
+    S.middleCols(j0, w) = Cx * sx + Cy * sy;
+  }
+  const Eigen::VectorXd free = solve_h(r);  // the unconstrained minimiser
+  const Eigen::VectorXd lambda = S.completeOrthogonalDecomposition().solve(Eigen::VectorXd(C * free - d));
+  Eigen::VectorXd sol = free - solve_h(Ct * lambda);
+  const Eigen::MatrixXd CCt = Eigen::MatrixXd(C * Ct);
+  sol -= Ct * CCt.completeOrthogonalDecomposition().solve(Eigen::VectorXd(C * sol - d));
+  const Eigen::VectorXd residual = C * sol - d;
+  sol += c0;
+  if (!(residual.lpNorm<Eigen::Infinity>() <= 1e-9 * scale))
+    throw NumericalError("g1_4split: fair geometry: the space cannot keep the boundary on the mesh's segments (residual " +
+                         std::to_string(residual.lpNorm<Eigen::Infinity>()) + ")");
+  return to_faces(B, sol, F, fs);
+}
+
+}  // namespace iga
