@@ -78,7 +78,7 @@ Eigen::VectorXd ShellFormulation::load(const WorkShare& share) const {
       throw InputError(p.where + ": the point load's point " + format_number(p.point.x()) + ", " +
                        format_number(p.point.y()) + ", " + format_number(p.point.z()) +
                        " is not on the surface (no point of it within " + format_number(tolerance) +
-                       " = 1e-6 of the surface's radius)");
+                       " = 1e-6 of the surface's size, its largest distance from its centroid)");
     QuadratureRule one;
     one.points = {at->reference};
     one.weights = {0.0};
