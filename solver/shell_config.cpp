@@ -1,5 +1,6 @@
 #include "solver/shell_config.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace iga {
@@ -98,18 +99,27 @@ ProblemSpec parse_shell_problem(const ConfigNode& node) {
   for (const std::string& name : boundary ? boundary->keys() : std::vector<std::string>{}) {
     const ConfigNode entry = (*boundary)[name];
     // The parts are named by the user, so their keys are checked here rather than declared.
-    if (!entry.is_map() || entry.keys() != std::vector<std::string>{"fixed"})
-      entry.fail("a shell's support is {fixed: [x, y, z]} (the displacement components held)");
-    const ConfigNode fixed = entry["fixed"];
-    if (!fixed.is_sequence() || fixed.items().empty())
-      fixed.fail("fixed is a list of displacement components: any of x, y, z, e.g. [y, z]");
-    ShellSupport support{name, {false, false, false}, entry.where()};
-    for (const ConfigNode& c : fixed.items()) {
-      const std::string k = c.is_scalar() ? c.as_string() : "";
-      if (k != "x" && k != "y" && k != "z") c.fail("a displacement component is x, y or z");
-      const int i = k == "x" ? 0 : k == "y" ? 1 : 2;
-      if (support.fixed[i]) c.fail("component '" + k + "' is listed twice");
-      support.fixed[i] = true;
+    const std::vector<std::string> keys = entry.is_map() ? entry.keys() : std::vector<std::string>{};
+    if (!entry.is_map() || keys.empty() ||
+        std::any_of(keys.begin(), keys.end(), [](const std::string& k) { return k != "fixed" && k != "rotation"; }))
+      entry.fail("a shell's support is {fixed: [x, y, z]} (the displacement components held) and/or "
+                 "{rotation: held} (the rotation about the edge held: clamped with all three fixed, or a symmetry plane)");
+    ShellSupport support{name, {false, false, false}, false, entry.where()};
+    if (const auto fixed = entry.find("fixed")) {
+      if (!fixed->is_sequence() || fixed->items().empty())
+        fixed->fail("fixed is a list of displacement components: any of x, y, z, e.g. [y, z]");
+      for (const ConfigNode& c : fixed->items()) {
+        const std::string k = c.is_scalar() ? c.as_string() : "";
+        if (k != "x" && k != "y" && k != "z") c.fail("a displacement component is x, y or z");
+        const int i = k == "x" ? 0 : k == "y" ? 1 : 2;
+        if (support.fixed[i]) c.fail("component '" + k + "' is listed twice");
+        support.fixed[i] = true;
+      }
+    }
+    if (const auto rotation = entry.find("rotation")) {
+      const std::string r = rotation->is_scalar() ? rotation->as_string() : "";
+      if (r != "held" && r != "free") rotation->fail("rotation is 'held' (clamped, symmetry plane) or 'free' (the default)");
+      support.rotation_held = r == "held";
     }
     shell.supports.push_back(support);
   }

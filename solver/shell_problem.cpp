@@ -4,6 +4,7 @@
 #include <cmath>
 #include <memory>
 
+#include "assembly/shell_rotation.hpp"
 #include "assembly/surface_dirichlet.hpp"
 #include "assembly/surface_load.hpp"
 #include "config/errors.hpp"
@@ -124,6 +125,24 @@ Eigen::VectorXd ShellFormulation::load(const WorkShare& share) const {
 
 void ShellFormulation::finish(Eigen::VectorXd& coefficients, const WorkShare&) const {
   remove_rigid_motions(basis_, coefficients);
+}
+
+SplitMatrix ShellFormulation::matrix(const std::vector<FormTerm>& terms) const {
+  SplitMatrix m = Formulation::matrix(terms);
+  std::vector<BoundaryEdge> edges;
+  for (const ShellSupport& s : problem().shell->supports)
+    if (s.rotation_held)
+      for (const BoundaryEdge& e : space().boundary_edges(s.part))
+        if (std::none_of(edges.begin(), edges.end(), [&](const BoundaryEdge& f) {
+              return f.element == e.element && f.local_edge == e.local_edge;
+            }))
+          edges.push_back(e);
+  if (edges.empty()) return m;
+  // η = 10 (p + 1)²: above the inverse-inequality constant (docs/shells.md measures its effect).
+  const double eta = 10.0 * (space().degree() + 1) * (space().degree() + 1);
+  m.high = m.high + shell_rotation_nitsche(space(), edges, problem().shell->material, eta, quadrature_degree());
+  m.low.resize(0);  // the pattern changed; the element part is summed in double anyway
+  return m;
 }
 
 Constraints ShellFormulation::constraints() const {

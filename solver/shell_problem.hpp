@@ -34,6 +34,8 @@ class ShellFormulation final : public Formulation {
   void check() const override;
   Eigen::VectorXd load(const WorkShare& share) const override;
   Constraints constraints() const override;
+  /// The energy's terms plus, on parts with {rotation: held}, the Nitsche terms holding the rotation.
+  SplitMatrix matrix(const std::vector<FormTerm>& terms) const override;
   bool has_exact() const override { return problem().shell->exact.has_value(); }
   ErrorNorms errors(const Eigen::VectorXd& coefficients, const WorkShare& share) const override;
   void finish(Eigen::VectorXd& coefficients, const WorkShare& share) const override;

@@ -20,6 +20,9 @@ namespace iga {
 struct ShellSupport {
   std::string part;
   std::array<bool, 3> fixed{false, false, false};
+  /// The rotation about the edge, n·∂_ν u, held at zero (clamped edges, symmetry planes; by
+  /// Nitsche's method, assembly/shell_rotation.hpp).
+  bool rotation_held = false;
   std::string where;  ///< config location, for messages about the part name
 };
 
