@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstdio>
 #include <string>
+#include <vector>
 
 #include "solver/shell_problem.hpp"
 #include "solver/study_functionals.hpp"
@@ -27,15 +28,19 @@ std::string point_text(const Eigen::Vector3d& p) {
   return "[" + number(p.x()) + ", " + number(p.y()) + ", " + number(p.z()) + "]";
 }
 
-/// A point of the surface: element e's image of the reference point r.
-Eigen::Vector3d surface_point(const Space& space, int e, const Point2& r) {
+/// The image of the reference point r in every element of the space.
+std::vector<Eigen::Vector3d> element_points(const Space& space, const Point2& r) {
   const auto evaluator = space.make_evaluator();
   QuadratureRule one;
   one.points = {r};
   one.weights = {0.0};
   PointValues g;
-  evaluator->evaluate_geometry(e, one, g);
-  return g.x3.col(0);
+  std::vector<Eigen::Vector3d> out;
+  for (int e = 0; e < space.num_elements(); ++e) {
+    evaluator->evaluate_geometry(e, one, g);
+    out.push_back(g.x3.col(0));
+  }
+  return out;
 }
 
 TEST(ShellFreeShell, BalancedPointLoadsOnTheCubeNeedNoReactions) {
@@ -46,12 +51,12 @@ TEST(ShellFreeShell, BalancedPointLoadsOnTheCubeNeedNoReactions) {
   const std::string domain = "domain: {type: surface, mesh: cube}\nspace: {type: g1_4split, degree: 5}\n";
   const SpacePtr space = test::space_from_yaml(domain);
   // Two points far apart, pulled apart along the line through them: no resultant force or moment.
-  const Eigen::Vector3d p1 = surface_point(*space, 0, Point2(0.3, 0.4));
-  int far = 0;
-  for (int e = 0; e < space->num_elements(); ++e)
-    if ((surface_point(*space, e, Point2(0.3, 0.4)) - p1).norm() > (surface_point(*space, far, Point2(0.3, 0.4)) - p1).norm())
-      far = e;
-  const Eigen::Vector3d p2 = surface_point(*space, far, Point2(0.3, 0.4)), d = (p1 - p2).normalized();
+  const std::vector<Eigen::Vector3d> points = element_points(*space, Point2(0.3, 0.4));
+  const Eigen::Vector3d p1 = points[0];
+  std::size_t far = 0;
+  for (std::size_t e = 0; e < points.size(); ++e)
+    if ((points[e] - p1).norm() > (points[far] - p1).norm()) far = e;
+  const Eigen::Vector3d p2 = points[far], d = (p1 - p2).normalized();
   const std::string yaml = R"(
 problem:
   pde: kirchhoff_love_shell
@@ -156,7 +161,8 @@ TEST(ShellFreeShell, PinReactionsOnARationalPatchVanishWithRefinement) {
   // space, so the rotations are represented by their L2 projections Πr, which have energy. The pins
   // then carry reactions λ with a(u, v) − ℓ(v) = λ·v_pins; for v = Πr, a(u, Πr − r) − ℓ(Πr − r)
   // (a(u, r) = ℓ(r) = 0 for the exact r), at most O(‖Πr − r‖_H2) = O(h^{p−1}) = O(h²): each level
-  // must divide them by at least 4 (measured: 0.15, 7.5e-3, 1.2e-4 at levels 1-3, docs/shells.md).
+  // must divide them by at least 4 from level 1 to 2 (measured: 0.15, 7.5e-3, 1.2e-4 at levels 1-3,
+  // docs/shells.md; level 3 is left out to keep the test cheap).
   const std::string yaml = R"(
 problem:
   pde: kirchhoff_love_shell
@@ -172,7 +178,7 @@ space: {type: bspline, degree: 3, elements: [8, 2]}
   const ConfigNode root = ConfigNode::load_string(yaml, "test.yaml");
   const ProblemSpec problem = parse_problem(root["problem"]);
   double previous = 0;
-  for (int level = 1; level <= 3; ++level) {
+  for (int level = 1; level <= 2; ++level) {
     const SpacePtr space = make_space(root["domain"], root["space"], level);
     const ShellFormulation f(*space, problem);
     const Eigen::VectorXd b = f.load(WorkShare{});
