@@ -4,9 +4,11 @@
 /// (the estimator's jump terms, the C0 interior penalty): both sides of an edge are evaluated by
 /// their own elements at the same physical points.
 
+#include <Eigen/Geometry>
 #include <vector>
 
 #include "quadrature/quadrature_rule.hpp"
+#include "spaces/point_values.hpp"
 #include "spaces/space.hpp"
 
 namespace iga {
@@ -19,6 +21,17 @@ inline QuadratureRule points_on_edge(CellShape shape, int edge, double t0, doubl
   out.weights = line.weights;
   for (const Point2& s : line.points) out.points.push_back(reference_edge_point(shape, edge, t0 + s.x() * (t1 - t0)));
   return out;
+}
+
+/// The outward unit conormal of the element at point q of its edge `edge`: the edge tangent of the
+/// (counterclockwise) reference cell pushed forward, crossed with the unit normal J_ξ × J_η of the
+/// same orientation, so ν points out of the element whatever the surface's global orientation.
+inline Eigen::Vector3d outward_conormal(const PointValues& g, int q, CellShape shape, int edge) {
+  const Eigen::Matrix<double, 3, 2>& J = g.jacobian3[q];
+  const Point2 t = reference_edge_tangent(shape, edge);
+  const Eigen::Vector3d tangent = J * Eigen::Vector2d(t.x(), t.y());
+  const Eigen::Vector3d normal = J.col(0).cross(J.col(1)).normalized();
+  return tangent.cross(normal).normalized();
 }
 
 /// The points of both sides of every edge piece, side a and side b, at the same physical points.

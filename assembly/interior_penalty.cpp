@@ -18,17 +18,6 @@ struct Side {
   Eigen::MatrixXd conormal, laplacian;  // n × q
 };
 
-/// The outward unit conormal of the element at point q of its edge `edge`: the edge tangent of the
-/// (counterclockwise) reference cell pushed forward, crossed with the unit normal J_ξ × J_η of the
-/// same orientation, so ν points out of the element whatever the surface's global orientation.
-Eigen::Vector3d outward_conormal(const PointValues& g, int q, CellShape shape, int edge) {
-  const Eigen::Matrix<double, 3, 2>& J = g.jacobian3[q];
-  const Point2 t = reference_edge_tangent(shape, edge);
-  const Eigen::Vector3d tangent = J * Eigen::Vector2d(t.x(), t.y());
-  const Eigen::Vector3d normal = J.col(0).cross(J.col(1)).normalized();
-  return tangent.cross(normal).normalized();
-}
-
 Side side_values(const PointValues& g, CellShape shape, int edge) {
   const int n = static_cast<int>(g.dofs.size()), q = static_cast<int>(g.x3.cols());
   Side s{Eigen::MatrixXd(n, q), Eigen::MatrixXd(n, q)};

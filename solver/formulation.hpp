@@ -72,6 +72,9 @@ class Formulation {
   virtual bool has_exact() const { return problem_.exact || problem_.surface_exact; }
   /// Errors over the share's elements against the exact solution.
   virtual ErrorNorms errors(const Eigen::VectorXd& coefficients, const WorkShare& share) const = 0;
+  /// What the last load() / constraints() decided that a user should see (where point loads
+  /// were placed, which coefficients were pinned): printed as progress messages.
+  virtual std::vector<std::string> notes() const { return {}; }
   /// True when a(u_h, u_h) means the energy of the solution (reported for planar problems).
   virtual bool reports_energy() const { return false; }
 

@@ -32,6 +32,8 @@ Constraints assemble_step(const Formulation& f, LinearBackend& backend, const Pr
     if (!b.allFinite()) throw InputError(f.messages().load);
     c = f.constraints();
     if (!c.values.allFinite()) throw InputError(f.messages().boundary_data);
+    if (progress)
+      for (const std::string& note : f.notes()) progress(note);
   });
   backend.assemble(f, c, b, progress);
   return c;

@@ -1,5 +1,6 @@
 #include "solver/shell_config.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace iga {
@@ -18,6 +19,32 @@ std::vector<SymbolicFunction> parse_vector(const ConfigNode& node, const std::st
   return out;
 }
 
+/// Three finite numbers [a, b, c].
+Eigen::Vector3d triple(const ConfigNode& node, const std::string& what) {
+  const std::vector<double> v = node.is_sequence() ? node.as_doubles() : std::vector<double>{};
+  if (v.size() != 3 || !std::isfinite(v[0]) || !std::isfinite(v[1]) || !std::isfinite(v[2]))
+    node.fail(what + " is a list of three finite numbers [x, y, z]");
+  return {v[0], v[1], v[2]};
+}
+
+/// point_loads: [{point: [x, y, z], force: [fx, fy, fz]}, ...]
+std::vector<ShellPointLoad> parse_point_loads(const ConfigNode& node) {
+  if (!node.is_sequence() || node.items().empty())
+    node.fail("point_loads is a list of {point: [x, y, z], force: [fx, fy, fz]}");
+  std::vector<ShellPointLoad> out;
+  for (const ConfigNode& item : node.items()) {
+    // Entries of a list are not declared keys: checked here.
+    if (!item.is_map() || !item.has("point") || !item.has("force") || item.keys().size() != 2)
+      item.fail("a point load is {point: [x, y, z], force: [fx, fy, fz]} (a point of the surface and the force there)");
+    ShellPointLoad p;
+    p.point = triple(item["point"], "a point load's point");
+    p.force = triple(item["force"], "a point load's force");
+    p.where = item["point"].where();
+    out.push_back(p);
+  }
+  return out;
+}
+
 double positive(const ConfigNode& node, const std::string& what) {
   const double v = node.as_double();
   if (!(v > 0.0 && std::isfinite(v))) node.fail(what + " must be a number > 0");
@@ -27,7 +54,7 @@ double positive(const ConfigNode& node, const std::string& what) {
 }  // namespace
 
 ProblemSpec parse_shell_problem(const ConfigNode& node) {
-  node.check_keys({"pde", "material", "load", "exact", "boundary"});
+  node.check_keys({"pde", "material", "load", "point_loads", "exact", "boundary"});
   ProblemSpec p;
   p.pde = Pde::kirchhoff_love_shell;
   ShellSpec shell;
@@ -44,33 +71,55 @@ ProblemSpec parse_shell_problem(const ConfigNode& node) {
   }
 
   const auto load = node.find("load");
-  if (!load) node.fail("give 'load': the force per unit area as [fx, fy, fz] (expressions in x, y, z)");
-  shell.load = parse_vector(*load, "load");
-  p.source_where = load->where();
+  const auto points = node.find("point_loads");
+  if (!load && !points)
+    node.fail("give 'load' (the force per unit area as [fx, fy, fz], expressions in x, y, z) or 'point_loads' "
+              "([{point: [x, y, z], force: [fx, fy, fz]}, ...]), or both");
+  if (load) {
+    shell.load = parse_vector(*load, "load");
+    p.source_where = load->where();
+  } else {
+    shell.load.assign(3, SymbolicFunction::constant(0.0));
+  }
+  if (points) {
+    shell.point_loads = parse_point_loads(*points);
+    if (!load) p.source_where = points->where();
+  }
+  shell.loads_where = p.source_where;
   if (const auto exact = node.find("exact")) {
     shell.exact = parse_vector(*exact, "exact");
     p.data_where = exact->where();
   }
 
+  // No boundary: a free shell (its rigid motions are removed, shell_rigid_motions.hpp).
   const auto boundary = node.find("boundary");
-  if (!boundary) node.fail("give 'boundary': the supports, e.g. {bottom: {fixed: [y, z]}} (a free shell moves rigidly)");
-  if (!boundary->is_map() || boundary->keys().empty())
-    boundary->fail("expected a map from boundary part (all, left, ...) to {fixed: [components]}");
-  for (const std::string& name : boundary->keys()) {
+  if (boundary && (!boundary->is_map() || boundary->keys().empty()))
+    boundary->fail("expected a map from boundary part (all, left, ...) to {fixed: [components]}; leave 'boundary' out "
+                   "for a free shell");
+  for (const std::string& name : boundary ? boundary->keys() : std::vector<std::string>{}) {
     const ConfigNode entry = (*boundary)[name];
     // The parts are named by the user, so their keys are checked here rather than declared.
-    if (!entry.is_map() || entry.keys() != std::vector<std::string>{"fixed"})
-      entry.fail("a shell's support is {fixed: [x, y, z]} (the displacement components held)");
-    const ConfigNode fixed = entry["fixed"];
-    if (!fixed.is_sequence() || fixed.items().empty())
-      fixed.fail("fixed is a list of displacement components: any of x, y, z, e.g. [y, z]");
-    ShellSupport support{name, {false, false, false}, entry.where()};
-    for (const ConfigNode& c : fixed.items()) {
-      const std::string k = c.is_scalar() ? c.as_string() : "";
-      if (k != "x" && k != "y" && k != "z") c.fail("a displacement component is x, y or z");
-      const int i = k == "x" ? 0 : k == "y" ? 1 : 2;
-      if (support.fixed[i]) c.fail("component '" + k + "' is listed twice");
-      support.fixed[i] = true;
+    const std::vector<std::string> keys = entry.is_map() ? entry.keys() : std::vector<std::string>{};
+    if (!entry.is_map() || keys.empty() ||
+        std::any_of(keys.begin(), keys.end(), [](const std::string& k) { return k != "fixed" && k != "rotation"; }))
+      entry.fail("a shell's support is {fixed: [x, y, z]} (the displacement components held) and/or "
+                 "{rotation: held} (the rotation about the edge held: clamped with all three fixed, or a symmetry plane)");
+    ShellSupport support{name, {false, false, false}, false, entry.where()};
+    if (const auto fixed = entry.find("fixed")) {
+      if (!fixed->is_sequence() || fixed->items().empty())
+        fixed->fail("fixed is a list of displacement components: any of x, y, z, e.g. [y, z]");
+      for (const ConfigNode& c : fixed->items()) {
+        const std::string k = c.is_scalar() ? c.as_string() : "";
+        if (k != "x" && k != "y" && k != "z") c.fail("a displacement component is x, y or z");
+        const int i = k == "x" ? 0 : k == "y" ? 1 : 2;
+        if (support.fixed[i]) c.fail("component '" + k + "' is listed twice");
+        support.fixed[i] = true;
+      }
+    }
+    if (const auto rotation = entry.find("rotation")) {
+      const std::string r = rotation->is_scalar() ? rotation->as_string() : "";
+      if (r != "held" && r != "free") rotation->fail("rotation is 'held' (clamped, symmetry plane) or 'free' (the default)");
+      support.rotation_held = r == "held";
     }
     shell.supports.push_back(support);
   }

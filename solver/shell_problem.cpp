@@ -2,12 +2,15 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 
+#include "assembly/shell_rotation.hpp"
 #include "assembly/surface_dirichlet.hpp"
 #include "assembly/surface_load.hpp"
 #include "config/errors.hpp"
 #include "config/config_node.hpp"
 #include "solver/surface_problem.hpp"
+#include "spaces/surface_point_location.hpp"
 
 namespace iga {
 
@@ -48,42 +51,98 @@ void ShellFormulation::check() const {
       throw InputError(s.where + ": this surface is closed: it has no boundary edges to hold");
 }
 
-bool ShellFormulation::held(int c) const {
-  const auto& supports = problem().shell->supports;
-  return std::any_of(supports.begin(), supports.end(), [c](const ShellSupport& s) { return s.fixed[c]; });
+const RigidMotions& ShellFormulation::free_motions() const {
+  if (!motions_) motions_ = free_rigid_motions(space(), problem().shell->supports, quadrature_degree());
+  return *motions_;
 }
 
 Eigen::VectorXd ShellFormulation::load(const WorkShare& share) const {
+  const ShellSpec& shell = *problem().shell;
   const int n = space().dimension();
+  notes_.clear();
   Eigen::VectorXd b(3 * n);
   for (int c = 0; c < 3; ++c) {
-    const SymbolicFunction f = problem().shell->load[c];
+    const SymbolicFunction f = shell.load[c];
     b.segment(c * n, n) = surface_load(
         space(), [f](const Eigen::Vector3d& x, const Eigen::Vector3d&, double) { return f.at(x); },
         quadrature_degree(), share.elements);
   }
-  mass_of_one_ = surface_load(
-      space(), [](const Eigen::Vector3d&, const Eigen::Vector3d&, double) { return 1.0; }, quadrature_degree(),
-      share.elements);
-  // A component no support holds: the load must not push the shell along it (Σ_i b_i = ∫ f_c,
-  // the functions summing to 1), or there is no equilibrium.
-  for (int c = 0; c < 3; ++c) {
-    if (held(c)) continue;
-    const double resultant = share.sum(b.segment(c * n, n).sum());
-    const double size = share.sum(b.segment(c * n, n).cwiseAbs().sum());
-    if (std::abs(resultant) > 1e-10 * size)
-      throw InputError(problem().source_where + ": the load has a resultant " + format_number(resultant) +
-                       " along " + std::string(1, "xyz"[c]) + " that no support holds (problem.boundary: add " +
-                       std::string(1, "xyz"[c]) + " to some part's fixed components)");
+  // Point loads: F_c N_i(p) on the element holding p (in this share).
+  const RigidMotions& motions = free_motions();
+  const double tolerance = 1e-6 * motions.length;  // relative to the surface's size
+  const std::unique_ptr<Space::Evaluator> evaluator = space().make_evaluator();
+  PointValues g;
+  for (std::size_t k = 0; k < shell.point_loads.size(); ++k) {
+    const ShellPointLoad& p = shell.point_loads[k];
+    const auto at = locate_on_surface(space(), p.point, *evaluator, tolerance);
+    if (!at)
+      throw InputError(p.where + ": the point load's point " + format_number(p.point.x()) + ", " +
+                       format_number(p.point.y()) + ", " + format_number(p.point.z()) +
+                       " is not on the surface (no point of it within " + format_number(tolerance) +
+                       " = 1e-6 of the surface's size, its largest distance from its centroid)");
+    QuadratureRule one;
+    one.points = {at->reference};
+    one.weights = {0.0};
+    evaluator->evaluate_geometry(at->element, one, g);
+    const double distance = (g.x3.col(0) - p.point).norm();
+    notes_.push_back("point load " + std::to_string(k + 1) + " at (" + format_number(p.point.x()) + ", " +
+                     format_number(p.point.y()) + ", " + format_number(p.point.z()) + "): element " +
+                     std::to_string(at->element) + ", reference point (" + format_number(at->reference.x()) + ", " +
+                     format_number(at->reference.y()) + "), " + format_number(distance) + " from the given point");
+    if (share.elements && std::find(share.elements->begin(), share.elements->end(), at->element) == share.elements->end()) continue;
+    Eigen::VectorXd local;
+    for (int c = 0; c < 3; ++c) {
+      evaluator->integrate_values(at->element, one, g, Eigen::VectorXd::Constant(1, p.force(c)), local);
+      for (int i = 0; i < local.size(); ++i) b(c * n + g.dofs[i]) += local(i);
+    }
+  }
+  // Equilibrium with the free rigid motions: ℓ(r) = a·F + θ/L·M must vanish for each.
+  if (motions.count() > 0) {
+    std::vector<SymbolicFunction> f = shell.load;
+    const LoadResultant r = load_resultant(
+        space(), [&f](const Eigen::Vector3d& x) { return Eigen::Vector3d(f[0].at(x), f[1].at(x), f[2].at(x)); },
+        shell.point_loads, motions.center, quadrature_degree());
+    double work = 0;
+    for (int m = 0; m < motions.count(); ++m)
+      work = std::max(work, std::abs(motions.modes.col(m).head<3>().dot(r.force) +
+                                     motions.modes.col(m).tail<3>().dot(r.moment) / motions.length));
+    if (work > 1e-9 * r.magnitude) {
+      // The old wording for a single unheld translation along an axis, kept for its clarity.
+      std::string what = "the loads have a resultant force (" + format_number(r.force.x()) + ", " +
+                         format_number(r.force.y()) + ", " + format_number(r.force.z()) + ") and moment (" +
+                         format_number(r.moment.x()) + ", " + format_number(r.moment.y()) + ", " +
+                         format_number(r.moment.z()) + ") about the centroid";
+      for (int c = 0; c < 3; ++c)
+        if (motions.count() == 1 && std::abs(std::abs(motions.modes(c, 0)) - 1.0) < 1e-12)
+          what = "the load has a resultant " + format_number(r.force(c)) + " along " + std::string(1, "xyz"[c]) +
+                 " that no support holds";
+      throw InputError(shell.loads_where + ": " + what + ", which the supports leave free to move rigidly (" +
+                       motions.describe() + "): balance the loads, or hold more components in problem.boundary");
+    }
   }
   return b;
 }
 
-void ShellFormulation::finish(Eigen::VectorXd& coefficients, const WorkShare& share) const {
-  const int n = space().dimension();
-  const double area = share.sum(mass_of_one_.sum());
-  for (int c = 0; c < 3; ++c)
-    if (!held(c)) coefficients.segment(c * n, n).array() -= share.sum(mass_of_one_.dot(coefficients.segment(c * n, n))) / area;
+void ShellFormulation::finish(Eigen::VectorXd& coefficients, const WorkShare&) const {
+  remove_rigid_motions(basis_, coefficients);
+}
+
+SplitMatrix ShellFormulation::matrix(const std::vector<FormTerm>& terms) const {
+  SplitMatrix m = Formulation::matrix(terms);
+  std::vector<BoundaryEdge> edges;
+  for (const ShellSupport& s : problem().shell->supports)
+    if (s.rotation_held)
+      for (const BoundaryEdge& e : space().boundary_edges(s.part))
+        if (std::none_of(edges.begin(), edges.end(), [&](const BoundaryEdge& f) {
+              return f.element == e.element && f.local_edge == e.local_edge;
+            }))
+          edges.push_back(e);
+  if (edges.empty()) return m;
+  // η = 10 (p + 1)²: above the inverse-inequality constant (docs/shells.md measures its effect).
+  const double eta = 10.0 * (space().degree() + 1) * (space().degree() + 1);
+  m.high = m.high + shell_rotation_nitsche(space(), edges, problem().shell->material, eta, quadrature_degree());
+  m.low.resize(0);  // the pattern changed; the element part is summed in double anyway
+  return m;
 }
 
 Constraints ShellFormulation::constraints() const {
@@ -103,15 +162,24 @@ Constraints ShellFormulation::constraints() const {
             edges.push_back(e);
     Constraints one;
     if (edges.empty()) {
-      // Unheld: coefficient 0 pinned against the translation along c (finish shifts it to zero mean).
       one.values = Eigen::VectorXd::Zero(n);
-      one.constrained = {0};
-      for (int i = 1; i < n; ++i) one.free.push_back(i);
+      for (int i = 0; i < n; ++i) one.free.push_back(i);
     } else {
       const SurfaceField g = shell.exact ? field((*shell.exact)[c]) : SurfaceField([](const Eigen::Vector3d&) { return 0.0; });
       one = surface_dirichlet_constraints(space(), edges, g, quadrature_degree());
     }
     append_component(all, one, c, n);
+  }
+  // The rigid motions the supports leave free: one coefficient each pinned, removed in finish.
+  const RigidMotions& motions = free_motions();
+  basis_ = iga::rigid_motion_basis(space(), motions, quadrature_degree());
+  pinned_ = pin_rigid_motions(basis_, all);
+  if (!pinned_.empty()) {
+    std::string list;
+    for (int i : pinned_) list += (list.empty() ? "" : ", ") + std::string(1, "xyz"[i / n]) + std::to_string(i % n);
+    notes_.push_back(std::to_string(motions.count()) + " rigid motion(s) left free by the supports: " +
+                     motions.describe() + "; pinned coefficients " + list +
+                     " (component and function), removed after the solve");
   }
   return all;
 }

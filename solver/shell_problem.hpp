@@ -10,14 +10,20 @@
 /// given). Errors: L2, H1 (surface gradient) and H2 (covariant Hessian) of the displacement vector,
 /// sqrt of the sums of the components' squares.
 ///
-/// A component that no support holds (the axial one of the Scordelis–Lo roof, whose diaphragms
-/// hold y and z) leaves the translation along it in the kernel: its coefficient 0 is pinned (an
-/// essential condition like any other; the load must have no resultant along it, else an
-/// InputError), which changes that component by a constant only (the constants are in the space:
-/// Σ N_i = 1), and the solution is shifted after the solve so that the component has zero mean.
-/// Rotations must be held by the supports (else the factorization reports a singular matrix).
+/// Point loads (problem.point_loads) are located on each level's surface (spaces/
+/// surface_point_location.hpp) and add F_c N_i(p) to the load; where each was placed is a note.
+///
+/// Rigid motions the supports leave free (a free shell: all six; the Scordelis–Lo roof, whose
+/// diaphragms hold y and z: the axial translation) are removed as in solver/shell_rigid_motions.hpp:
+/// one coefficient pinned per free motion, the M-orthogonal projection onto them subtracted after
+/// the solve. The loads must not work on them (resultant force and moment), else an InputError.
+
+#include <optional>
+#include <string>
+#include <vector>
 
 #include "solver/formulation.hpp"
+#include "solver/shell_rigid_motions.hpp"
 
 namespace iga {
 
@@ -28,6 +34,8 @@ class ShellFormulation final : public Formulation {
   void check() const override;
   Eigen::VectorXd load(const WorkShare& share) const override;
   Constraints constraints() const override;
+  /// The energy's terms plus, on parts with {rotation: held}, the Nitsche terms holding the rotation.
+  SplitMatrix matrix(const std::vector<FormTerm>& terms) const override;
   bool has_exact() const override { return problem().shell->exact.has_value(); }
   ErrorNorms errors(const Eigen::VectorXd& coefficients, const WorkShare& share) const override;
   void finish(Eigen::VectorXd& coefficients, const WorkShare& share) const override;
@@ -35,12 +43,19 @@ class ShellFormulation final : public Formulation {
   /// change between levels (the convergence plot).
   bool reports_energy() const override { return true; }
   Messages messages() const override;
+  std::vector<std::string> notes() const override { return notes_; }
+
+  /// The rigid motions the supports leave free (computed once).
+  const RigidMotions& free_motions() const;
+  /// Their discrete representation and the pinned coefficients (set by constraints()).
+  const RigidMotionBasis& rigid_motion_basis() const { return basis_; }
+  const std::vector<int>& pinned() const { return pinned_; }
 
  private:
-  /// True when some support holds component c.
-  bool held(int c) const;
-  /// ∫ N_i over the share (set by load; the zero-mean shift of unheld components).
-  mutable Eigen::VectorXd mass_of_one_;
+  mutable std::optional<RigidMotions> motions_;
+  mutable RigidMotionBasis basis_;
+  mutable std::vector<int> pinned_;
+  mutable std::vector<std::string> notes_;
 };
 
 }  // namespace iga

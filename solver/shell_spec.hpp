@@ -9,6 +9,8 @@
 #include <string>
 #include <vector>
 
+#include <Eigen/Core>
+
 #include "assembly/shell_integrators.hpp"
 #include "config/expression.hpp"
 
@@ -18,13 +20,28 @@ namespace iga {
 struct ShellSupport {
   std::string part;
   std::array<bool, 3> fixed{false, false, false};
+  /// The rotation about the edge, n·∂_ν u, held at zero (clamped edges, symmetry planes; by
+  /// Nitsche's method, assembly/shell_rotation.hpp).
+  bool rotation_held = false;
   std::string where;  ///< config location, for messages about the part name
+};
+
+/// A force at a point of the surface (located on each level's surface; admissible for the
+/// Kirchhoff–Love model since H² ⊂ C⁰ in two dimensions).
+struct ShellPointLoad {
+  Eigen::Vector3d point = Eigen::Vector3d::Zero();
+  Eigen::Vector3d force = Eigen::Vector3d::Zero();
+  std::string where;  ///< config location of the point, for messages about it
 };
 
 struct ShellSpec {
   ShellMaterial material;
   /// Force per unit area (x, y, z components), functions of x, y, z.
   std::vector<SymbolicFunction> load;
+  /// Point forces (problem.point_loads), added to the load per area.
+  std::vector<ShellPointLoad> point_loads;
+  /// Config location of the loads as a whole (messages about their resultant).
+  std::string loads_where = "problem.load";
   /// The exact displacement (three functions of x, y, z) when known: errors, and the values of
   /// fixed components on the boundary (zero without it).
   std::optional<std::vector<SymbolicFunction>> exact;
