@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <set>
 #include <sstream>
 
 #include "output/eigen_report.hpp"
@@ -65,7 +66,12 @@ nlohmann::json to_json(const YAML::Node& node) {
       bool b;
       if (YAML::convert<long long>::decode(node, i)) return i;
       if (YAML::convert<double>::decode(node, d)) return d;
-      if (YAML::convert<bool>::decode(node, b)) return b;
+      // Only true/false: yaml-cpp also reads y/n, yes/no and on/off as booleans (YAML 1.1), which
+      // turned a shell's `fixed: [y, z]` into [true, "z"]; a key that takes a boolean reads those
+      // itself (ConfigNode::as_bool), so echoing them as written is still a value it takes.
+      const std::string& text = node.Scalar();
+      static const std::set<std::string> kTrueFalse = {"true", "True", "TRUE", "false", "False", "FALSE"};
+      if (kTrueFalse.count(text) && YAML::convert<bool>::decode(node, b)) return b;
       return node.as<std::string>();
     }
     default: return nullptr;

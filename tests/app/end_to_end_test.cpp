@@ -234,6 +234,13 @@ TEST_P(ShippedConfig, RunsAndWritesReadableOutput) {
     return;
   }
   check_study(out, name);
+  // summary.json echoes the config as written: a shell's `fixed: [y, z]` stays two words (yaml-cpp,
+  // as YAML 1.1, also reads y, n, yes, no, on, off as booleans).
+  const nlohmann::json echoed = nlohmann::json::parse(slurp(out / "summary.json"))["config"];
+  if (echoed.contains("problem") && echoed["problem"].contains("boundary") && echoed["problem"]["boundary"].is_object())
+    for (const auto& [part, support] : echoed["problem"]["boundary"].items())
+      if (support.is_object() && support.contains("fixed"))
+        for (const auto& c : support["fixed"]) EXPECT_TRUE(c.is_string()) << name << ": " << part << " " << c;
 }
 
 // Test names may hold only letters, digits and underscores.
