@@ -50,19 +50,6 @@ Eigen::MatrixXd face_energy(const SplitBSpline& b, const FairFit& fit) {
   return E;
 }
 
-/// The same face matrix on each of F faces (broken coefficients).
-Eigen::SparseMatrix<double> block_diagonal(const Eigen::MatrixXd& Mf, int F) {
-  const int fs = static_cast<int>(Mf.rows());
-  std::vector<Eigen::Triplet<double>> trip;
-  for (int f = 0; f < F; ++f)
-    for (int r = 0; r < fs; ++r)
-      for (int c = 0; c < fs; ++c)
-        if (Mf(r, c) != 0.0) trip.emplace_back(f * fs + r, f * fs + c, Mf(r, c));
-  Eigen::SparseMatrix<double> M(F * fs, F * fs);
-  M.setFromTriplets(trip.begin(), trip.end());
-  return M;
-}
-
 /// The faces' coefficients of the map with coefficients c = (c_x, c_y) in the basis B.
 FaceGeometry to_faces(const Eigen::SparseMatrix<double>& B, const Eigen::VectorXd& c, int F, int fs) {
   const int dim = static_cast<int>(B.cols());

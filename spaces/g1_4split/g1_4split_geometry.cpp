@@ -45,6 +45,18 @@ Eigen::MatrixXd mass_1d(const SplitBSpline& b) {
 
 }  // namespace
 
+Eigen::SparseMatrix<double> block_diagonal(const Eigen::MatrixXd& face_matrix, int faces) {
+  const int fs = static_cast<int>(face_matrix.rows());
+  std::vector<Eigen::Triplet<double>> trip;
+  for (int f = 0; f < faces; ++f)
+    for (int r = 0; r < fs; ++r)
+      for (int c = 0; c < fs; ++c)
+        if (face_matrix(r, c) != 0.0) trip.emplace_back(f * fs + r, f * fs + c, face_matrix(r, c));
+  Eigen::SparseMatrix<double> M(faces * fs, faces * fs);
+  M.setFromTriplets(trip.begin(), trip.end());
+  return M;
+}
+
 FaceGeometry project_geometry(const G14Basis& basis, const FaceGeometry& broken) {
   const SplitBSpline& b = basis.bspline;
   const int fs = b.face_size(), F = static_cast<int>(broken.x.size());
@@ -54,13 +66,7 @@ FaceGeometry project_geometry(const G14Basis& basis, const FaceGeometry& broken)
     for (int i = 0; i < b.size(); ++i)
       for (int l = 0; l < b.size(); ++l)
         for (int k = 0; k < b.size(); ++k) Mf(i + j * b.size(), k + l * b.size()) = M1(i, k) * M1(j, l);
-  std::vector<Eigen::Triplet<double>> trip;
-  for (int f = 0; f < F; ++f)
-    for (int r = 0; r < fs; ++r)
-      for (int c = 0; c < fs; ++c)
-        if (Mf(r, c) != 0.0) trip.emplace_back(f * fs + r, f * fs + c, Mf(r, c));
-  Eigen::SparseMatrix<double> M(F * fs, F * fs);
-  M.setFromTriplets(trip.begin(), trip.end());
+  const Eigen::SparseMatrix<double> M = block_diagonal(Mf, F);
   const Eigen::SparseMatrix<double>& B = basis.functions;
   const Eigen::SparseMatrix<double> MB = M * B;
   const Eigen::SparseMatrix<double> A = Eigen::SparseMatrix<double>(B.transpose()) * MB;

@@ -6,6 +6,7 @@
 /// regular (det J > 0 on every closed face) from Bernstein coefficients of det J per polynomial piece.
 
 #include <Eigen/Core>
+#include <Eigen/SparseCore>
 #include <string>
 #include <vector>
 
@@ -21,6 +22,9 @@ struct FaceGeometry {
 
 /// The bilinear map of every face of `mesh` in the faces' B-spline bases (exact).
 FaceGeometry bilinear_geometry(const PatchMesh& mesh, const SplitBSpline& b);
+
+/// The same face matrix on each of F faces: the operator on broken (per-face) coefficients.
+Eigen::SparseMatrix<double> block_diagonal(const Eigen::MatrixXd& face_matrix, int faces);
 
 /// The L2 (parameter-domain) projection of a broken geometry onto the space spanned by the basis.
 FaceGeometry project_geometry(const G14Basis& basis, const FaceGeometry& broken);
