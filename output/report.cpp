@@ -308,6 +308,7 @@ std::string summary_json(const StudySettings& settings, const StudyResult& resul
                                       {"rate_h2", optional_json(dr.h2)}}},
                       {"timings", {{"space", r.t_space}, {"assemble", r.t_assemble}, {"solve", r.t_solve},
                                    {"errors", r.t_errors}}}});
+    if (!r.notes.empty()) levels.back()["notes"] = r.notes;
     h.push_back(r.h);
     inverse_dofs.push_back(1.0 / r.dofs);
     l2.push_back(r.l2);

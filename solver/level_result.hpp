@@ -31,6 +31,8 @@ struct LevelResult {
   std::optional<double> difference_l2, difference_h1, difference_h2;
   /// Values of the study's functionals (output.functionals), in their order.
   std::vector<double> functionals;
+  /// What the formulation said of this level (Formulation::notes: where each point load was placed).
+  std::vector<std::string> notes;
 };
 
 /// Expected convergence orders of the L2 error and the H1, H2 seminorm errors.

@@ -47,6 +47,7 @@ Constraints assemble_level(const Formulation& f, LinearBackend& backend, LevelRe
   Stopwatch clock;
   Constraints c = assemble_step(f, backend, progress);
   r.t_assemble = clock.seconds();
+  r.notes = f.notes();
   r.free_dofs = static_cast<int>(c.free.size());
   return c;
 }

@@ -241,6 +241,14 @@ TEST_P(ShippedConfig, RunsAndWritesReadableOutput) {
     for (const auto& [part, support] : echoed["problem"]["boundary"].items())
       if (support.is_object() && support.contains("fixed"))
         for (const auto& c : support["fixed"]) EXPECT_TRUE(c.is_string()) << name << ": " << part << " " << c;
+  // Each level says where the shell's point loads were placed (one note per load).
+  if (echoed.contains("problem") && echoed["problem"].contains("point_loads"))
+    for (const auto& level : nlohmann::json::parse(slurp(out / "summary.json"))["levels"]) {
+      ASSERT_TRUE(level.contains("notes")) << name;
+      std::size_t placed = 0;
+      for (const auto& note : level["notes"]) placed += note.get<std::string>().rfind("point load ", 0) == 0;
+      EXPECT_EQ(placed, echoed["problem"]["point_loads"].size()) << name;
+    }
 }
 
 // Test names may hold only letters, digits and underscores.
