@@ -39,14 +39,8 @@ Eigen::MatrixXd face_energy(const SplitBSpline& b, const FairFit& fit) {
   std::vector<Eigen::MatrixXd> G;
   for (int j = 0; j <= fit.order; ++j) G.push_back(derivative_gram_1d(b, j));
   Eigen::MatrixXd E = Eigen::MatrixXd::Zero(s * s, s * s);
-  auto add = [&](const Eigen::MatrixXd& Gu, const Eigen::MatrixXd& Gv, double c) {
-    for (int j = 0; j < s; ++j)
-      for (int i = 0; i < s; ++i)
-        for (int l = 0; l < s; ++l)
-          for (int kk = 0; kk < s; ++kk) E(i + j * s, kk + l * s) += c * Gu(i, kk) * Gv(j, l);
-  };
-  for (int i = 0; i <= fit.order; ++i) add(G[i], G[fit.order - i], binomial(fit.order, i));
-  add(G[0], G[0], fit.fit_weight);
+  for (int i = 0; i <= fit.order; ++i) E += binomial(fit.order, i) * face_tensor_product(G[i], G[fit.order - i]);
+  E += fit.fit_weight * face_tensor_product(G[0], G[0]);
   return E;
 }
 

@@ -45,6 +45,16 @@ Eigen::MatrixXd mass_1d(const SplitBSpline& b) {
 
 }  // namespace
 
+Eigen::MatrixXd face_tensor_product(const Eigen::MatrixXd& Gu, const Eigen::MatrixXd& Gv) {
+  const int s = static_cast<int>(Gu.rows());
+  Eigen::MatrixXd E(s * s, s * s);
+  for (int j = 0; j < s; ++j)
+    for (int i = 0; i < s; ++i)
+      for (int l = 0; l < s; ++l)
+        for (int k = 0; k < s; ++k) E(i + j * s, k + l * s) = Gu(i, k) * Gv(j, l);
+  return E;
+}
+
 Eigen::SparseMatrix<double> block_diagonal(const Eigen::MatrixXd& face_matrix, int faces) {
   const int fs = static_cast<int>(face_matrix.rows());
   std::vector<Eigen::Triplet<double>> trip;
@@ -61,12 +71,7 @@ FaceGeometry project_geometry(const G14Basis& basis, const FaceGeometry& broken)
   const SplitBSpline& b = basis.bspline;
   const int fs = b.face_size(), F = static_cast<int>(broken.x.size());
   const Eigen::MatrixXd M1 = mass_1d(b);
-  Eigen::MatrixXd Mf(fs, fs);
-  for (int j = 0; j < b.size(); ++j)
-    for (int i = 0; i < b.size(); ++i)
-      for (int l = 0; l < b.size(); ++l)
-        for (int k = 0; k < b.size(); ++k) Mf(i + j * b.size(), k + l * b.size()) = M1(i, k) * M1(j, l);
-  const Eigen::SparseMatrix<double> M = block_diagonal(Mf, F);
+  const Eigen::SparseMatrix<double> M = block_diagonal(face_tensor_product(M1, M1), F);
   const Eigen::SparseMatrix<double>& B = basis.functions;
   const Eigen::SparseMatrix<double> MB = M * B;
   const Eigen::SparseMatrix<double> A = Eigen::SparseMatrix<double>(B.transpose()) * MB;

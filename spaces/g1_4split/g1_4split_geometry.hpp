@@ -23,6 +23,10 @@ struct FaceGeometry {
 /// The bilinear map of every face of `mesh` in the faces' B-spline bases (exact).
 FaceGeometry bilinear_geometry(const PatchMesh& mesh, const SplitBSpline& b);
 
+/// The face matrix of Gu ⊗ Gv on a face's coefficients (index i + j·size, i along u): 1D matrices
+/// of the two directions combined (mass, derivative Grams).
+Eigen::MatrixXd face_tensor_product(const Eigen::MatrixXd& Gu, const Eigen::MatrixXd& Gv);
+
 /// The same face matrix on each of F faces: the operator on broken (per-face) coefficients.
 Eigen::SparseMatrix<double> block_diagonal(const Eigen::MatrixXd& face_matrix, int faces);
 
