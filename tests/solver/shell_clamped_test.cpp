@@ -12,6 +12,7 @@
 #include "assembly/shell_rotation.hpp"
 #include "solver/shell_problem.hpp"
 #include "solver/study_functionals.hpp"
+#include "tests/support/pinched_cylinder.hpp"
 #include "tests/support/test_support.hpp"
 
 namespace iga {
@@ -105,15 +106,7 @@ output:
   functionals:
     w: {point: [300, 0, 300], component: z}
 )";
-  const std::string whole = R"(
-problem:
-  pde: kirchhoff_love_shell
-  material: {youngs_modulus: 3e6, poisson_ratio: 0.3, thickness: 3}
-  point_loads:
-    - {point: [300, 0, 300], force: [0, 0, -1]}
-    - {point: [300, 0, -300], force: [0, 0, 1]}
-  boundary: {bottom: {fixed: [y, z]}, top: {fixed: [y, z]}}
-domain: {type: surface_patch, shape: cylinder, radius: 300, length: 600, half_angle: 180})" + common;
+  const std::string whole = std::string(test::kPinchedCylinderProblemAndDomain) + common;
   std::string quarter = R"(
 problem:
   pde: kirchhoff_love_shell

@@ -13,6 +13,7 @@
 
 #include "solver/shell_problem.hpp"
 #include "solver/study_functionals.hpp"
+#include "tests/support/pinched_cylinder.hpp"
 #include "tests/support/test_support.hpp"
 
 namespace iga {
@@ -122,15 +123,7 @@ TEST(ShellPinchedCylinder, CompliancesRiseBelowTheReference) {
   // and stays below the exact Kirchhoff–Love value (which lies 0.17 % above 1.82488e-5: level 5
   // already gives 1.82697e-5, docs/shells.md). The full periodic cylinder, cubic, levels 1 and 2 of
   // configs/shell-pinched-cylinder.yaml (660 and 2052 unknowns; level 2 is 12 % low).
-  const std::string yaml = R"(
-problem:
-  pde: kirchhoff_love_shell
-  material: {youngs_modulus: 3e6, poisson_ratio: 0.3, thickness: 3}
-  point_loads:
-    - {point: [300, 0, 300], force: [0, 0, -1]}
-    - {point: [300, 0, -300], force: [0, 0, 1]}
-  boundary: {bottom: {fixed: [y, z]}, top: {fixed: [y, z]}}
-domain: {type: surface_patch, shape: cylinder, radius: 300, length: 600, half_angle: 180}
+  const std::string yaml = std::string(test::kPinchedCylinderProblemAndDomain) + R"(
 space: {type: bspline, degree: 3, elements: [8, 4]}
 output:
   functionals:
