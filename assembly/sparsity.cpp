@@ -7,11 +7,11 @@
 
 namespace iga {
 
-ElementDofTable collect_element_dofs(const Space& space) {
-  const int ne = space.num_elements();
+ElementDofTable collect_element_dofs(const Space& space, const std::vector<int>* elements) {
+  const int ne = elements ? static_cast<int>(elements->size()) : space.num_elements();
   std::vector<std::vector<int>> per_element(ne);
 #pragma omp parallel for schedule(dynamic, 64) if (worth_threads(ne))
-  for (int e = 0; e < ne; ++e) space.element_dofs(e, per_element[e]);
+  for (int e = 0; e < ne; ++e) space.element_dofs(elements ? (*elements)[e] : e, per_element[e]);
   ElementDofTable t;
   t.offsets.resize(ne + 1, 0);
   for (int e = 0; e < ne; ++e) t.offsets[e + 1] = t.offsets[e] + static_cast<int>(per_element[e].size());

@@ -23,7 +23,8 @@ struct ElementDofTable {
   const int* begin(int e) const { return dofs.data() + offsets[e]; }
 };
 
-ElementDofTable collect_element_dofs(const Space& space);
+/// The table of every element, or of `elements` only (in that order) when given.
+ElementDofTable collect_element_dofs(const Space& space, const std::vector<int>* elements = nullptr);
 
 /// A compressed matrix with explicit zeros at every (i, j) such that functions i and j are active
 /// on a common element; inner indices sorted within each column.

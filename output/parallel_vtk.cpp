@@ -9,6 +9,7 @@
 #include "config/errors.hpp"
 #include "solver/petsc_partition.hpp"
 #include "solver/petsc_session.hpp"
+#include "spaces/space_part.hpp"
 
 #ifdef IGA_WITH_PETSC
 #include <vtkCellData.h>
@@ -132,10 +133,16 @@ bool write_solution_pvtu(const Space& space, const Eigen::VectorXd& coefficients
   // Local work: this rank's elements drawn by the serial writer (into a scratch file beside the
   // pieces), read back and given their global element numbers.
   on_every_rank([&] {
-    const std::vector<int> owner = partition_elements(element_centres(space), ranks);
+    // A rank's part of the space draws its own elements; a whole space the partition's share.
+    const auto* part = dynamic_cast<const SpacePart*>(&space);
     std::vector<int> mine;
-    for (int e = 0; e < static_cast<int>(owner.size()); ++e)
-      if (owner[e] == rank) mine.push_back(e);
+    if (part) {
+      for (int e = 0; e < part->owned_elements(); ++e) mine.push_back(e);
+    } else {
+      const std::vector<int> owner = partition_elements(element_centres(space), ranks);
+      for (int e = 0; e < static_cast<int>(owner.size()); ++e)
+        if (owner[e] == rank) mine.push_back(e);
+    }
     if (mine.empty()) return;  // more ranks than elements: no piece
     VtkFieldOptions own = options;
     for (auto& [name, values] : own.element_fields) {
@@ -156,7 +163,10 @@ bool write_solution_pvtu(const Space& space, const Eigen::VectorXd& coefficients
     auto* element = vtkIntArray::SafeDownCast(grid->GetCellData()->GetArray("element"));
     if (!element || grid->GetNumberOfCells() == 0)
       throw std::runtime_error("cannot read back the VTK piece of rank " + std::to_string(rank));
-    for (vtkIdType c = 0; c < element->GetNumberOfTuples(); ++c) element->SetValue(c, mine.at(element->GetValue(c)));
+    for (vtkIdType c = 0; c < element->GetNumberOfTuples(); ++c) {
+      const int e = mine.at(element->GetValue(c));
+      element->SetValue(c, part ? part->elements()[e] : e);
+    }
   });
   // Collective inside VTK: the writer reduces which pieces were written, rank 0 lists them.
   vtkNew<vtkXMLPUnstructuredGridWriter> writer;

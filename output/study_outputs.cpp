@@ -8,6 +8,7 @@
 #include "output/surface_files.hpp"
 #include "output/matrix_market_sink.hpp"
 #include "output/parallel_vtk.hpp"
+#include "spaces/space_part.hpp"
 #include "solver/petsc_session.hpp"
 #include "output/vtk_writer.hpp"
 
@@ -77,6 +78,9 @@ StudyResult run_study_with_vtk(const StudySettings& settings, const std::string&
                                  : write_solution_vtu(space, u, opt, (dir / name).string());
     vtu_files.push_back(name);
     if (!root) return;
+    // The mesh outlines and the surface are one file of the whole space, from rank 0.
+    const auto* part = dynamic_cast<const SpacePart*>(&space);
+    const Space& whole = part ? part->whole() : space;
     const std::string mesh = "mesh_" + std::to_string(level) + ".vtu";
     // Outlines as fine as the solution's drawing: Lagrange cells of degree p have p + 1 nodes per
     // edge, a subdivided element 2p + 1; the straight edges of affine elements need their ends only.
@@ -84,13 +88,13 @@ StudyResult run_study_with_vtk(const StudySettings& settings, const std::string&
                                 : lagrange              ? space.degree()
                                 : settings.vtk_lagrange ? opt.divisions * space.degree()
                                                         : settings.vtk_samples;
-    write_mesh_vtu(space, outline_samples, (dir / mesh).string(), settings.vtk_compression);
+    write_mesh_vtu(whole, outline_samples, (dir / mesh).string(), settings.vtk_compression);
     mesh_files.push_back(mesh);
     // The surface itself, shaded by its own normals, level by level unless the space carries one
     // fixed surface (written once, below).
     if (space.ambient_dimension() == 3 && !space.surface_patches()) {
       const std::string surface = "surface_" + std::to_string(level) + ".vtu";
-      write_surface_geometry_vtu(space, settings.vtk_samples, (dir / surface).string());
+      write_surface_geometry_vtu(whole, settings.vtk_samples, (dir / surface).string());
       surface_files.push_back(surface);
     }
     t_vtk += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

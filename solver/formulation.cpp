@@ -2,6 +2,8 @@
 
 #include <stdexcept>
 
+#include "spaces/lifted_space.hpp"
+
 namespace iga {
 
 int assembly_quadrature_degree(const Space& space) {
@@ -10,6 +12,8 @@ int assembly_quadrature_degree(const Space& space) {
   // 342 pieces it is 16 points instead of 19); non-affine maps get three more.
   return 2 * space.degree() + (space.affine_elements() ? 0 : 3);
 }
+
+bool Formulation::works_on_parts() const { return !dynamic_cast<const LiftedSpace*>(&space_); }
 
 Formulation::Formulation(const Space& space, const ProblemSpec& problem)
     : space_(space), problem_(problem), quadrature_degree_(assembly_quadrature_degree(space)) {}

@@ -31,7 +31,12 @@ int assembly_quadrature_degree(const Space& space);
 struct WorkShare {
   const std::vector<int>* elements = nullptr;
   std::function<double(double)> total;  ///< collective; empty: the value itself
+  /// Collective, for processes that hold parts of a space (rank_part.hpp): the largest of the
+  /// values, and the value of the lowest process that has one (not NaN). Empty: the value itself.
+  std::function<double(double)> largest, first_known;
   double sum(double part) const { return total ? total(part) : part; }
+  double max(double part) const { return largest ? largest(part) : part; }
+  double first(double value) const { return first_known ? first_known(value) : value; }
 };
 
 class Formulation {
@@ -77,6 +82,10 @@ class Formulation {
   virtual std::vector<std::string> notes() const { return {}; }
   /// True when a(u_h, u_h) means the energy of the solution (reported for planar problems).
   virtual bool reports_energy() const { return false; }
+  /// True when a process holding only part of the space (rank_part.hpp) computes its share of
+  /// the load and the conditions the serial run would: false where the conditions come from a
+  /// choice over the whole space (a pinned coefficient) or from another space (a lift's planar one).
+  virtual bool works_on_parts() const;
 
   /// Input errors the pipeline raises when data turn out not finite, naming their config place.
   struct Messages {

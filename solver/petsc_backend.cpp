@@ -73,17 +73,14 @@ void clear_hypre_errors() {
 /// PETSc objects destroyed on every path out (PETSc's destroy functions accept null handles).
 struct PetscObjects {
   Mat A = nullptr;
-  Vec b = nullptr, x = nullptr, all = nullptr;
+  Vec b = nullptr, x = nullptr;
   KSP ksp = nullptr;
-  VecScatter to_all = nullptr;
   ~PetscObjects() {
     // A destroy may raise an error too (hypre checks some options only then); it would print its
     // banner while the error already on its way is reported. Destroying frees what it can anyway.
     QuietPetscErrors quiet;
-    VecScatterDestroy(&to_all);
     clear_hypre_errors();
     KSPDestroy(&ksp);
-    VecDestroy(&all);
     VecDestroy(&x);
     VecDestroy(&b);
     MatDestroy(&A);
@@ -187,27 +184,19 @@ void set_owned(Vec v, const std::vector<double>& values) {
   check(VecRestoreArray(v, &entries), "VecRestoreArray");
 }
 
-/// The whole solution x on every rank, in the distributed numbering, handed to `use`. Collective.
-void with_whole_solution(PetscObjects& p, const std::function<void(const PetscScalar*)>& use) {
-  check(VecScatterBegin(p.to_all, p.x, p.all, INSERT_VALUES, SCATTER_FORWARD), "VecScatterBegin");
-  check(VecScatterEnd(p.to_all, p.x, p.all, INSERT_VALUES, SCATTER_FORWARD), "VecScatterEnd");
-  const PetscScalar* all = nullptr;
-  check(VecGetArrayRead(p.all, &all), "VecGetArrayRead");
-  use(all);
-  check(VecRestoreArrayRead(p.all, &all), "VecRestoreArrayRead");
-}
-
 /// Iterative refinement with the KSP's factor, the serial solver's rule (refine_iteratively):
 /// corrections K⁻¹ r, r from the extended-precision residual. Returns the number of corrections
 /// applied. Collective (norms and the KSP's reason are the same on every rank).
-int refine_solution(PetscObjects& p, ExtendedResidual& residual, const PetscSettings& s, const std::string& method) {
+int refine_solution(PetscObjects& p, const PetscDistribution& layout, ExtendedResidual& residual,
+                    const PetscSettings& s, const std::string& method) {
   Vec r = nullptr, d = nullptr;
   check(VecDuplicate(p.x, &r), "VecDuplicate");
   check(VecDuplicate(p.x, &d), "VecDuplicate");
   PetscReal size = 0, xnorm = 0;
   check(VecNorm(p.x, NORM_2, &xnorm), "VecNorm");
   const auto correct = [&] {
-    with_whole_solution(p, [&](const PetscScalar* all) { set_owned(r, residual.owned_rows(all)); });
+    const Eigen::VectorXd u = layout.free_values(p.x);
+    set_owned(r, residual.owned_rows(&u));
     solve_quietly(p.ksp, r, d, s, method);
     KSPConvergedReason reason;
     check(KSPGetConvergedReason(p.ksp, &reason), "KSPGetConvergedReason");
@@ -236,6 +225,11 @@ class PetscBackend final : public LinearBackend {
   void assemble(const Formulation& f, const Constraints& c, const Eigen::VectorXd& load,
                 const ProgressSink& say) override;
   Eigen::VectorXd solve(SolveReport& report, const ProgressSink& say) override;
+  void count_whole(const Formulation& f, LevelResult& r) const override {
+    r.dofs = static_cast<int>(d_.whole_dimension()) * f.components();
+    r.elements = static_cast<int>(d_.whole_elements());
+    r.free_dofs = static_cast<int>(d_.rows());
+  }
 
  private:
   const PetscSettings& settings_;
@@ -250,11 +244,11 @@ void PetscBackend::assemble(const Formulation& f, const Constraints& c, const Ei
   // double-double: the corrections reuse the factor and remove the error floor of the double
   // matrix. Krylov solves stop at their tolerance anyway (the right-hand side is exact for both).
   const bool refine = settings_.pc == "mumps" || settings_.pc == "cholesky";
+  d_.lay_out(c, say);
   SparseMatrix pattern;
-  d_.lay_out(c, refine ? &pattern : nullptr, say);
-  extended_ = std::make_unique<ExtendedResidual>(d_.constraints(), d_.layout().global, d_.layout().first_row, d_.rank(),
-                                                 std::move(pattern));
-  if (say) say("assembling (" + std::to_string(c.free.size()) + " unknowns, in extended precision)");
+  if (refine) on_every_rank([&] { pattern = sparsity_pattern(collect_element_dofs(f.space(), d_.share().elements), f.space().dimension()); });
+  extended_ = std::make_unique<ExtendedResidual>(d_, std::move(pattern));
+  if (say) say("assembling (" + std::to_string(d_.rows()) + " unknowns, in extended precision)");
   on_every_rank([&] { extended_->add_load(load); });
   d_.matrix(f, f.terms(), extended_.get(), p_.A);
   check(MatCreateVecs(p_.A, &p_.x, &p_.b), "MatCreateVecs");
@@ -303,8 +297,7 @@ Eigen::VectorXd PetscBackend::solve(SolveReport& report, const ProgressSink& say
   if (reason < 0)
     throw NumericalError("PETSc " + method + " did not converge: " + failure_text(p.ksp, reason, bnorm) +
                          " (raise solver.rtol or solver.max_iterations, or choose another solver.pc)");
-  check(VecScatterCreateToAll(p.x, &p.to_all, &p.all), "VecScatterCreateToAll");
-  if (extended_) report.refinement_steps = refine_solution(p, *extended_, settings_, method);
+  if (extended_) report.refinement_steps = refine_solution(p, d_, *extended_, settings_, method);
   // The true residual ‖b − A x‖ / ‖b‖, whatever norm the KSP tested.
   Vec residual;
   check(VecDuplicate(p.b, &residual), "VecDuplicate");
@@ -318,10 +311,8 @@ Eigen::VectorXd PetscBackend::solve(SolveReport& report, const ProgressSink& say
                                                : std::string()) +
                   (d_.ranks() > 1 ? ", " + std::to_string(d_.ranks()) + " ranks" : "");
 
-  // Every rank gets the whole solution (the space, the outputs and the error integrals need it).
-  Eigen::VectorXd u_free;
-  with_whole_solution(p, [&](const PetscScalar* all) { u_free = d_.free_values(all); });
-  return expand_solution(u_free, d_.constraints());
+  // Every rank gets the coefficients of its space (its part: its own elements and neighbours').
+  return expand_solution(d_.free_values(p.x), d_.constraints());
 }
 
 }  // namespace

@@ -5,34 +5,39 @@
 #include "solver/petsc_distribution.hpp"
 
 #include <algorithm>
+#include <climits>
+#include <cmath>
 #include <cstdio>
+#include <numeric>
 
 #include "assembly/boundary_conditions.hpp"
 #include "assembly/element_subset_assembly.hpp"
-#include "assembly/sparsity.hpp"
 #include "solver/petsc_extended_residual.hpp"
+#include "solver/petsc_partition.hpp"
 #include "solver/petsc_session.hpp"
+#include "solver/rank_part.hpp"
+#include "spaces/space_part.hpp"
 
 namespace iga {
 
 namespace {
 
-/// The unknowns an element with functions `dofs` couples (sorted, unique), and T_e with
-/// u|element = values|element + T_e u_unknowns: the rows `dofs` of free_basis (boundary_conditions.hpp)
-/// on those columns.
-using FreeBasis = Eigen::SparseMatrix<double, Eigen::RowMajor>;
-void element_unknowns(const FreeBasis& T, const std::vector<int>& dofs, std::vector<int>& unknowns,
-                      Eigen::MatrixXd* T_e = nullptr) {
-  unknowns.clear();
-  for (int d : dofs)
-    for (FreeBasis::InnerIterator it(T, d); it; ++it) unknowns.push_back(static_cast<int>(it.col()));
-  std::sort(unknowns.begin(), unknowns.end());
-  unknowns.erase(std::unique(unknowns.begin(), unknowns.end()), unknowns.end());
-  if (!T_e) return;
-  T_e->setZero(static_cast<int>(dofs.size()), static_cast<int>(unknowns.size()));
-  for (int i = 0; i < static_cast<int>(dofs.size()); ++i)
-    for (FreeBasis::InnerIterator it(T, dofs[i]); it; ++it)
-      (*T_e)(i, std::lower_bound(unknowns.begin(), unknowns.end(), it.col()) - unknowns.begin()) = it.value();
+/// A star forest from `leaves` (global indices into a vector laid out by `map`) to the roots of
+/// that layout. Collective.
+PetscSF make_sf(PetscLayout map, const std::vector<PetscInt>& leaves) {
+  PetscSF sf = nullptr;
+  petsc_check(PetscSFCreate(PETSC_COMM_WORLD, &sf), "PetscSFCreate");
+  petsc_check(PetscSFSetGraphLayout(sf, map, static_cast<PetscInt>(leaves.size()), nullptr, PETSC_COPY_VALUES,
+                                    leaves.data()),
+              "PetscSFSetGraphLayout");
+  petsc_check(PetscSFSetUp(sf), "PetscSFSetUp");
+  return sf;
+}
+
+PetscLayout make_layout(PetscInt local, PetscInt global) {
+  PetscLayout map = nullptr;
+  petsc_check(PetscLayoutCreateFromSizes(PETSC_COMM_WORLD, local, global, 1, &map), "PetscLayoutCreateFromSizes");
+  return map;
 }
 
 }  // namespace
@@ -54,84 +59,147 @@ void petsc_check(PetscErrorCode code, const char* what) {
 PetscDistribution::PetscDistribution(const Space& space, const std::function<void(const std::string&)>& say)
     : space_(space), rank_(mpi_rank()), ranks_(mpi_size()) {
   on_every_rank([&] {
+    if (const auto* part = dynamic_cast<const SpacePart*>(&space)) {
+      mine_.resize(part->owned_elements());
+      std::iota(mine_.begin(), mine_.end(), 0);
+      global_dofs_ = part->global_dofs();
+      whole_dimension_ = part->whole().dimension();
+      whole_elements_ = part->whole().num_elements();
+      return;
+    }
     if (say)
       say("partitioning " + std::to_string(space.num_elements()) + " elements over " + std::to_string(ranks_) +
           " rank(s)");
-    owner_ = partition_elements(element_centres(space), ranks_);
+    const std::vector<int> owner = partition_elements(element_centres(space), ranks_);
     for (int e = 0; e < space.num_elements(); ++e)
-      if (owner_[e] == rank_) mine_.push_back(e);
+      if (owner[e] == rank_) mine_.push_back(e);
+    whole_dimension_ = space.dimension();
+    whole_elements_ = space.num_elements();
   });
 }
 
-WorkShare PetscDistribution::share() const {
-  return {&mine_, [](double part) {
-            MPI_Allreduce(MPI_IN_PLACE, &part, 1, MPI_DOUBLE, MPI_SUM, PETSC_COMM_WORLD);
-            return part;
-          }};
+PetscDistribution::~PetscDistribution() { PetscSFDestroy(&rows_sf_); }
+
+WorkShare PetscDistribution::share() const { return rank_share(&mine_); }
+
+void PetscDistribution::element_unknowns(int element, std::vector<int>& dofs, std::vector<int>& unknowns,
+                                         Eigen::MatrixXd* T_e) const {
+  space_.element_dofs(element, dofs);
+  unknowns.clear();
+  for (int d : dofs)
+    for (decltype(basis_)::InnerIterator it(basis_, d); it; ++it) unknowns.push_back(static_cast<int>(it.col()));
+  std::sort(unknowns.begin(), unknowns.end());
+  unknowns.erase(std::unique(unknowns.begin(), unknowns.end()), unknowns.end());
+  if (!T_e) return;
+  T_e->setZero(static_cast<int>(dofs.size()), static_cast<int>(unknowns.size()));
+  for (int i = 0; i < static_cast<int>(dofs.size()); ++i)
+    for (decltype(basis_)::InnerIterator it(basis_, dofs[i]); it; ++it)
+      (*T_e)(i, std::lower_bound(unknowns.begin(), unknowns.end(), it.col()) - unknowns.begin()) = it.value();
 }
 
-void PetscDistribution::lay_out(const Constraints& c, SparseMatrix* pattern,
-                                const std::function<void(const std::string&)>& say) {
+void PetscDistribution::lay_out(const Constraints& c, const std::function<void(const std::string&)>& say) {
   constraints_ = c;
-  // Local work first (every rank the same, apart from its elements): an error found here is
-  // raised on all ranks together before any collective call.
+  const int n = static_cast<int>(c.free.size());
+  std::vector<PetscInt> global(n);
+  std::vector<int> candidate(n, INT_MAX);
+  // Local work first: an error found here is raised on all ranks together before any collective call.
   on_every_rank([&] {
     basis_ = free_basis(c);
-    const ElementDofTable table = collect_element_dofs(space_);
-    std::vector<int> unknown_offsets{0}, unknowns, dofs, local;
-    ElementDofTable my_table;
-    my_table.offsets.push_back(0);
-    for (int e = 0; e < table.num_elements(); ++e) {
-      dofs.assign(table.begin(e), table.begin(e + 1));
-      element_unknowns(basis_, dofs, local);
-      unknowns.insert(unknowns.end(), local.begin(), local.end());
-      unknown_offsets.push_back(static_cast<int>(unknowns.size()));
-      if (pattern && owner_[e] == rank_) {
-        my_table.dofs.insert(my_table.dofs.end(), dofs.begin(), dofs.end());
-        my_table.offsets.push_back(static_cast<int>(my_table.dofs.size()));
-      }
+    for (int k = 0; k < n; ++k)
+      global[k] = global_dofs_.empty() ? c.free[k] : global_dofs_[c.free[k]];
+    std::vector<int> dofs, unknowns;
+    for (int e : mine_) {
+      element_unknowns(e, dofs, unknowns, nullptr);
+      for (int k : unknowns) candidate[k] = rank_;
     }
-    layout_ = layout_unknowns(unknown_offsets, unknowns, owner_, static_cast<int>(c.free.size()), ranks_);
-    couplings_ = row_couplings(unknown_offsets, unknowns, layout_, rank_);
-    if (pattern) *pattern = sparsity_pattern(my_table, space_.dimension());
   });
-  long long totals[2] = {couplings_.off_rank, couplings_.total};
-  MPI_Allreduce(MPI_IN_PLACE, totals, 2, MPI_LONG_LONG, MPI_SUM, PETSC_COMM_WORLD);
-  if (ranks_ > 1 && say) {
-    char share[32];
-    std::snprintf(share, sizeof share, "%.3g %%", 100.0 * static_cast<double>(totals[0]) / std::max(1LL, totals[1]));
-    say("matrix couplings between ranks: " + std::to_string(totals[0]) + " of " + std::to_string(totals[1]) + " (" +
-        share + ")");
+  // The directory: function g of the whole space has its entry on the rank of block g. Each unknown
+  // goes to the lowest rank whose elements couple it; the owners number theirs contiguously.
+  PetscLayout functions = make_layout(PETSC_DECIDE, static_cast<PetscInt>(whole_dimension_));
+  PetscSF directory = make_sf(functions, global);
+  PetscInt n_roots = 0;
+  petsc_check(PetscLayoutGetLocalSize(functions, &n_roots), "PetscLayoutGetLocalSize");
+  std::vector<int> owner_at_root(n_roots, INT_MAX), owner(n);
+  petsc_check(PetscSFReduceBegin(directory, MPI_INT, candidate.data(), owner_at_root.data(), MPI_MIN), "PetscSFReduce");
+  petsc_check(PetscSFReduceEnd(directory, MPI_INT, candidate.data(), owner_at_root.data(), MPI_MIN), "PetscSFReduce");
+  petsc_check(PetscSFBcastBegin(directory, MPI_INT, owner_at_root.data(), owner.data(), MPI_REPLACE), "PetscSFBcast");
+  petsc_check(PetscSFBcastEnd(directory, MPI_INT, owner_at_root.data(), owner.data(), MPI_REPLACE), "PetscSFBcast");
+  std::vector<int> own;  // this rank's unknowns, in the order of their global numbers
+  for (int k = 0; k < n; ++k) {
+    if (owner[k] == INT_MAX)  // every function lives on an element, and every element has a rank
+      throw std::logic_error("PetscDistribution: an unknown that no rank's elements couple");
+    if (owner[k] == rank_) own.push_back(k);
   }
+  std::sort(own.begin(), own.end(), [&](int a, int b) { return global[a] < global[b]; });
+  owned_rows_ = static_cast<PetscInt>(own.size());
+  PetscInt first = 0;
+  MPI_Exscan(&owned_rows_, &first, 1, MPIU_INT, MPI_SUM, PETSC_COMM_WORLD);
+  if (rank_ == 0) first = 0;
+  MPI_Allreduce(&owned_rows_, &rows_, 1, MPIU_INT, MPI_SUM, PETSC_COMM_WORLD);
+  std::vector<PetscInt> offered(n, -1), row_at_root(n_roots, -1);
+  for (std::size_t i = 0; i < own.size(); ++i) offered[own[i]] = first + static_cast<PetscInt>(i);
+  row_.assign(n, -1);
+  petsc_check(PetscSFReduceBegin(directory, MPIU_INT, offered.data(), row_at_root.data(), MPI_MAX), "PetscSFReduce");
+  petsc_check(PetscSFReduceEnd(directory, MPIU_INT, offered.data(), row_at_root.data(), MPI_MAX), "PetscSFReduce");
+  petsc_check(PetscSFBcastBegin(directory, MPIU_INT, row_at_root.data(), row_.data(), MPI_REPLACE), "PetscSFBcast");
+  petsc_check(PetscSFBcastEnd(directory, MPIU_INT, row_at_root.data(), row_.data(), MPI_REPLACE), "PetscSFBcast");
+  PetscSFDestroy(&directory);
+  PetscLayoutDestroy(&functions);
+
+  PetscLayout rows = make_layout(owned_rows_, rows_);
+  PetscSFDestroy(&rows_sf_);
+  rows_sf_ = make_sf(rows, row_);
+  PetscLayoutDestroy(&rows);
+  if (ranks_ > 1 && say) say("unknowns of this rank's part: " + std::to_string(n) + ", rows it owns: " +
+                             std::to_string(owned_rows_) + " of " + std::to_string(rows_));
 }
 
 void PetscDistribution::matrix(const Formulation& f, const std::vector<FormTerm>& terms, ExtendedResidual* extended,
                                Mat& A) const {
-  const PetscInt n_global = static_cast<PetscInt>(constraints_.free.size());
-  const PetscInt n_local = layout_.first_row[rank_ + 1] - layout_.first_row[rank_];
   petsc_check(MatCreate(PETSC_COMM_WORLD, &A), "MatCreate");
-  petsc_check(MatSetSizes(A, n_local, n_local, n_global, n_global), "MatSetSizes");
+  petsc_check(MatSetSizes(A, owned_rows_, owned_rows_, rows_, rows_), "MatSetSizes");
   petsc_check(MatSetType(A, MATAIJ), "MatSetType");
-  const std::vector<PetscInt> d_nnz(couplings_.on_rank_columns.begin(), couplings_.on_rank_columns.end());
-  const std::vector<PetscInt> o_nnz(couplings_.off_rank_columns.begin(), couplings_.off_rank_columns.end());
-  petsc_check(MatSeqAIJSetPreallocation(A, 0, d_nnz.data()), "MatSeqAIJSetPreallocation");
-  petsc_check(MatMPIAIJSetPreallocation(A, 0, d_nnz.data(), 0, o_nnz.data()), "MatMPIAIJSetPreallocation");
+  // Exact preallocation from the element couplings, rows of other ranks included (PETSc's
+  // preallocator sends them to their owners).
+  Mat pre = nullptr;
+  petsc_check(MatCreate(PETSC_COMM_WORLD, &pre), "MatCreate");
+  petsc_check(MatSetSizes(pre, owned_rows_, owned_rows_, rows_, rows_), "MatSetSizes");
+  petsc_check(MatSetType(pre, MATPREALLOCATOR), "MatSetType");
+  petsc_check(MatSetUp(pre), "MatSetUp");
+  on_every_rank([&] {
+    std::vector<int> dofs, unknowns;
+    std::vector<PetscInt> rows;
+    std::vector<PetscScalar> zeros;
+    for (int e : mine_) {
+      element_unknowns(e, dofs, unknowns, nullptr);
+      rows.resize(unknowns.size());
+      for (std::size_t i = 0; i < unknowns.size(); ++i) rows[i] = row_[unknowns[i]];
+      zeros.assign(rows.size() * rows.size(), 0.0);
+      const PetscInt m = static_cast<PetscInt>(rows.size());
+      petsc_check(MatSetValues(pre, m, rows.data(), m, rows.data(), zeros.data(), INSERT_VALUES), "MatSetValues");
+    }
+  });
+  petsc_check(MatAssemblyBegin(pre, MAT_FINAL_ASSEMBLY), "MatAssemblyBegin");
+  petsc_check(MatAssemblyEnd(pre, MAT_FINAL_ASSEMBLY), "MatAssemblyEnd");
+  petsc_check(MatPreallocatorPreallocate(pre, PETSC_TRUE, A), "MatPreallocatorPreallocate");
+  MatDestroy(&pre);
+  petsc_check(MatSetOption(A, MAT_NEW_NONZERO_ALLOCATION_ERR, PETSC_TRUE), "MatSetOption");
   petsc_check(MatSetOption(A, MAT_SYMMETRIC, PETSC_TRUE), "MatSetOption");
   petsc_check(MatSetOption(A, MAT_SPD, PETSC_TRUE), "MatSetOption");
   on_every_rank([&] {
-    std::vector<int> local;
+    std::vector<int> dofs, local;
     std::vector<PetscInt> rows;
     Eigen::MatrixXd T;
     Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> K;
     // Tᵀ A T in double for the factorization; A itself, in double-double, for the residuals.
-    const auto add_element = [&](int, const std::vector<int>& dofs, const DoubleDoubleMatrix& A_e) {
-      if (extended) extended->add(dofs, A_e);
-      element_unknowns(basis_, dofs, local, &T);
+    const auto add_element = [&](int e, const std::vector<int>& element_dofs, const DoubleDoubleMatrix& A_e) {
+      if (extended) extended->add(element_dofs, A_e);
+      element_unknowns(e, dofs, local, &T);
       if (local.empty()) return;
       // Coefficient-wise products: Eigen's blocked ones would start a thread team per element.
       K = T.transpose().lazyProduct(A_e.hi.lazyProduct(T));
       rows.resize(local.size());
-      for (std::size_t i = 0; i < local.size(); ++i) rows[i] = layout_.global[local[i]];
+      for (std::size_t i = 0; i < local.size(); ++i) rows[i] = row_[local[i]];
       const PetscInt m = static_cast<PetscInt>(rows.size());
       petsc_check(MatSetValues(A, m, rows.data(), m, rows.data(), K.data(), ADD_VALUES), "MatSetValues");
     };
@@ -141,10 +209,40 @@ void PetscDistribution::matrix(const Formulation& f, const std::vector<FormTerm>
   petsc_check(MatAssemblyEnd(A, MAT_FINAL_ASSEMBLY), "MatAssemblyEnd");
 }
 
-Eigen::VectorXd PetscDistribution::free_values(const PetscScalar* all) const {
-  Eigen::VectorXd u_free(constraints_.free.size());
-  for (Eigen::Index k = 0; k < u_free.size(); ++k) u_free(k) = all[layout_.global[k]];
-  return u_free;
+Eigen::VectorXd PetscDistribution::free_values(Vec x) const {
+  Eigen::VectorXd u(constraints_.free.size());
+  const PetscScalar* owned = nullptr;
+  petsc_check(VecGetArrayRead(x, &owned), "VecGetArrayRead");
+  petsc_check(PetscSFBcastBegin(rows_sf_, MPIU_SCALAR, owned, u.data(), MPI_REPLACE), "PetscSFBcast");
+  petsc_check(PetscSFBcastEnd(rows_sf_, MPIU_SCALAR, owned, u.data(), MPI_REPLACE), "PetscSFBcast");
+  petsc_check(VecRestoreArrayRead(x, &owned), "VecRestoreArrayRead");
+  return u;
+}
+
+std::vector<double> PetscDistribution::sum_to_owners(const std::vector<DoubleDouble>& contributions) const {
+  // Every contribution travels to the row's owner (a gather: PETSc's reductions know no
+  // double-double sum), which adds them with the error-free sum and rounds once.
+  const PetscInt* degree = nullptr;
+  petsc_check(PetscSFComputeDegreeBegin(rows_sf_, &degree), "PetscSFComputeDegree");
+  petsc_check(PetscSFComputeDegreeEnd(rows_sf_, &degree), "PetscSFComputeDegree");
+  const PetscInt slots = std::accumulate(degree, degree + owned_rows_, PetscInt(0));
+  std::vector<double> hi(contributions.size()), lo(contributions.size()), hi_at(slots), lo_at(slots);
+  for (std::size_t k = 0; k < contributions.size(); ++k) {
+    hi[k] = contributions[k].hi;
+    lo[k] = contributions[k].lo;
+  }
+  petsc_check(PetscSFGatherBegin(rows_sf_, MPI_DOUBLE, hi.data(), hi_at.data()), "PetscSFGather");
+  petsc_check(PetscSFGatherEnd(rows_sf_, MPI_DOUBLE, hi.data(), hi_at.data()), "PetscSFGather");
+  petsc_check(PetscSFGatherBegin(rows_sf_, MPI_DOUBLE, lo.data(), lo_at.data()), "PetscSFGather");
+  petsc_check(PetscSFGatherEnd(rows_sf_, MPI_DOUBLE, lo.data(), lo_at.data()), "PetscSFGather");
+  std::vector<double> out(owned_rows_);
+  PetscInt slot = 0;
+  for (PetscInt r = 0; r < owned_rows_; ++r) {
+    DoubleDouble sum;
+    for (PetscInt j = 0; j < degree[r]; ++j, ++slot) sum += DoubleDouble{hi_at[slot], lo_at[slot]};
+    out[r] = sum.hi + sum.lo;
+  }
+  return out;
 }
 
 }  // namespace iga

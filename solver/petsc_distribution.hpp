@@ -1,19 +1,27 @@
 #pragma once
 /// @file
 /// What the PETSc backends share (the linear solve of petsc_backend.cpp, the SLEPc eigensolve of
-/// slepc_eigen_backend.cpp): the elements partitioned over the ranks, the free unknowns laid out
-/// in contiguous row blocks, distributed matrices of any term list on that layout, and the whole
-/// free vector back on every rank. Internal to the solver layer's PETSc files: the only header
-/// that includes PETSc's (so it is not installed, cmake/install.cmake), compiled with PETSc only.
+/// slepc_eigen_backend.cpp): this rank's elements, the free unknowns numbered in contiguous row
+/// blocks agreed between the ranks, distributed matrices of any term list on that layout, and the
+/// values of this rank's unknowns back from a distributed vector. Internal to the solver layer's
+/// PETSc files: the only header that includes PETSc's (so it is not installed,
+/// cmake/install.cmake), compiled with PETSc only.
+///
+/// A rank works on its part of the space (rank_part.hpp: a SpacePart whose first elements are the
+/// rank's own, the others read-only neighbours) or, for the runs that still need it, on the whole
+/// space, of which it assembles the elements the partition gives it. Nothing here is the size of
+/// the whole space in the first case: unknowns are matched between ranks by their global function
+/// numbers through PETSc star forests (PetscSF), with a directory of the functions distributed in
+/// blocks over the ranks.
 
 #include <petscmat.h>
+#include <petscsf.h>
 
 #include <functional>
 #include <string>
 #include <vector>
 
 #include "solver/formulation.hpp"
-#include "solver/petsc_partition.hpp"
 
 namespace iga {
 
@@ -34,42 +42,62 @@ class QuietPetscErrors {
   QuietPetscErrors& operator=(const QuietPetscErrors&) = delete;
 };
 
-/// The distribution of one space's system over PETSC_COMM_WORLD. Every rank builds the whole space
-/// and computes the same partition; each assembles its own elements.
+/// The distribution of one space's system over PETSC_COMM_WORLD.
 class PetscDistribution {
  public:
-  /// Partitions the elements (collective; `say` is told on every rank).
+  /// `space`: this rank's SpacePart (its own elements first), or the whole space, whose elements
+  /// are then partitioned here (collective; `say` is told on every rank).
   PetscDistribution(const Space& space, const std::function<void(const std::string&)>& say);
+  ~PetscDistribution();
+  PetscDistribution(const PetscDistribution&) = delete;
+  PetscDistribution& operator=(const PetscDistribution&) = delete;
 
-  /// This rank's elements and the sum over the ranks.
+  /// This rank's elements (numbers of `space`) and the sum over the ranks.
   WorkShare share() const;
-  /// The distributed numbering of the free unknowns of `c` (kept as a copy), and with `pattern`
-  /// the couplings of this rank's elements' functions. Collective.
-  void lay_out(const Constraints& c, SparseMatrix* pattern, const std::function<void(const std::string&)>& say);
+  /// Number the free unknowns of `c` (conditions on `space`, kept as a copy): each belongs to the
+  /// lowest rank whose own elements couple it, each rank's rows are contiguous. Collective.
+  void lay_out(const Constraints& c, const std::function<void(const std::string&)>& say);
   /// Create `A`, the distributed matrix Σ terms on the unknowns of lay_out (Tᵀ A T in double, T the
-  /// free basis), symmetric positive definite; each element matrix also handed to `extended` in
-  /// double-double when given. The caller destroys `A`. Collective.
+  /// free basis), symmetric positive definite, preallocated exactly; each element matrix also
+  /// handed to `extended` in double-double when given. The caller destroys `A`. Collective.
   void matrix(const Formulation& f, const std::vector<FormTerm>& terms, ExtendedResidual* extended, Mat& A) const;
-  /// The free unknowns (in Constraints::free order) of `all`, a whole vector in the distributed
-  /// numbering (a VecScatterCreateToAll copy).
-  Eigen::VectorXd free_values(const PetscScalar* all) const;
+  /// The values of every free unknown of `space` (Constraints::free order) from `x`, a vector of
+  /// the rows of lay_out (this rank's own and its neighbours'). Collective.
+  Eigen::VectorXd free_values(Vec x) const;
+  /// Σ over the ranks, per row this rank owns, of `contributions` (one per free unknown of
+  /// `space`, in double-double), rounded once. Collective.
+  std::vector<double> sum_to_owners(const std::vector<DoubleDouble>& contributions) const;
 
   const Space& space() const { return space_; }
   const Constraints& constraints() const { return constraints_; }
-  const UnknownLayout& layout() const { return layout_; }
+  /// Free unknown k (position in constraints().free) → its row.
+  const std::vector<PetscInt>& row_of_unknown() const { return row_; }
+  PetscInt owned_rows() const { return owned_rows_; }
+  PetscInt rows() const { return rows_; }
+  /// The whole space's number of functions (the part's are numbered within it).
+  long long whole_dimension() const { return whole_dimension_; }
+  long long whole_elements() const { return whole_elements_; }
   int rank() const { return rank_; }
   int ranks() const { return ranks_; }
 
  private:
+  /// The unknowns this rank's own elements couple (sorted), and T_e with
+  /// u|element = values|element + T_e u_unknowns (rows: the element's functions).
+  void element_unknowns(int element, std::vector<int>& dofs, std::vector<int>& unknowns, Eigen::MatrixXd* T_e) const;
+
   const Space& space_;
   const int rank_, ranks_;
-  std::vector<int> owner_, mine_;
+  std::vector<int> mine_;          ///< this rank's elements
+  std::vector<int> global_dofs_;   ///< function of `space` → of the whole space (empty: the same)
+  long long whole_dimension_ = 0, whole_elements_ = 0;
   /// A copy: the caller's conditions may be a temporary of the assemble step (the solve and the
   /// refinement residuals read them after it returned).
   Constraints constraints_;
   Eigen::SparseMatrix<double, Eigen::RowMajor> basis_;
-  UnknownLayout layout_;
-  RowCouplings couplings_;
+  std::vector<PetscInt> row_;
+  PetscInt owned_rows_ = 0, rows_ = 0;
+  /// Leaves: the free unknowns of `space`; roots: the rows this rank owns.
+  PetscSF rows_sf_ = nullptr;
 };
 
 }  // namespace iga

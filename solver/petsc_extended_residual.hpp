@@ -5,11 +5,11 @@
 /// reduced_residual (boundary_conditions.hpp), with the same element sums (split_matrix.hpp).
 ///
 /// Each rank keeps its own elements' matrices, unreduced, summed in double-double into a pattern
-/// of the functions they touch, and its part of b − A g (g the essential values). The residual of
-/// the free unknowns, Tᵀ(b − A (g + T u)), is formed by every rank for its part, summed over the
-/// ranks in double-double (MPI_Reduce_scatter with a double-double sum) and rounded to double once,
-/// on the rank that owns the row. A matrix rounded to double, or summed in long double, would carry
-/// entry errors whose effect on the solution grows like h⁻⁴ for plates; this residual does not.
+/// of the functions of its part, and its part of b − A g (g the essential values). The residual of
+/// the free unknowns, Tᵀ(b − A (g + T u)), is formed by every rank for the unknowns of its part,
+/// sent to the rows' owners in double-double (PetscDistribution::sum_to_owners) and rounded to
+/// double once there. A matrix rounded to double, or summed in long double, would carry entry
+/// errors whose effect on the solution grows like h⁻⁴ for plates; this residual does not.
 
 #include <Eigen/Core>
 #include <vector>
@@ -20,29 +20,27 @@
 
 namespace iga {
 
+class PetscDistribution;
+
 class ExtendedResidual {
  public:
-  /// `c`: the essential conditions; `row_of_unknown`: free unknown k (position in c.free) → its
-  /// row in the distributed numbering, where rank r owns rows first_row[r] .. first_row[r+1];
-  /// this process is `rank`. `pattern`: the couplings of this rank's elements (sparsity_pattern of
-  /// their dofs), or an empty matrix when only the right-hand side (u = 0) will be asked for.
-  ExtendedResidual(const Constraints& c, std::vector<int> row_of_unknown, std::vector<int> first_row, int rank,
-                   SparseMatrix pattern);
+  /// `d`: the distribution after lay_out (its constraints and numbering). `pattern`: the couplings
+  /// of this rank's elements (sparsity_pattern of their functions), or an empty matrix when only
+  /// the right-hand side (u = 0) will be asked for.
+  ExtendedResidual(const PetscDistribution& d, SparseMatrix pattern);
 
-  /// Add this rank's part of the load (length: dimension).
+  /// Add this rank's part of the load (length: the functions of the rank's space).
   void add_load(const Eigen::VectorXd& load);
   /// Add an element's matrix (rows and columns: `dofs`).
   void add(const std::vector<int>& dofs, const DoubleDoubleMatrix& K);
 
-  /// Collective: the free rows of b − A (g + T u) owned by this rank, summed over the ranks in
-  /// double-double and rounded once. `u` is the whole vector of unknowns in the distributed
-  /// numbering, or null for u = 0 (the right-hand side).
-  std::vector<double> owned_rows(const double* u) const;
+  /// Collective: the rows this rank owns of b − A (g + T u), summed over the ranks in double-double
+  /// and rounded once. `u`: the values of the rank's free unknowns (PetscDistribution::free_values),
+  /// or null for u = 0 (the right-hand side).
+  std::vector<double> owned_rows(const Eigen::VectorXd* u) const;
 
  private:
-  const Constraints& c_;
-  std::vector<int> row_of_unknown_, first_row_;
-  int rank_;
+  const PetscDistribution& d_;
   SparseMatrix pattern_;            ///< column-major; values unused
   std::vector<DoubleDouble> values_;  ///< aligned with pattern_'s entries
   std::vector<DoubleDouble> base_;    ///< this rank's part of b − A g

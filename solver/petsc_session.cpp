@@ -1,6 +1,8 @@
 #include "solver/petsc_session.hpp"
 
 #include <cctype>
+#include <climits>
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <iostream>
@@ -197,6 +199,27 @@ int mpi_size() {
   return size;
 }
 
+double sum_over_ranks(double value) {
+  if (!petsc_up()) return value;
+  MPI_Allreduce(MPI_IN_PLACE, &value, 1, MPI_DOUBLE, MPI_SUM, PETSC_COMM_WORLD);
+  return value;
+}
+
+double max_over_ranks(double value) {
+  if (!petsc_up()) return value;
+  MPI_Allreduce(MPI_IN_PLACE, &value, 1, MPI_DOUBLE, MPI_MAX, PETSC_COMM_WORLD);
+  return value;
+}
+
+double first_known_over_ranks(double value) {
+  if (!petsc_up()) return value;
+  int from = std::isnan(value) ? INT_MAX : mpi_rank();
+  MPI_Allreduce(MPI_IN_PLACE, &from, 1, MPI_INT, MPI_MIN, PETSC_COMM_WORLD);
+  if (from == INT_MAX) return value;  // no rank has one: NaN everywhere
+  MPI_Bcast(&value, 1, MPI_DOUBLE, from, PETSC_COMM_WORLD);
+  return value;
+}
+
 int ranks_on_this_node() {
   if (!petsc_up()) return 1;
   MPI_Comm node = MPI_COMM_NULL;
@@ -265,6 +288,9 @@ PetscSession::~PetscSession() = default;
 int mpi_rank() { return 0; }
 int mpi_size() { return 1; }
 int ranks_on_this_node() { return 1; }
+double sum_over_ranks(double value) { return value; }
+double max_over_ranks(double value) { return value; }
+double first_known_over_ranks(double value) { return value; }
 void on_every_rank(const std::function<void()>& work) { work(); }
 std::string broadcast_from_root(const std::string& text) { return text; }
 bool failure_shared_by_all_ranks() { return false; }

@@ -38,6 +38,11 @@ int mpi_size();
 /// The ranks that share this process's node (MPI's shared-memory communicator; 1 when PETSc is not
 /// running). Collective.
 int ranks_on_this_node();
+/// Collective: the sum and the largest of `value` over the ranks, and the value of the lowest rank
+/// whose value is not NaN (NaN when none has one). The value itself on one rank.
+double sum_over_ranks(double value);
+double max_over_ranks(double value);
+double first_known_over_ranks(double value);
 /// Rank 0: the one that prints and writes files.
 inline bool is_root_rank() { return mpi_rank() == 0; }
 

@@ -49,6 +49,7 @@ Constraints assemble_level(const Formulation& f, LinearBackend& backend, LevelRe
   r.t_assemble = clock.seconds();
   r.notes = f.notes();
   r.free_dofs = static_cast<int>(c.free.size());
+  backend.count_whole(f, r);
   return c;
 }
 
@@ -69,7 +70,7 @@ DiscreteSolution solve_pipeline(const Formulation& f, LinearBackend& backend, co
   const int n = space.dimension();
   for (int c = 0; c < f.components(); ++c)
     if (const auto jump = space.max_gradient_jump(out.coefficients.segment(c * n, n)))
-      r.g1_jump = std::max(r.g1_jump.value_or(0.0), *jump);
+      r.g1_jump = std::max(r.g1_jump.value_or(0.0), share.max(*jump));
   if (f.has_exact()) {
     if (progress) progress("computing errors");
     clock.restart();

@@ -40,6 +40,9 @@ class LinearBackend {
   virtual Eigen::VectorXd solve(SolveReport& report, const ProgressSink& progress) = 0;
   /// a(u, u) with the assembled matrix, where this process holds it whole.
   virtual std::optional<double> energy(const Eigen::VectorXd& /*u*/) const { return std::nullopt; }
+  /// After assemble: the whole problem's functions, elements and free unknowns into `r`, where
+  /// this process holds a part of the space (the formulation counts only its part).
+  virtual void count_whole(const Formulation& /*f*/, LevelResult& /*r*/) const {}
 };
 
 /// What a solve produced.

@@ -29,12 +29,9 @@ const auto check = petsc_check;
 struct SlepcObjects {
   Mat K = nullptr, M = nullptr;
   EPS eps = nullptr;
-  Vec x = nullptr, all = nullptr;
-  VecScatter to_all = nullptr;
+  Vec x = nullptr;
   ~SlepcObjects() {
     QuietPetscErrors quiet;
-    VecScatterDestroy(&to_all);
-    VecDestroy(&all);
     VecDestroy(&x);
     EPSDestroy(&eps);
     MatDestroy(&M);
@@ -52,7 +49,7 @@ class SlepcEigenBackend final : public EigenBackend {
   void assemble(const Formulation& f, const Constraints& c, const Eigen::VectorXd&, const ProgressSink& say) override {
     f_ = &f;
     constraints_ = c;
-    d_.lay_out(constraints_, nullptr, say);
+    d_.lay_out(constraints_, say);
     if (say) say("assembling K and M (" + std::to_string(c.free.size()) + " unknowns, distributed)");
     d_.matrix(f, f.terms(), nullptr, p_.K);
     d_.matrix(f, {mass_integrator()}, nullptr, p_.M);
@@ -168,7 +165,6 @@ EigenPairs SlepcEigenBackend::eigensolve(int count, EigenReport& report, const P
   Constraints homogeneous = constraints_;
   homogeneous.values.setZero();
   check(MatCreateVecs(p_.K, &p_.x, nullptr), "MatCreateVecs");
-  check(VecScatterCreateToAll(p_.x, &p_.to_all, &p_.all), "VecScatterCreateToAll");
   Vec Mx;
   check(VecDuplicate(p_.x, &Mx), "VecDuplicate");
   for (int i = 0; i < count; ++i) {
@@ -179,12 +175,8 @@ EigenPairs SlepcEigenBackend::eigensolve(int count, EigenReport& report, const P
     check(MatMult(p_.M, p_.x, Mx), "MatMult");
     check(VecDot(p_.x, Mx, &xMx), "VecDot");
     check(VecScale(p_.x, 1.0 / std::sqrt(xMx)), "VecScale");
-    check(VecScatterBegin(p_.to_all, p_.x, p_.all, INSERT_VALUES, SCATTER_FORWARD), "VecScatterBegin");
-    check(VecScatterEnd(p_.to_all, p_.x, p_.all, INSERT_VALUES, SCATTER_FORWARD), "VecScatterEnd");
-    const PetscScalar* all = nullptr;
-    check(VecGetArrayRead(p_.all, &all), "VecGetArrayRead");
-    Eigen::VectorXd x = d_.free_values(all);
-    check(VecRestoreArrayRead(p_.all, &all), "VecRestoreArrayRead");
+    // The eigensolver runs on the whole space on every rank: these are all the unknowns.
+    Eigen::VectorXd x = d_.free_values(p_.x);
     Eigen::Index big;
     x.cwiseAbs().maxCoeff(&big);
     if (x(big) < 0) x = -x;

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <numeric>
 
 #include "assembly/error_indicator.hpp"
 #include "solver/boundary_edge_kinds.hpp"
@@ -14,6 +15,8 @@
 #include "solver/resource_checks.hpp"
 #include "config/errors.hpp"
 #include "config/progress.hpp"
+#include "solver/petsc_session.hpp"
+#include "solver/rank_part.hpp"
 #include "solver/slepc_eigen_backend.hpp"
 #include "solver/solve_problem.hpp"
 #include "spaces/lifted_space.hpp"
@@ -284,7 +287,20 @@ StudyResult run_study(const StudySettings& settings, const ProgressSink& progres
     // Quadrature points miss poles on mesh lines; new vertices and edges come with every level.
     check_data_finite(*space, settings.problem);
 
-    DiscreteSolution sol = solve_problem(*space, settings.problem, settings.solver,
+    // Under PETSc each rank works on its part of the space (rank_part.hpp) where the problem
+    // allows it; eigenproblems, adaptive studies, level differences and the matrix export (the
+    // whole system from rank 0) still take the whole.
+    std::shared_ptr<const SpacePart> part;
+    std::vector<int> own;
+    if (settings.solver == SolverKind::petsc && !settings.problem.eigen && !settings.adaptive && !differences &&
+        !settings.write_matrices && make_formulation(*space, settings.problem)->works_on_parts()) {
+      part = rank_part(space, mpi_rank(), mpi_size());
+      own.resize(part->owned_elements());
+      std::iota(own.begin(), own.end(), 0);
+    }
+    const Space& work = part ? static_cast<const Space&>(*part) : *space;
+    const WorkShare share = part ? rank_share(&own) : WorkShare{};
+    DiscreteSolution sol = solve_problem(work, settings.problem, settings.solver,
                                          [&](const std::string& msg) { progress(tag + msg); }, settings.petsc);
     sol.result.level = level;
     sol.result.t_space = t_space;
@@ -296,8 +312,9 @@ StudyResult run_study(const StudySettings& settings, const ProgressSink& progres
     std::shared_ptr<const PointLocator> locator;
     const bool points = std::any_of(settings.functionals.begin(), settings.functionals.end(),
                                     [](const FunctionalSpec& f) { return f.kind == FunctionalSpec::Kind::point; });
-    if ((differences && level + 1 < settings.levels) || points) locator = std::make_shared<PointLocator>(space);
-    sol.result.functionals = evaluate_functionals(settings.functionals, *space, sol.coefficients, locator.get());
+    if ((differences && level + 1 < settings.levels) || points)
+      locator = std::make_shared<PointLocator>(part ? SpacePtr(part) : space);
+    sol.result.functionals = evaluate_functionals(settings.functionals, work, sol.coefficients, locator.get(), share);
     if (differences && previous_locator) {
       const Stopwatch t_diff;
       progress(tag + "differences to the previous level");
@@ -359,7 +376,7 @@ StudyResult run_study(const StudySettings& settings, const ProgressSink& progres
           next = std::move(refined);
       }
     }
-    if (on_level) on_level(level, *space, sol);  // after marking: the outputs show η_K and the marked elements
+    if (on_level) on_level(level, work, sol);  // after marking: the outputs show η_K and the marked elements
     result.estimators.push_back(estimator);
     result.rows.push_back(sol.result);
     result.solver_methods.push_back(sol.solve.method);

@@ -3,6 +3,7 @@
 #include <Eigen/LU>
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <memory>
 
 #include "spaces/surface_point_location.hpp"
@@ -72,7 +73,8 @@ std::vector<FunctionalSpec> parse_functionals(const ConfigNode& node, const Spac
 }
 
 std::vector<double> evaluate_functionals(const std::vector<FunctionalSpec>& functionals, const Space& space,
-                                         const Eigen::VectorXd& coefficients, const PointLocator* locator) {
+                                         const Eigen::VectorXd& coefficients, const PointLocator* locator,
+                                         const WorkShare& share) {
   std::vector<double> values;
   std::optional<PointLocator> own;
   if (!locator && std::any_of(functionals.begin(), functionals.end(),
@@ -85,28 +87,40 @@ std::vector<double> evaluate_functionals(const std::vector<FunctionalSpec>& func
   for (const FunctionalSpec& f : functionals) {
     if (f.kind == FunctionalSpec::Kind::surface_point) {
       const auto at = locate_on_surface(space, f.point3, *evaluator, surface_point_tolerance(f.point3));
-      if (!at) throw std::runtime_error("functional '" + f.name + "': point not found on this level's surface");
-      const auto rule = one_point(at->reference);
-      const bool vector = coefficients.size() > n;
-      const Eigen::VectorXd c = vector ? Eigen::VectorXd(coefficients.segment(f.component * n, n)) : coefficients;
-      evaluator->evaluate_function(at->element, *rule, c, update_values, geometry, uh);
-      values.push_back(uh.value(0));
+      double value = std::numeric_limits<double>::quiet_NaN();
+      if (at) {
+        const auto rule = one_point(at->reference);
+        const bool vector = coefficients.size() > n;
+        const Eigen::VectorXd c = vector ? Eigen::VectorXd(coefficients.segment(f.component * n, n)) : coefficients;
+        evaluator->evaluate_function(at->element, *rule, c, update_values, geometry, uh);
+        value = uh.value(0);
+      }
+      value = share.first(value);
+      if (std::isnan(value)) throw std::runtime_error("functional '" + f.name + "': point not found on this level's surface");
+      values.push_back(value);
     } else if (f.kind == FunctionalSpec::Kind::point) {
       const auto at = locator->locate(f.point, *evaluator);
-      if (!at) throw std::runtime_error("functional '" + f.name + "': point not found on this level's mesh");
-      const auto rule = one_point(at->reference);
-      evaluator->evaluate_function(at->element, *rule, coefficients, update_values, geometry, uh);
-      values.push_back(uh.value(0));
+      double value = std::numeric_limits<double>::quiet_NaN();
+      if (at) {
+        const auto rule = one_point(at->reference);
+        evaluator->evaluate_function(at->element, *rule, coefficients, update_values, geometry, uh);
+        value = uh.value(0);
+      }
+      value = share.first(value);
+      if (std::isnan(value)) throw std::runtime_error("functional '" + f.name + "': point not found on this level's mesh");
+      values.push_back(value);
     } else {
       double sum = 0;
       Eigen::VectorXd jxw;
-      for (int e = 0; e < space.num_elements(); ++e) {
+      const int count = share.elements ? static_cast<int>(share.elements->size()) : space.num_elements();
+      for (int i = 0; i < count; ++i) {
+        const int e = share.elements ? (*share.elements)[i] : i;
         const RulePtr rule = space.quadrature(e, 2 * space.degree() + 2);
         evaluator->evaluate_function(e, *rule, coefficients, update_values, geometry, uh);
         integration_weights(*rule, geometry, jxw);
         sum += jxw.dot(uh.value);
       }
-      values.push_back(sum);
+      values.push_back(share.sum(sum));
     }
   }
   return values;

@@ -14,6 +14,7 @@
 #include "config/config_node.hpp"
 #include "spaces/point_location.hpp"
 #include "spaces/space.hpp"
+#include "solver/formulation.hpp"
 
 namespace iga {
 
@@ -34,8 +35,11 @@ std::vector<FunctionalSpec> parse_functionals(const ConfigNode& node, const Spac
 /// Value of each functional for u_h = Σ c_i N_i on `space` (a vector field: its components'
 /// coefficients in blocks of dimension()). Planar points are located by `locator` (a
 /// PointLocator of `space`, made here when null and a functional needs it).
+/// A process holding part of the space (rank_part.hpp) gives its `share`: points are taken from
+/// the lowest rank whose part holds them, integrals summed over the ranks' own elements.
 std::vector<double> evaluate_functionals(const std::vector<FunctionalSpec>& functionals, const Space& space,
-                                         const Eigen::VectorXd& coefficients, const PointLocator* locator = nullptr);
+                                         const Eigen::VectorXd& coefficients, const PointLocator* locator = nullptr,
+                                         const WorkShare& share = {});
 
 /// Observed order of a sequence F_0, F_1, ... on meshes h_0, h_1, ... from three consecutive
 /// values (Richardson): log(|F_{l-1} − F_{l-2}| / |F_l − F_{l-1}|) / log(h_{l-1} / h_l); nullopt

@@ -43,6 +43,7 @@ class SurfaceFormulation final : public Formulation {
   /// −Δ_Γu = f on a closed surface: u fixed up to a constant (pinned in the solve, shifted to its
   /// mean after). Not for eigenproblems, where the constants are the eigenfunctions of λ = 0.
   bool pure() const { return problem().reaction == 0 && !open() && !problem().eigen; }
+  bool works_on_parts() const override { return Formulation::works_on_parts() && !pure(); }
   mutable ConstantKernel kernel_;  ///< pure problems: set by load, used by finish
 };
 
@@ -81,6 +82,7 @@ class SurfaceBiharmonicFormulation final : public Formulation {
  private:
   /// Δ_Γ²u = f on a closed surface: the constants are the kernel (ConstantKernel).
   bool pure() const { return problem().reaction == 0 && space().boundary_edges("all").empty() && !problem().eigen; }
+  bool works_on_parts() const override { return Formulation::works_on_parts() && !pure(); }
   mutable ConstantKernel kernel_;  ///< pure problems: set by load, used by finish
 };
 

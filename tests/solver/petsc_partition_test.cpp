@@ -52,39 +52,4 @@ TEST(ElementPartition, BalancedAndCompact) {
   EXPECT_EQ(partition_elements(centres, 1), std::vector<int>(m * m, 0));
 }
 
-TEST(UnknownLayout, LowestOwningRankAndContiguousRows) {
-  // Three elements in a row sharing one unknown each: 0 {0,1}, 1 {1,2}, 2 {2,3}; owners 1, 0, 1.
-  const std::vector<int> offsets{0, 2, 4, 6}, unknowns{0, 1, 1, 2, 2, 3}, owner{1, 0, 1};
-  const UnknownLayout layout = layout_unknowns(offsets, unknowns, owner, 4, 2);
-  EXPECT_EQ(layout.owner, (std::vector<int>{1, 0, 0, 1}));
-  EXPECT_EQ(layout.first_row, (std::vector<int>{0, 2, 4}));
-  EXPECT_EQ(layout.global, (std::vector<int>{2, 0, 1, 3}));
-}
-
-TEST(RowCouplings, CountsColumnsOnAndOffTheRankOncePerRow) {
-  // The chain above: rank 0 owns unknowns 1, 2 (rows 0, 1), rank 1 owns 0, 3 (rows 2, 3).
-  const std::vector<int> offsets{0, 2, 4, 6}, unknowns{0, 1, 1, 2, 2, 3}, owner{1, 0, 1};
-  const UnknownLayout layout = layout_unknowns(offsets, unknowns, owner, 4, 2);
-  // Unknown 1 couples 0, 1, 2; unknown 2 couples 1, 2, 3. In rows: 0 and 1 are rank 0's.
-  const RowCouplings zero = row_couplings(offsets, unknowns, layout, 0);
-  EXPECT_EQ(zero.on_rank_columns, (std::vector<int>{2, 2}));
-  EXPECT_EQ(zero.off_rank_columns, (std::vector<int>{1, 1}));
-  EXPECT_EQ(zero.off_rank, 2);
-  EXPECT_EQ(zero.total, 6);
-  // Unknown 0 couples 0, 1; unknown 3 couples 2, 3: one column on rank 1, one off, each.
-  const RowCouplings one = row_couplings(offsets, unknowns, layout, 1);
-  EXPECT_EQ(one.on_rank_columns, (std::vector<int>{1, 1}));
-  EXPECT_EQ(one.off_rank_columns, (std::vector<int>{1, 1}));
-}
-
-TEST(PetscArguments, PetscOptionsAndTheirValuesAreSplitOff) {
-  const auto [own, petsc] = split_petsc_arguments(
-      {"iga-run", "-ksp_monitor", "c.yaml", "-o", "out", "-ksp_rtol", "1e-10", "-l", "2", "-pc_gamg_threshold",
-       "-0.5", "-log_view", "-q", "-info"});
-  EXPECT_EQ(own, (std::vector<std::string>{"iga-run", "c.yaml", "-o", "out", "-l", "2", "-q"}));
-  EXPECT_EQ(petsc, (std::vector<std::string>{"iga-run", "-ksp_monitor", "-ksp_rtol", "1e-10", "-pc_gamg_threshold",
-                                             "-0.5", "-log_view", "-info"}));
-}
-
 }  // namespace
-}  // namespace iga

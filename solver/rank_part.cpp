@@ -1,0 +1,40 @@
+#include "solver/rank_part.hpp"
+
+#include <algorithm>
+
+#include "assembly/element_subset_assembly.hpp"
+#include "solver/petsc_partition.hpp"
+#include "solver/petsc_session.hpp"
+
+namespace iga {
+
+std::shared_ptr<const SpacePart> rank_part(const std::shared_ptr<const Space>& whole, int rank, int ranks) {
+  const std::vector<int> owner = partition_elements(element_centres(*whole), ranks);
+  std::vector<int> elements, neighbours;
+  for (int e = 0; e < static_cast<int>(owner.size()); ++e)
+    if (owner[e] == rank) elements.push_back(e);
+  const int owned = static_cast<int>(elements.size());
+  for (const BoundaryEdge& b : whole->boundary_edges("all"))
+    if (owner[b.element] != rank) neighbours.push_back(b.element);
+  if (whole->facts().gradient_jump_samples >= 2)
+    for (const InteriorEdge& edge : whole->interior_edges()) {
+      const int a = owner[edge.element_a], b = owner[edge.element_b];
+      if (a == rank && b != rank) neighbours.push_back(edge.element_b);
+      if (b == rank && a != rank) neighbours.push_back(edge.element_a);
+    }
+  std::sort(neighbours.begin(), neighbours.end());
+  neighbours.erase(std::unique(neighbours.begin(), neighbours.end()), neighbours.end());
+  elements.insert(elements.end(), neighbours.begin(), neighbours.end());
+  return std::make_shared<SpacePart>(whole, std::move(elements), owned);
+}
+
+WorkShare rank_share(const std::vector<int>* elements) {
+  WorkShare s;
+  s.elements = elements;
+  s.total = sum_over_ranks;
+  s.largest = max_over_ranks;
+  s.first_known = first_known_over_ranks;
+  return s;
+}
+
+}  // namespace iga

@@ -1,0 +1,28 @@
+#pragma once
+/// @file
+/// What one rank of a distributed solve works on: its part of the space (spaces/space_part.hpp)
+/// instead of the whole, so that its tables, vectors and solution grow with its share of the
+/// elements. The part holds the rank's own elements (the Hilbert-curve partition of
+/// petsc_partition.hpp), in increasing order, then the neighbours it only reads:
+///  - every element with a boundary edge, so that the boundary projection of the essential
+///    conditions (a boundary-sized problem, boundary_conditions.hpp) is the serial one on every
+///    rank and the ranks agree on which functions are constrained;
+///  - for spaces that report gradient jumps, the elements across the interior edges of its own
+///    (the jump of an edge between two ranks is measured by both).
+/// Plain computation, no PETSc: every rank computes the same partition from the same space.
+
+#include <memory>
+
+#include "solver/formulation.hpp"
+#include "spaces/space_part.hpp"
+
+namespace iga {
+
+/// The part of `whole` for `rank` of `ranks`.
+std::shared_ptr<const SpacePart> rank_part(const std::shared_ptr<const Space>& whole, int rank, int ranks);
+
+/// The share of a process that works on `elements` (kept by the caller) with the sums, maxima and
+/// first known values taken over the MPI ranks (petsc_session.hpp).
+WorkShare rank_share(const std::vector<int>* elements);
+
+}  // namespace iga

@@ -1,0 +1,174 @@
+#include "spaces/space_part.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+
+namespace iga {
+
+namespace {
+
+/// out = Σ_i c(dofs_i) · table(i, :), for the rows of one derivative array.
+void contract(const Eigen::MatrixXd& table, const Eigen::VectorXd& c, Eigen::VectorXd& out) {
+  out.noalias() = table.transpose() * c;
+}
+
+}  // namespace
+
+/// Asks the whole space's evaluator for the whole's element and renumbers the functions. A
+/// discrete function is contracted here from the basis values (its coefficients are the part's,
+/// which the whole's evaluate_function cannot index).
+class SpacePart::PartEvaluator final : public Space::Evaluator {
+ public:
+  PartEvaluator(const SpacePart& part) : part_(part), inner_(part.whole().make_evaluator()) {}
+
+  void evaluate(int e, const QuadratureRule& points, unsigned flags, PointValues& out) override {
+    inner_->evaluate(part_.elements_[e], points, flags, out);
+    renumber(e, out);
+  }
+  void evaluate_function(int e, const QuadratureRule& points, const Eigen::VectorXd& coefficients, unsigned flags,
+                         PointValues& geometry, FunctionValues& out) override {
+    if (flags & (update_laplacian_gradient | update_bilaplacian))
+      throw std::logic_error("SpacePart: third and fourth derivatives of a discrete function are not available on a part");
+    const unsigned basis = (flags & (update_values | update_gradients | update_hessians | update_surface_curvature)) |
+                           update_values;
+    evaluate(e, points, basis, geometry);
+    c_.resize(geometry.num_functions());
+    for (int i = 0; i < geometry.num_functions(); ++i) c_(i) = coefficients(geometry.dofs[i]);
+    if (flags & update_values) contract(geometry.value, c_, out.value);
+    if (flags & update_gradients) {
+      contract(geometry.dx, c_, out.dx);
+      contract(geometry.dy, c_, out.dy);
+      if (geometry.dz.size() > 0) contract(geometry.dz, c_, out.dz);
+    }
+    if (flags & update_hessians) {
+      contract(geometry.dxx, c_, out.dxx);
+      contract(geometry.dxy, c_, out.dxy);
+      contract(geometry.dyy, c_, out.dyy);
+      if (geometry.dzz.size() > 0) {
+        contract(geometry.dxz, c_, out.dxz);
+        contract(geometry.dyz, c_, out.dyz);
+        contract(geometry.dzz, c_, out.dzz);
+      }
+    }
+  }
+  void evaluate_geometry(int e, const QuadratureRule& points, PointValues& out) override {
+    inner_->evaluate_geometry(part_.elements_[e], points, out);
+    renumber(e, out);
+  }
+  void integrate_values(int e, const QuadratureRule& points, const PointValues& geometry,
+                        const Eigen::VectorXd& weights, Eigen::VectorXd& local) override {
+    inner_->integrate_values(part_.elements_[e], points, geometry, weights, local);
+  }
+
+ private:
+  void renumber(int e, PointValues& out) const {
+    const int* d = part_.dofs_.data() + part_.dof_offsets_[e];
+    out.dofs.assign(d, part_.dofs_.data() + part_.dof_offsets_[e + 1]);
+  }
+  const SpacePart& part_;
+  std::unique_ptr<Space::Evaluator> inner_;
+  Eigen::VectorXd c_;
+};
+
+SpacePart::SpacePart(std::shared_ptr<const Space> whole, std::vector<int> elements, int owned)
+    : whole_(std::move(whole)), elements_(std::move(elements)), owned_(owned < 0 ? static_cast<int>(elements_.size()) : owned) {
+  const Space& w = *whole_;
+  std::vector<int> dofs;
+  for (int e : elements_) {
+    w.element_dofs(e, dofs);
+    global_dofs_.insert(global_dofs_.end(), dofs.begin(), dofs.end());
+  }
+  std::sort(global_dofs_.begin(), global_dofs_.end());
+  global_dofs_.erase(std::unique(global_dofs_.begin(), global_dofs_.end()), global_dofs_.end());
+  dof_offsets_.reserve(elements_.size() + 1);
+  dof_offsets_.push_back(0);
+  for (int e : elements_) {
+    w.element_dofs(e, dofs);
+    for (int d : dofs) dofs_.push_back(local_dof(d));
+    dof_offsets_.push_back(static_cast<int>(dofs_.size()));
+  }
+
+  // The part's element of each of the whole's elements that it holds (for its edges).
+  std::vector<std::pair<int, int>> local_of;
+  local_of.reserve(elements_.size());
+  for (int e = 0; e < static_cast<int>(elements_.size()); ++e) local_of.emplace_back(elements_[e], e);
+  std::sort(local_of.begin(), local_of.end());
+  const auto local_element = [&](int global) {
+    const auto it = std::lower_bound(local_of.begin(), local_of.end(), std::make_pair(global, -1));
+    return it != local_of.end() && it->first == global ? it->second : -1;
+  };
+  const auto restrict_edges = [&](const std::vector<BoundaryEdge>& edges) {
+    std::vector<BoundaryEdge> kept;
+    for (const BoundaryEdge& b : edges)
+      if (const int e = local_element(b.element); e >= 0) kept.push_back({e, b.local_edge});
+    return kept;
+  };
+  SpaceFacts facts = w.facts();
+  facts.dimension = static_cast<int>(global_dofs_.size());
+  facts.num_elements = static_cast<int>(elements_.size());
+  if (w.facts().cell_shapes.size() > 1) {
+    facts.cell_shapes.clear();
+    for (int e : elements_) facts.cell_shapes.push_back(w.cell_shape(e));
+  }
+  for (auto& part : facts.boundary_parts) part.second = restrict_edges(part.second);
+  facts.all_boundary_edges = restrict_edges(facts.all_boundary_edges);
+  set_facts(std::move(facts));
+}
+
+int SpacePart::local_dof(int global) const {
+  const auto it = std::lower_bound(global_dofs_.begin(), global_dofs_.end(), global);
+  return it != global_dofs_.end() && *it == global ? static_cast<int>(it - global_dofs_.begin()) : -1;
+}
+
+std::unique_ptr<Space::Evaluator> SpacePart::make_evaluator() const { return std::make_unique<PartEvaluator>(*this); }
+
+void SpacePart::element_dofs(int element, std::vector<int>& out) const {
+  out.assign(dofs_.begin() + dof_offsets_[element], dofs_.begin() + dof_offsets_[element + 1]);
+}
+
+RulePtr SpacePart::quadrature(int element, int degree) const { return whole_->quadrature(elements_[element], degree); }
+
+RulePtr SpacePart::edge_quadrature(int element, int edge, int degree) const {
+  return whole_->edge_quadrature(elements_[element], edge, degree);
+}
+
+std::vector<InteriorEdge> SpacePart::interior_edges() const {
+  std::vector<std::pair<int, int>> local_of;
+  for (int e = 0; e < static_cast<int>(elements_.size()); ++e) local_of.emplace_back(elements_[e], e);
+  std::sort(local_of.begin(), local_of.end());
+  const auto local_element = [&](int global) {
+    const auto it = std::lower_bound(local_of.begin(), local_of.end(), std::make_pair(global, -1));
+    return it != local_of.end() && it->first == global ? it->second : -1;
+  };
+  std::vector<InteriorEdge> edges;
+  for (InteriorEdge edge : whole_->interior_edges()) {
+    const int a = local_element(edge.element_a), b = local_element(edge.element_b);
+    if (a < 0 || b < 0) continue;
+    edge.element_a = a;
+    edge.element_b = b;
+    edges.push_back(edge);
+  }
+  return edges;
+}
+
+bool SpacePart::PartClosedForms::rounded(int element, BilinearForm form, Eigen::MatrixXd& local) const {
+  return part_.whole_->closed_forms()->element_matrix(part_.elements_[element], form, local);
+}
+
+bool SpacePart::PartClosedForms::extended(int element, BilinearForm form, LongDoubleMatrix& local) const {
+  return part_.whole_->closed_forms()->element_matrix(part_.elements_[element], form, local);
+}
+
+bool SpacePart::PartClosedForms::double_double(int element, BilinearForm form, DoubleDoubleMatrix& local) const {
+  return part_.whole_->closed_forms()->element_matrix(part_.elements_[element], form, local);
+}
+
+void SpacePart::PartClosedForms::prepare_double_double(BilinearForm form) const {
+  part_.whole_->closed_forms()->prepare<DoubleDoubleMatrix>(form);
+}
+
+const DoubleDoubleMatrix* SpacePart::PartClosedForms::shared_double_double(int element, BilinearForm form) const {
+  return part_.whole_->closed_forms()->shared<DoubleDoubleMatrix>(part_.elements_[element], form);
+}
+
+}  // namespace iga
