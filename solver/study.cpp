@@ -284,8 +284,6 @@ StudyResult run_study(const StudySettings& settings, const ProgressSink& progres
                memory_model(settings.solver, settings.petsc));  // before assembly
     progress(tag + "space: " + std::to_string(space->dimension()) + " dofs, " +
              std::to_string(space->num_elements()) + " elements (" + format_seconds(t_space) + ")");
-    // Quadrature points miss poles on mesh lines; new vertices and edges come with every level.
-    check_data_finite(*space, settings.problem);
 
     // Under PETSc each rank works on its part of the space (rank_part.hpp) where the problem
     // allows it; eigenproblems, adaptive studies, level differences and the matrix export (the
@@ -300,6 +298,10 @@ StudyResult run_study(const StudySettings& settings, const ProgressSink& progres
     }
     const Space& work = part ? static_cast<const Space&>(*part) : *space;
     const WorkShare share = part ? rank_share(&own) : WorkShare{};
+    // Quadrature points miss poles on mesh lines; new vertices and edges come with every level.
+    // On parts each rank checks its own (and an error on one reaches all).
+    if (part) on_every_rank([&] { check_data_finite(work, settings.problem); });
+    else check_data_finite(*space, settings.problem);
     DiscreteSolution sol = solve_problem(work, settings.problem, settings.solver,
                                          [&](const std::string& msg) { progress(tag + msg); }, settings.petsc);
     sol.result.level = level;

@@ -53,3 +53,4 @@ TEST(ElementPartition, BalancedAndCompact) {
 }
 
 }  // namespace
+}  // namespace iga

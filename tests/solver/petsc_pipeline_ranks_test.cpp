@@ -16,6 +16,8 @@
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -24,6 +26,7 @@
 #include "assembly/error_norms.hpp"
 #include "solver/petsc_session.hpp"
 #include "solver/petsc_settings.hpp"
+#include "solver/rank_part.hpp"
 #include "solver/solve_problem.hpp"
 #include "tests/support/rerun_under_mpirun.hpp"
 #include "tests/support/test_support.hpp"
@@ -94,6 +97,55 @@ space: {type: surface, degree: 3}
     EXPECT_LT(difference, 1e-12);
     EXPECT_NEAR(*p.result.l2, *serial.result.l2, 1e-10 * *serial.result.l2);
     EXPECT_NEAR(*p.result.h1, *serial.result.h1, 1e-10 * *serial.result.h1);
+  }
+}
+
+// Each rank on its part of the space (rank_part.hpp): only its own elements, the boundary band and
+// (for G1 jumps) its neighbours, the functions renumbered. The coefficients each rank gets back are
+// the serial solution's at the part's functions, the errors (summed over the ranks) the serial ones,
+// and the counts those of the whole problem.
+TEST(PetscParts, EachRankSolvesOnItsPartAndGetsTheSerialSolutionOnTheRanksOfThisRun) {
+  if (!petsc_available()) GTEST_SKIP() << "built without PETSc";
+  for (const char* yaml : {kPlate, R"yaml(
+problem: {pde: laplace_beltrami, exact: "x*y + sin(z) + x", boundary: {all: dirichlet}}
+domain: {type: surface, mesh: height_field}
+space: {type: surface, degree: 3}
+)yaml",
+                           R"yaml(
+problem: {pde: biharmonic, exact: "sin(2*x + 0.3)*cos(3*y)", boundary: {all: clamped}}
+domain: {type: multipatch, name: 3p_square}
+space: {type: g1, degree: 5}
+)yaml"}) {
+    SCOPED_TRACE(yaml);
+    const ProblemSpec problem = test::problem_from_yaml(yaml);
+    const SpacePtr space = test::space_from_yaml(yaml, 2);
+    ensure_petsc_initialised();  // the ranks are known from here on
+    const std::shared_ptr<const SpacePart> part = rank_part(space, mpi_rank(), mpi_size());
+    ASSERT_EQ(mpi_size(), test::expected_ranks("IGA_PLATE_TEST_RANKS"));
+    PetscSettings petsc = default_petsc_settings(problem.pde);
+    petsc.ksp = "preonly";
+    petsc.pc = "mumps";
+    const DiscreteSolution p = solve_problem(*part, problem, SolverKind::petsc, {}, petsc);
+    const DiscreteSolution serial = solve_problem(*space, problem, SolverKind::cholmod);
+    ASSERT_EQ(p.coefficients.size(), part->dimension());
+    double difference = 0;
+    for (int i = 0; i < part->dimension(); ++i)
+      difference = std::max(difference, std::abs(p.coefficients(i) - serial.coefficients(part->global_dofs()[i])));
+    difference /= serial.coefficients.cwiseAbs().maxCoeff();
+    std::printf("rank %d of %d: part of %d of %d functions (%d of %d elements own), L2 %.6e (serial %.6e), "
+                "coefficients differ by %.1e\n",
+                mpi_rank(), mpi_size(), part->dimension(), space->dimension(), part->owned_elements(),
+                space->num_elements(), *p.result.l2, *serial.result.l2, difference);
+    EXPECT_EQ(p.result.dofs, serial.result.dofs);
+    EXPECT_EQ(p.result.elements, serial.result.elements);
+    EXPECT_EQ(p.result.free_dofs, serial.result.free_dofs);
+    if (mpi_size() > 1) EXPECT_LT(part->dimension(), space->dimension());
+    // Two factorizations of one system (conditioned like h⁻⁴ for the plates): round-off apart.
+    EXPECT_LT(difference, 1e-10);
+    // The plate's exact solution is in the space: errors at round-off there (1e-15), compared absolutely.
+    EXPECT_NEAR(*p.result.l2, *serial.result.l2, 1e-10 * *serial.result.l2 + 1e-13);
+    EXPECT_NEAR(*p.result.h1, *serial.result.h1, 1e-10 * *serial.result.h1 + 1e-13);
+    if (serial.result.g1_jump) EXPECT_LT(*p.result.g1_jump, 1e-8);
   }
 }
 
