@@ -53,14 +53,14 @@ class ElementSubsetView final : public Space {
 
   class SubsetEvaluator final : public Evaluator {
    public:
-    SubsetEvaluator(std::unique_ptr<Evaluator> inner, const std::vector<int>& elements)
-        : inner_(std::move(inner)), elements_(elements) {}
+    SubsetEvaluator(const Space& view, std::unique_ptr<Evaluator> inner, const std::vector<int>& elements)
+        : Evaluator(view), inner_(std::move(inner)), elements_(elements) {}
     void evaluate(int e, const QuadratureRule& points, unsigned flags, PointValues& out) override {
       inner_->evaluate(elements_[e], points, flags, out);
     }
-    void evaluate_function(int e, const QuadratureRule& points, const Eigen::VectorXd& coefficients, unsigned flags,
-                           PointValues& geometry, FunctionValues& out) override {
-      inner_->evaluate_function(elements_[e], points, coefficients, flags, geometry, out);
+    void evaluate_element_function(int e, const QuadratureRule& points, const Eigen::VectorXd& element_coefficients,
+                                   unsigned flags, PointValues& geometry, FunctionValues& out) override {
+      inner_->evaluate_element_function(elements_[e], points, element_coefficients, flags, geometry, out);
     }
     void evaluate_geometry(int e, const QuadratureRule& points, PointValues& out) override {
       inner_->evaluate_geometry(elements_[e], points, out);
@@ -76,7 +76,7 @@ class ElementSubsetView final : public Space {
   };
 
   std::unique_ptr<Evaluator> make_evaluator() const override {
-    return std::make_unique<SubsetEvaluator>(space_.make_evaluator(), elements_);
+    return std::make_unique<SubsetEvaluator>(*this, space_.make_evaluator(), elements_);
   }
   void element_dofs(int e, std::vector<int>& out) const override { space_.element_dofs(elements_[e], out); }
   RulePtr quadrature(int e, int degree) const override { return space_.quadrature(elements_[e], degree); }

@@ -251,6 +251,13 @@ void PetscBackend::assemble(const Formulation& f, const Constraints& c, const Ei
   if (say) say("assembling (" + std::to_string(d_.rows()) + " unknowns, in extended precision)");
   on_every_rank([&] { extended_->add_load(load); });
   d_.matrix(f, f.terms(), extended_.get(), p_.A);
+  if (d_.ranks() > 1 && say) {
+    char share[32];
+    std::snprintf(share, sizeof share, "%.3g %%", 100.0 * static_cast<double>(d_.off_rank_couplings()) /
+                                                       static_cast<double>(std::max(1LL, d_.all_couplings())));
+    say("matrix couplings between ranks: " + std::to_string(d_.off_rank_couplings()) + " of " +
+        std::to_string(d_.all_couplings()) + " (" + share + ", counted from the preallocation)");
+  }
   check(MatCreateVecs(p_.A, &p_.x, &p_.b), "MatCreateVecs");
   // The right-hand side Tᵀ(b − A g), rounded once from the double-double sums over the ranks.
   set_owned(p_.b, extended_->owned_rows(nullptr));

@@ -154,35 +154,74 @@ void PetscDistribution::lay_out(const Constraints& c, const std::function<void(c
                              std::to_string(owned_rows_) + " of " + std::to_string(rows_));
 }
 
+void PetscDistribution::preallocation(std::vector<PetscInt>& d_nnz, std::vector<PetscInt>& o_nnz) const {
+  // Each rank counts, for every unknown its elements couple, the columns they couple it with, in
+  // and outside the diagonal block of the row's owner; the owner adds the counts of all ranks. A
+  // row on the cut between ranks is counted by each side, so its count may exceed its columns by
+  // the couplings both sides see: an upper bound there, exact elsewhere.
+  const int n = static_cast<int>(row_.size());
+  std::vector<PetscInt> first(ranks_ + 1, 0);
+  MPI_Allgather(&owned_rows_, 1, MPIU_INT, first.data() + 1, 1, MPIU_INT, PETSC_COMM_WORLD);
+  for (int r = 0; r < ranks_; ++r) first[r + 1] += first[r];
+  std::vector<PetscInt> leaf_d(n, 0), leaf_o(n, 0);
+  on_every_rank([&] {
+    // The unknowns of each of this rank's elements (CSR), and its transpose.
+    std::vector<int> offsets{0}, unknowns, dofs, local;
+    for (int e : mine_) {
+      element_unknowns(e, dofs, local, nullptr);
+      unknowns.insert(unknowns.end(), local.begin(), local.end());
+      offsets.push_back(static_cast<int>(unknowns.size()));
+    }
+    std::vector<int> start(n + 1, 0), elements_of(unknowns.size());
+    for (int k : unknowns) ++start[k + 1];
+    for (int k = 0; k < n; ++k) start[k + 1] += start[k];
+    std::vector<int> fill(start.begin(), start.end() - 1);
+    for (int i = 0; i + 1 < static_cast<int>(offsets.size()); ++i)
+      for (int p = offsets[i]; p < offsets[i + 1]; ++p) elements_of[fill[unknowns[p]]++] = i;
+    std::vector<PetscInt> columns;
+    for (int k = 0; k < n; ++k) {
+      if (start[k] == start[k + 1]) continue;
+      columns.clear();
+      for (int q = start[k]; q < start[k + 1]; ++q)
+        for (int p = offsets[elements_of[q]]; p < offsets[elements_of[q] + 1]; ++p) columns.push_back(row_[unknowns[p]]);
+      std::sort(columns.begin(), columns.end());
+      columns.erase(std::unique(columns.begin(), columns.end()), columns.end());
+      const int owner = static_cast<int>(std::upper_bound(first.begin(), first.end(), row_[k]) - first.begin()) - 1;
+      const auto lo = std::lower_bound(columns.begin(), columns.end(), first[owner]);
+      const auto hi = std::lower_bound(columns.begin(), columns.end(), first[owner + 1]);
+      leaf_d[k] = static_cast<PetscInt>(hi - lo);
+      leaf_o[k] = static_cast<PetscInt>(columns.size()) - leaf_d[k];
+    }
+  });
+  d_nnz.assign(owned_rows_, 0);
+  o_nnz.assign(owned_rows_, 0);
+  for (auto [leaf, root] : {std::pair{&leaf_d, &d_nnz}, std::pair{&leaf_o, &o_nnz}}) {
+    petsc_check(PetscSFReduceBegin(rows_sf_, MPIU_INT, leaf->data(), root->data(), MPI_SUM), "PetscSFReduce");
+    petsc_check(PetscSFReduceEnd(rows_sf_, MPIU_INT, leaf->data(), root->data(), MPI_SUM), "PetscSFReduce");
+  }
+  for (PetscInt r = 0; r < owned_rows_; ++r) {
+    d_nnz[r] = std::min(d_nnz[r], owned_rows_);
+    o_nnz[r] = std::min(o_nnz[r], rows_ - owned_rows_);
+  }
+  long long couplings[2] = {0, 0};  // across ranks, all
+  for (PetscInt r = 0; r < owned_rows_; ++r) {
+    couplings[0] += o_nnz[r];
+    couplings[1] += d_nnz[r] + o_nnz[r];
+  }
+  MPI_Allreduce(MPI_IN_PLACE, couplings, 2, MPI_LONG_LONG, MPI_SUM, PETSC_COMM_WORLD);
+  off_rank_couplings_ = couplings[0];
+  all_couplings_ = couplings[1];
+}
+
 void PetscDistribution::matrix(const Formulation& f, const std::vector<FormTerm>& terms, ExtendedResidual* extended,
                                Mat& A) const {
   petsc_check(MatCreate(PETSC_COMM_WORLD, &A), "MatCreate");
   petsc_check(MatSetSizes(A, owned_rows_, owned_rows_, rows_, rows_), "MatSetSizes");
   petsc_check(MatSetType(A, MATAIJ), "MatSetType");
-  // Exact preallocation from the element couplings, rows of other ranks included (PETSc's
-  // preallocator sends them to their owners).
-  Mat pre = nullptr;
-  petsc_check(MatCreate(PETSC_COMM_WORLD, &pre), "MatCreate");
-  petsc_check(MatSetSizes(pre, owned_rows_, owned_rows_, rows_, rows_), "MatSetSizes");
-  petsc_check(MatSetType(pre, MATPREALLOCATOR), "MatSetType");
-  petsc_check(MatSetUp(pre), "MatSetUp");
-  on_every_rank([&] {
-    std::vector<int> dofs, unknowns;
-    std::vector<PetscInt> rows;
-    std::vector<PetscScalar> zeros;
-    for (int e : mine_) {
-      element_unknowns(e, dofs, unknowns, nullptr);
-      rows.resize(unknowns.size());
-      for (std::size_t i = 0; i < unknowns.size(); ++i) rows[i] = row_[unknowns[i]];
-      zeros.assign(rows.size() * rows.size(), 0.0);
-      const PetscInt m = static_cast<PetscInt>(rows.size());
-      petsc_check(MatSetValues(pre, m, rows.data(), m, rows.data(), zeros.data(), INSERT_VALUES), "MatSetValues");
-    }
-  });
-  petsc_check(MatAssemblyBegin(pre, MAT_FINAL_ASSEMBLY), "MatAssemblyBegin");
-  petsc_check(MatAssemblyEnd(pre, MAT_FINAL_ASSEMBLY), "MatAssemblyEnd");
-  petsc_check(MatPreallocatorPreallocate(pre, PETSC_TRUE, A), "MatPreallocatorPreallocate");
-  MatDestroy(&pre);
+  std::vector<PetscInt> d_nnz, o_nnz;
+  preallocation(d_nnz, o_nnz);
+  petsc_check(MatSeqAIJSetPreallocation(A, 0, d_nnz.data()), "MatSeqAIJSetPreallocation");
+  petsc_check(MatMPIAIJSetPreallocation(A, 0, d_nnz.data(), 0, o_nnz.data()), "MatMPIAIJSetPreallocation");
   petsc_check(MatSetOption(A, MAT_NEW_NONZERO_ALLOCATION_ERR, PETSC_TRUE), "MatSetOption");
   petsc_check(MatSetOption(A, MAT_SYMMETRIC, PETSC_TRUE), "MatSetOption");
   petsc_check(MatSetOption(A, MAT_SPD, PETSC_TRUE), "MatSetOption");

@@ -77,6 +77,10 @@ class PetscDistribution {
   /// The whole space's number of functions (the part's are numbered within it).
   long long whole_dimension() const { return whole_dimension_; }
   long long whole_elements() const { return whole_elements_; }
+  /// Matrix couplings between unknowns of different ranks, and all (from the last matrix's
+  /// preallocation: an upper bound on rows at the cut).
+  long long off_rank_couplings() const { return off_rank_couplings_; }
+  long long all_couplings() const { return all_couplings_; }
   int rank() const { return rank_; }
   int ranks() const { return ranks_; }
 
@@ -84,6 +88,8 @@ class PetscDistribution {
   /// The unknowns this rank's own elements couple (sorted), and T_e with
   /// u|element = values|element + T_e u_unknowns (rows: the element's functions).
   void element_unknowns(int element, std::vector<int>& dofs, std::vector<int>& unknowns, Eigen::MatrixXd* T_e) const;
+  /// Nonzeros of the rows this rank owns in and outside its diagonal block (collective).
+  void preallocation(std::vector<PetscInt>& d_nnz, std::vector<PetscInt>& o_nnz) const;
 
   const Space& space_;
   const int rank_, ranks_;
@@ -98,6 +104,7 @@ class PetscDistribution {
   PetscInt owned_rows_ = 0, rows_ = 0;
   /// Leaves: the free unknowns of `space`; roots: the rows this rank owns.
   PetscSF rows_sf_ = nullptr;
+  mutable long long off_rank_couplings_ = 0, all_couplings_ = 0;
 };
 
 }  // namespace iga

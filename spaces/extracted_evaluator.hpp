@@ -6,7 +6,7 @@
 /// covariant Hessian (spaces/surface_values.hpp), the normal and the mean curvature. Templated on
 /// the core so that the per-element calls are direct; what is computed follows the flags.
 ///
-/// A space evaluated by it returns `std::make_unique<ExtractedEvaluator<Core>>(Core{...})` from
+/// A space evaluated by it returns `std::make_unique<ExtractedEvaluator<Core>>(*this, Core{...})` from
 /// make_evaluator and writes no evaluator of its own.
 
 #include <map>
@@ -36,7 +36,7 @@ class ExtractedEvaluator final : public Space::Evaluator {
 
  public:
   /// `core` is small (references into its space, which outlives the evaluator).
-  explicit ExtractedEvaluator(Core core) : core_(std::move(core)) {}
+  ExtractedEvaluator(const Space& space, Core core) : Space::Evaluator(space), core_(std::move(core)) {}
 
   void evaluate(int element, const QuadratureRule& rule, unsigned flags, PointValues& out) override {
     const LocalTables& t = tables(element, rule, basis_order(flags));
@@ -53,15 +53,14 @@ class ExtractedEvaluator final : public Space::Evaluator {
   /// u_h = Σ c_i N_i with the coefficients contracted first: C_eᵀ c is one local vector, then one
   /// row per table (instead of extracting every active function at every point). ∇Δu_h and Δ²u_h
   /// only from a core that has them (higher_derivatives, below).
-  void evaluate_function(int element, const QuadratureRule& rule, const Eigen::VectorXd& coefficients, unsigned flags,
-                         PointValues& geometry, FunctionValues& out) override {
+  void evaluate_element_function(int element, const QuadratureRule& rule, const Eigen::VectorXd& element_coefficients,
+                                 unsigned flags, PointValues& geometry, FunctionValues& out) override {
     const unsigned higher = flags & (update_laplacian_gradient | update_bilaplacian);
     if (higher && !has_higher_derivatives)
       throw std::logic_error("evaluate_function: this space provides derivatives up to order 2 only");
     const LocalTables& t = tables(element, rule, basis_order(flags));
     const std::vector<int>& dofs = core_.active(element);
-    Eigen::VectorXd c(dofs.size());
-    for (std::size_t i = 0; i < dofs.size(); ++i) c(i) = coefficients(dofs[i]);
+    Eigen::VectorXd c = element_coefficients;
     if constexpr (!Core::identity) {  // the local coefficients C_eᵀ c
       local_.noalias() = core_.extraction(element).transpose() * c;
       c.swap(local_);

@@ -53,6 +53,14 @@ void integration_weights(const QuadratureRule& rule, const PointValues& geometry
   for (int k = 0; k < q; ++k) jxw(k) = rule.weights[k] * std::abs(geometry.jacobian[k].determinant());
 }
 
+void Space::Evaluator::evaluate_function(int element, const QuadratureRule& points, const Eigen::VectorXd& coefficients,
+                                         unsigned flags, PointValues& geometry, FunctionValues& out) {
+  space_.element_dofs(element, dofs_);
+  element_coefficients_.resize(static_cast<Eigen::Index>(dofs_.size()));
+  for (std::size_t i = 0; i < dofs_.size(); ++i) element_coefficients_(static_cast<Eigen::Index>(i)) = coefficients(dofs_[i]);
+  evaluate_element_function(element, points, element_coefficients_, flags, geometry, out);
+}
+
 std::vector<std::string> Space::boundary_names() const {
   std::vector<std::string> names;
   for (const auto& part : facts_.boundary_parts) names.push_back(part.first);

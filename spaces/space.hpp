@@ -148,6 +148,7 @@ class Space : public std::enable_shared_from_this<Space> {
   /// keyed by the address of the rule it is given (rules are shared through RulePtr).
   class Evaluator {
    public:
+    explicit Evaluator(const Space& space) : space_(space) {}
     virtual ~Evaluator() = default;
     /// Fill out.dofs, out.x, out.jacobian and the arrays requested by `flags` at the reference
     /// points of `points` (weights are ignored).
@@ -155,10 +156,17 @@ class Space : public std::enable_shared_from_this<Space> {
 
     /// u_h = Σ_i coefficients(i) N_i (coefficients: one per global function, dimension() entries)
     /// and, per `flags`, its physical gradient and Hessian at the points of `points`. `geometry`
-    /// receives at least dofs, x and jacobian (other arrays are scratch). Evaluators contract the
-    /// coefficients first (one table product instead of one per active function).
-    virtual void evaluate_function(int element, const QuadratureRule& points, const Eigen::VectorXd& coefficients,
-                                   unsigned flags, PointValues& geometry, FunctionValues& out) = 0;
+    /// receives at least dofs, x and jacobian (other arrays are scratch). Takes the element's
+    /// coefficients and calls evaluate_element_function.
+    void evaluate_function(int element, const QuadratureRule& points, const Eigen::VectorXd& coefficients,
+                           unsigned flags, PointValues& geometry, FunctionValues& out);
+    /// The same from the coefficients of the element's active functions alone (element_dofs
+    /// order), so that a caller holding only some coefficients (a SpacePart's) takes the same
+    /// path. Evaluators contract the coefficients first (one table product instead of one per
+    /// active function).
+    virtual void evaluate_element_function(int element, const QuadratureRule& points,
+                                           const Eigen::VectorXd& element_coefficients, unsigned flags,
+                                           PointValues& geometry, FunctionValues& out) = 0;
 
     /// Geometry for integrate_values: fills out.dofs, out.x and out.jacobian, plus whatever the
     /// space's integrate_values reads from `out`.
@@ -169,6 +177,11 @@ class Space : public std::enable_shared_from_this<Space> {
     /// output of evaluate_geometry(element, points, geometry).
     virtual void integrate_values(int element, const QuadratureRule& points, const PointValues& geometry,
                                   const Eigen::VectorXd& weights, Eigen::VectorXd& local) = 0;
+
+   private:
+    const Space& space_;
+    std::vector<int> dofs_;  // scratch of evaluate_function
+    Eigen::VectorXd element_coefficients_;
   };
   virtual std::unique_ptr<Evaluator> make_evaluator() const = 0;
 

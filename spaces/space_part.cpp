@@ -1,55 +1,24 @@
 #include "spaces/space_part.hpp"
 
 #include <algorithm>
-#include <stdexcept>
 
 namespace iga {
 
-namespace {
-
-/// out = Σ_i c(dofs_i) · table(i, :), for the rows of one derivative array.
-void contract(const Eigen::MatrixXd& table, const Eigen::VectorXd& c, Eigen::VectorXd& out) {
-  out.noalias() = table.transpose() * c;
-}
-
-}  // namespace
-
-/// Asks the whole space's evaluator for the whole's element and renumbers the functions. A
-/// discrete function is contracted here from the basis values (its coefficients are the part's,
-/// which the whole's evaluate_function cannot index).
+/// Asks the whole space's evaluator for the whole's element and renumbers the functions (the
+/// element's coefficients are in the same order for both).
 class SpacePart::PartEvaluator final : public Space::Evaluator {
  public:
-  PartEvaluator(const SpacePart& part) : part_(part), inner_(part.whole().make_evaluator()) {}
+  explicit PartEvaluator(const SpacePart& part)
+      : Space::Evaluator(part), part_(part), inner_(part.whole().make_evaluator()) {}
 
   void evaluate(int e, const QuadratureRule& points, unsigned flags, PointValues& out) override {
     inner_->evaluate(part_.elements_[e], points, flags, out);
     renumber(e, out);
   }
-  void evaluate_function(int e, const QuadratureRule& points, const Eigen::VectorXd& coefficients, unsigned flags,
-                         PointValues& geometry, FunctionValues& out) override {
-    if (flags & (update_laplacian_gradient | update_bilaplacian))
-      throw std::logic_error("SpacePart: third and fourth derivatives of a discrete function are not available on a part");
-    const unsigned basis = (flags & (update_values | update_gradients | update_hessians | update_surface_curvature)) |
-                           update_values;
-    evaluate(e, points, basis, geometry);
-    c_.resize(geometry.num_functions());
-    for (int i = 0; i < geometry.num_functions(); ++i) c_(i) = coefficients(geometry.dofs[i]);
-    if (flags & update_values) contract(geometry.value, c_, out.value);
-    if (flags & update_gradients) {
-      contract(geometry.dx, c_, out.dx);
-      contract(geometry.dy, c_, out.dy);
-      if (geometry.dz.size() > 0) contract(geometry.dz, c_, out.dz);
-    }
-    if (flags & update_hessians) {
-      contract(geometry.dxx, c_, out.dxx);
-      contract(geometry.dxy, c_, out.dxy);
-      contract(geometry.dyy, c_, out.dyy);
-      if (geometry.dzz.size() > 0) {
-        contract(geometry.dxz, c_, out.dxz);
-        contract(geometry.dyz, c_, out.dyz);
-        contract(geometry.dzz, c_, out.dzz);
-      }
-    }
+  void evaluate_element_function(int e, const QuadratureRule& points, const Eigen::VectorXd& element_coefficients,
+                                 unsigned flags, PointValues& geometry, FunctionValues& out) override {
+    inner_->evaluate_element_function(part_.elements_[e], points, element_coefficients, flags, geometry, out);
+    renumber(e, geometry);
   }
   void evaluate_geometry(int e, const QuadratureRule& points, PointValues& out) override {
     inner_->evaluate_geometry(part_.elements_[e], points, out);
@@ -67,7 +36,6 @@ class SpacePart::PartEvaluator final : public Space::Evaluator {
   }
   const SpacePart& part_;
   std::unique_ptr<Space::Evaluator> inner_;
-  Eigen::VectorXd c_;
 };
 
 SpacePart::SpacePart(std::shared_ptr<const Space> whole, std::vector<int> elements, int owned)

@@ -30,13 +30,13 @@ bool contains_breakpoints(const KnotVector& space, const KnotVector& geometry) {
 
 class TensorBSplineSpace::TensorEvaluator final : public Space::Evaluator {
  public:
-  explicit TensorEvaluator(const TensorBSplineSpace& space) : space_(space) {}
+  explicit TensorEvaluator(const TensorBSplineSpace& space) : Space::Evaluator(space), space_(space) {}
 
   void evaluate(int element, const QuadratureRule& rule, unsigned flags, PointValues& out) override;
   /// u_h = Σ c_ab N_a(u) M_b(v) by sum factorization: the reference derivatives of u_h are
   /// tu_dᵀ C tv_e at each point, with no table of every active function (the error norms' path).
-  void evaluate_function(int element, const QuadratureRule& rule, const Eigen::VectorXd& coefficients, unsigned flags,
-                         PointValues& geometry, FunctionValues& out) override;
+  void evaluate_element_function(int element, const QuadratureRule& rule, const Eigen::VectorXd& local, unsigned flags,
+                                 PointValues& geometry, FunctionValues& out) override;
   /// Points and Jacobians alone, without the basis (data checks, VTK points, outlines).
   void evaluate_geometry(int element, const QuadratureRule& rule, PointValues& out) override;
   /// Σ_q w_q N_a(u_q) M_b(v_q) = (tu diag(w) tvᵀ)(a, b), by sum factorization (load vectors).
@@ -141,9 +141,9 @@ void TensorBSplineSpace::TensorEvaluator::evaluate(int element, const Quadrature
   push_forward(jets_, ref_, flags, out);
 }
 
-void TensorBSplineSpace::TensorEvaluator::evaluate_function(int element, const QuadratureRule& rule,
-                                                            const Eigen::VectorXd& coefficients, unsigned flags,
-                                                            PointValues& geometry, FunctionValues& out) {
+void TensorBSplineSpace::TensorEvaluator::evaluate_element_function(int element, const QuadratureRule& rule,
+                                                                    const Eigen::VectorXd& local, unsigned flags,
+                                                                    PointValues& geometry, FunctionValues& out) {
   if (flags & (update_laplacian_gradient | update_bilaplacian))
     throw std::logic_error("evaluate_function: this space provides derivatives up to order 2 only");
   const TensorBSplineSpace& s = space_;
@@ -156,7 +156,7 @@ void TensorBSplineSpace::TensorEvaluator::evaluate_function(int element, const Q
   // C(a, b) = c of the active function a + b (pu + 1), the order of element_dofs.
   Eigen::MatrixXd c(pu + 1, pv + 1);
   for (int b = 0; b <= pv; ++b)
-    for (int a = 0; a <= pu; ++a) c(a, b) = coefficients(geometry.dofs[a + b * (pu + 1)]);
+    for (int a = 0; a <= pu; ++a) c(a, b) = local(a + b * (pu + 1));
   Eigen::MatrixXd cv[3];  // C tv_d
   for (int d = 0; d <= nd; ++d) cv[d].noalias() = c * tv_[d];
   auto reference = [&](int du, int dv) -> Eigen::MatrixXd { return tu_[du].cwiseProduct(cv[dv]).colwise().sum(); };
@@ -298,7 +298,7 @@ std::unique_ptr<Space::Evaluator> TensorBSplineSpace::make_evaluator() const {
 }
 
 std::unique_ptr<Space::Evaluator> TensorBSplineSpace::make_generic_evaluator() const {
-  return std::make_unique<ExtractedEvaluator<Core>>(Core{*this, {}});
+  return std::make_unique<ExtractedEvaluator<Core>>(*this, Core{*this, {}});
 }
 
 int TensorBSplineSpace::regularity() const {

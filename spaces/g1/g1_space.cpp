@@ -84,7 +84,7 @@ std::vector<InteriorEdge> G1Space::interior_edges() const {
 }
 
 std::unique_ptr<Space::Evaluator> G1Space::make_evaluator() const {
-  return std::make_unique<ExtractedEvaluator<G1Core>>(G1Core{*mesh_, basis_});
+  return std::make_unique<ExtractedEvaluator<G1Core>>(*this, G1Core{*mesh_, basis_});
 }
 
 RulePtr G1Space::quadrature(int element, int degree) const {

@@ -156,7 +156,7 @@ G14Space::G14Space(const PatchMesh& coarse, const G14Options& options) : options
 }
 
 std::unique_ptr<Space::Evaluator> G14Space::make_evaluator() const {
-  return std::make_unique<ExtractedEvaluator<G14Core>>(G14Core{basis_, geometry_});
+  return std::make_unique<ExtractedEvaluator<G14Core>>(*this, G14Core{basis_, geometry_});
 }
 
 std::vector<InteriorEdge> quad_interior_edges(const QuadTopology& t) {

@@ -145,7 +145,7 @@ G14SurfaceSpace::G14SurfaceSpace(const QuadTopology& coarse, const std::vector<E
 }
 
 std::unique_ptr<Space::Evaluator> G14SurfaceSpace::make_evaluator() const {
-  return std::make_unique<ExtractedEvaluator<Core>>(Core{surface_});
+  return std::make_unique<ExtractedEvaluator<Core>>(*this, Core{surface_});
 }
 
 std::vector<std::pair<std::string, std::string>> G14SurfaceSpace::make_parameters() const {

@@ -14,7 +14,7 @@ namespace {
 class GraphEvaluator final : public Space::Evaluator {
  public:
   explicit GraphEvaluator(const GraphSurfaceSpace& space)
-      : space_(space), planar_(space.planar().make_evaluator()) {}
+      : Space::Evaluator(space), space_(space), planar_(space.planar().make_evaluator()) {}
 
   void evaluate(int element, const QuadratureRule& rule, unsigned flags, PointValues& out) override {
     const bool second = flags & (update_hessians | update_surface_curvature);
@@ -28,14 +28,14 @@ class GraphEvaluator final : public Space::Evaluator {
     if (flags & update_hessians) complete_surface_hessians(jets_, p_.dx, p_.dy, {p_.dxx, p_.dxy, p_.dyy}, out);
   }
 
-  void evaluate_function(int element, const QuadratureRule& rule, const Eigen::VectorXd& coefficients, unsigned flags,
-                         PointValues& geometry, FunctionValues& out) override {
+  void evaluate_element_function(int element, const QuadratureRule& rule, const Eigen::VectorXd& local, unsigned flags,
+                                 PointValues& geometry, FunctionValues& out) override {
     if (flags & (update_laplacian_gradient | update_bilaplacian))
       throw std::logic_error("evaluate_function: a graph surface provides derivatives up to order 2 only");
     const bool second = flags & (update_hessians | update_surface_curvature);
     unsigned planar_flags = update_values | (flags & (update_gradients | update_hessians));
     if (flags & update_hessians) planar_flags |= update_gradients;
-    planar_->evaluate_function(element, rule, coefficients, planar_flags, p_, f_);
+    planar_->evaluate_element_function(element, rule, local, planar_flags, p_, f_);
     lift(flags, second, geometry);
     geometry.dofs = p_.dofs;
     out.value = f_.value;

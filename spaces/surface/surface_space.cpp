@@ -172,7 +172,7 @@ struct SurfaceBernsteinSpace::Core {
 };
 
 std::unique_ptr<Space::Evaluator> SurfaceBernsteinSpace::make_evaluator() const {
-  return std::make_unique<ExtractedEvaluator<Core>>(Core{*this});
+  return std::make_unique<ExtractedEvaluator<Core>>(*this, Core{*this});
 }
 
 }  // namespace iga

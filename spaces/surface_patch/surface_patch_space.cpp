@@ -118,7 +118,7 @@ void SurfacePatchSpace::element_jets(int e, const QuadratureRule& rule, bool sec
 }
 
 std::unique_ptr<Space::Evaluator> SurfacePatchSpace::make_evaluator() const {
-  return std::make_unique<ExtractedEvaluator<Core>>(Core{*this});
+  return std::make_unique<ExtractedEvaluator<Core>>(*this, Core{*this});
 }
 
 std::vector<InteriorEdge> SurfacePatchSpace::interior_edges() const {

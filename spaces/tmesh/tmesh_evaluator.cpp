@@ -95,7 +95,8 @@ struct TMeshSpace::Core {
 
 class TMeshSpace::TMeshEvaluator final : public Space::Evaluator {
  public:
-  explicit TMeshEvaluator(const TMeshSpace& space) : space_(space), generic_(Core{space, {}}) {}
+  explicit TMeshEvaluator(const TMeshSpace& space)
+      : Space::Evaluator(space), space_(space), generic_(space, Core{space, {}}) {}
 
   void evaluate(int element, const QuadratureRule& rule, unsigned flags, PointValues& out) override {
     generic_.evaluate(element, rule, flags, out);
@@ -119,13 +120,13 @@ class TMeshSpace::TMeshEvaluator final : public Space::Evaluator {
   }
 
   /// ∂x^a ∂y^b u_h(x_k) = hx^-a hy^-b Σ_l b_l ∂ξ^a ∂η^b φ_l(ξ_k).
-  void evaluate_function(int element, const QuadratureRule& rule, const Eigen::VectorXd& coefficients, unsigned flags,
-                         PointValues& geometry, FunctionValues& out) override {
+  void evaluate_element_function(int element, const QuadratureRule& rule, const Eigen::VectorXd& local, unsigned flags,
+                                 PointValues& geometry, FunctionValues& out) override {
     const LocalTables& t = generic_.tables(element, rule, basis_order(flags));
     evaluate_geometry(element, rule, geometry);
     const Eigen::Vector2d h = geometry.jacobian[0].diagonal();
     c_.resize(geometry.num_functions());
-    for (int a = 0; a < c_.size(); ++a) c_(a) = coefficients(geometry.dofs[a]);
+    for (int a = 0; a < c_.size(); ++a) c_(a) = local(a);
     b_.noalias() = space_.extraction().matrix[element].transpose() * c_;
     auto derivative = [&](int table, double scale, Eigen::VectorXd& v) {
       v.noalias() = scale * (t[table].transpose() * b_);
@@ -153,7 +154,7 @@ class TMeshSpace::TMeshEvaluator final : public Space::Evaluator {
 std::unique_ptr<Space::Evaluator> TMeshSpace::make_evaluator() const { return std::make_unique<TMeshEvaluator>(*this); }
 
 std::unique_ptr<Space::Evaluator> TMeshSpace::make_generic_evaluator() const {
-  return std::make_unique<ExtractedEvaluator<Core>>(Core{*this, {}});
+  return std::make_unique<ExtractedEvaluator<Core>>(*this, Core{*this, {}});
 }
 
 }  // namespace iga

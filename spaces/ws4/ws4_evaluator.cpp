@@ -12,7 +12,7 @@
 
 namespace iga::ws4 {
 
-Ws4Evaluator::Ws4Evaluator(const Ws4Space& space) : space_(space), generic_(space.make_generic_evaluator()) {}
+Ws4Evaluator::Ws4Evaluator(const Ws4Space& space) : Space::Evaluator(space), space_(space), generic_(space.make_generic_evaluator()) {}
 
 const Ws4Evaluator::RuleTables& Ws4Evaluator::tables(const QuadratureRule& rule) {
   auto it = cache_.find(&rule);
@@ -85,13 +85,13 @@ void Ws4Evaluator::evaluate_geometry(int element, const QuadratureRule& rule, Po
   fill_geometry(element, tables(rule), out);
 }
 
-void Ws4Evaluator::evaluate_function(int element, const QuadratureRule& rule, const Eigen::VectorXd& coefficients,
-                                     unsigned flags, PointValues& geometry, FunctionValues& out) {
+void Ws4Evaluator::evaluate_element_function(int element, const QuadratureRule& rule, const Eigen::VectorXd& local,
+                                             unsigned flags, PointValues& geometry, FunctionValues& out) {
   if (flags & (update_laplacian_gradient | update_bilaplacian))
     throw std::logic_error("evaluate_function: this space provides derivatives up to order 2 only");
   const RuleTables& t = tables(rule);
   fill_geometry(element, t, geometry);
-  for (int i = 0; i < Ws4Basis::size; ++i) c_(i) = coefficients(geometry.dofs[i]);
+  for (int i = 0; i < Ws4Basis::size; ++i) c_(i) = local(i);
   b_.noalias() = space_.extraction(element) * c_;
 
   // u_h on each region holding points (15 rows over the slots, computed orbit by orbit), then

@@ -39,8 +39,8 @@ class Ws4Evaluator final : public Space::Evaluator {
 
   /// Value, gradient and Hessian of Σ c_i N_i at the points of `rule`, piece by piece; geometry
   /// receives dofs, x and jacobian.
-  void evaluate_function(int element, const QuadratureRule& rule, const Eigen::VectorXd& coefficients,
-                         unsigned flags, PointValues& geometry, FunctionValues& out) override;
+  void evaluate_element_function(int element, const QuadratureRule& rule, const Eigen::VectorXd& local,
+                                 unsigned flags, PointValues& geometry, FunctionValues& out) override;
 
   /// dofs, x and jacobian of `element` at the points of `rule` (no basis values).
   void evaluate_geometry(int element, const QuadratureRule& rule, PointValues& out) override;

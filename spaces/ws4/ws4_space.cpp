@@ -156,7 +156,7 @@ void Ws4Space::compute_vertex_frames() {
 std::unique_ptr<Space::Evaluator> Ws4Space::make_evaluator() const { return std::make_unique<Ws4Evaluator>(*this); }
 
 std::unique_ptr<Space::Evaluator> Ws4Space::make_generic_evaluator() const {
-  return std::make_unique<ExtractedEvaluator<Core>>(Core{*this, {}});
+  return std::make_unique<ExtractedEvaluator<Core>>(*this, Core{*this, {}});
 }
 
 void Ws4Space::element_dofs(int element, std::vector<int>& out) const {

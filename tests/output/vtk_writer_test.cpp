@@ -117,7 +117,7 @@ class AffineLagrangeSpace : public Space {
   };
 
   std::unique_ptr<Evaluator> make_evaluator() const override {
-    return std::make_unique<ExtractedEvaluator<Core>>(Core{*this});
+    return std::make_unique<ExtractedEvaluator<Core>>(*this, Core{*this});
   }
   void element_dofs(int element, std::vector<int>& out) const override { out = elements_.at(element).dofs; }
   // The writer never integrates: these two throw so a test would notice if it started to.
