@@ -231,8 +231,29 @@ void PetscDistribution::matrix(const Formulation& f, const std::vector<FormTerm>
     Eigen::MatrixXd T;
     Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> K;
     // Tᵀ A T in double for the factorization; A itself, in double-double, for the residuals.
+    std::vector<int> kept;
     const auto add_element = [&](int e, const std::vector<int>& element_dofs, const DoubleDoubleMatrix& A_e) {
       if (extended) extended->add(element_dofs, A_e);
+      // Usually each function is an unknown or constrained (T selects): the free rows and columns
+      // of A_e as they are, without the products by T.
+      kept.clear();
+      rows.clear();
+      bool selects = true;
+      for (std::size_t i = 0; i < element_dofs.size() && selects; ++i) {
+        const int d = element_dofs[i];
+        const int first = basis_.outerIndexPtr()[d], count = basis_.outerIndexPtr()[d + 1] - first;
+        if (count == 0) continue;
+        selects = count == 1 && basis_.valuePtr()[first] == 1.0;
+        kept.push_back(static_cast<int>(i));
+        rows.push_back(row_[basis_.innerIndexPtr()[first]]);
+      }
+      if (selects) {
+        if (kept.empty()) return;
+        K = A_e.hi(kept, kept);
+        const PetscInt m = static_cast<PetscInt>(rows.size());
+        petsc_check(MatSetValues(A, m, rows.data(), m, rows.data(), K.data(), ADD_VALUES), "MatSetValues");
+        return;
+      }
       element_unknowns(e, dofs, local, &T);
       if (local.empty()) return;
       // Coefficient-wise products: Eigen's blocked ones would start a thread team per element.

@@ -1,0 +1,48 @@
+#!/usr/bin/env bash
+# Peak memory per rank of one PETSc run on 1, 2 and 4 ranks (oversubscribed: memory only, not
+# time), and the fit M(np) = R + D/np: R is what every rank holds whatever the rank count (the
+# process itself, the replicated parts of the space), D what the ranks share. Not a test: numbers
+# for docs/parallel.md. Usage:
+#   benchmarks/memory_per_rank.sh BUILD_DIR CONFIG [LEVELS] [PETSc options...]
+# The config runs as given except solver.type (petsc), output (no VTK, no plot) and limits.
+set -euo pipefail
+build=${1:?build directory}
+config=${2:?config}
+levels=${3:-1}
+shift 3 || shift $#
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+grep -v -E '^(solver|output|limits):' "$config" > "$work/run.yaml"
+cat >> "$work/run.yaml" <<YAML
+solver: {type: petsc}
+output: {vtk: false, plot: false}
+limits: {max_memory_gb: 1000}
+YAML
+# The process alone (libraries, MPI, PETSc): a 49-DOF run.
+cat > "$work/tiny.yaml" <<YAML
+problem: {pde: poisson, exact: "x*y", boundary: {all: dirichlet}}
+domain: {type: unit_square}
+space: {type: bspline, degree: 3, elements: [4, 4]}
+refinement: {levels: 1}
+solver: {type: petsc}
+output: {vtk: false, plot: false}
+YAML
+/usr/bin/time -v "$build/iga-run" "$work/tiny.yaml" --quiet -o "$work/tiny" > /dev/null 2> "$work/tiny.err"
+base=$(grep "Maximum resident" "$work/tiny.err" | awk '{ print $6 * 1024 }')
+declare -A peak
+for np in 1 2 4; do
+  mpirun --allow-run-as-root --oversubscribe -np "$np" /usr/bin/time -v "$build/iga-run" "$work/run.yaml" \
+    --levels "$levels" --quiet -o "$work/out$np" "$@" > /dev/null 2> "$work/err$np"
+  peak[$np]=$(grep "Maximum resident" "$work/err$np" | awk '{ if ($6 > m) m = $6 } END { print m * 1024 }')
+done
+dofs=$(tail -1 "$work/out1/convergence.csv" | cut -d, -f3)
+python3 - "$dofs" "${peak[1]}" "${peak[2]}" "${peak[4]}" "$base" <<'PY'
+import sys
+dofs, m1, m2, m4, base = int(sys.argv[1]), *map(float, sys.argv[2:])
+# Least squares over the three points of M = R + D/np.
+import numpy as np
+A = np.array([[1, 1], [1, 0.5], [1, 0.25]]); R, D = np.linalg.lstsq(A, np.array([m1, m2, m4]), rcond=None)[0]
+print(f"dofs {dofs}: peak per rank np=1 {m1/1e9:.3f} GB, np=2 {m2/1e9:.3f} GB, np=4 {m4/1e9:.3f} GB; "
+      f"fit R = {R/1e6:.0f} MB, of which the process alone {base/1e6:.0f} MB: replicated "
+      f"{(R-base)/1e6:.0f} MB ({(R-base)/dofs:.0f} B/DOF); shared D = {D/1e9:.3f} GB ({D/dofs:.0f} B/DOF)")
+PY
