@@ -65,8 +65,9 @@ double c0ip_penalty(int degree);
 /// On a C0 space with interior edges the form is the C0 interior penalty one
 /// (assembly/interior_penalty.hpp): the element integrals plus, over the interior edges, the
 /// consistency and symmetry terms and the penalty c0ip_penalty(p) / h_E on the conormal jumps; the
-/// load a_h(u, ·) gains the edge term −∫ {Δ_Γu}[∂_ν v]. The study takes it on graph surfaces with the
-/// serial solvers only (solver/study.cpp; on the RSD surfaces its numbers are not right yet).
+/// load a_h(u, ·) gains the edge term −∫ {Δ_Γu}[∂_ν v]. The study takes it with the serial solvers
+/// only, on graph surfaces and on closed RSD surfaces of Π1 patches (solver/study.cpp refuses Π0:
+/// its parametrisation spoils the H2 approximation, docs/surface-biharmonic.md).
 class SurfaceBiharmonicFormulation final : public Formulation {
  public:
   using Formulation::Formulation;
