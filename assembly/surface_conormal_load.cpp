@@ -1,5 +1,6 @@
 #include "assembly/surface_conormal_load.hpp"
 
+#include <cmath>
 #include <stdexcept>
 
 #include "assembly/edge_points.hpp"

@@ -23,7 +23,6 @@
 namespace iga {
 
 namespace {
-
 std::string format_seconds(double s) {
   char buf[32];
   std::snprintf(buf, sizeof buf, "%.3f s", s);

@@ -152,7 +152,7 @@ void SurfaceBiharmonicFormulation::check() const {
                                         "yet); use a C1 space here");
   }
   if (!open && !p.boundary.empty())
-    throw InputError(p.boundary.front().where + ": this surface is closed: it has no boundary for clamped data");
+    throw InputError(p.boundary.front().where + ": this surface is closed: it has no boundary for clamped or simply supported data");
   if (!open) return;
   // Lifted (graph) surfaces are built in code, where the clamped condition is implied.
   if (p.boundary.empty() && !dynamic_cast<const LiftedSpace*>(&space()))
