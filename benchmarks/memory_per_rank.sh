@@ -21,7 +21,7 @@ YAML
 # The process alone (libraries, MPI, PETSc): a 49-DOF run.
 cat > "$work/tiny.yaml" <<YAML
 problem: {pde: poisson, exact: "x*y", boundary: {all: dirichlet}}
-domain: {type: unit_square}
+domain: {type: rectangle, min: [0, 0], max: [1, 1]}
 space: {type: bspline, degree: 3, elements: [4, 4]}
 refinement: {levels: 1}
 solver: {type: petsc}
@@ -39,9 +39,11 @@ dofs=$(tail -1 "$work/out1/convergence.csv" | cut -d, -f3)
 python3 - "$dofs" "${peak[1]}" "${peak[2]}" "${peak[4]}" "$base" <<'PY'
 import sys
 dofs, m1, m2, m4, base = int(sys.argv[1]), *map(float, sys.argv[2:])
-# Least squares over the three points of M = R + D/np.
-import numpy as np
-A = np.array([[1, 1], [1, 0.5], [1, 0.25]]); R, D = np.linalg.lstsq(A, np.array([m1, m2, m4]), rcond=None)[0]
+# Least squares over the three points of M = R + D/np (x = 1/np).
+xs, ys = [1, 0.5, 0.25], [m1, m2, m4]
+xm, ym = sum(xs) / 3, sum(ys) / 3
+D = sum((x - xm) * (y - ym) for x, y in zip(xs, ys)) / sum((x - xm) ** 2 for x in xs)
+R = ym - D * xm
 print(f"dofs {dofs}: peak per rank np=1 {m1/1e9:.3f} GB, np=2 {m2/1e9:.3f} GB, np=4 {m4/1e9:.3f} GB; "
       f"fit R = {R/1e6:.0f} MB, of which the process alone {base/1e6:.0f} MB: replicated "
       f"{(R-base)/1e6:.0f} MB ({(R-base)/dofs:.0f} B/DOF); shared D = {D/1e9:.3f} GB ({D/dofs:.0f} B/DOF)")

@@ -165,19 +165,22 @@ ProblemSpec parse_surface_problem(const ConfigNode& node) {
   if (p.pde == Pde::surface_biharmonic) {
     // Δ_Γ²u + c u = f: ∫ Δ_Γu Δ_Γv + c ∫ u v (the planar bilaplace integrator reads the covariant
     // Hessian on a surface). On a closed surface with c = 0 the constants are the kernel (fixed by
-    // the mean, as for Laplace–Beltrami); open ones are clamped on their whole boundary (u, ∂_ν u
-    // from `exact`), which fixes u for any c >= 0.
+    // the mean, as for Laplace–Beltrami); open ones are clamped (u, ∂_ν u) or simply supported
+    // (u, and Δ_Γu as a natural condition) on their whole boundary, data from `exact`; either
+    // fixes u for any c >= 0.
     const auto boundary = node.find("boundary");
     if (boundary) {
       for (const std::string& key : boundary->keys())
         if (key != "all") (*boundary)[key].fail("a surface has one boundary part, 'all' (its whole boundary curve)");
       const ConfigNode all = (*boundary)["all"];
-      all.as_choice({"clamped"});
-      p.boundary.push_back({"all", BoundaryKind::clamped, all.where()});
-      if (!node.has("exact")) boundary->fail("clamped data (u and its conormal derivative) are taken from 'exact': give it");
+      const bool clamped = all.as_choice({"clamped", "simply_supported"}) == "clamped";
+      p.boundary.push_back({"all", clamped ? BoundaryKind::clamped : BoundaryKind::simply_supported, all.where()});
+      if (!node.has("exact"))
+        boundary->fail(clamped ? "clamped data (u and its conormal derivative) are taken from 'exact': give it"
+                               : "simply supported data (u and Δ_Γu) are taken from 'exact': give it");
     }
     if (const auto value = node.find("boundary_value"))
-      value->fail("surface_biharmonic takes its clamped data from 'exact' (no boundary_value)");
+      value->fail("surface_biharmonic takes its boundary data from 'exact' (no boundary_value)");
     // Not yet verified against a known spectrum (the smooth cube has none in closed form).
     if (const auto eigen = node.find("eigen"))
       eigen->fail("eigenproblems of surface_biharmonic are not supported yet (laplace_beltrami's are)");

@@ -21,6 +21,7 @@
 #include "solver/solve_problem.hpp"
 #include "spaces/lifted_space.hpp"
 #include "spaces/space_factory.hpp"
+#include "spaces/surface_label.hpp"
 
 namespace iga {
 
@@ -147,13 +148,28 @@ StudySettings parse_study(const ConfigNode& root, const std::string& config_path
                                           " needs a surface in 3D (domain.type: surface, space.type: surface)"
                                     : "a surface in 3D takes pde: laplace_beltrami, surface_biharmonic or "
                                       "kirchhoff_love_shell");
-  // A C0 space lifted onto a graph surface, listing its interior edges, takes the C0 interior penalty
-  // form of the surface biharmonic (solver/surface_problem.hpp). On the RSD surfaces the form runs but
-  // is not verified (docs/surface-biharmonic.md: errors of the size of u on the finer icosphere), so
-  // the `surface` space stays refused; any other C0 space is refused for plates.
+  // A C0 space listing its interior edges takes the C0 interior penalty form of the surface
+  // biharmonic (solver/surface_problem.hpp) on a graph surface (a lift) and on a surface built from
+  // a triangle mesh (RSD patches); any other C0 space is refused for plates.
+  const bool patches = coarse->surface_patches() != nullptr;
   const bool c0ip = s.problem.pde == Pde::surface_biharmonic && coarse->continuity() < 1 &&
                     coarse->ambient_dimension() == 3 && !coarse->interior_edges().empty() &&
-                    dynamic_cast<const LiftedSpace*>(coarse.get());
+                    (dynamic_cast<const LiftedSpace*>(coarse.get()) || patches);
+  // Π0 patches (the default tuple) are parametrised with an in-plane distortion whose second
+  // derivatives are of the size of h, not h², on every mesh: the H2 approximation of polynomials in
+  // those parameters then degrades as the mesh is refined (docs/surface-biharmonic.md). Π1 has linear
+  // precision and no such distortion.
+  if (c0ip && patches && surface_label(*coarse, "tuple") == "pi0")
+    (domain_node.find("tuple") ? domain_node["tuple"] : domain_node)
+        .fail("the C0 interior penalty form of surface_biharmonic on a surface from a triangle mesh needs its Π1 "
+              "patches (tuple: pi1): the Π0 patches' parametrisation has an in-plane distortion that does not shrink "
+              "with the mesh and spoils the H2 approximation (errors of the size of u on the first levels, larger on "
+              "finer meshes)");
+  // Without the G1 correction neighbouring patches meet with a kink: a smooth u has conormal jumps.
+  if (c0ip && patches && surface_label(*coarse, "method") == "none")
+    domain_node["method"].fail("the C0 interior penalty form of surface_biharmonic needs a G1 surface (its "
+                               "consistency assumes one tangent plane across every patch edge); method: none "
+                               "leaves the patches only C0");
   if ((s.problem.pde == Pde::biharmonic || s.problem.pde == Pde::surface_biharmonic ||
        s.problem.pde == Pde::kirchhoff_love_shell) &&
       coarse->continuity() < 1 && !c0ip)
@@ -161,7 +177,7 @@ StudySettings parse_study(const ConfigNode& root, const std::string& config_path
                        " space is only C" + std::to_string(coarse->continuity()) +
                        " (raise space.degree/space.regularity" +
                        (s.problem.pde == Pde::surface_biharmonic
-                            ? "; the C0 interior penalty form takes C0 spaces with interior edges on graph surfaces only)"
+                            ? "; the C0 interior penalty form takes C0 spaces with interior edges on graph surfaces and on surfaces from triangle meshes)"
                             : ")"));
   if (c0ip && coarse->degree() < 2)
     space_node.fail("the C0 interior penalty form of surface_biharmonic needs degree >= 2 (piecewise linear "

@@ -1,10 +1,12 @@
 #include "solver/surface_problem.hpp"
 
 #include <cmath>
+#include <set>
 
 #include "assembly/error_norms.hpp"
 #include "assembly/interior_penalty.hpp"
 #include "assembly/surface_calculus.hpp"
+#include "assembly/surface_conormal_load.hpp"
 #include "assembly/surface_dirichlet.hpp"
 #include "assembly/surface_essential.hpp"
 #include "assembly/surface_load.hpp"
@@ -16,6 +18,29 @@ namespace iga {
 namespace {
 SurfaceField field(const SymbolicFunction& f) {
   return [f](const Eigen::Vector3d& x) { return f.at(x); };
+}
+
+/// Δ_Γu(x, n, H) of an ambient u = tr ∇²u − n·∇²u n − H ∂_n u, with the surface's own n and H.
+SurfaceSource surface_laplacian(const SymbolicFunction& u) {
+  const SymbolicFunction ux = u.diff_x(), uy = u.diff_y(), uz = u.diff_z();
+  const SymbolicFunction uxx = ux.diff_x(), uxy = ux.diff_y(), uxz = ux.diff_z(), uyy = uy.diff_y(),
+                         uyz = uy.diff_z(), uzz = uz.diff_z();
+  return [=](const Eigen::Vector3d& x, const Eigen::Vector3d& n, double H) {
+    const Eigen::Vector3d g(ux.at(x), uy.at(x), uz.at(x));
+    Eigen::Matrix3d D;
+    D << uxx.at(x), uxy.at(x), uxz.at(x), uxy.at(x), uyy.at(x), uyz.at(x), uxz.at(x), uyz.at(x), uzz.at(x);
+    return surface_laplacian_of_ambient(D, g, n, H);
+  };
+}
+
+/// The edges whose element is in the share (all of them when the share is the whole space).
+std::vector<BoundaryEdge> edges_of_share(const std::vector<BoundaryEdge>& edges, const WorkShare& share) {
+  if (!share.elements) return edges;
+  const std::set<int> mine(share.elements->begin(), share.elements->end());
+  std::vector<BoundaryEdge> out;
+  for (const BoundaryEdge& e : edges)
+    if (mine.count(e.element)) out.push_back(e);
+  return out;
 }
 
 /// The exact solution's callables (empty when the problem has none).
@@ -119,20 +144,23 @@ void SurfaceBiharmonicFormulation::check() const {
       throw InputError(p.source_where + ": surface_biharmonic on a C0 space needs its interior edges (the interior "
                                         "penalty form); the " + space().type() + " space lists none");
     // Clamped data through a lift are the planar space's own (u and ∂_n u imposed on the boundary
-    // edges, so the test functions have no boundary terms); other open surfaces have no such terms yet.
-    if (open && !dynamic_cast<const LiftedSpace*>(&space()))
-      throw InputError(p.source_where + ": the C0 interior penalty form of surface_biharmonic is for closed surfaces "
-                                        "and graph surfaces (no boundary edge terms yet); use a C1 space here");
+    // edges, so the test functions have no boundary terms); simply supported boundaries need none
+    // either (Δ_Γu is natural: its term is the load's); other clamped surfaces have no such terms yet.
+    if (open && !dynamic_cast<const LiftedSpace*>(&space()) && !simply_supported())
+      throw InputError(p.source_where + ": the C0 interior penalty form of surface_biharmonic is for closed surfaces, "
+                                        "graph surfaces and simply supported boundaries (no clamped boundary edge terms "
+                                        "yet); use a C1 space here");
   }
   if (!open && !p.boundary.empty())
-    throw InputError(p.boundary.front().where + ": this surface is closed: it has no boundary for clamped data");
+    throw InputError(p.boundary.front().where + ": this surface is closed: it has no boundary for clamped or simply supported data");
   if (!open) return;
   // Lifted (graph) surfaces are built in code, where the clamped condition is implied.
   if (p.boundary.empty() && !dynamic_cast<const LiftedSpace*>(&space()))
     throw InputError(p.source_where + ": this surface has a boundary: give problem.boundary: {all: clamped} "
-                                      "(u and its conormal derivative from exact)");
+                                      "(u and its conormal derivative from exact) or {all: simply_supported} "
+                                      "(u and Δ_Γu from exact)");
   if (!p.surface_exact)
-    throw InputError(p.source_where + ": surface_biharmonic on an open surface takes its clamped data from 'exact'");
+    throw InputError(p.source_where + ": surface_biharmonic on an open surface takes its boundary data from 'exact'");
 }
 
 Eigen::VectorXd SurfaceBiharmonicFormulation::load(const WorkShare& share) const {
@@ -142,24 +170,22 @@ Eigen::VectorXd SurfaceBiharmonicFormulation::load(const WorkShare& share) const
     Eigen::VectorXd b = surface_load(
         space(), [f](const Eigen::Vector3d& x, const Eigen::Vector3d&, double) { return f.at(x); },
         quadrature_degree(), share.elements);
+    // Simply supported: Δ_Γu = g is natural, ∫ g ∂_ν v ds on the load side, over the boundary
+    // edges of this share's elements (each rank its own, as the element part).
+    if (simply_supported())
+      b += surface_conormal_load(space(), edges_of_share(space().boundary_edges("all"), share),
+                                 surface_laplacian(*p.surface_exact), quadrature_degree());
     if (pure()) kernel_.make_load_orthogonal(b, space(), quadrature_degree(), share);
     return b;
   }
-  // ℓ(v) = a(u, v) = ∫ Δ_Γu Δ_Γv + c u v with Δ_Γu from u's ambient derivatives, n and H.
+  // ℓ(v) = a(u, v) = ∫ Δ_Γu Δ_Γv + c u v with Δ_Γu from u's ambient derivatives, n and H. For a
+  // simply supported boundary this is already consistent: a(u, v) = ∫ f v + ∫_∂ Δ_Γu ∂_ν v.
   const SymbolicFunction u = *p.surface_exact;
-  const SymbolicFunction ux = u.diff_x(), uy = u.diff_y(), uz = u.diff_z();
-  const SymbolicFunction uxx = ux.diff_x(), uxy = ux.diff_y(), uxz = ux.diff_z(), uyy = uy.diff_y(),
-                         uyz = uy.diff_z(), uzz = uz.diff_z();
   const double c = p.reaction;
   const SurfaceSource value_part = [u, c](const Eigen::Vector3d& x, const Eigen::Vector3d&, double) {
     return c * u.at(x);
   };
-  const SurfaceSource laplacian_part = [=](const Eigen::Vector3d& x, const Eigen::Vector3d& n, double H) {
-    const Eigen::Vector3d g(ux.at(x), uy.at(x), uz.at(x));
-    Eigen::Matrix3d D;
-    D << uxx.at(x), uxy.at(x), uxz.at(x), uxy.at(x), uyy.at(x), uyz.at(x), uxz.at(x), uyz.at(x), uzz.at(x);
-    return surface_laplacian_of_ambient(D, g, n, H);
-  };
+  const SurfaceSource laplacian_part = surface_laplacian(u);
   Eigen::VectorXd b = surface_form_load(space(), value_part, laplacian_part, quadrature_degree(), share.elements);
   if (space().continuity() < 1) b += c0ip_edge_load(space(), laplacian_part, quadrature_degree());
   if (pure()) kernel_.make_load_orthogonal(b, space(), quadrature_degree(), share);
@@ -178,6 +204,7 @@ Constraints SurfaceBiharmonicFormulation::constraints() const {
   // An open lifted surface: clamped on its whole boundary, u and ∇_Γu from the exact solution,
   // imposed as the planar space's clamped condition on u ∘ X (same functions, same numbering):
   // û = u(X(x, y)) and ∂_n û = (J_Xᵀ ∇u) · n with n the planar outward normal.
+  // Simply supported: u only (Δ_Γu is natural), through the planar space for a lift.
   if (const auto* lifted = dynamic_cast<const LiftedSpace*>(&space());
       lifted && !space().boundary_edges("all").empty()) {
     const SymbolicFunction u = *problem().surface_exact;
@@ -189,6 +216,8 @@ Constraints SurfaceBiharmonicFormulation::constraints() const {
       return (lifted->lift_jacobian(x).transpose() * g).dot(n);
     };
     const std::vector<BoundaryEdge> all = lifted->planar().boundary_edges("all");
+    if (simply_supported())
+      return impose_essential(lifted->planar(), EssentialBoundary{all, {}}, value, {}, quadrature_degree());
     return impose_essential(lifted->planar(), EssentialBoundary{all, all}, value, normal, quadrature_degree());
   }
   // Any other open surface: clamped through the surface's own conormal ν, u = u_exact and
@@ -196,11 +225,13 @@ Constraints SurfaceBiharmonicFormulation::constraints() const {
   if (!space().boundary_edges("all").empty()) {
     const SymbolicFunction u = *problem().surface_exact;
     const SymbolicFunction ux = u.diff_x(), uy = u.diff_y(), uz = u.diff_z();
+    SurfaceConormalField conormal;
+    if (!simply_supported())
+      conormal = [ux, uy, uz](const Eigen::Vector3d& x, const Eigen::Vector3d& nu) {
+        return ux.at(x) * nu(0) + uy.at(x) * nu(1) + uz.at(x) * nu(2);
+      };
     return surface_essential_constraints(
-        space(), space().boundary_edges("all"), [u](const Eigen::Vector3d& x) { return u.at(x); },
-        [ux, uy, uz](const Eigen::Vector3d& x, const Eigen::Vector3d& nu) {
-          return ux.at(x) * nu(0) + uy.at(x) * nu(1) + uz.at(x) * nu(2);
-        },
+        space(), space().boundary_edges("all"), [u](const Eigen::Vector3d& x) { return u.at(x); }, conormal,
         quadrature_degree());
   }
   if (pure()) return kernel_.pinned(space());

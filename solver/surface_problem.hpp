@@ -54,7 +54,8 @@ double c0ip_penalty(int degree);
 /// The surface biharmonic problem Δ_Γ²u + c u = f (c = `reaction`, default 1; with c = 0 on a
 /// closed surface u is fixed up to a constant as for Laplace–Beltrami: ConstantKernel) on a closed surface, or on an open one clamped on its whole boundary (u and the
 /// conormal derivative ∂_ν u from the exact solution: surface_essential.hpp; lifted graph surfaces
-/// through their planar space), as a Formulation: matrix ∫ Δ_Γu Δ_Γv + c ∫ u v (ProblemSpec::terms: the bilaplace
+/// through their planar space) or simply supported (u only; Δ_Γu natural: a given source gains
+/// ∫ Δ_Γu ∂_ν v, surface_conormal_load.hpp), as a Formulation: matrix ∫ Δ_Γu Δ_Γv + c ∫ u v (ProblemSpec::terms: the bilaplace
 /// integrator on the covariant Hessians, and mass), on C1 surface spaces. The load is the given
 /// source, or with an exact solution u the bilinear form applied to u,
 ///   ℓ(v) = ∫ Δ_Γu Δ_Γv + c u v,   Δ_Γu = tr ∇²u − n·∇²u n − H ∂_n u   pointwise,
@@ -66,8 +67,9 @@ double c0ip_penalty(int degree);
 /// On a C0 space with interior edges the form is the C0 interior penalty one
 /// (assembly/interior_penalty.hpp): the element integrals plus, over the interior edges, the
 /// consistency and symmetry terms and the penalty c0ip_penalty(p) / h_E on the conormal jumps; the
-/// load a_h(u, ·) gains the edge term −∫ {Δ_Γu}[∂_ν v]. The study takes it on graph surfaces with the
-/// serial solvers only (solver/study.cpp; on the RSD surfaces its numbers are not right yet).
+/// load a_h(u, ·) gains the edge term −∫ {Δ_Γu}[∂_ν v]. The study takes it with the serial solvers
+/// only, on graph surfaces and on closed RSD surfaces of Π1 patches (solver/study.cpp refuses Π0:
+/// its parametrisation spoils the H2 approximation, docs/surface-biharmonic.md).
 class SurfaceBiharmonicFormulation final : public Formulation {
  public:
   using Formulation::Formulation;
@@ -83,6 +85,10 @@ class SurfaceBiharmonicFormulation final : public Formulation {
   /// Δ_Γ²u = f on a closed surface: the constants are the kernel (ConstantKernel).
   bool pure() const { return problem().reaction == 0 && space().boundary_edges("all").empty() && !problem().eigen; }
   bool works_on_parts() const override { return Formulation::works_on_parts() && !pure(); }
+  /// u and Δ_Γu given on the boundary (Δ_Γu natural), not u and ∂_ν u.
+  bool simply_supported() const {
+    return !problem().boundary.empty() && problem().boundary.front().kind == BoundaryKind::simply_supported;
+  }
   mutable ConstantKernel kernel_;  ///< pure problems: set by load, used by finish
 };
 
