@@ -1,6 +1,8 @@
 #include "spaces/space_part.hpp"
 
 #include <algorithm>
+#include <bit>
+#include <cstdint>
 
 namespace iga {
 
@@ -41,13 +43,22 @@ class SpacePart::PartEvaluator final : public Space::Evaluator {
 SpacePart::SpacePart(std::shared_ptr<const Space> whole, std::vector<int> elements, int owned)
     : whole_(std::move(whole)), elements_(std::move(elements)), owned_(owned < 0 ? static_cast<int>(elements_.size()) : owned) {
   const Space& w = *whole_;
+  // The functions on the part as a bitmap of the whole's (a bit per function, not a sort of every
+  // element's list), numbered by counting the bits before them.
+  used_.assign(static_cast<std::size_t>(w.dimension()) / 64 + 1, 0);
   std::vector<int> dofs;
   for (int e : elements_) {
     w.element_dofs(e, dofs);
-    global_dofs_.insert(global_dofs_.end(), dofs.begin(), dofs.end());
+    for (int d : dofs) used_[static_cast<std::size_t>(d) >> 6] |= std::uint64_t{1} << (d & 63);
   }
-  std::sort(global_dofs_.begin(), global_dofs_.end());
-  global_dofs_.erase(std::unique(global_dofs_.begin(), global_dofs_.end()), global_dofs_.end());
+  before_.resize(used_.size());
+  int count = 0;
+  for (std::size_t word = 0; word < used_.size(); ++word) {
+    before_[word] = count;
+    for (std::uint64_t bits = used_[word]; bits; bits &= bits - 1)
+      global_dofs_.push_back(static_cast<int>(word * 64) + std::countr_zero(bits));
+    count += std::popcount(used_[word]);
+  }
   dof_offsets_.reserve(elements_.size() + 1);
   dof_offsets_.push_back(0);
   for (int e : elements_) {
@@ -84,8 +95,9 @@ SpacePart::SpacePart(std::shared_ptr<const Space> whole, std::vector<int> elemen
 }
 
 int SpacePart::local_dof(int global) const {
-  const auto it = std::lower_bound(global_dofs_.begin(), global_dofs_.end(), global);
-  return it != global_dofs_.end() && *it == global ? static_cast<int>(it - global_dofs_.begin()) : -1;
+  if (global < 0 || global >= whole_->dimension()) return -1;
+  const std::uint64_t word = used_[static_cast<std::size_t>(global) >> 6], bit = std::uint64_t{1} << (global & 63);
+  return (word & bit) ? before_[static_cast<std::size_t>(global) >> 6] + std::popcount(word & (bit - 1)) : -1;
 }
 
 std::unique_ptr<Space::Evaluator> SpacePart::make_evaluator() const { return std::make_unique<PartEvaluator>(*this); }

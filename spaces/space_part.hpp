@@ -7,6 +7,7 @@
 /// the whole space's element; a part is a Space, so assembly, loads, boundary projections, error
 /// norms and drawing run on it unchanged.
 
+#include <cstdint>
 #include <memory>
 #include <vector>
 
@@ -62,6 +63,8 @@ class SpacePart final : public Space {
   std::vector<int> elements_;
   int owned_;
   std::vector<int> global_dofs_;
+  std::vector<std::uint64_t> used_;  ///< bit d: function d of the whole is on the part
+  std::vector<int> before_;          ///< functions on the part before each word of used_
   /// Active functions of each element in the part's numbering (CSR).
   std::vector<int> dof_offsets_, dofs_;
   PartClosedForms closed_forms_{*this};
