@@ -54,7 +54,7 @@ double positive(const ConfigNode& node, const std::string& what) {
 }  // namespace
 
 ProblemSpec parse_shell_problem(const ConfigNode& node) {
-  node.check_keys({"pde", "material", "load", "point_loads", "exact", "boundary"});
+  node.check_keys({"pde", "material", "load", "pressure", "point_loads", "exact", "boundary"});
   ProblemSpec p;
   p.pde = Pde::kirchhoff_love_shell;
   ShellSpec shell;
@@ -71,19 +71,29 @@ ProblemSpec parse_shell_problem(const ConfigNode& node) {
   }
 
   const auto load = node.find("load");
+  const auto pressure = node.find("pressure");
   const auto points = node.find("point_loads");
-  if (!load && !points)
-    node.fail("give 'load' (the force per unit area as [fx, fy, fz], expressions in x, y, z) or 'point_loads' "
-              "([{point: [x, y, z], force: [fx, fy, fz]}, ...]), or both");
+  if (!load && !pressure && !points)
+    node.fail("give 'load' (the force per unit area as [fx, fy, fz], expressions in x, y, z), 'pressure' (a force "
+              "per unit area along the outward normal, an expression in x, y, z) or 'point_loads' "
+              "([{point: [x, y, z], force: [fx, fy, fz]}, ...]), or several");
   if (load) {
     shell.load = parse_vector(*load, "load");
     p.source_where = load->where();
   } else {
     shell.load.assign(3, SymbolicFunction::constant(0.0));
   }
+  if (pressure) {
+    if (!pressure->is_scalar())
+      pressure->fail("pressure is one number or expression in x, y, z: the force per unit area along the surface's "
+                     "outward normal (negative pushes inwards)");
+    shell.pressure = SymbolicFunction::parse_xyz(pressure->as_string(), pressure->where());
+    shell.pressure_where = pressure->where();
+    if (!load) p.source_where = pressure->where();
+  }
   if (points) {
     shell.point_loads = parse_point_loads(*points);
-    if (!load) p.source_where = points->where();
+    if (!load && !pressure) p.source_where = points->where();
   }
   shell.loads_where = p.source_where;
   if (const auto exact = node.find("exact")) {

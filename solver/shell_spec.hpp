@@ -38,6 +38,11 @@ struct ShellSpec {
   ShellMaterial material;
   /// Force per unit area (x, y, z components), functions of x, y, z.
   std::vector<SymbolicFunction> load;
+  /// Pressure (problem.pressure): a force p(x) n per unit area along the surface's oriented normal
+  /// (spaces/surface_orientation.hpp: outward on a closed surface, towards the convex side of a
+  /// curved open one), added to `load`. A negative p pushes the other way.
+  std::optional<SymbolicFunction> pressure;
+  std::string pressure_where;  ///< config location of the pressure, for messages about its direction
   /// Point forces (problem.point_loads), added to the load per area.
   std::vector<ShellPointLoad> point_loads;
   /// Config location of the loads as a whole (messages about their resultant).
