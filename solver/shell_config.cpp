@@ -34,11 +34,14 @@ std::vector<ShellPointLoad> parse_point_loads(const ConfigNode& node) {
   std::vector<ShellPointLoad> out;
   for (const ConfigNode& item : node.items()) {
     // Entries of a list are not declared keys: checked here.
-    if (!item.is_map() || !item.has("point") || !item.has("force") || item.keys().size() != 2)
-      item.fail("a point load is {point: [x, y, z], force: [fx, fy, fz]} (a point of the surface and the force there)");
+    if (!item.is_map() || !item.has("point") || !item.has("force") ||
+        item.keys().size() != (item.has("snap") ? 3u : 2u))
+      item.fail("a point load is {point: [x, y, z], force: [fx, fy, fz]} (a point of the surface and the force there), "
+                "with snap: true to apply it at the surface's nearest point");
     ShellPointLoad p;
     p.point = triple(item["point"], "a point load's point");
     p.force = triple(item["force"], "a point load's force");
+    if (const auto snap = item.find("snap")) p.snap = snap->as_bool();
     p.where = item["point"].where();
     out.push_back(p);
   }

@@ -31,6 +31,9 @@ struct ShellSupport {
 struct ShellPointLoad {
   Eigen::Vector3d point = Eigen::Vector3d::Zero();
   Eigen::Vector3d force = Eigen::Vector3d::Zero();
+  /// Applied at the surface's nearest point (within 1 % of its size) instead of exactly at `point`:
+  /// for fitted surfaces that do not pass through the mesh vertex the load was meant for.
+  bool snap = false;
   std::string where;  ///< config location of the point, for messages about it
 };
 
