@@ -69,6 +69,39 @@ space: {type: bspline, degree: 3, elements: [4, 2]}
   EXPECT_NEAR(l2_negative, l2[2], 1e-6 * l2[2]);
 }
 
+TEST(ShellPressure, SphereFromACubeSphereMeshInflatesAsTheExactSphere) {
+  // A closed sphere under internal pressure: the uniform dilation w = p R² (1 − ν) / (2 E t) / (1 +
+  // t²/(12 R²)) (derived as for the cylinder: membrane strain w/R and bending strain w/R² in every
+  // direction, docs/shells.md). R = 1, t = 0.01, E = 1e4, ν = 0.3, p = 1: w = 3.4999708e-3, work
+  // p w 4π R² = 0.04398193. On the 4-split surface of configs/domains/shell_cube_sphere_2.obj (24
+  // quads, 8 valence-3 vertices) fitted onto the sphere (its largest distance from it 4.4e-5,
+  // g14_fit_onto_test.cpp), quartic, level 0 (2 520 unknowns): measured energy +1.75e-5 relative and
+  // L2 error 1.24e-5 = 1.0e-3 ‖u‖; the facets' own fit gives an L2 error of 0.18 = 15 ‖u‖ (a
+  // polyhedron's flat faces bend under pressure).
+  const double w = 0.7 / (2 * 1e4 * 0.01) / (1 + 1e-4 / 12), work = w * 4 * M_PI, norm = w * std::sqrt(4 * M_PI);
+  char exact[200];
+  std::snprintf(exact, sizeof exact, "[\"%.17g*x\", \"%.17g*y\", \"%.17g*z\"]", w, w, w);
+  const std::string yaml = R"(
+problem:
+  pde: kirchhoff_love_shell
+  material: {youngs_modulus: 1e4, poisson_ratio: 0.3, thickness: 0.01}
+  pressure: 1
+  exact: )" + std::string(exact) + R"(
+domain: {type: surface, file: )" + std::string(IGA_SOURCE_DIR) + R"(/configs/domains/shell_cube_sphere_2.obj,
+         fit_onto: {shape: sphere, radius: 1}}
+space: {type: g1_4split, degree: 4}
+)";
+  const ConfigNode root = ConfigNode::load_string(yaml, "test.yaml");
+  const ProblemSpec problem = parse_problem(root["problem"]);
+  const SpacePtr space = make_space(root["domain"], root["space"], 0);
+  const DiscreteSolution s = solve_problem(*space, problem, SolverKind::cholmod);
+  std::printf("%d unknowns: energy %.10e (exact %.10e), L2 error %.3e of ‖u‖ %.4e\n", s.result.dofs, *s.result.energy,
+              work, *s.result.l2, norm);
+  // The energy within a few times the surface's largest distance from the sphere (relative).
+  EXPECT_NEAR(*s.result.energy, work, 1e-4 * work);
+  EXPECT_LT(*s.result.l2, 1e-2 * norm);
+}
+
 /// The unit cube as a quad mesh with every face counter-clockwise seen from outside, or with the
 /// last face's order reversed.
 std::string cube_obj(bool flip_last) {
