@@ -12,13 +12,13 @@ refinement; so a family of finer meshes (not refinement levels) brings the surfa
                valence-3 vertices per coarse quad, a valence-6 vertex at each coarse corner). The
                equator has a vertex at every quarter (the four loads) when m is a multiple of 4.
 
-Usage: scripts/shell_meshes.py [OUTPUT_DIR]   (default configs/domains/)
+Usage: scripts/shell_meshes.py [OUTPUT_DIR]   (default benchmarks/configs/domains/)
 """
 import math
 import os
 import sys
 
-OUT = sys.argv[1] if len(sys.argv) > 1 else os.path.join(os.path.dirname(__file__), "..", "configs", "domains")
+OUT = sys.argv[1] if len(sys.argv) > 1 else os.path.join(os.path.dirname(__file__), "..", "benchmarks", "configs", "domains")
 
 
 def write(name, comment, vertices, faces):

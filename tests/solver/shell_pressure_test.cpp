@@ -73,7 +73,7 @@ TEST(ShellPressure, SphereFromACubeSphereMeshInflatesAsTheExactSphere) {
   // A closed sphere under internal pressure: the uniform dilation w = p R² (1 − ν) / (2 E t) / (1 +
   // t²/(12 R²)) (derived as for the cylinder: membrane strain w/R and bending strain w/R² in every
   // direction, docs/shells.md). R = 1, t = 0.01, E = 1e4, ν = 0.3, p = 1: w = 3.4999708e-3, work
-  // p w 4π R² = 0.04398193. On the 4-split surface of configs/domains/shell_cube_sphere_2.obj (24
+  // p w 4π R² = 0.04398193. On the 4-split surface of benchmarks/configs/domains/shell_cube_sphere_2.obj (24
   // quads, 8 valence-3 vertices) fitted onto the sphere (its largest distance from it 4.4e-5,
   // g14_fit_onto_test.cpp), quartic, level 0 (2 520 unknowns): measured energy +1.75e-5 relative and
   // L2 error 1.24e-5 = 1.0e-3 ‖u‖; the facets' own fit gives an L2 error of 0.18 = 15 ‖u‖ (a
@@ -87,7 +87,7 @@ problem:
   material: {youngs_modulus: 1e4, poisson_ratio: 0.3, thickness: 0.01}
   pressure: 1
   exact: )" + std::string(exact) + R"(
-domain: {type: surface, file: )" + std::string(IGA_SOURCE_DIR) + R"(/configs/domains/shell_cube_sphere_2.obj,
+domain: {type: surface, file: )" + std::string(IGA_SOURCE_DIR) + R"(/benchmarks/configs/domains/shell_cube_sphere_2.obj,
          fit_onto: {shape: sphere, radius: 1}}
 space: {type: g1_4split, degree: 4}
 )";

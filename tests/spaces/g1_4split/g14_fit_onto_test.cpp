@@ -13,7 +13,7 @@
 namespace iga {
 namespace {
 
-const std::string kDomains = std::string(IGA_SOURCE_DIR) + "/configs/domains/";
+const std::string kDomains = std::string(IGA_SOURCE_DIR) + "/benchmarks/configs/domains/";
 
 /// The largest | |x| − 1 | over a 9 × 9 grid of every element: the distance from the unit sphere.
 double sphere_deviation(const Space& space) {
@@ -32,7 +32,7 @@ double sphere_deviation(const Space& space) {
 }
 
 TEST(G14FitOnto, CubeSphereFitsTheSphereNotItsFacets) {
-  // configs/domains/shell_cube_sphere_n.obj (scripts/shell_meshes.py): 6n² quads, vertices on the
+  // benchmarks/configs/domains/shell_cube_sphere_n.obj (scripts/shell_meshes.py): 6n² quads, vertices on the
   // unit sphere, 8 valence-3 vertices. Quartic, level 0. The facets' own fit follows the polyhedron,
   // whose distance from the sphere falls like h²: measured 0.126 / 0.035 / 0.0092 for n = 2 / 4 / 8.
   // Onto the sphere: 4.4e-5 / 3.9e-5 / 1.2e-5, 3 orders of magnitude closer; the largest deviation
