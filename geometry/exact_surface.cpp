@@ -16,7 +16,10 @@ Eigen::Vector3d radial(const ExactSurface& s, const Eigen::Vector3d& p) {
 }
 
 std::string text(const Eigen::Vector3d& v) {
-  return "(" + format_number(v.x()) + ", " + format_number(v.y()) + ", " + format_number(v.z()) + ")";
+  // Appended piece by piece: GCC 12 warns (-Wrestrict, a false positive) on "(" + std::string.
+  std::string s = "(";
+  for (int i = 0; i < 3; ++i) s += (i ? ", " : "") + format_number(v(i));
+  return s + ")";
 }
 
 }  // namespace
