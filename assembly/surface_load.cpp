@@ -13,7 +13,7 @@ namespace iga {
 
 namespace {
 
-/// Σ_e of each element's local vector (`local_vector(ev, local)` after ev.reinit; copied per thread), scattered by its
+/// Σ_e of each element's local vector (`local_vector(e, ev, local)` after ev.reinit; copied per thread), scattered by its
 /// dofs. Each thread sums a fixed range of elements (static schedule) into its own vector, and the
 /// vectors are added in thread order afterwards: the result does not depend on timing, and the
 /// extra work is O(dofs) per thread against O(elements · points) for the integrals.
@@ -36,7 +36,7 @@ Eigen::VectorXd sum_element_vectors(const Space& space, unsigned flags, int quad
       const int e = elements ? (*elements)[k] : k;
       const RulePtr rule = space.quadrature(e, quad_degree);
       ev.reinit(e, *rule);
-      kernel(ev, local);
+      kernel(e, ev, local);
       const std::vector<int>& dofs = ev.values().dofs;
       for (int i = 0; i < local.size(); ++i) mine(dofs[i]) += local(i);
     }
@@ -51,7 +51,7 @@ Eigen::VectorXd sum_element_vectors(const Space& space, unsigned flags, int quad
 Eigen::VectorXd surface_load(const Space& space, const SurfaceSource& f, int quad_degree,
                              const std::vector<int>* elements) {
   return sum_element_vectors(space, update_values | update_surface_curvature, quad_degree, elements, "surface_load",
-                             [&f, fw = Eigen::VectorXd()](const ElementValues& ev, Eigen::VectorXd& local) mutable {
+                             [&f, fw = Eigen::VectorXd()](int, const ElementValues& ev, Eigen::VectorXd& local) mutable {
                                const PointValues& v = ev.values();
                                fw.resize(ev.num_points());
                                for (int k = 0; k < ev.num_points(); ++k)
@@ -60,11 +60,24 @@ Eigen::VectorXd surface_load(const Space& space, const SurfaceSource& f, int qua
                              });
 }
 
+Eigen::VectorXd surface_element_load(const Space& space, const ElementSurfaceSource& f, int quad_degree,
+                                     const std::vector<int>* elements) {
+  return sum_element_vectors(space, update_values | update_surface_curvature, quad_degree, elements,
+                             "surface_element_load",
+                             [&f, fw = Eigen::VectorXd()](int e, const ElementValues& ev, Eigen::VectorXd& local) mutable {
+                               const PointValues& v = ev.values();
+                               fw.resize(ev.num_points());
+                               for (int k = 0; k < ev.num_points(); ++k)
+                                 fw(k) = f(e, v.x3.col(k), v.normal3.col(k)) * ev.jxw()(k);
+                               local.noalias() = v.value * fw;
+                             });
+}
+
 Eigen::VectorXd surface_form_load(const Space& space, const SurfaceSource& f0, const SurfaceSource& f2,
                                   int quad_degree, const std::vector<int>* elements) {
   return sum_element_vectors(
       space, update_values | update_hessians | update_surface_curvature, quad_degree, elements, "surface_form_load",
-      [&f0, &f2, w0 = Eigen::VectorXd(), w2 = Eigen::VectorXd()](const ElementValues& ev,
+      [&f0, &f2, w0 = Eigen::VectorXd(), w2 = Eigen::VectorXd()](int, const ElementValues& ev,
                                                                 Eigen::VectorXd& local) mutable {
         const PointValues& v = ev.values();
         const int q = ev.num_points();

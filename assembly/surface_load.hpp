@@ -4,6 +4,7 @@
 /// at each quadrature point (Laplace–Beltrami sources computed from an exact solution).
 
 #include <Eigen/Core>
+#include <functional>
 #include <vector>
 
 #include "assembly/fields.hpp"
@@ -16,6 +17,12 @@ namespace iga {
 /// given, restricts the sum to those elements (a rank's share).
 Eigen::VectorXd surface_load(const Space& space, const SurfaceSource& f, int quad_degree,
                              const std::vector<int>* elements = nullptr);
+
+/// b_i = ∫_Γ f(e, x, n) N_i dA, where the data depend on the element e as well (a shell's pressure
+/// p(x) s_e n: s_e orients the element's normal x_ξ × x_η, spaces/surface_orientation.hpp).
+using ElementSurfaceSource = std::function<double(int element, const Eigen::Vector3d& x, const Eigen::Vector3d& n)>;
+Eigen::VectorXd surface_element_load(const Space& space, const ElementSurfaceSource& f, int quad_degree,
+                                     const std::vector<int>* elements = nullptr);
 
 /// b_i = ∫_Γ f0(x, n, H) N_i + f2(x, n, H) Δ_Γ N_i dA: the load of a fourth-order surface problem
 /// given as its bilinear form applied to a known function u, v ↦ ∫ Δ_Γu Δ_Γv + c u v (f2 = Δ_Γu,

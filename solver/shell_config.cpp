@@ -34,11 +34,14 @@ std::vector<ShellPointLoad> parse_point_loads(const ConfigNode& node) {
   std::vector<ShellPointLoad> out;
   for (const ConfigNode& item : node.items()) {
     // Entries of a list are not declared keys: checked here.
-    if (!item.is_map() || !item.has("point") || !item.has("force") || item.keys().size() != 2)
-      item.fail("a point load is {point: [x, y, z], force: [fx, fy, fz]} (a point of the surface and the force there)");
+    if (!item.is_map() || !item.has("point") || !item.has("force") ||
+        item.keys().size() != (item.has("snap") ? 3u : 2u))
+      item.fail("a point load is {point: [x, y, z], force: [fx, fy, fz]} (a point of the surface and the force there), "
+                "with snap: true to apply it at the surface's nearest point");
     ShellPointLoad p;
     p.point = triple(item["point"], "a point load's point");
     p.force = triple(item["force"], "a point load's force");
+    if (const auto snap = item.find("snap")) p.snap = snap->as_bool();
     p.where = item["point"].where();
     out.push_back(p);
   }
@@ -54,7 +57,7 @@ double positive(const ConfigNode& node, const std::string& what) {
 }  // namespace
 
 ProblemSpec parse_shell_problem(const ConfigNode& node) {
-  node.check_keys({"pde", "material", "load", "point_loads", "exact", "boundary"});
+  node.check_keys({"pde", "material", "load", "pressure", "point_loads", "exact", "boundary"});
   ProblemSpec p;
   p.pde = Pde::kirchhoff_love_shell;
   ShellSpec shell;
@@ -71,19 +74,29 @@ ProblemSpec parse_shell_problem(const ConfigNode& node) {
   }
 
   const auto load = node.find("load");
+  const auto pressure = node.find("pressure");
   const auto points = node.find("point_loads");
-  if (!load && !points)
-    node.fail("give 'load' (the force per unit area as [fx, fy, fz], expressions in x, y, z) or 'point_loads' "
-              "([{point: [x, y, z], force: [fx, fy, fz]}, ...]), or both");
+  if (!load && !pressure && !points)
+    node.fail("give 'load' (the force per unit area as [fx, fy, fz], expressions in x, y, z), 'pressure' (a force "
+              "per unit area along the outward normal, an expression in x, y, z) or 'point_loads' "
+              "([{point: [x, y, z], force: [fx, fy, fz]}, ...]), or several");
   if (load) {
     shell.load = parse_vector(*load, "load");
     p.source_where = load->where();
   } else {
     shell.load.assign(3, SymbolicFunction::constant(0.0));
   }
+  if (pressure) {
+    if (!pressure->is_scalar())
+      pressure->fail("pressure is one number or expression in x, y, z: the force per unit area along the surface's "
+                     "outward normal (negative pushes inwards)");
+    shell.pressure = SymbolicFunction::parse_xyz(pressure->as_string(), pressure->where());
+    shell.pressure_where = pressure->where();
+    if (!load) p.source_where = pressure->where();
+  }
   if (points) {
     shell.point_loads = parse_point_loads(*points);
-    if (!load) p.source_where = points->where();
+    if (!load && !pressure) p.source_where = points->where();
   }
   shell.loads_where = p.source_where;
   if (const auto exact = node.find("exact")) {

@@ -4,8 +4,10 @@
 ///   pde: kirchhoff_love_shell
 ///   material: {youngs_modulus: E, poisson_ratio: ν, thickness: t}
 ///   load: [fx, fy, fz]            force per unit area, expressions in x, y, z
+///   pressure: p                   force p n per unit area along the oriented normal (outward on a
+///                                 closed surface), an expression in x, y, z
 ///   point_loads: [{point: [x, y, z], force: [fx, fy, fz]}, ...]   forces at points of the surface
-///                                 (load, point_loads or both)
+///                                 (any of load, pressure, point_loads, at least one)
 ///   exact: [ux, uy, uz]           optional: the exact displacement (errors; values of fixed components)
 ///   boundary: {PART: {fixed: [x, y, z], rotation: held}, ...}   displacement components held (any
 ///                                 subset) and the rotation about the edge (Nitsche), per part;

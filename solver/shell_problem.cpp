@@ -56,39 +56,94 @@ const RigidMotions& ShellFormulation::free_motions() const {
   return *motions_;
 }
 
+const SurfaceOrientation& ShellFormulation::orientation() const {
+  if (orientation_) return *orientation_;
+  const ShellSpec& shell = *problem().shell;
+  const std::string where = shell.pressure ? shell.pressure_where : problem().source_where;
+  SurfaceOrientation o = orient_surface(space(), quadrature_degree());
+  if (!o.orientable)
+    throw InputError(where + ": this surface has no consistent normal (going round some cycle of its elements flips "
+                     "it: a non-orientable surface), so a pressure has no direction; give the force as 'load'");
+  if (!o.decided)
+    throw InputError(where + ": this surface's outward side cannot be told (neither curved to one side nor with a "
+                     "mean normal), so a pressure has no direction; give the force as 'load'");
+  orientation_ = std::move(o);
+  return *orientation_;
+}
+
 Eigen::VectorXd ShellFormulation::load(const WorkShare& share) const {
   const ShellSpec& shell = *problem().shell;
   const int n = space().dimension();
   notes_.clear();
   Eigen::VectorXd b(3 * n);
+  // f(x) + p(x) s_e n: the load per area and the pressure along the oriented normal.
+  const std::vector<int> no_signs;
+  const std::vector<int>& sign = shell.pressure ? orientation().sign : no_signs;
+  const std::optional<SymbolicFunction>& pressure = shell.pressure;
+  const AreaForce force = [&shell, &pressure, &sign](int e, const Eigen::Vector3d& x, const Eigen::Vector3d& normal) {
+    Eigen::Vector3d f(shell.load[0].at(x), shell.load[1].at(x), shell.load[2].at(x));
+    if (pressure) f += pressure->at(x) * sign[e] * normal;
+    return f;
+  };
   for (int c = 0; c < 3; ++c) {
-    const SymbolicFunction f = shell.load[c];
-    b.segment(c * n, n) = surface_load(
-        space(), [f](const Eigen::Vector3d& x, const Eigen::Vector3d&, double) { return f.at(x); },
-        quadrature_degree(), share.elements);
+    const SymbolicFunction& f = shell.load[c];
+    b.segment(c * n, n) =
+        pressure ? surface_element_load(
+                       space(),
+                       [&f, &pressure, &sign, c](int e, const Eigen::Vector3d& x, const Eigen::Vector3d& normal) {
+                         return f.at(x) + pressure->at(x) * sign[e] * normal(c);
+                       },
+                       quadrature_degree(), share.elements)
+                 : surface_load(
+                       space(), [&f](const Eigen::Vector3d& x, const Eigen::Vector3d&, double) { return f.at(x); },
+                       quadrature_degree(), share.elements);
   }
-  // Point loads: F_c N_i(p) on the element holding p (in this share).
+  if (pressure) {
+    const SurfaceOrientation& o = orientation();
+    const bool closed = space().boundary_edges("all").empty();
+    notes_.push_back(std::string("pressure along the normal oriented ") +
+                     (closed     ? "outward (the closed surface encloses a volume of " + format_number(o.volume) + ")"
+                      : o.flat   ? "with the mean normal's largest component positive (a flat surface)"
+                                 : "away from the surface's centroid (to its convex side; ∫ (x − x₀)·n dA / 3 = " +
+                                     format_number(o.volume) + ")"));
+  }
+  // Point loads: F_c N_i(p) on the element holding p (in this share). A snapped load goes to the
+  // surface's nearest point (within 1 % of the surface's size), and the resultant is taken there.
   const RigidMotions& motions = free_motions();
   const double tolerance = 1e-6 * motions.length;  // relative to the surface's size
   const std::unique_ptr<Space::Evaluator> evaluator = space().make_evaluator();
   PointValues g;
+  std::vector<ShellPointLoad> applied = shell.point_loads;
   for (std::size_t k = 0; k < shell.point_loads.size(); ++k) {
     const ShellPointLoad& p = shell.point_loads[k];
-    const auto at = locate_on_surface(space(), p.point, *evaluator, tolerance);
+    double snapped = 0;
+    const auto at = p.snap ? nearest_on_surface(space(), p.point, *evaluator, snapped)
+                           : locate_on_surface(space(), p.point, *evaluator, tolerance);
     if (!at)
       throw InputError(p.where + ": the point load's point " + format_number(p.point.x()) + ", " +
                        format_number(p.point.y()) + ", " + format_number(p.point.z()) +
                        " is not on the surface (no point of it within " + format_number(tolerance) +
-                       " = 1e-6 of the surface's size, its largest distance from its centroid)");
+                       " = 1e-6 of the surface's size, its largest distance from its centroid); 'snap: true' moves "
+                       "it to the surface's nearest point");
+    if (p.snap && !(snapped <= 1e-2 * motions.length))
+      throw InputError(p.where + ": the surface's nearest point to the point load's point " +
+                       format_number(p.point.x()) + ", " + format_number(p.point.y()) + ", " +
+                       format_number(p.point.z()) + " is " + format_number(snapped) +
+                       " away, more than 1 % of the surface's size (" + format_number(motions.length) +
+                       "): not snapped");
     QuadratureRule one;
     one.points = {at->reference};
     one.weights = {0.0};
     evaluator->evaluate_geometry(at->element, one, g);
+    applied[k].point = g.x3.col(0);
     const double distance = (g.x3.col(0) - p.point).norm();
     notes_.push_back("point load " + std::to_string(k + 1) + " at (" + format_number(p.point.x()) + ", " +
                      format_number(p.point.y()) + ", " + format_number(p.point.z()) + "): element " +
                      std::to_string(at->element) + ", reference point (" + format_number(at->reference.x()) + ", " +
-                     format_number(at->reference.y()) + "), " + format_number(distance) + " from the given point");
+                     format_number(at->reference.y()) + "), " + format_number(distance) + " from the given point" +
+                     (p.snap ? " (snapped to the surface's nearest point, (" + format_number(g.x3(0, 0)) + ", " +
+                                   format_number(g.x3(1, 0)) + ", " + format_number(g.x3(2, 0)) + "))"
+                             : ""));
     if (share.elements && std::find(share.elements->begin(), share.elements->end(), at->element) == share.elements->end()) continue;
     Eigen::VectorXd local;
     for (int c = 0; c < 3; ++c) {
@@ -98,10 +153,7 @@ Eigen::VectorXd ShellFormulation::load(const WorkShare& share) const {
   }
   // Equilibrium with the free rigid motions: ℓ(r) = a·F + θ/L·M must vanish for each.
   if (motions.count() > 0) {
-    std::vector<SymbolicFunction> f = shell.load;
-    const LoadResultant r = load_resultant(
-        space(), [&f](const Eigen::Vector3d& x) { return Eigen::Vector3d(f[0].at(x), f[1].at(x), f[2].at(x)); },
-        shell.point_loads, motions.center, quadrature_degree());
+    const LoadResultant r = load_resultant(space(), force, applied, motions.center, quadrature_degree());
     double work = 0;
     for (int m = 0; m < motions.count(); ++m)
       work = std::max(work, std::abs(motions.modes.col(m).head<3>().dot(r.force) +

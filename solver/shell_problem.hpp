@@ -10,6 +10,9 @@
 /// given). Errors: L2, H1 (surface gradient) and H2 (covariant Hessian) of the displacement vector,
 /// sqrt of the sums of the components' squares.
 ///
+/// A pressure (problem.pressure) is the force p(x) n per area along the normal oriented by
+/// spaces/surface_orientation.hpp (outward on a closed surface); the orientation is a note.
+///
 /// Point loads (problem.point_loads) are located on each level's surface (spaces/
 /// surface_point_location.hpp) and add F_c N_i(p) to the load; where each was placed is a note.
 ///
@@ -24,6 +27,7 @@
 
 #include "solver/formulation.hpp"
 #include "solver/shell_rigid_motions.hpp"
+#include "spaces/surface_orientation.hpp"
 
 namespace iga {
 
@@ -47,12 +51,16 @@ class ShellFormulation final : public Formulation {
 
   /// The rigid motions the supports leave free (computed once).
   const RigidMotions& free_motions() const;
+  /// The oriented normal's sign per element (computed once; InputError at problem.pressure when the
+  /// surface has no consistent or no decidable outward normal).
+  const SurfaceOrientation& orientation() const;
   /// Their discrete representation and the pinned coefficients (set by constraints()).
   const RigidMotionBasis& rigid_motion_basis() const { return basis_; }
   const std::vector<int>& pinned() const { return pinned_; }
 
  private:
   mutable std::optional<RigidMotions> motions_;
+  mutable std::optional<SurfaceOrientation> orientation_;
   mutable RigidMotionBasis basis_;
   mutable std::vector<int> pinned_;
   mutable std::vector<std::string> notes_;

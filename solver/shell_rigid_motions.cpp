@@ -111,14 +111,14 @@ RigidMotions free_rigid_motions(const Space& space, const std::vector<ShellSuppo
   return m;
 }
 
-LoadResultant load_resultant(const Space& space, const std::function<Eigen::Vector3d(const Eigen::Vector3d&)>& f,
-                             const std::vector<ShellPointLoad>& points, const Eigen::Vector3d& center, int quad_degree) {
+LoadResultant load_resultant(const Space& space, const AreaForce& f, const std::vector<ShellPointLoad>& points,
+                             const Eigen::Vector3d& center, int quad_degree) {
   LoadResultant r;
-  ElementValues ev(space, update_values);
+  ElementValues ev(space, update_values | update_surface_curvature);
   for (int e = 0; e < space.num_elements(); ++e) {
     ev.reinit(e, *space.quadrature(e, quad_degree));
     for (int k = 0; k < ev.num_points(); ++k) {
-      const Eigen::Vector3d x = ev.values().x3.col(k), fx = f(x);
+      const Eigen::Vector3d x = ev.values().x3.col(k), fx = f(e, x, ev.values().normal3.col(k));
       r.force += ev.jxw()(k) * fx;
       r.moment += ev.jxw()(k) * (x - center).cross(fx);
       r.magnitude += ev.jxw()(k) * fx.norm();

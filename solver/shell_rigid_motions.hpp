@@ -45,12 +45,14 @@ struct RigidMotions {
 RigidMotions free_rigid_motions(const Space& space, const std::vector<ShellSupport>& supports, int quad_degree);
 
 /// Resultant force and moment about `center` of the loads (per area and at points), and the total
-/// magnitude ∫|f| + Σ|F_i| they are compared against.
+/// magnitude ∫|f| + Σ|F_i| they are compared against. The force per area is f(element, x, n), n the
+/// element's unit normal x_ξ × x_η / |x_ξ × x_η| (a pressure orients it per element).
 struct LoadResultant {
   Eigen::Vector3d force = Eigen::Vector3d::Zero(), moment = Eigen::Vector3d::Zero();
   double magnitude = 0.0;
 };
-LoadResultant load_resultant(const Space& space, const std::function<Eigen::Vector3d(const Eigen::Vector3d&)>& f,
+using AreaForce = std::function<Eigen::Vector3d(int element, const Eigen::Vector3d& x, const Eigen::Vector3d& n)>;
+LoadResultant load_resultant(const Space& space, const AreaForce& f,
                              const std::vector<ShellPointLoad>& points, const Eigen::Vector3d& center, int quad_degree);
 
 /// Discrete free rigid motions: coefficients R (3N × k, blocks by component) and F = M R.

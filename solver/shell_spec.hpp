@@ -31,6 +31,9 @@ struct ShellSupport {
 struct ShellPointLoad {
   Eigen::Vector3d point = Eigen::Vector3d::Zero();
   Eigen::Vector3d force = Eigen::Vector3d::Zero();
+  /// Applied at the surface's nearest point (within 1 % of its size) instead of exactly at `point`:
+  /// for fitted surfaces that do not pass through the mesh vertex the load was meant for.
+  bool snap = false;
   std::string where;  ///< config location of the point, for messages about it
 };
 
@@ -38,6 +41,11 @@ struct ShellSpec {
   ShellMaterial material;
   /// Force per unit area (x, y, z components), functions of x, y, z.
   std::vector<SymbolicFunction> load;
+  /// Pressure (problem.pressure): a force p(x) n per unit area along the surface's oriented normal
+  /// (spaces/surface_orientation.hpp: outward on a closed surface, towards the convex side of a
+  /// curved open one), added to `load`. A negative p pushes the other way.
+  std::optional<SymbolicFunction> pressure;
+  std::string pressure_where;  ///< config location of the pressure, for messages about its direction
   /// Point forces (problem.point_loads), added to the load per area.
   std::vector<ShellPointLoad> point_loads;
   /// Config location of the loads as a whole (messages about their resultant).

@@ -33,8 +33,12 @@ std::vector<Point2> samples(CellShape shape) {
 
 }  // namespace
 
-std::optional<PointLocation> locate_on_surface(const Space& space, const Eigen::Vector3d& x,
-                                               Space::Evaluator& evaluator, double tolerance) {
+namespace {
+
+/// Gauss–Newton on |X(ξ) − x|² in the closest elements (by samples); calls `found(location,
+/// distance)` for each candidate in order of the samples' distance until it returns true.
+template <class Found>
+void surface_candidates(const Space& space, const Eigen::Vector3d& x, Space::Evaluator& evaluator, const Found& found) {
   // Nearest sample per element, then Newton in the closest few elements.
   std::vector<std::pair<double, int>> nearest;
   std::vector<Point2> start(space.num_elements());
@@ -71,9 +75,34 @@ std::optional<PointLocation> locate_on_surface(const Space& space, const Eigen::
       if (settled) break;
     }
     evaluator.evaluate_geometry(e, one, g);
-    if ((g.x3.col(0) - x).norm() <= tolerance) return PointLocation{e, one.points[0]};
+    if (found(PointLocation{e, one.points[0]}, (g.x3.col(0) - x).norm())) return;
   }
-  return std::nullopt;
+}
+
+}  // namespace
+
+std::optional<PointLocation> locate_on_surface(const Space& space, const Eigen::Vector3d& x,
+                                               Space::Evaluator& evaluator, double tolerance) {
+  std::optional<PointLocation> out;
+  surface_candidates(space, x, evaluator, [&](const PointLocation& at, double distance) {
+    if (distance <= tolerance) out = at;
+    return out.has_value();
+  });
+  return out;
+}
+
+std::optional<PointLocation> nearest_on_surface(const Space& space, const Eigen::Vector3d& x,
+                                                Space::Evaluator& evaluator, double& distance) {
+  std::optional<PointLocation> out;
+  distance = std::numeric_limits<double>::infinity();
+  surface_candidates(space, x, evaluator, [&](const PointLocation& at, double d) {
+    if (d < distance) {
+      distance = d;
+      out = at;
+    }
+    return false;  // try every candidate: the nearest one wins
+  });
+  return out;
 }
 
 }  // namespace iga

@@ -18,4 +18,10 @@ namespace iga {
 std::optional<PointLocation> locate_on_surface(const Space& space, const Eigen::Vector3d& x,
                                                Space::Evaluator& evaluator, double tolerance);
 
+/// The surface's point nearest to `x` among the local minima of |X(ξ) − x| found in the elements
+/// closest to x (by samples), and its distance; for points given near, not on, a surface (a shell's
+/// point load snapped onto a fitted surface that does not pass through the mesh's vertices).
+std::optional<PointLocation> nearest_on_surface(const Space& space, const Eigen::Vector3d& x,
+                                                Space::Evaluator& evaluator, double& distance);
+
 }  // namespace iga

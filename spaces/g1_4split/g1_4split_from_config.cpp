@@ -1,10 +1,12 @@
 #include "spaces/g1_4split/g1_4split_from_config.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 
 #include "config/config_file_path.hpp"
 #include "config/errors.hpp"
+#include "geometry/exact_surface.hpp"
 #include "mesh/read_quad_surface_mesh.hpp"
 #include "mesh/validate_quad_surface.hpp"
 #include "spaces/g1/g1_from_config.hpp"
@@ -55,7 +57,7 @@ SpacePtr build_or_name_the_separable_degree(const G14Options& o, const ConfigNod
 /// A quad surface in 3D, closed or open: a built-in (cube, split_tetrahedron, or one of
 /// open_quad_surfaces.hpp) or a quad .obj/.off file.
 std::pair<QuadTopology, std::vector<Eigen::Vector3d>> surface_mesh(const ConfigNode& domain) {
-  domain.check_keys({"type", "mesh", "file"});
+  domain.check_keys({"type", "mesh", "file", "fit_onto"});
   const bool builtin = domain.has("mesh"), file = domain.has("file");
   if (builtin == file)
     domain.fail("give either 'mesh' (a built-in surface) or 'file' (a quad mesh in .obj or .off), not both");
@@ -77,6 +79,38 @@ std::pair<QuadTopology, std::vector<Eigen::Vector3d>> surface_mesh(const ConfigN
   for (int v = 0; v < topology.num_vertices(); ++v)
     if (topology.vertex_faces(v) == 0) node.fail(read.source + ": vertex " + std::to_string(v + 1) + " is in no face");
   return {std::move(topology), read.points};
+}
+
+/// Three finite numbers [x, y, z].
+Eigen::Vector3d vector3(const ConfigNode& node, const std::string& what) {
+  const std::vector<double> v = node.is_sequence() ? node.as_doubles() : std::vector<double>{};
+  if (v.size() != 3 || !std::isfinite(v[0]) || !std::isfinite(v[1]) || !std::isfinite(v[2]))
+    node.fail(what + " is a list of three finite numbers [x, y, z]");
+  return {v[0], v[1], v[2]};
+}
+
+/// domain.fit_onto: {shape: sphere, radius: R, center: [x, y, z]} or {shape: cylinder, radius: R,
+/// axis: [x, y, z], center: a point of the axis}; every vertex of the mesh must lie on it (to 1e-6 R).
+ExactSurface fit_onto(const ConfigNode& node, const std::vector<Eigen::Vector3d>& vertices, const std::string& mesh) {
+  node.check_keys({"shape", "radius", "center", "axis"});
+  ExactSurface s;
+  s.shape = node["shape"].as_choice({"sphere", "cylinder"}) == "sphere" ? ExactSurface::Shape::sphere
+                                                                       : ExactSurface::Shape::cylinder;
+  s.radius = node["radius"].as_double();
+  if (!(s.radius > 0 && std::isfinite(s.radius))) node["radius"].fail("radius must be a number > 0");
+  if (const auto c = node.find("center")) s.center = vector3(*c, "center");
+  if (const auto a = node.find("axis")) {
+    if (s.shape == ExactSurface::Shape::sphere) a->fail("a sphere has no axis (axis is for shape: cylinder)");
+    s.axis = vector3(*a, "axis");
+    if (!(s.axis.norm() > 0)) a->fail("the axis must not be zero");
+    s.axis.normalize();
+  }
+  for (std::size_t v = 0; v < vertices.size(); ++v)
+    if (const double d = s.distance(vertices[v]); !(std::abs(d) <= 1e-6 * s.radius))
+      node.fail("vertex " + std::to_string(v + 1) + " of " + mesh + " is " + format_number(d) + " from the " +
+                s.describe() + " (more than 1e-6 of its radius): the mesh's vertices must lie on the surface "
+                "its faces are fitted onto");
+  return s;
 }
 
 /// The linear blending has a'(γ) ≠ 0: refused where an interior crossing vertex sees different
@@ -193,11 +227,20 @@ SpacePtr make_g1_4split_space(const ConfigNode& domain, const ConfigNode& space,
       space["refinement"].fail(
           "a g1_4split surface is refined nested only (rebuilding would fit a different surface at every level)");
     const auto [topology, vertices] = surface_mesh(domain);
+    // fit_onto: the facets mapped onto the exact surface before the fit (a small hook in fit_surface).
+    FitTarget onto;
+    std::string onto_name;
+    if (const auto node = domain.find("fit_onto")) {
+      const ExactSurface exact = fit_onto(*node, vertices, "'" + topology.name() + "'");
+      onto = [exact](const Eigen::Vector3d& p) { return exact.closest(p); };
+      onto_name = exact.describe();
+    }
     if (o.blending == Blending::linear) check_linear_blending(space, topology, symmetric_gluing(topology, o.blending));
     return build_or_name_the_separable_degree(o, dn, "the surface '" + topology.name() + "'", level,
                                               [&](const G14Options& t) -> SpacePtr {
                                                 return domain.guard([&] {
-                                                  return std::make_shared<const G14SurfaceSpace>(topology, vertices, t);
+                                                  return std::make_shared<const G14SurfaceSpace>(topology, vertices, t,
+                                                                                                 onto, onto_name);
                                                 });
                                               });
   }

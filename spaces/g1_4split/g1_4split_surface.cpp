@@ -16,13 +16,15 @@ G14Surface fit_surface(const QuadTopology& topology, const std::vector<Eigen::Ve
 }
 
 G14Surface fit_surface(const QuadTopology& topology, const std::vector<SplitGluing>& gluing,
-                       const std::vector<Eigen::Vector3d>& vertices, int degree, int regularity) {
+                       const std::vector<Eigen::Vector3d>& vertices, int degree, int regularity,
+                       const FitTarget& onto) {
   G14Surface s;
   s.basis = build_g14_basis(topology, gluing, degree, regularity);
   const SplitBSpline& b = s.basis.bspline;
   const int n = b.size();
   const Eigen::VectorXd g = b.greville();
-  // Broken bilinear surface, two coordinates at a time through project_geometry.
+  // Broken bilinear surface (or its image on the exact surface), two coordinates at a time through
+  // project_geometry.
   FaceGeometry xy, z0;
   for (int f = 0; f < topology.num_faces(); ++f) {
     const auto& q = topology.face(f);
@@ -31,8 +33,9 @@ G14Surface fit_surface(const QuadTopology& topology, const std::vector<SplitGlui
     for (int j = 0; j < n; ++j)
       for (int i = 0; i < n; ++i) {
         const double u = g(i), v = g(j);
-        const Eigen::Vector3d p = (1 - u) * (1 - v) * vertices[q[0]] + u * (1 - v) * vertices[q[1]] +
-                                  u * v * vertices[q[2]] + (1 - u) * v * vertices[q[3]];
+        Eigen::Vector3d p = (1 - u) * (1 - v) * vertices[q[0]] + u * (1 - v) * vertices[q[1]] +
+                            u * v * vertices[q[2]] + (1 - u) * v * vertices[q[3]];
+        if (onto) p = onto(p);
         for (int d = 0; d < 3; ++d) c[d][i + j * n] = p(d);
       }
     xy.x.push_back(interpolate_face(b, c[0]));

@@ -6,6 +6,7 @@
 /// planes of the two faces agree wherever the map is regular.
 
 #include <Eigen/Core>
+#include <functional>
 #include <vector>
 
 #include "spaces/g1_4split/g1_4split_basis.hpp"
@@ -23,9 +24,15 @@ struct G14Surface {
 /// Throws NotSeparable when the degree is below the separability degree.
 G14Surface fit_surface(const QuadTopology& topology, const std::vector<Eigen::Vector3d>& vertices, int degree,
                        Blending blending);
+/// Where the facets' points go before the fit: the identity (empty: the bilinear surface itself), or
+/// the closest point of an exact surface the mesh's vertices lie on (`fit_onto`), whose shape the fit
+/// then approximates instead of the polyhedron's.
+using FitTarget = std::function<Eigen::Vector3d(const Eigen::Vector3d&)>;
+
 /// The same with given gluing data and regularity r across the split lines.
 G14Surface fit_surface(const QuadTopology& topology, const std::vector<SplitGluing>& gluing,
-                       const std::vector<Eigen::Vector3d>& vertices, int degree, int regularity);
+                       const std::vector<Eigen::Vector3d>& vertices, int degree, int regularity,
+                       const FitTarget& onto = {});
 
 /// Point, d/du and d/dv of face f's map at (u, v) (the full jet: geometry/surface_jet.hpp).
 std::array<Eigen::Vector3d, 3> face_map_jet(const G14Surface& s, int face, double u, double v);

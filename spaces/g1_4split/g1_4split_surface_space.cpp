@@ -75,14 +75,14 @@ struct G14SurfaceSpace::Core {
 };
 
 G14SurfaceSpace::G14SurfaceSpace(const QuadTopology& coarse, const std::vector<Eigen::Vector3d>& vertices,
-                                 const G14Options& options)
-    : options_(options) {
+                                 const G14Options& options, const FitTarget& onto, const std::string& onto_name)
+    : options_(options), onto_name_(onto_name) {
   if (!options.nested) throw std::invalid_argument("G14SurfaceSpace: refinement is nested only");
   if (static_cast<int>(vertices.size()) != coarse.num_vertices())
     throw std::invalid_argument("G14SurfaceSpace: one position per vertex is required");
   QuadTopology topology = coarse;
   gluing_ = symmetric_gluing(topology, options.blending);
-  surface_ = fit_surface(topology, gluing_, vertices, options.degree, options.regularity);
+  surface_ = fit_surface(topology, gluing_, vertices, options.degree, options.regularity, onto);
   if (options.level > 0) {
     // Subdivide the level-0 surface exactly (x, y through one FaceGeometry, z through another)
     // and inherit the gluing, level by level; the basis is built on the finest level only.
@@ -154,7 +154,7 @@ std::vector<std::pair<std::string, std::string>> G14SurfaceSpace::make_parameter
     std::snprintf(buf, sizeof buf, "%.3e", x);
     return std::string(buf);
   };
-  return {{"degree", std::to_string(options_.degree)},
+  std::vector<std::pair<std::string, std::string>> out = {{"degree", std::to_string(options_.degree)},
           {"regularity", std::to_string(options_.regularity)},
           {"blending", blending_name(options_.blending)},
           {"refinement", "nested"},
@@ -163,6 +163,8 @@ std::vector<std::pair<std::string, std::string>> G14SurfaceSpace::make_parameter
           {"surface_normal_jump", sci(normal_jump_)},
           {"surface_min_metric_ratio", sci(min_metric_ratio_)},
           {"surface_fold_bound", sci(fold_bound_)}};
+  if (!onto_name_.empty()) out.emplace_back("fit_onto", onto_name_);
+  return out;
 }
 
 }  // namespace iga

@@ -26,7 +26,10 @@ class G14SurfaceSpace final : public Space {
   /// The surface of `coarse` with corner positions `vertices` (one per vertex), refined
   /// options.level times (options.nested must hold). Throws NotSeparable below the separability
   /// degree, InputError when the fitted surface is not certified regular.
-  G14SurfaceSpace(const QuadTopology& coarse, const std::vector<Eigen::Vector3d>& vertices, const G14Options& options);
+  /// `onto`: the facets mapped onto an exact surface before the fit (empty: the bilinear surface),
+  /// described in summaries by `onto_name`.
+  G14SurfaceSpace(const QuadTopology& coarse, const std::vector<Eigen::Vector3d>& vertices, const G14Options& options,
+                  const FitTarget& onto = {}, const std::string& onto_name = "");
 
   std::unique_ptr<Evaluator> make_evaluator() const override;
 
@@ -65,6 +68,7 @@ class G14SurfaceSpace final : public Space {
   std::vector<std::pair<std::string, std::string>> make_parameters() const;
 
   G14Options options_;
+  std::string onto_name_;
   std::shared_ptr<const QuadTopology> topology_;
   std::vector<SplitGluing> gluing_;
   G14Surface surface_;
