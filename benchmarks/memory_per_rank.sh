@@ -4,6 +4,7 @@
 # process itself, the replicated parts of the space), D what the ranks share. Not a test: numbers
 # for docs/parallel.md. Usage:
 #   benchmarks/memory_per_rank.sh BUILD_DIR CONFIG [LEVELS] [PETSc options...]
+# RANKS="1 2" (default "1 2 4") chooses the rank counts: oversubscribed MUMPS runs crawl.
 # The config runs as given except solver.type (petsc), output (no VTK, no plot) and limits.
 set -euo pipefail
 build=${1:?build directory}
@@ -30,21 +31,26 @@ YAML
 /usr/bin/time -v "$build/iga-run" "$work/tiny.yaml" --quiet -o "$work/tiny" > /dev/null 2> "$work/tiny.err"
 base=$(grep "Maximum resident" "$work/tiny.err" | awk '{ print $6 * 1024 }')
 declare -A peak
-for np in 1 2 4; do
+ranks=(${RANKS:-1 2 4})
+for np in "${ranks[@]}"; do
   mpirun --allow-run-as-root --oversubscribe -np "$np" /usr/bin/time -v "$build/iga-run" "$work/run.yaml" \
     --levels "$levels" --quiet -o "$work/out$np" "$@" > /dev/null 2> "$work/err$np"
   peak[$np]=$(grep "Maximum resident" "$work/err$np" | awk '{ if ($6 > m) m = $6 } END { print m * 1024 }')
 done
 dofs=$(tail -1 "$work/out1/convergence.csv" | cut -d, -f3)
-python3 - "$dofs" "${peak[1]}" "${peak[2]}" "${peak[4]}" "$base" <<'PY'
+points=""
+for np in "${ranks[@]}"; do points+=" $np:${peak[$np]}"; done
+python3 - "$dofs" "$base" $points <<'PY'
 import sys
-dofs, m1, m2, m4, base = int(sys.argv[1]), *map(float, sys.argv[2:])
-# Least squares over the three points of M = R + D/np (x = 1/np).
-xs, ys = [1, 0.5, 0.25], [m1, m2, m4]
-xm, ym = sum(xs) / 3, sum(ys) / 3
+dofs, base = int(sys.argv[1]), float(sys.argv[2])
+pairs = [(int(a), float(b)) for a, b in (p.split(":") for p in sys.argv[3:])]
+# Least squares over the points of M = R + D/np (x = 1/np).
+xs, ys = [1 / n for n, _ in pairs], [m for _, m in pairs]
+xm, ym = sum(xs) / len(xs), sum(ys) / len(ys)
 D = sum((x - xm) * (y - ym) for x, y in zip(xs, ys)) / sum((x - xm) ** 2 for x in xs)
 R = ym - D * xm
-print(f"dofs {dofs}: peak per rank np=1 {m1/1e9:.3f} GB, np=2 {m2/1e9:.3f} GB, np=4 {m4/1e9:.3f} GB; "
+peaks = ", ".join(f"np={n} {m/1e9:.3f} GB" for n, m in pairs)
+print(f"dofs {dofs}: peak per rank {peaks}; "
       f"fit R = {R/1e6:.0f} MB, of which the process alone {base/1e6:.0f} MB: replicated "
       f"{(R-base)/1e6:.0f} MB ({(R-base)/dofs:.0f} B/DOF); shared D = {D/1e9:.3f} GB ({D/dofs:.0f} B/DOF)")
 PY
