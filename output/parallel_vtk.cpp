@@ -137,7 +137,7 @@ bool write_solution_pvtu(const Space& space, const Eigen::VectorXd& coefficients
     const auto* part = dynamic_cast<const SpacePart*>(&space);
     std::vector<int> mine;
     if (part) {
-      for (int e = 0; e < part->owned_elements(); ++e) mine.push_back(e);
+      mine = part->owned_elements();
     } else {
       const std::vector<int> owner = partition_elements(element_centres(space), ranks);
       for (int e = 0; e < static_cast<int>(owner.size()); ++e)

@@ -60,8 +60,7 @@ PetscDistribution::PetscDistribution(const Space& space, const std::function<voi
     : space_(space), rank_(mpi_rank()), ranks_(mpi_size()) {
   on_every_rank([&] {
     if (const auto* part = dynamic_cast<const SpacePart*>(&space)) {
-      mine_.resize(part->owned_elements());
-      std::iota(mine_.begin(), mine_.end(), 0);
+      mine_ = part->owned_elements();
       global_dofs_ = part->global_dofs();
       whole_dimension_ = part->whole().dimension();
       whole_elements_ = part->whole().num_elements();

@@ -10,10 +10,9 @@ namespace iga {
 
 std::shared_ptr<const SpacePart> rank_part(const std::shared_ptr<const Space>& whole, int rank, int ranks) {
   const std::vector<int> owner = partition_elements(element_centres(*whole), ranks);
-  std::vector<int> elements, neighbours;
+  std::vector<int> own, neighbours;
   for (int e = 0; e < static_cast<int>(owner.size()); ++e)
-    if (owner[e] == rank) elements.push_back(e);
-  const int owned = static_cast<int>(elements.size());
+    if (owner[e] == rank) own.push_back(e);
   for (const BoundaryEdge& b : whole->boundary_edges("all"))
     if (owner[b.element] != rank) neighbours.push_back(b.element);
   if (whole->facts().gradient_jump_samples >= 2)
@@ -22,10 +21,11 @@ std::shared_ptr<const SpacePart> rank_part(const std::shared_ptr<const Space>& w
       if (a == rank && b != rank) neighbours.push_back(edge.element_b);
       if (b == rank && a != rank) neighbours.push_back(edge.element_a);
     }
-  std::sort(neighbours.begin(), neighbours.end());
-  neighbours.erase(std::unique(neighbours.begin(), neighbours.end()), neighbours.end());
+  std::vector<int> elements = own;
   elements.insert(elements.end(), neighbours.begin(), neighbours.end());
-  return std::make_shared<SpacePart>(whole, std::move(elements), owned);
+  std::sort(elements.begin(), elements.end());
+  elements.erase(std::unique(elements.begin(), elements.end()), elements.end());
+  return std::make_shared<SpacePart>(whole, std::move(elements), own);
 }
 
 WorkShare rank_share(const std::vector<int>* elements) {

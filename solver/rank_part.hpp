@@ -2,8 +2,8 @@
 /// @file
 /// What one rank of a distributed solve works on: its part of the space (spaces/space_part.hpp)
 /// instead of the whole, so that its tables, vectors and solution grow with its share of the
-/// elements. The part holds the rank's own elements (the Hilbert-curve partition of
-/// petsc_partition.hpp), in increasing order, then the neighbours it only reads:
+/// elements. The part holds, in the whole's order, the rank's own elements (the Hilbert-curve
+/// partition of petsc_partition.hpp) and the neighbours it only reads:
 ///  - every element with a boundary edge, so that the boundary projection of the essential
 ///    conditions (a boundary-sized problem, boundary_conditions.hpp) is the serial one on every
 ///    rank and the ranks agree on which functions are constrained;

@@ -4,7 +4,6 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <numeric>
 
 #include "assembly/error_indicator.hpp"
 #include "solver/boundary_edge_kinds.hpp"
@@ -309,8 +308,7 @@ StudyResult run_study(const StudySettings& settings, const ProgressSink& progres
     if (settings.solver == SolverKind::petsc && !settings.problem.eigen && !settings.adaptive && !differences &&
         !settings.write_matrices && make_formulation(*space, settings.problem)->works_on_parts()) {
       part = rank_part(space, mpi_rank(), mpi_size());
-      own.resize(part->owned_elements());
-      std::iota(own.begin(), own.end(), 0);
+      own = part->owned_elements();
     }
     const Space& work = part ? static_cast<const Space&>(*part) : *space;
     const WorkShare share = part ? rank_share(&own) : WorkShare{};

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <bit>
 #include <cstdint>
+#include <numeric>
+#include <stdexcept>
 
 namespace iga {
 
@@ -40,8 +42,21 @@ class SpacePart::PartEvaluator final : public Space::Evaluator {
   std::unique_ptr<Space::Evaluator> inner_;
 };
 
-SpacePart::SpacePart(std::shared_ptr<const Space> whole, std::vector<int> elements, int owned)
-    : whole_(std::move(whole)), elements_(std::move(elements)), owned_(owned < 0 ? static_cast<int>(elements_.size()) : owned) {
+SpacePart::SpacePart(std::shared_ptr<const Space> whole, std::vector<int> elements, const std::vector<int>& own)
+    : whole_(std::move(whole)), elements_(std::move(elements)) {
+  if (!std::is_sorted(elements_.begin(), elements_.end()) ||
+      std::adjacent_find(elements_.begin(), elements_.end()) != elements_.end())
+    throw std::invalid_argument("SpacePart: the elements must be increasing");
+  if (own.empty()) {
+    owned_.resize(elements_.size());
+    std::iota(owned_.begin(), owned_.end(), 0);
+  } else {
+    for (int e : own) {
+      const auto it = std::lower_bound(elements_.begin(), elements_.end(), e);
+      if (it == elements_.end() || *it != e) throw std::invalid_argument("SpacePart: an own element outside the part");
+      owned_.push_back(static_cast<int>(it - elements_.begin()));
+    }
+  }
   const Space& w = *whole_;
   // The functions on the part as a bitmap of the whole's (a bit per function, not a sort of every
   // element's list), numbered by counting the bits before them.

@@ -18,11 +18,13 @@ namespace iga {
 
 class SpacePart final : public Space {
  public:
-  /// The part of `whole` on `elements` (distinct element numbers of `whole`), of which the first
-  /// `owned` are the ones its holder works on (a rank's own; the rest are neighbours it only
-  /// reads; −1: all). Its boundary parts are the whole's boundary edges on these elements, in the
-  /// whole's order; its interior edges the whole's with both elements in the part.
-  SpacePart(std::shared_ptr<const Space> whole, std::vector<int> elements, int owned = -1);
+  /// The part of `whole` on `elements` (element numbers of `whole`, increasing: the part then
+  /// visits its elements, edges and functions in the whole's order, so that what it computes from
+  /// them — a boundary projection, its pivoting — is what the whole computes), of which `own` (a
+  /// subset, increasing; empty: all) are the ones its holder works on (a rank's own; the others are
+  /// neighbours it only reads). Its boundary parts are the whole's boundary edges on these elements,
+  /// in the whole's order; its interior edges the whole's with both elements in the part.
+  SpacePart(std::shared_ptr<const Space> whole, std::vector<int> elements, const std::vector<int>& own = {});
 
   std::unique_ptr<Evaluator> make_evaluator() const override;
   void element_dofs(int element, std::vector<int>& out) const override;
@@ -32,8 +34,8 @@ class SpacePart final : public Space {
   std::vector<InteriorEdge> interior_edges() const override;
 
   const Space& whole() const { return *whole_; }
-  /// Elements 0 .. owned_elements() − 1 are the holder's own.
-  int owned_elements() const { return owned_; }
+  /// The holder's own elements (the part's numbers, increasing).
+  const std::vector<int>& owned_elements() const { return owned_; }
   /// Element e of the part is element elements()[e] of the whole.
   const std::vector<int>& elements() const { return elements_; }
   /// Function i of the part is function global_dofs()[i] of the whole (increasing).
@@ -61,7 +63,7 @@ class SpacePart final : public Space {
 
   std::shared_ptr<const Space> whole_;
   std::vector<int> elements_;
-  int owned_;
+  std::vector<int> owned_;
   std::vector<int> global_dofs_;
   std::vector<std::uint64_t> used_;  ///< bit d: function d of the whole is on the part
   std::vector<int> before_;          ///< functions on the part before each word of used_
