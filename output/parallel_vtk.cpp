@@ -5,10 +5,9 @@
 #include <system_error>
 #include <vector>
 
-#include "assembly/element_subset_assembly.hpp"
 #include "config/errors.hpp"
-#include "solver/petsc_partition.hpp"
 #include "solver/petsc_session.hpp"
+#include "solver/rank_part.hpp"
 #include "spaces/space_part.hpp"
 
 #ifdef IGA_WITH_PETSC
@@ -139,9 +138,7 @@ bool write_solution_pvtu(const Space& space, const Eigen::VectorXd& coefficients
     if (part) {
       mine = part->owned_elements();
     } else {
-      const std::vector<int> owner = partition_elements(element_centres(space), ranks);
-      for (int e = 0; e < static_cast<int>(owner.size()); ++e)
-        if (owner[e] == rank) mine.push_back(e);
+      mine = rank_elements(space, rank, ranks);
     }
     if (mine.empty()) return;  // more ranks than elements: no piece
     VtkFieldOptions own = options;

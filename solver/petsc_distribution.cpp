@@ -6,14 +6,11 @@
 
 #include <algorithm>
 #include <climits>
-#include <cmath>
-#include <cstdio>
 #include <numeric>
 
 #include "assembly/boundary_conditions.hpp"
 #include "assembly/element_subset_assembly.hpp"
 #include "solver/petsc_extended_residual.hpp"
-#include "solver/petsc_partition.hpp"
 #include "solver/petsc_session.hpp"
 #include "solver/rank_part.hpp"
 #include "spaces/space_part.hpp"
@@ -69,9 +66,7 @@ PetscDistribution::PetscDistribution(const Space& space, const std::function<voi
     if (say)
       say("partitioning " + std::to_string(space.num_elements()) + " elements over " + std::to_string(ranks_) +
           " rank(s)");
-    const std::vector<int> owner = partition_elements(element_centres(space), ranks_);
-    for (int e = 0; e < space.num_elements(); ++e)
-      if (owner[e] == rank_) mine_.push_back(e);
+    mine_ = rank_elements(space, rank_, ranks_);
     whole_dimension_ = space.dimension();
     whole_elements_ = space.num_elements();
   });

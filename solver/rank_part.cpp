@@ -8,8 +8,20 @@
 
 namespace iga {
 
+std::vector<int> element_ranks(const Space& space, int ranks) {
+  return partition_elements(element_centres(space), ranks);
+}
+
+std::vector<int> rank_elements(const Space& space, int rank, int ranks) {
+  const std::vector<int> owner = element_ranks(space, ranks);
+  std::vector<int> mine;
+  for (int e = 0; e < static_cast<int>(owner.size()); ++e)
+    if (owner[e] == rank) mine.push_back(e);
+  return mine;
+}
+
 std::shared_ptr<const SpacePart> rank_part(const std::shared_ptr<const Space>& whole, int rank, int ranks) {
-  const std::vector<int> owner = partition_elements(element_centres(*whole), ranks);
+  const std::vector<int> owner = element_ranks(*whole, ranks);
   std::vector<int> own, neighbours;
   for (int e = 0; e < static_cast<int>(owner.size()); ++e)
     if (owner[e] == rank) own.push_back(e);

@@ -18,6 +18,11 @@
 
 namespace iga {
 
+/// The rank of each element: the Hilbert-curve partition of the element centres.
+std::vector<int> element_ranks(const Space& space, int ranks);
+/// The elements of `rank` of `ranks` (increasing): where a rank assembles on the whole space.
+std::vector<int> rank_elements(const Space& space, int rank, int ranks);
+
 /// The part of `whole` for `rank` of `ranks`.
 std::shared_ptr<const SpacePart> rank_part(const std::shared_ptr<const Space>& whole, int rank, int ranks);
 

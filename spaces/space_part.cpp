@@ -52,9 +52,8 @@ SpacePart::SpacePart(std::shared_ptr<const Space> whole, std::vector<int> elemen
     std::iota(owned_.begin(), owned_.end(), 0);
   } else {
     for (int e : own) {
-      const auto it = std::lower_bound(elements_.begin(), elements_.end(), e);
-      if (it == elements_.end() || *it != e) throw std::invalid_argument("SpacePart: an own element outside the part");
-      owned_.push_back(static_cast<int>(it - elements_.begin()));
+      owned_.push_back(local_element(e));
+      if (owned_.back() < 0) throw std::invalid_argument("SpacePart: an own element outside the part");
     }
   }
   const Space& w = *whole_;
@@ -82,15 +81,6 @@ SpacePart::SpacePart(std::shared_ptr<const Space> whole, std::vector<int> elemen
     dof_offsets_.push_back(static_cast<int>(dofs_.size()));
   }
 
-  // The part's element of each of the whole's elements that it holds (for its edges).
-  std::vector<std::pair<int, int>> local_of;
-  local_of.reserve(elements_.size());
-  for (int e = 0; e < static_cast<int>(elements_.size()); ++e) local_of.emplace_back(elements_[e], e);
-  std::sort(local_of.begin(), local_of.end());
-  const auto local_element = [&](int global) {
-    const auto it = std::lower_bound(local_of.begin(), local_of.end(), std::make_pair(global, -1));
-    return it != local_of.end() && it->first == global ? it->second : -1;
-  };
   const auto restrict_edges = [&](const std::vector<BoundaryEdge>& edges) {
     std::vector<BoundaryEdge> kept;
     for (const BoundaryEdge& b : edges)
@@ -107,6 +97,11 @@ SpacePart::SpacePart(std::shared_ptr<const Space> whole, std::vector<int> elemen
   for (auto& part : facts.boundary_parts) part.second = restrict_edges(part.second);
   facts.all_boundary_edges = restrict_edges(facts.all_boundary_edges);
   set_facts(std::move(facts));
+}
+
+int SpacePart::local_element(int global) const {
+  const auto it = std::lower_bound(elements_.begin(), elements_.end(), global);
+  return it != elements_.end() && *it == global ? static_cast<int>(it - elements_.begin()) : -1;
 }
 
 int SpacePart::local_dof(int global) const {
@@ -128,13 +123,6 @@ RulePtr SpacePart::edge_quadrature(int element, int edge, int degree) const {
 }
 
 std::vector<InteriorEdge> SpacePart::interior_edges() const {
-  std::vector<std::pair<int, int>> local_of;
-  for (int e = 0; e < static_cast<int>(elements_.size()); ++e) local_of.emplace_back(elements_[e], e);
-  std::sort(local_of.begin(), local_of.end());
-  const auto local_element = [&](int global) {
-    const auto it = std::lower_bound(local_of.begin(), local_of.end(), std::make_pair(global, -1));
-    return it != local_of.end() && it->first == global ? it->second : -1;
-  };
   std::vector<InteriorEdge> edges;
   for (InteriorEdge edge : whole_->interior_edges()) {
     const int a = local_element(edge.element_a), b = local_element(edge.element_b);

@@ -42,6 +42,8 @@ class SpacePart final : public Space {
   const std::vector<int>& global_dofs() const { return global_dofs_; }
   /// The part's number of a function of the whole, or −1 when it is not active on the part.
   int local_dof(int global) const;
+  /// The part's number of an element of the whole, or −1 when it is not in the part.
+  int local_element(int global) const;
 
  private:
   class PartEvaluator;
