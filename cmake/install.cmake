@@ -19,6 +19,11 @@ foreach(layer IN LISTS IGA_LAYERS)
   endforeach()
 endforeach()
 
+if(IGA_WITH_PETSC)
+  list(APPEND iga_layer_targets iga_petsc)  # the PETSc implementation, linked by iga_run::iga_run
+  # The plugin iga-run opens (solver/petsc_plugin.cpp looks in ../lib/iga-run/ from the executable).
+  install(TARGETS iga-run-petsc LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}/iga-run)
+endif()
 install(TARGETS ${iga_layer_targets} igarun EXPORT iga_runTargets
         ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR})
 install(TARGETS iga-run iga-gmsh-worker RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})

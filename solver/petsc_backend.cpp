@@ -1,9 +1,4 @@
-#include "solver/petsc_backend.hpp"
-
-#include "config/errors.hpp"
-
-#ifdef IGA_WITH_PETSC
-
+// The distributed linear backend of the PETSc plugin (petsc_backend.hpp says what it does).
 #include <dlfcn.h>
 #include <petscksp.h>
 
@@ -16,12 +11,14 @@
 #include <sstream>
 
 #include "assembly/boundary_conditions.hpp"
+#include "config/errors.hpp"
 #include "assembly/element_subset_assembly.hpp"
 #include "assembly/sparsity.hpp"
 #include "solver/linear_solver.hpp"
 #include "solver/petsc_distribution.hpp"
 #include "solver/petsc_extended_residual.hpp"
 #include "solver/petsc_option_policy.hpp"
+#include "solver/petsc_runtime.hpp"
 #include "solver/petsc_session.hpp"
 
 namespace iga {
@@ -332,22 +329,9 @@ Eigen::VectorXd PetscBackend::solve(SolveReport& report, const ProgressSink& say
 
 }  // namespace
 
-std::unique_ptr<LinearBackend> make_petsc_backend(const Space& space, const PetscSettings& settings,
-                                                  const ProgressSink& progress) {
-  ensure_petsc_initialised();
+std::unique_ptr<LinearBackend> make_distributed_backend(const Space& space, const PetscSettings& settings,
+                                                        const ProgressSink& progress) {
   return std::make_unique<PetscBackend>(space, settings, progress);
 }
 
 }  // namespace iga
-
-#else  // built without PETSc
-
-namespace iga {
-
-std::unique_ptr<LinearBackend> make_petsc_backend(const Space&, const PetscSettings&, const ProgressSink&) {
-  throw InputError("solver.type: petsc: this iga-run was built without PETSc");
-}
-
-}  // namespace iga
-
-#endif

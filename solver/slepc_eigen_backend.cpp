@@ -1,6 +1,6 @@
-#include "solver/slepc_eigen_backend.hpp"
-
+// The SLEPc eigen backend of the PETSc plugin (slepc_eigen_backend.hpp says what it does).
 #include "config/errors.hpp"
+#include "solver/petsc_runtime.hpp"
 
 #ifdef IGA_WITH_SLEPC
 
@@ -18,8 +18,6 @@
 #include "solver/petsc_session.hpp"
 
 namespace iga {
-
-bool slepc_available() { return true; }
 
 namespace {
 
@@ -211,8 +209,7 @@ Eigen::VectorXd SlepcEigenBackend::spectrum(EigenReport& report) {
 
 }  // namespace
 
-std::unique_ptr<EigenBackend> make_slepc_eigen_backend(const Space& space, const ProgressSink& progress) {
-  ensure_petsc_initialised();
+std::unique_ptr<EigenBackend> make_slepc_backend(const Space& space, const ProgressSink& progress) {
   PetscBool initialised = PETSC_FALSE;
   check(SlepcInitialized(&initialised), "SlepcInitialized");
   // PETSc runs already: SLEPc registers its packages on top of it (and leaves finalising to PETSc).
@@ -222,13 +219,11 @@ std::unique_ptr<EigenBackend> make_slepc_eigen_backend(const Space& space, const
 
 }  // namespace iga
 
-#else  // built without SLEPc
+#else  // a plugin built without SLEPc (iga-run refuses the config before it asks)
 
 namespace iga {
 
-bool slepc_available() { return false; }
-
-std::unique_ptr<EigenBackend> make_slepc_eigen_backend(const Space&, const ProgressSink&) {
+std::unique_ptr<EigenBackend> make_slepc_backend(const Space&, const ProgressSink&) {
   throw InputError("solver.type: petsc with problem.eigen: this iga-run was built without SLEPc");
 }
 

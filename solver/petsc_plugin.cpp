@@ -1,0 +1,109 @@
+// Where the PETSc runtime comes from (petsc_runtime.hpp), and the backends' entry points that
+// forward to it. iga-run opens the plugin the first time a run needs PETSc; a program that links
+// the implementation has it built in.
+#include <dlfcn.h>
+
+#include <filesystem>
+#include <stdexcept>
+#include <string>
+#include <system_error>
+
+#include "config/errors.hpp"
+#include "solver/petsc_backend.hpp"
+#include "solver/petsc_runtime.hpp"
+#include "solver/petsc_session.hpp"
+#include "solver/slepc_eigen_backend.hpp"
+
+// Defined where the implementation is linked in; null in iga-run, which opens the plugin instead.
+extern "C" iga::PetscRuntime* iga_petsc_runtime() __attribute__((weak));
+
+namespace iga {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+#ifdef IGA_WITH_PETSC
+constexpr const char* plugin_name = "iga-run-petsc.so";
+
+/// Beside the executable (the build tree), in ../lib/iga-run/ from it (an installed tree moved
+/// elsewhere), or where it was installed. Never a folder a config names.
+fs::path plugin_path() {
+  std::error_code ec;
+  const fs::path exe_dir = fs::read_symlink("/proc/self/exe", ec).parent_path();
+  if (!ec) {
+    for (const fs::path& candidate : {exe_dir / plugin_name, exe_dir / ".." / "lib" / "iga-run" / plugin_name})
+      if (fs::is_regular_file(candidate, ec)) return candidate;
+  }
+#ifdef IGA_PETSC_PLUGIN_INSTALLED_PATH
+  if (fs::is_regular_file(IGA_PETSC_PLUGIN_INSTALLED_PATH, ec)) return IGA_PETSC_PLUGIN_INSTALLED_PATH;
+#endif
+  throw std::runtime_error(std::string("cannot find iga-run's PETSc plugin '") + plugin_name +
+                           "' next to the executable" +
+#ifdef IGA_PETSC_PLUGIN_INSTALLED_PATH
+                           " or at " IGA_PETSC_PLUGIN_INSTALLED_PATH
+#endif
+                           "");
+}
+
+void* plugin_handle = nullptr;
+
+PetscRuntime* load_plugin() {
+  const fs::path path = plugin_path();
+  // RTLD_NOW: a plugin that does not match this executable fails here, with the symbol named.
+  plugin_handle = dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);
+  if (!plugin_handle)
+    throw std::runtime_error("cannot load iga-run's PETSc plugin '" + path.string() + "': " + dlerror());
+  auto* entry = reinterpret_cast<PetscRuntime* (*)()>(dlsym(plugin_handle, "iga_petsc_runtime"));
+  if (!entry) throw std::runtime_error("'" + path.string() + "' is not iga-run's PETSc plugin (no entry point)");
+  return entry();
+}
+#endif
+
+}  // namespace
+
+PetscRuntime* petsc_runtime(bool load) {
+#ifdef IGA_WITH_PETSC
+  static PetscRuntime* runtime = iga_petsc_runtime ? iga_petsc_runtime() : nullptr;
+  if (!runtime && load) runtime = load_plugin();
+  return runtime;
+#else
+  if (load) throw InputError("solver.type: petsc: this iga-run was built without PETSc");
+  return nullptr;
+#endif
+}
+
+void* petsc_plugin_symbol(const char* name) {
+#ifdef IGA_WITH_PETSC
+  return plugin_handle ? dlsym(plugin_handle, name) : nullptr;
+#else
+  (void)name;
+  return nullptr;
+#endif
+}
+
+bool slepc_available() {
+#ifdef IGA_WITH_SLEPC
+  return true;
+#else
+  return false;
+#endif
+}
+
+std::unique_ptr<LinearBackend> make_petsc_backend(const Space& space, const PetscSettings& settings,
+                                                  const ProgressSink& progress) {
+#ifndef IGA_WITH_PETSC
+  throw InputError("solver.type: petsc: this iga-run was built without PETSc");
+#endif
+  ensure_petsc_initialised();
+  return petsc_runtime(true)->make_linear_backend(space, settings, progress);
+}
+
+std::unique_ptr<EigenBackend> make_slepc_eigen_backend(const Space& space, const ProgressSink& progress) {
+  if (!slepc_available())
+    throw InputError("solver.type: petsc with problem.eigen: this iga-run was built without SLEPc");
+  ensure_petsc_initialised();
+  return petsc_runtime(true)->make_eigen_backend(space, progress);
+}
+
+}  // namespace iga
