@@ -3,7 +3,8 @@
 #   scripts/test-installed-package.sh BUILD_DIR SCRATCH_DIR
 # installs BUILD_DIR into SCRATCH_DIR/prefix, builds examples/ there as a separate CMake project
 # against find_package(iga_run), runs embed_clamped_plate, and, when the Python module was built,
-# runs a study through the installed `iga_run` package with Debian's Python.
+# runs a study through the installed `iga_run` package with Debian's Python, and, when PETSc was
+# built in, runs the installed iga-run on a PETSc config (it must find its plugin in lib/iga-run/).
 set -euo pipefail
 build=$(realpath "$1")
 scratch=$2
@@ -20,6 +21,12 @@ cmake -S "$source_dir/examples" -B "$scratch/examples" -DCMAKE_PREFIX_PATH="$pre
   > "$scratch/examples-configure.log" || { cat "$scratch/examples-configure.log"; exit 1; }
 cmake --build "$scratch/examples" -j 2 > "$scratch/examples-build.log" || { cat "$scratch/examples-build.log"; exit 1; }
 "$scratch/examples/embed_clamped_plate"
+
+if [ -f "$prefix/lib/iga-run/iga-run-petsc.so" ]; then
+  "$prefix/bin/iga-run" -q "$source_dir/configs/bspline-poisson-petsc.yaml" --levels 1 -o "$scratch/petsc-run"
+  grep -q "cholmod\|petsc\|mumps" "$scratch/petsc-run/summary.json"
+  echo "installed iga-run: solver.type petsc through $prefix/lib/iga-run/iga-run-petsc.so"
+fi
 
 python_dir=$prefix/lib/python3/dist-packages
 if [ -d "$python_dir/iga_run" ]; then
