@@ -16,10 +16,6 @@ namespace iga {
 
 namespace {
 
-SurfaceField field(const SymbolicFunction& f) {
-  return [f](const Eigen::Vector3d& x) { return f.at(x); };
-}
-
 
 /// Append one component's scalar constraints to the vector field's (component c, N functions).
 void append_component(Constraints& all, const Constraints& one, int c, int n) {
@@ -217,7 +213,7 @@ Constraints ShellFormulation::constraints() const {
       one.values = Eigen::VectorXd::Zero(n);
       for (int i = 0; i < n; ++i) one.free.push_back(i);
     } else {
-      const SurfaceField g = shell.exact ? field((*shell.exact)[c]) : SurfaceField([](const Eigen::Vector3d&) { return 0.0; });
+      const SurfaceField g = shell.exact ? surface_field((*shell.exact)[c]) : SurfaceField([](const Eigen::Vector3d&) { return 0.0; });
       one = surface_dirichlet_constraints(space(), edges, g, quadrature_degree());
     }
     append_component(all, one, c, n);

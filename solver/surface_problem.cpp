@@ -15,10 +15,11 @@
 
 namespace iga {
 
-namespace {
-SurfaceField field(const SymbolicFunction& f) {
+SurfaceField surface_field(const SymbolicFunction& f) {
   return [f](const Eigen::Vector3d& x) { return f.at(x); };
 }
+
+namespace {
 
 /// Δ_Γu(x, n, H) of an ambient u = tr ∇²u − n·∇²u n − H ∂_n u, with the surface's own n and H.
 SurfaceSource surface_laplacian(const SymbolicFunction& u) {
@@ -52,17 +53,17 @@ SurfaceExactSolution surface_exact_solution(const ProblemSpec& problem, bool wit
 SurfaceExactSolution surface_exact_solution(const SymbolicFunction& u, bool with_hessian) {
   SurfaceExactSolution s;
   const SymbolicFunction ux = u.diff_x(), uy = u.diff_y(), uz = u.diff_z();
-  s.u = field(u);
-  s.ux = field(ux);
-  s.uy = field(uy);
-  s.uz = field(uz);
+  s.u = surface_field(u);
+  s.ux = surface_field(ux);
+  s.uy = surface_field(uy);
+  s.uz = surface_field(uz);
   if (!with_hessian) return s;
-  s.uxx = field(ux.diff_x());
-  s.uxy = field(ux.diff_y());
-  s.uxz = field(ux.diff_z());
-  s.uyy = field(uy.diff_y());
-  s.uyz = field(uy.diff_z());
-  s.uzz = field(uz.diff_z());
+  s.uxx = surface_field(ux.diff_x());
+  s.uxy = surface_field(ux.diff_y());
+  s.uxz = surface_field(ux.diff_z());
+  s.uyy = surface_field(uy.diff_y());
+  s.uyz = surface_field(uy.diff_z());
+  s.uzz = surface_field(uz.diff_z());
   return s;
 }
 

@@ -18,6 +18,9 @@ namespace iga {
 /// The given source, else f(x, n, H) = −Δ_Γu + u from the exact solution (laplace_beltrami).
 SurfaceSource surface_source(const ProblemSpec& problem);
 
+/// f as a field on the surface's points (its ambient values).
+SurfaceField surface_field(const SymbolicFunction& f);
+
 /// u given in x, y, z as callables: u and its ambient gradient, and the ambient Hessian when
 /// `with_hessian` (the surface H2 seminorm of fourth-order problems; a shell's components too).
 SurfaceExactSolution surface_exact_solution(const SymbolicFunction& u, bool with_hessian);
