@@ -16,10 +16,6 @@ namespace iga {
 
 namespace {
 
-// A function counts as active on an edge when it exceeds this fraction of the largest value there;
-// traces that vanish identically evaluate to round-off.
-constexpr double kActiveTolerance = 1e-10;
-
 struct EdgeKind {
   bool value = false;
   bool normal = false;

@@ -14,6 +14,10 @@
 
 namespace iga {
 
+/// A function counts as active on an edge when its trace exceeds this fraction of the largest
+/// trace there: traces that vanish identically evaluate to round-off.
+inline constexpr double kActiveTolerance = 1e-10;
+
 /// `order` lists the global functions seen by the data (local index = position), `local_of` maps
 /// each of the `dim` global functions to its local index or −1; `triplets` and `rhs_entries` are
 /// the unsummed local Gram matrix and right-hand side. SPD: the constrained coefficients solve it

@@ -8,11 +8,6 @@
 
 namespace iga {
 
-namespace {
-// As in impose_essential: a trace counts when it exceeds this fraction of the largest on the edge.
-constexpr double kActiveTolerance = 1e-10;
-}  // namespace
-
 Constraints surface_essential_constraints(const Space& space, const std::vector<BoundaryEdge>& edges,
                                           const SurfaceField& g, const SurfaceConormalField& g_conormal,
                                           int quad_degree) {

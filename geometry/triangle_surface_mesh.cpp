@@ -9,6 +9,10 @@
 
 namespace iga {
 
+[[noreturn]] void reject_surface_mesh(const TriangleSurfaceMesh& mesh, const std::string& message) {
+  throw InputError(mesh.source + ": " + message);
+}
+
 namespace {
 
 /// " (line 12)" when the file line is known, "" for built-in meshes (messages start with the source).
@@ -17,9 +21,6 @@ std::string located(const std::vector<int>& lines, int index) {
   return "";
 }
 
-[[noreturn]] void fail(const TriangleSurfaceMesh& mesh, const std::string& message) {
-  throw InputError(mesh.source + ": " + message);
-}
 
 std::string edge_name(const TriangleSurfaceMesh& mesh, int a, int b) {
   return "edge (" + std::to_string(std::min(a, b)) + ", " + std::to_string(std::max(a, b)) + ") between " +
@@ -60,20 +61,20 @@ std::vector<SurfaceEdge> surface_edges(const TriangleSurfaceMesh& mesh) {
     e.i = key.first;
     e.j = key.second;
     if (list.size() > 2)
-      fail(mesh, edge_name(mesh, e.i, e.j) + " is shared by " + std::to_string(list.size()) + " triangles (" +
+      reject_surface_mesh(mesh, edge_name(mesh, e.i, e.j) + " is shared by " + std::to_string(list.size()) + " triangles (" +
                      mesh.triangle_name(list[0].triangle) + ", " + mesh.triangle_name(list[1].triangle) + ", " +
                      mesh.triangle_name(list[2].triangle) + "); a surface mesh must be manifold");
     e.n = list[0].triangle;
     e.k = list[0].opposite;
     if (list.size() == 2) {
       if (list[0].forward == list[1].forward)
-        fail(mesh, edge_name(mesh, e.i, e.j) + ": " + mesh.triangle_name(list[0].triangle) + " and " +
+        reject_surface_mesh(mesh, edge_name(mesh, e.i, e.j) + ": " + mesh.triangle_name(list[0].triangle) + " and " +
                        mesh.triangle_name(list[1].triangle) +
                        " traverse it in the same direction (inconsistent orientation)");
       e.nbar = list[1].triangle;
       e.kbar = list[1].opposite;
       if (e.kbar == e.k)
-        fail(mesh, edge_name(mesh, e.i, e.j) + ": " + mesh.triangle_name(e.n) + " and " + mesh.triangle_name(e.nbar) +
+        reject_surface_mesh(mesh, edge_name(mesh, e.i, e.j) + ": " + mesh.triangle_name(e.n) + " and " + mesh.triangle_name(e.nbar) +
                        " are the same triangle twice");
       interior.push_back(e);
     } else {
@@ -100,7 +101,7 @@ std::vector<Eigen::Vector3d> angle_weighted_normals(const TriangleSurfaceMesh& m
   for (std::size_t v = 0; v < sum.size(); ++v) {
     const double length = sum[v].norm();
     if (!(length > 1e-12))
-      fail(mesh, mesh.vertex_name(static_cast<int>(v)) +
+      reject_surface_mesh(mesh, mesh.vertex_name(static_cast<int>(v)) +
                      ": the triangle normals around it cancel; give normals in the file");
     normals[v] = sum[v] / length;
   }
@@ -108,31 +109,31 @@ std::vector<Eigen::Vector3d> angle_weighted_normals(const TriangleSurfaceMesh& m
 }
 
 void validate_surface_mesh(const TriangleSurfaceMesh& mesh) {
-  if (mesh.triangles.empty()) fail(mesh, "the surface mesh has no triangles");
+  if (mesh.triangles.empty()) reject_surface_mesh(mesh, "the surface mesh has no triangles");
   std::vector<int> used(mesh.points.size(), 0);
   for (int n = 0; n < mesh.num_triangles(); ++n) {
     const auto& t = mesh.triangles[n];
     for (int c = 0; c < 3; ++c)
       if (t[c] < 0 || t[c] >= mesh.num_points())
-        fail(mesh, mesh.triangle_name(n) + " names vertex " + std::to_string(t[c]) + ", which does not exist");
+        reject_surface_mesh(mesh, mesh.triangle_name(n) + " names vertex " + std::to_string(t[c]) + ", which does not exist");
     if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2])
-      fail(mesh, mesh.triangle_name(n) + " repeats a vertex");
+      reject_surface_mesh(mesh, mesh.triangle_name(n) + " repeats a vertex");
     const Eigen::Vector3d a = mesh.points[t[1]] - mesh.points[t[0]];
     const Eigen::Vector3d b = mesh.points[t[2]] - mesh.points[t[0]];
     const Eigen::Vector3d c = mesh.points[t[2]] - mesh.points[t[1]];
     const double longest = std::max({a.squaredNorm(), b.squaredNorm(), c.squaredNorm()});
     // Twice the area against the squared longest edge: zero for collinear vertices.
     if (!(a.cross(b).norm() > 1e-12 * longest))
-      fail(mesh, mesh.triangle_name(n) + " with vertices " + std::to_string(t[0]) + ", " + std::to_string(t[1]) +
+      reject_surface_mesh(mesh, mesh.triangle_name(n) + " with vertices " + std::to_string(t[0]) + ", " + std::to_string(t[1]) +
                      ", " + std::to_string(t[2]) + " has zero area");
     for (int v : t) ++used[v];
   }
   for (int v = 0; v < mesh.num_points(); ++v)
-    if (!used[v]) fail(mesh, mesh.vertex_name(v) + " belongs to no triangle");
-  if (mesh.normals.size() != mesh.points.size()) fail(mesh, "one normal per vertex is required");
+    if (!used[v]) reject_surface_mesh(mesh, mesh.vertex_name(v) + " belongs to no triangle");
+  if (mesh.normals.size() != mesh.points.size()) reject_surface_mesh(mesh, "one normal per vertex is required");
   for (int v = 0; v < mesh.num_points(); ++v)
     if (std::abs(mesh.normals[v].norm() - 1.0) > 1e-12)
-      fail(mesh, mesh.vertex_name(v) + " has no unit normal");
+      reject_surface_mesh(mesh, mesh.vertex_name(v) + " has no unit normal");
   surface_edges(mesh);  // manifold and orientation checks
 }
 

@@ -54,6 +54,9 @@ std::vector<Eigen::Vector3d> angle_weighted_normals(const TriangleSurfaceMesh& m
 /// one unit normal per vertex. InputError naming the vertex, edge or triangle (and file line).
 void validate_surface_mesh(const TriangleSurfaceMesh& mesh);
 
+/// Throws InputError naming the mesh's source: `message` is what is wrong with it.
+[[noreturn]] void reject_surface_mesh(const TriangleSurfaceMesh& mesh, const std::string& message);
+
 /// A validated mesh from a file read by read_surface_mesh: the file's normals when it has them,
 /// angle-weighted normals otherwise.
 TriangleSurfaceMesh surface_mesh_from_file(const SurfaceMeshFile& file);

@@ -5,14 +5,13 @@
 #include "config/config_node.hpp"
 #include "config/errors.hpp"
 #include "mesh/gmsh_worker.hpp"
+#include "mesh/planar_vectors.hpp"
 
 namespace iga {
 
 namespace {
 
 using Loop = std::vector<Eigen::Vector2d>;
-
-double cross(const Eigen::Vector2d& a, const Eigen::Vector2d& b) { return a.x() * b.y() - a.y() * b.x(); }
 
 /// Whether closed segments pq and rs have a point in common.
 bool segments_meet(const Eigen::Vector2d& p, const Eigen::Vector2d& q, const Eigen::Vector2d& r,

@@ -9,6 +9,7 @@
 #include "config/utf8.hpp"
 #include "config/text_excerpt.hpp"
 #include "mesh/coincident_points.hpp"
+#include "mesh/planar_vectors.hpp"
 
 namespace iga {
 
@@ -56,8 +57,6 @@ double longest_edge(const PlanarMesh& mesh, int c) {
     h = std::max(h, (mesh.vertices[cell[(k + 1) % cell.size()]] - mesh.vertices[cell[k]]).norm());
   return h;
 }
-
-double cross(const Eigen::Vector2d& a, const Eigen::Vector2d& b) { return a.x() * b.y() - a.y() * b.x(); }
 
 void check_cell_shapes(const PlanarMesh& mesh) {
   for (int c = 0; c < num_cells(mesh); ++c) {

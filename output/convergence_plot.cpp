@@ -9,14 +9,13 @@
 #include <optional>
 #include <stdexcept>
 
+#include "output/plot_colours.hpp"
 #include "output/report.hpp"
 
 namespace iga {
 
 namespace {
 
-// cmap0 indices: 0 background, 1 axes and text, then one per error series.
-constexpr int kWhite = 0, kBlack = 1;
 // Character height relative to PLplot's default, and of the data symbols relative to text.
 constexpr PLFLT kTextScale = 0.85, kSymbolScale = 0.6;
 
@@ -79,7 +78,7 @@ void draw_panel(plstream& pls, const std::vector<Series>& series, bool against_d
   auto [ymin, ymax] = padded_range(all_y, 0.05);
   ymax += 0.3 * (ymax - ymin);  // headroom for the legend above the data
 
-  pls.col0(kBlack);
+  pls.col0(kPlotInk);
   pls.lsty(1);
   pls.width(1.0);
   pls.env(xmin, xmax, ymin, ymax, 0, 30);  // 30: logarithmic x and y axes
@@ -93,7 +92,7 @@ void draw_panel(plstream& pls, const std::vector<Series>& series, bool against_d
   auto add_entry = [&](std::string text, PLINT opt, int colour, PLINT style, const char* symbol) {
     texts.push_back(std::move(text));
     opts.push_back(opt);
-    text_colours.push_back(kBlack);
+    text_colours.push_back(kPlotInk);
     line_colours.push_back(colour);
     line_styles.push_back(style);
     line_widths.push_back(style == 1 ? 2.0 : 1.5);
@@ -142,7 +141,7 @@ void draw_panel(plstream& pls, const std::vector<Series>& series, bool against_d
   const PLINT position = PL_POSITION_TOP | PL_POSITION_INSIDE | (against_dofs ? PL_POSITION_RIGHT : PL_POSITION_LEFT);
   PLFLT legend_width = 0, legend_height = 0;
   pls.legend(&legend_width, &legend_height, PL_LEGEND_BACKGROUND | PL_LEGEND_BOUNDING_BOX, position, 0.02, 0.02,
-             0.08, kWhite, kBlack, 1, 0, 0, static_cast<PLINT>(texts.size()), opts.data(), 1.0, 0.8, 1.6, 0.0,
+             0.08, kPlotBackground, kPlotInk, 1, 0, 0, static_cast<PLINT>(texts.size()), opts.data(), 1.0, 0.8, 1.6, 0.0,
              text_colours.data(), text_ptrs.data(), nullptr, nullptr, nullptr, nullptr, line_colours.data(),
              line_styles.data(), line_widths.data(), symbol_colours.data(), symbol_scales.data(),
              symbol_numbers.data(), symbols.data());
@@ -217,7 +216,7 @@ void plot_convergence(const std::vector<LevelResult>& rows, const OptimalRates& 
     pls.spage(0, 0, 1200, 520, 0, 0);
     pls.ssub(2, 1);
     pls.scolbg(255, 255, 255);
-    pls.scol0(kBlack, 0, 0, 0);
+    pls.scol0(kPlotInk, 0, 0, 0);
     pls.scol0(2, 31, 119, 180);   // blue
     pls.scol0(3, 214, 39, 40);    // red
     pls.scol0(4, 44, 160, 44);    // green

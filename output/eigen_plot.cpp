@@ -10,11 +10,13 @@
 #include <map>
 #include <stdexcept>
 
+#include "output/plot_colours.hpp"
+
 namespace iga {
 
 namespace {
 
-constexpr int kBlack = 1, kColours = 6;
+constexpr int kColours = 6;
 
 /// One SVG page drawn by `draw`, PLplot's errors turned into exceptions (and no half-written file).
 void svg(const std::string& filename, const std::function<void(plstream&)>& draw) {
@@ -29,7 +31,7 @@ void svg(const std::string& filename, const std::function<void(plstream&)>& draw
     pls.sfnam(filename.c_str());
     pls.spage(0, 0, 760, 560, 0, 0);
     pls.scolbg(255, 255, 255);
-    pls.scol0(kBlack, 0, 0, 0);
+    pls.scol0(kPlotInk, 0, 0, 0);
     const int rgb[kColours][3] = {{31, 119, 180}, {214, 39, 40}, {44, 160, 44}, {148, 103, 189}, {255, 127, 14}, {23, 190, 207}};
     for (int c = 0; c < kColours; ++c) pls.scol0(2 + c, rgb[c][0], rgb[c][1], rgb[c][2]);
     pls.init();
@@ -54,11 +56,11 @@ void legend(plstream& pls, const std::vector<std::string>& texts, std::vector<PL
             std::vector<PLINT>& styles, PLINT side) {
   std::vector<const char*> text_ptrs;
   for (const std::string& t : texts) text_ptrs.push_back(t.c_str());
-  std::vector<PLINT> text_colours(texts.size(), kBlack);
+  std::vector<PLINT> text_colours(texts.size(), kPlotInk);
   std::vector<PLFLT> widths(texts.size(), 2.0);
   PLFLT w = 0, h = 0;
   pls.legend(&w, &h, PL_LEGEND_BACKGROUND | PL_LEGEND_BOUNDING_BOX, PL_POSITION_TOP | side | PL_POSITION_INSIDE, 0.02,
-             0.02, 0.08, 0, kBlack, 1, 0, 0, static_cast<PLINT>(texts.size()), opts.data(), 1.0, 0.8, 1.6, 0.0,
+             0.02, 0.08, 0, kPlotInk, 1, 0, 0, static_cast<PLINT>(texts.size()), opts.data(), 1.0, 0.8, 1.6, 0.0,
              text_colours.data(), text_ptrs.data(), nullptr, nullptr, nullptr, nullptr, colours.data(), styles.data(),
              widths.data(), nullptr, nullptr, nullptr, nullptr);
 }
@@ -90,7 +92,7 @@ void plot_eigen_errors(const std::vector<EigenRow>& rows, int expected_rate, con
     const auto [x0, x1] = range(xs, 0.08);
     auto [y0, y1] = range(ys, 0.05);
     y1 += 0.25 * (y1 - y0);
-    pls.col0(kBlack);
+    pls.col0(kPlotInk);
     pls.env(x0, x1, y0, y1, 0, 30);
     pls.lab("degrees of freedom", "relative eigenvalue error", title.c_str());
     std::vector<std::string> texts;
@@ -111,13 +113,13 @@ void plot_eigen_errors(const std::vector<EigenRow>& rows, int expected_rate, con
         const std::size_t n = l.first.size();
         const PLFLT xa = l.first[n >= 3 ? n - 3 : 0], xb = l.first[n - 1], yb = l.second[n - 1] - 0.15;
         const PLFLT sx[2] = {xa, xb}, sy[2] = {yb - 0.5 * expected_rate * (xa - xb), yb};
-        pls.col0(kBlack);
+        pls.col0(kPlotInk);
         pls.lsty(2);
         pls.line(2, sx, sy);
         pls.lsty(1);
         texts.push_back("DOF#u-" + std::to_string(expected_rate) + "/2#d (h#u" + std::to_string(expected_rate) + "#d)");
         opts.push_back(PL_LEGEND_LINE);
-        colours.push_back(kBlack);
+        colours.push_back(kPlotInk);
         styles.push_back(2);
       }
     }
@@ -158,7 +160,7 @@ void plot_eigen_comparison(const std::vector<std::pair<std::string, std::vector<
   svg(filename, [&](plstream& pls) {
     const auto [x0, x1] = range(xs, 0.08);
     auto [y0, y1] = range(ys, 0.05);
-    pls.col0(kBlack);
+    pls.col0(kPlotInk);
     pls.env(x0, x1, y0, y1 + 0.25 * (y1 - y0), 0, 30);
     pls.lab("degrees of freedom", "largest relative eigenvalue error", title.c_str());
     std::vector<std::string> texts;
@@ -186,7 +188,7 @@ void plot_normalized_spectrum(const std::vector<SpectrumCurve>& curves, const st
   svg(filename, [&](plstream& pls) {
     auto [y0, y1] = range(ys, 0.05);
     y0 = std::min<PLFLT>(y0, 0.95);
-    pls.col0(kBlack);
+    pls.col0(kPlotInk);
     pls.env(0.0, 1.0, y0, y1 + 0.2 * (y1 - y0), 0, 0);
     pls.lab("n / N", "λ#dh,n#u / λ#dn#u", title.c_str());
     std::vector<std::string> texts;

@@ -1,33 +1,23 @@
 #include "output/eigen_report.hpp"
 
-#include "output/eigen_plot.hpp"
-
 #include <algorithm>
 #include <cstdio>
 #include <fstream>
 #include <stdexcept>
 
+#include "output/eigen_plot.hpp"
+#include "output/table_values.hpp"
+
 namespace iga {
-
-namespace {
-std::string number(std::optional<double> v, const char* fmt) {
-  if (!v) return "";
-  char buf[64];
-  std::snprintf(buf, sizeof buf, fmt, *v);
-  return buf;
-}
-
-nlohmann::json optional_json(std::optional<double> v) { return v ? nlohmann::json(*v) : nlohmann::json(nullptr); }
-}  // namespace
 
 void write_eigenvalues_csv(const std::vector<EigenRow>& rows, const std::string& filename) {
   std::ofstream out(filename);
   if (!out) throw std::runtime_error("cannot write " + filename);
   out << "level,h,dofs,index,eigenvalue,reference,relative_error,rate,rate_dofs\n";
   for (const EigenRow& r : rows)
-    out << r.level << ',' << number(r.h, "%.10e") << ',' << r.dofs << ',' << r.index << ','
-        << number(r.eigenvalue, "%.17e") << ',' << number(r.reference, "%.17e") << ','
-        << number(r.relative_error, "%.6e") << ',' << number(r.rate, "%.4f") << ',' << number(r.rate_dofs, "%.4f")
+    out << r.level << ',' << table_number(r.h, "%.10e") << ',' << r.dofs << ',' << r.index << ','
+        << table_number(r.eigenvalue, "%.17e") << ',' << table_number(r.reference, "%.17e") << ','
+        << table_number(r.relative_error, "%.6e") << ',' << table_number(r.rate, "%.4f") << ',' << table_number(r.rate_dofs, "%.4f")
         << '\n';
 }
 
@@ -49,7 +39,7 @@ std::string format_eigen_table(const std::vector<EigenRow>& rows) {
     out += line;
     if (references && r.reference) {
       std::snprintf(line, sizeof line, " %24.16e %12.3e %7s %7s", *r.reference, *r.relative_error,
-                    number(r.rate, "%.2f").c_str(), number(r.rate_dofs, "%.2f").c_str());
+                    table_number(r.rate, "%.2f").c_str(), table_number(r.rate_dofs, "%.2f").c_str());
       out += line;
     }
     out += '\n';
@@ -92,8 +82,8 @@ void write_spectrum_files(const EigenSpec& spec, const std::vector<EigenLevel>& 
   if (!out) throw std::runtime_error("cannot write " + csv);
   out << "level,n,N,eigenvalue,reference,ratio\n";
   for (const SpectrumRow& r : rows)
-    out << r.level << ',' << r.n << ',' << r.N << ',' << number(r.eigenvalue, "%.17e") << ','
-        << number(r.reference, "%.17e") << ',' << number(r.ratio, "%.15f") << '\n';
+    out << r.level << ',' << r.n << ',' << r.N << ',' << table_number(r.eigenvalue, "%.17e") << ','
+        << table_number(r.reference, "%.17e") << ',' << table_number(r.ratio, "%.15f") << '\n';
   if (plot && !curves.empty()) plot_normalized_spectrum(curves, title, directory + "/spectrum.svg");
 }
 

@@ -10,17 +10,11 @@
 
 #include "output/eigen_report.hpp"
 #include "output/surface_report.hpp"
+#include "output/table_values.hpp"
 
 namespace iga {
 
 namespace {
-
-std::string number(std::optional<double> v, const char* fmt = "%.6e") {
-  if (!v) return "";
-  char buf[64];
-  std::snprintf(buf, sizeof buf, fmt, *v);
-  return buf;
-}
 
 struct Rates {
   std::optional<double> l2, h1, h2;
@@ -77,8 +71,6 @@ nlohmann::json to_json(const YAML::Node& node) {
     default: return nullptr;
   }
 }
-
-nlohmann::json optional_json(std::optional<double> v) { return v ? nlohmann::json(*v) : nlohmann::json(nullptr); }
 
 /// problem.form as a config spells it (parse_problem accepts `laplacian` and `hessian`, biharmonic
 /// only), so summary.json echoes a value a config can take; empty for Poisson, which has no form key.
@@ -155,7 +147,7 @@ std::string format_difference_table(const std::vector<LevelResult>& rows, const 
   }
   s << "   t_space  assemble     solve  t_errors\n";
   const std::vector<double> h = mesh_sizes(rows);
-  const auto cell = [](std::optional<double> v, const char* format) { return v ? number(v, format) : std::string("-"); };
+  const auto cell = [](std::optional<double> v, const char* format) { return v ? table_number(v, format) : std::string("-"); };
   for (std::size_t i = 0; i < rows.size(); ++i) {
     const LevelResult& r = rows[i];
     const Rates d = difference_rates_at(rows, i, rates_against_dofs);
@@ -164,16 +156,16 @@ std::string format_difference_table(const std::vector<LevelResult>& rows, const 
                        ? rate(rows[i - 1].energy_difference, r.energy_difference, r.dofs, rows[i - 1].dofs)
                        : rate(rows[i - 1].energy_difference, r.energy_difference, rows[i - 1].h, r.h);
     std::snprintf(line, sizeof line, "%5d %10.4e %8d %10s %6s %10s %6s %10s %6s %14s %11s %6s", r.level, r.h, r.dofs,
-                  cell(r.difference_l2, "%.3e").c_str(), d.l2 ? number(d.l2, "%.2f").c_str() : "",
-                  cell(r.difference_h1, "%.3e").c_str(), d.h1 ? number(d.h1, "%.2f").c_str() : "",
-                  cell(r.difference_h2, "%.3e").c_str(), d.h2 ? number(d.h2, "%.2f").c_str() : "",
+                  cell(r.difference_l2, "%.3e").c_str(), d.l2 ? table_number(d.l2, "%.2f").c_str() : "",
+                  cell(r.difference_h1, "%.3e").c_str(), d.h1 ? table_number(d.h1, "%.2f").c_str() : "",
+                  cell(r.difference_h2, "%.3e").c_str(), d.h2 ? table_number(d.h2, "%.2f").c_str() : "",
                   cell(r.energy, "%.8e").c_str(), cell(r.energy_difference, "%.3e").c_str(),
-                  q ? number(q, "%.2f").c_str() : "");
+                  q ? table_number(q, "%.2f").c_str() : "");
     s << line;
     for (std::size_t k = 0; k < names.size(); ++k) {
       const std::vector<double> v = functional_values(rows, k);
       const auto order = richardson_order(v, h, i);
-      std::snprintf(line, sizeof line, " %16.9e %6s", v[i], order ? number(order, "%.2f").c_str() : "");
+      std::snprintf(line, sizeof line, " %16.9e %6s", v[i], order ? table_number(order, "%.2f").c_str() : "");
       s << line;
     }
     std::snprintf(line, sizeof line, " %8.3fs %8.3fs %8.3fs %8.3fs\n", r.t_space, r.t_assemble, r.t_solve, r.t_errors);
@@ -198,24 +190,24 @@ void write_convergence_csv(const std::vector<LevelResult>& rows, const std::stri
   for (std::size_t i = 0; i < rows.size(); ++i) {
     const LevelResult& r = rows[i];
     const Rates q = rates_at(rows, i);
-    out << r.level << ',' << number(r.h, "%.10e") << ',' << r.dofs << ',' << number(r.l2, "%.10e") << ','
-        << number(r.h1, "%.10e") << ',' << number(r.h2, "%.10e") << ',' << number(q.l2, "%.4f") << ','
-        << number(q.h1, "%.4f") << ',' << number(q.h2, "%.4f") << ',' << number(r.t_assemble, "%.6f") << ','
-        << number(r.t_solve, "%.6f") << ',' << r.free_dofs << ',' << number(r.t_space, "%.6f") << ','
-        << number(r.t_errors, "%.6f") << ',' << number(r.g1_jump, "%.3e");
+    out << r.level << ',' << table_number(r.h, "%.10e") << ',' << r.dofs << ',' << table_number(r.l2, "%.10e") << ','
+        << table_number(r.h1, "%.10e") << ',' << table_number(r.h2, "%.10e") << ',' << table_number(q.l2, "%.4f") << ','
+        << table_number(q.h1, "%.4f") << ',' << table_number(q.h2, "%.4f") << ',' << table_number(r.t_assemble, "%.6f") << ','
+        << table_number(r.t_solve, "%.6f") << ',' << r.free_dofs << ',' << table_number(r.t_space, "%.6f") << ','
+        << table_number(r.t_errors, "%.6f") << ',' << table_number(r.g1_jump, "%.3e");
     const Rates d = dof_rates_at(rows, i);
-    out << ',' << number(d.l2, "%.4f") << ',' << number(d.h1, "%.4f") << ',' << number(d.h2, "%.4f") << ','
-        << floor.l2[i] << ',' << floor.h1[i] << ',' << floor.h2[i] << ',' << number(r.energy, "%.15e") << ','
-        << number(r.energy_difference, "%.10e") << ','
-        << number(i > 0 ? rate(rows[i - 1].energy_difference, r.energy_difference, rows[i - 1].h, r.h) : std::nullopt,
+    out << ',' << table_number(d.l2, "%.4f") << ',' << table_number(d.h1, "%.4f") << ',' << table_number(d.h2, "%.4f") << ','
+        << floor.l2[i] << ',' << floor.h1[i] << ',' << floor.h2[i] << ',' << table_number(r.energy, "%.15e") << ','
+        << table_number(r.energy_difference, "%.10e") << ','
+        << table_number(i > 0 ? rate(rows[i - 1].energy_difference, r.energy_difference, rows[i - 1].h, r.h) : std::nullopt,
                   "%.4f");
     const Rates dr = difference_rates_at(rows, i, adaptive);
-    out << ',' << number(r.difference_l2, "%.10e") << ',' << number(r.difference_h1, "%.10e") << ','
-        << number(r.difference_h2, "%.10e") << ',' << number(dr.l2, "%.4f") << ',' << number(dr.h1, "%.4f") << ','
-        << number(dr.h2, "%.4f");
+    out << ',' << table_number(r.difference_l2, "%.10e") << ',' << table_number(r.difference_h1, "%.10e") << ','
+        << table_number(r.difference_h2, "%.10e") << ',' << table_number(dr.l2, "%.4f") << ',' << table_number(dr.h1, "%.4f") << ','
+        << table_number(dr.h2, "%.4f");
     for (std::size_t k = 0; k < functional_names.size(); ++k) {
       const std::vector<double> v = functional_values(rows, k);
-      out << ',' << number(v[i], "%.15e") << ',' << number(richardson_order(v, h, i), "%.4f");
+      out << ',' << table_number(v[i], "%.15e") << ',' << table_number(richardson_order(v, h, i), "%.4f");
     }
     out << '\n';
   }
@@ -238,9 +230,9 @@ std::string format_convergence_table(const std::vector<LevelResult>& rows, bool 
   for (std::size_t i = 0; i < rows.size(); ++i) {
     const LevelResult& r = rows[i];
     const Rates q = rates_against_dofs ? dof_rates_at(rows, i) : rates_at(rows, i);
-    auto e = [](std::optional<double> v) { return v ? number(v, "%.3e") : std::string("-"); };
+    auto e = [](std::optional<double> v) { return v ? table_number(v, "%.3e") : std::string("-"); };
     auto k = [&](std::optional<double> v, const std::vector<bool>& at_floor) {
-      return v ? number(v, "%.2f") + (at_floor[i] ? "*" : "") : std::string("");
+      return v ? table_number(v, "%.2f") + (at_floor[i] ? "*" : "") : std::string("");
     };
     std::snprintf(line, sizeof line, "%5d %10.4e %8d %11s %6s %11s %6s %11s %6s %8.3fs %8.3fs %8.3fs %8.3fs", r.level,
                   r.h, r.dofs, e(r.l2).c_str(), k(q.l2, floor.l2).c_str(), e(r.h1).c_str(), k(q.h1, floor.h1).c_str(),

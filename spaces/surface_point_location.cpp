@@ -12,7 +12,7 @@ namespace iga {
 namespace {
 
 /// The closest point of the reference cell to r (unit square, or the unit triangle).
-Point2 clamp_to_cell(CellShape shape, Point2 r) {
+Point2 clamp_into_surface_cell(CellShape shape, Point2 r) {
   r = r.cwiseMax(0.0).cwiseMin(1.0);
   if (shape == CellShape::triangle && r.sum() > 1.0) {
     const double excess = 0.5 * (r.sum() - 1.0);
@@ -69,7 +69,7 @@ void surface_candidates(const Space& space, const Eigen::Vector3d& x, Space::Eva
       const Eigen::Vector3d r = g.x3.col(0) - x;
       const Eigen::Matrix<double, 3, 2>& J = g.jacobian3[0];
       const Eigen::Vector2d step = (J.transpose() * J).ldlt().solve(-J.transpose() * r);
-      const Point2 next = clamp_to_cell(shape, one.points[0] + step);
+      const Point2 next = clamp_into_surface_cell(shape, one.points[0] + step);
       const bool settled = (next - one.points[0]).norm() < 1e-14;
       one.points[0] = next;
       if (settled) break;

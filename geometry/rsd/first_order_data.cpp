@@ -11,10 +11,6 @@ namespace {
 
 std::string edge_text(int i, int j) { return "edge (" + std::to_string(i) + ", " + std::to_string(j) + ")"; }
 
-[[noreturn]] void fail(const TriangleSurfaceMesh& mesh, const std::string& message) {
-  throw InputError(mesh.source + ": " + message);
-}
-
 /// Signed angle from a to b about the axis n.
 double signed_angle(const Eigen::Vector3d& n, const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
   return std::atan2(n.dot(a.cross(b)), a.dot(b));
@@ -47,9 +43,9 @@ void check_data_conditions(const TriangleSurfaceMesh& mesh, const std::vector<Su
     for (const auto& [a, b] : {std::pair{e.i, e.j}, std::pair{e.j, e.i}}) {
       const Eigen::Vector3d& g = data.g_of(a, b);
       if (!(g.norm() > 0))
-        fail(mesh, "the tangent g at " + mesh.vertex_name(a) + " towards vertex " + std::to_string(b) + " is zero");
+        reject_surface_mesh(mesh, "the tangent g at " + mesh.vertex_name(a) + " towards vertex " + std::to_string(b) + " is zero");
       if (std::abs(g.dot(data.n[a])) > data_tolerance * g.norm())
-        fail(mesh, "condition (28) violated at " + mesh.vertex_name(a) + ": the tangent towards vertex " +
+        reject_surface_mesh(mesh, "condition (28) violated at " + mesh.vertex_name(a) + ": the tangent towards vertex " +
                        std::to_string(b) + " (" + edge_text(e.i, e.j) +
                        ") leaves the vertex tangent plane; no G1 surface interpolates such data");
     }
@@ -58,7 +54,7 @@ void check_data_conditions(const TriangleSurfaceMesh& mesh, const std::vector<Su
     for (int c = 0; c < 3; ++c) {
       const int i = t[c], j = t[(c + 1) % 3], k = t[(c + 2) % 3];
       if (side(data.n[i], data.g_of(i, j), data.g_of(i, k)) == 0)
-        fail(mesh, "condition (11) violated at " + mesh.vertex_name(i) + " in " + mesh.triangle_name(n) +
+        reject_surface_mesh(mesh, "condition (11) violated at " + mesh.vertex_name(i) + " in " + mesh.triangle_name(n) +
                        ": the tangents towards vertices " + std::to_string(j) + " and " + std::to_string(k) +
                        " are parallel (singular vertex)");
     }
@@ -74,7 +70,7 @@ void check_data_conditions(const TriangleSurfaceMesh& mesh, const std::vector<Su
   for (int v = 0; v < mesh.num_points(); ++v) {
     const double windings = std::abs(turning[v]) / (2 * M_PI);
     if (windings > 1.5)
-      fail(mesh, "the tangents at " + mesh.vertex_name(v) + " wind " + std::to_string(std::lround(windings)) +
+      reject_surface_mesh(mesh, "the tangents at " + mesh.vertex_name(v) + " wind " + std::to_string(std::lround(windings)) +
                      " times around the normal (a branch point; the surface would not be embedded)");
   }
   for (const auto& e : edges) {
@@ -84,7 +80,7 @@ void check_data_conditions(const TriangleSurfaceMesh& mesh, const std::vector<Su
       const int s1 = side(n, data.g_of(a, b), data.g_of(a, e.k));
       const int s2 = side(n, data.g_of(a, b), data.g_of(a, e.kbar));
       if (s1 == 0 || s2 == 0 || s1 == s2)
-        fail(mesh, "condition (12) violated at " + mesh.vertex_name(a) + " on " + edge_text(e.i, e.j) +
+        reject_surface_mesh(mesh, "condition (12) violated at " + mesh.vertex_name(a) + " on " + edge_text(e.i, e.j) +
                        ": the tangents towards vertices " + std::to_string(e.k) + " and " + std::to_string(e.kbar) +
                        " are not on opposite sides of the edge tangent (the surface would fold)");
     }

@@ -104,4 +104,15 @@ bool KnotVector::refines(const KnotVector& coarse) const {
   return true;
 }
 
+KnotVector KnotVector::on_unit_interval() const {
+  const double a = front(), b = back();
+  std::vector<double> t(knots());
+  for (double& x : t) x = (x - a) / (b - a);
+  for (int i = 0; i <= degree(); ++i) {
+    t[i] = 0.0;
+    t[t.size() - 1 - i] = 1.0;
+  }
+  return KnotVector(degree(), std::move(t));
+}
+
 }  // namespace iga

@@ -52,6 +52,9 @@ class KnotVector {
   /// Uniform refinement: the midpoint of every nonzero span inserted `multiplicity` times
   /// (p - r keeps the regularity r of the interior knots).
   KnotVector refined(int multiplicity) const;
+
+  /// The same knots mapped affinely onto [0, 1], the end knots exactly 0 and 1.
+  KnotVector on_unit_interval() const;
   /// True when every breakpoint of `coarse` is a knot of this vector with at least the same
   /// multiplicity (then the spline space of `coarse` is contained in this one).
   bool refines(const KnotVector& coarse) const;

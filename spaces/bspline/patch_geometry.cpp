@@ -10,26 +10,10 @@
 
 namespace iga {
 
-namespace {
-
-/// The same knot vector mapped affinely onto [0,1] (ends exact).
-KnotVector to_unit_interval(const KnotVector& kv) {
-  const double a = kv.front(), b = kv.back();
-  std::vector<double> t(kv.knots());
-  for (double& x : t) x = (x - a) / (b - a);
-  for (int i = 0; i <= kv.degree(); ++i) {
-    t[i] = 0.0;
-    t[t.size() - 1 - i] = 1.0;
-  }
-  return KnotVector(kv.degree(), std::move(t));
-}
-
-}  // namespace
-
 PatchGeometry::PatchGeometry(const KnotVector& knots_u, const KnotVector& knots_v, std::vector<Point2> control_points,
                              std::vector<double> weights, std::string description)
-    : knots_u_(to_unit_interval(knots_u)),
-      knots_v_(to_unit_interval(knots_v)),
+    : knots_u_(knots_u.on_unit_interval()),
+      knots_v_(knots_v.on_unit_interval()),
       control_points_(std::move(control_points)),
       weights_(std::move(weights)),
       rational_(!weights_.empty()),

@@ -16,14 +16,14 @@ bool interior_valence4(const QuadTopology& t, int v) {
 int other_end(const QuadTopology& t, int e, int v) { return t.edge(e).g0 == v ? t.edge(e).g1 : t.edge(e).g0; }
 
 /// One mesh line: vertices v[0..L], edges e[j] from v[j] to v[j+1].
-struct Line {
+struct GluingLine {
   std::vector<int> v, e;
   bool closed = false;
   std::vector<double> value;  ///< forward value at v[j]
   std::vector<double> mid;    ///< forward value at the middle of e[j]
 };
 
-Line trace_line(const QuadTopology& t, int start, std::vector<char>& used) {
+GluingLine trace_line(const QuadTopology& t, int start, std::vector<char>& used) {
   // Walk from the start edge towards g1, then prepend the walk towards g0.
   auto walk = [&](int from, int edge, std::vector<int>& vs, std::vector<int>& es) {
     int v = other_end(t, edge, from), e = edge;
@@ -39,7 +39,7 @@ Line trace_line(const QuadTopology& t, int start, std::vector<char>& used) {
     }
     return false;
   };
-  Line line;
+  GluingLine line;
   used[start] = 1;
   std::vector<int> fv{t.edge(start).g1}, fe;
   line.closed = walk(t.edge(start).g0, start, fv, fe);
@@ -77,12 +77,12 @@ std::vector<SplitGluing> line_gluing(const QuadTopology& t, const std::vector<do
 std::vector<SplitGluing> line_gluing(const QuadTopology& t, const EndValue& A, LineGluingReport* report) {
   std::vector<char> used(t.num_edges(), 0);
   for (int e = 0; e < t.num_edges(); ++e) used[e] = t.edge(e).boundary() ? 1 : 0;
-  std::vector<Line> lines;
+  std::vector<GluingLine> lines;
   for (int e = 0; e < t.num_edges(); ++e)
     if (!used[e]) lines.push_back(trace_line(t, e, used));
 
   // Linear along each open line (in the edge count); closed lines carry a ≡ 0.
-  for (Line& l : lines) {
+  for (GluingLine& l : lines) {
     const int L = static_cast<int>(l.e.size());
     l.value.assign(L + 1, 0.0);
     if (!l.closed) {
@@ -117,7 +117,7 @@ std::vector<SplitGluing> line_gluing(const QuadTopology& t, const EndValue& A, L
   }
   // Zigzag lines: 0 inside, mid-edge values ±μ alternating, μ from the ends' linear halves.
   for (std::size_t i = 0; i < lines.size(); ++i) {
-    Line& l = lines[i];
+    GluingLine& l = lines[i];
     const int L = static_cast<int>(l.e.size());
     l.mid.assign(L, 0.0);
     if (!zigzag[i]) {
@@ -132,7 +132,7 @@ std::vector<SplitGluing> line_gluing(const QuadTopology& t, const EndValue& A, L
     for (int j = 0; j < L; ++j) l.mid[j] = (j % 2 ? -mu : mu);
   }
   std::vector<SplitGluing> g(t.num_edges());
-  for (const Line& l : lines)
+  for (const GluingLine& l : lines)
     for (std::size_t j = 0; j < l.e.size(); ++j) {
       const int e = l.e[j];
       const double a0 = l.value[j], m = l.mid[j], a1 = l.value[j + 1];

@@ -10,28 +10,11 @@
 
 namespace iga {
 
-namespace {
-
-KnotVector to_unit_interval(const KnotVector& k) {
-  std::vector<double> t = k.knots();
-  const double a = k.front(), len = k.back() - k.front();
-  for (double& x : t) x = (x - a) / len;
-  t.front() = 0.0;
-  t.back() = 1.0;
-  for (int i = 0; i <= k.degree(); ++i) {
-    t[i] = 0.0;
-    t[t.size() - 1 - i] = 1.0;
-  }
-  return KnotVector(k.degree(), std::move(t));
-}
-
-}  // namespace
-
 NurbsSurfaceMap::NurbsSurfaceMap(const KnotVector& knots_u, const KnotVector& knots_v,
                                  std::vector<Eigen::Vector3d> control_points, std::vector<double> weights,
                                  std::array<bool, 2> periodic, std::string description)
-    : knots_u_(to_unit_interval(knots_u)),
-      knots_v_(to_unit_interval(knots_v)),
+    : knots_u_(knots_u.on_unit_interval()),
+      knots_v_(knots_v.on_unit_interval()),
       points_(std::move(control_points)),
       weights_(std::move(weights)),
       periodic_(periodic),
