@@ -14,12 +14,6 @@
 
 namespace iga {
 
-namespace {
-
-/// A vector field with `components` components on one scalar space (a shell's displacement):
-/// the unknowns are numbered in blocks, component c of function i at c · dimension + i, and an
-/// element's rows are its functions for component 0, then for component 1, ... (the row order of
-/// a vector-valued integrator's element matrix, assembly/shell_integrators.hpp).
 void expand_component_dofs(std::vector<int>& dofs, int components, int dimension) {
   if (components == 1) return;
   const std::size_t n = dofs.size();
@@ -39,8 +33,6 @@ ElementDofTable component_dofs(const ElementDofTable& scalar, int components, in
       for (const int* d = scalar.begin(e); d != scalar.begin(e + 1); ++d) t.dofs.push_back(c * dimension + *d);
   return t;
 }
-
-}  // namespace
 
 Assembler::Assembler(const Space& space, int components)
     : space_(space),
@@ -104,8 +96,12 @@ const Local* element_local(const Space& space, const ElementDofTable* table, int
                            int quad_degree, ElementValues& ev, Local& local, std::vector<int>& dofs,
                            int components = 1) {
   const auto table_dofs = [&] {
-    if (table) dofs.assign(table->begin(e), table->begin(e + 1));
-    else space.element_dofs(e, dofs);
+    if (table) {
+      dofs.assign(table->begin(e), table->begin(e + 1));
+      return;
+    }
+    space.element_dofs(e, dofs);
+    expand_component_dofs(dofs, components, space.dimension());
   };
   const std::optional<BilinearForm> kind = form.closed_form_kind();
   const ClosedForms* closed = kind ? space.closed_forms() : nullptr;
@@ -146,8 +142,8 @@ void prepare_extended_element_matrices(const Space& space, const Integrator& for
 
 const DoubleDoubleMatrix& extended_element_matrix(const Space& space, int e, const Integrator& form, int quad_degree,
                                                   ElementValues& ev, DoubleDoubleMatrix& scratch,
-                                                  std::vector<int>& dofs) {
-  return *element_local(space, nullptr, e, form, quad_degree, ev, scratch, dofs);
+                                                  std::vector<int>& dofs, int components) {
+  return *element_local(space, nullptr, e, form, quad_degree, ev, scratch, dofs, components);
 }
 
 template <class Local, class Values>

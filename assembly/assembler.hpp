@@ -15,6 +15,15 @@
 
 namespace iga {
 
+/// A vector field with `components` components on one scalar space (a shell's displacement):
+/// the unknowns are numbered in blocks, component c of function i at c · dimension + i, and an
+/// element's rows are its functions for component 0, then for component 1, ... (the row order of
+/// a vector-valued integrator's element matrix, assembly/shell_integrators.hpp). `dofs`: one
+/// element's functions, expanded in place to its unknowns (unchanged for one component).
+void expand_component_dofs(std::vector<int>& dofs, int components, int dimension);
+/// The same for every element of a table.
+ElementDofTable component_dofs(const ElementDofTable& scalar, int components, int dimension);
+
 class Assembler {
  public:
   /// The space must outlive the assembler. With components > 1 the matrices are those of a
@@ -54,11 +63,12 @@ class Assembler {
 
 /// One element's matrix of `form` in double-double, computed as matrix_extended computes it (the
 /// same kernel, for callers that assemble some elements themselves: a rank of a distributed solve).
-/// Returns `scratch` or a matrix the space shares; `dofs` gets the global indices of its rows.
+/// Returns `scratch` or a matrix the space shares; `dofs` gets the global indices of its rows
+/// (with `components` > 1, a vector field's unknowns in blocks, as the assembler numbers them).
 /// Call prepare_extended_element_matrices once first (not from threads).
 const DoubleDoubleMatrix& extended_element_matrix(const Space& space, int element, const Integrator& form, int quad_degree,
                                                   ElementValues& ev, DoubleDoubleMatrix& scratch,
-                                                  std::vector<int>& dofs);
+                                                  std::vector<int>& dofs, int components = 1);
 void prepare_extended_element_matrices(const Space& space, const Integrator& form);
 
 }  // namespace iga

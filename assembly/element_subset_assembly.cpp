@@ -18,7 +18,7 @@ constexpr int batch_size = 512;
 }  // namespace
 
 void for_each_element_matrix(const Space& space, const std::vector<int>& elements, const std::vector<FormTerm>& terms,
-                             int quad_degree, const ElementMatrixSink& sink) {
+                             int quad_degree, const ElementMatrixSink& sink, int components) {
   unsigned flags = 0;
   for (const FormTerm& t : terms) {
     prepare_extended_element_matrices(space, *t);
@@ -38,14 +38,15 @@ void for_each_element_matrix(const Space& space, const std::vector<int>& element
 #pragma omp for schedule(dynamic, 8)
       for (int k = 0; k < m; ++k) {
         const int e = elements[first + k];
-        matrix[k] = &extended_element_matrix(space, e, *terms[0], quad_degree, ev, slots[k], dofs[k]);
+        matrix[k] = &extended_element_matrix(space, e, *terms[0], quad_degree, ev, slots[k], dofs[k], components);
         if (terms.size() == 1) continue;
         // Σ terms in double-double (coefficients applied by each term); every term's rows come in
         // the element's one order.
         DoubleDoubleMatrix& sum = slots[k];
         if (matrix[k] != &sum) sum = *matrix[k];
         for (std::size_t t = 1; t < terms.size(); ++t) {
-          const DoubleDoubleMatrix& a = extended_element_matrix(space, e, *terms[t], quad_degree, ev, term, term_dofs);
+          const DoubleDoubleMatrix& a = extended_element_matrix(space, e, *terms[t], quad_degree, ev, term, term_dofs,
+                                                                  components);
           for (Eigen::Index j = 0; j < sum.cols(); ++j)
             for (Eigen::Index i = 0; i < sum.rows(); ++i) sum.set(i, j, sum(i, j) + a(i, j));
         }

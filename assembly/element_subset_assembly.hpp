@@ -22,8 +22,10 @@ using ElementMatrixSink = std::function<void(int element, const std::vector<int>
 /// The double-double matrix Σ terms of each element of `elements` (the kernel of
 /// Assembler::matrix_extended: extended_element_matrix), handed to `sink` serially in the order
 /// given; the matrices are computed in parallel batches (OpenMP), so `sink` need not be thread-safe.
+/// With `components` > 1 the terms are vector-valued (a shell's) and the rows are the unknowns in
+/// blocks (assembler.hpp).
 void for_each_element_matrix(const Space& space, const std::vector<int>& elements, const std::vector<FormTerm>& terms,
-                             int quad_degree, const ElementMatrixSink& sink);
+                             int quad_degree, const ElementMatrixSink& sink, int components = 1);
 
 /// ∫ f N_i over `elements` only (rules of degree `quad_degree`), as a vector of length
 /// space.dimension(), contributions added in the order given (Assembler::load: all elements).

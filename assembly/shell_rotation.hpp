@@ -18,6 +18,13 @@
 
 namespace iga {
 
+/// The Nitsche terms above on one edge: `local` (3m × 3m, m the functions of the edge's element,
+/// rows in blocks: the m functions for x, then y, then z) and `dofs` their unknowns in the block
+/// numbering below. For backends that assemble element by element (the PETSc distribution).
+void shell_rotation_edge_matrix(const Space& space, const BoundaryEdge& edge, const ShellMaterial& material, double eta,
+                                int quadrature_degree, Space::Evaluator& evaluator, Eigen::MatrixXd& local,
+                                std::vector<int>& dofs);
+
 /// The Nitsche terms above on `edges`, a 3N × 3N matrix in the shell's block numbering
 /// (component c of function i at c·N + i).
 SparseMatrix shell_rotation_nitsche(const Space& space, const std::vector<BoundaryEdge>& edges,

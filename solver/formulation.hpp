@@ -71,6 +71,12 @@ class Formulation {
   /// Summed in double-double where extended_precision() says (one term then). A formulation with
   /// terms beyond the element integrals (the C0 interior penalty edges) adds them here.
   virtual SplitMatrix matrix(const std::vector<FormTerm>& terms) const;
+  /// The matrix terms beyond the element integrals that belong to one element each (a shell's
+  /// Nitsche terms on the edges that hold its rotation), for the elements of `elements` that have
+  /// some, handed to `sink` with rows numbered as for_each_element_matrix's: what a backend that
+  /// assembles element by element (PETSc) adds to the terms'. matrix() includes them. None here.
+  virtual void for_each_extra_element_matrix(const std::vector<int>& /*elements*/,
+                                             const ElementMatrixSink& /*sink*/) const {}
   /// The coefficients after the solve (problems fixed up to a constant shift to their mean here).
   virtual void finish(Eigen::VectorXd& /*coefficients*/, const WorkShare& /*share*/) const {}
   /// An exact solution (in x, y or in x, y, z) to measure the errors against.

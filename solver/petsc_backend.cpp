@@ -8,8 +8,10 @@
 #include <functional>
 #include <limits>
 #include <memory>
+#include <optional>
 #include <sstream>
 
+#include "assembly/assembler.hpp"
 #include "assembly/boundary_conditions.hpp"
 #include "config/errors.hpp"
 #include "assembly/element_subset_assembly.hpp"
@@ -230,6 +232,9 @@ class PetscBackend final : public LinearBackend {
   void assemble(const Formulation& f, const Constraints& c, const Eigen::VectorXd& load,
                 const ProgressSink& say) override;
   Eigen::VectorXd solve(SolveReport& report, const ProgressSink& say) override;
+  /// a(u, u) from the matrix kept in double-double for the refinement (direct factorizations only;
+  /// a Krylov solve keeps no unreduced matrix): each rank's elements' part, summed over the ranks.
+  std::optional<double> energy(const Eigen::VectorXd& u) const override;
   void count_whole(const Formulation& f, LevelResult& r) const override {
     r.dofs = static_cast<int>(d_.whole_dimension()) * f.components();
     r.elements = static_cast<int>(d_.whole_elements());
@@ -249,9 +254,15 @@ void PetscBackend::assemble(const Formulation& f, const Constraints& c, const Ei
   // double-double: the corrections reuse the factor and remove the error floor of the double
   // matrix. Krylov solves stop at their tolerance anyway (the right-hand side is exact for both).
   const bool refine = settings_.pc == "mumps" || settings_.pc == "cholesky";
-  d_.lay_out(c, say);
+  const int components = f.components();  // a shell's three displacement components, in blocks
+  d_.lay_out(c, say, components);
   SparseMatrix pattern;
-  if (refine) on_every_rank([&] { pattern = sparsity_pattern(collect_element_dofs(f.space(), d_.share().elements), f.space().dimension()); });
+  if (refine)
+    on_every_rank([&] {
+      const int n = f.space().dimension();
+      pattern = sparsity_pattern(component_dofs(collect_element_dofs(f.space(), d_.share().elements), components, n),
+                                 components * n);
+    });
   extended_ = std::make_unique<ExtendedResidual>(d_, std::move(pattern));
   if (say) say("assembling (" + std::to_string(d_.rows()) + " unknowns, in extended precision)");
   on_every_rank([&] { extended_->add_load(load); });
@@ -267,6 +278,14 @@ void PetscBackend::assemble(const Formulation& f, const Constraints& c, const Ei
   // The right-hand side Tᵀ(b − A g), rounded once from the double-double sums over the ranks.
   set_owned(p_.b, extended_->owned_rows(nullptr));
   if (!refine) extended_.reset();
+}
+
+std::optional<double> PetscBackend::energy(const Eigen::VectorXd& u) const {
+  if (!extended_) return std::nullopt;
+  const DoubleDouble part = extended_->energy_part(u);
+  double sum[2] = {part.hi, part.lo};
+  MPI_Allreduce(MPI_IN_PLACE, sum, 2, MPI_DOUBLE, MPI_SUM, PETSC_COMM_WORLD);
+  return sum[0] + sum[1];
 }
 
 Eigen::VectorXd PetscBackend::solve(SolveReport& report, const ProgressSink& say) {

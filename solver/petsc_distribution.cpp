@@ -8,6 +8,7 @@
 #include <climits>
 #include <numeric>
 
+#include "assembly/assembler.hpp"
 #include "assembly/boundary_conditions.hpp"
 #include "assembly/element_subset_assembly.hpp"
 #include "solver/petsc_extended_residual.hpp"
@@ -79,6 +80,7 @@ WorkShare PetscDistribution::share() const { return rank_share(&mine_); }
 void PetscDistribution::element_unknowns(int element, std::vector<int>& dofs, std::vector<int>& unknowns,
                                          Eigen::MatrixXd* T_e) const {
   space_.element_dofs(element, dofs);
+  expand_component_dofs(dofs, components_, space_.dimension());
   unknowns.clear();
   for (int d : dofs)
     for (decltype(basis_)::InnerIterator it(basis_, d); it; ++it) unknowns.push_back(static_cast<int>(it.col()));
@@ -91,25 +93,37 @@ void PetscDistribution::element_unknowns(int element, std::vector<int>& dofs, st
       (*T_e)(i, std::lower_bound(unknowns.begin(), unknowns.end(), it.col()) - unknowns.begin()) = it.value();
 }
 
-void PetscDistribution::lay_out(const Constraints& c, const std::function<void(const std::string&)>& say) {
+void PetscDistribution::lay_out(const Constraints& c, const std::function<void(const std::string&)>& say,
+                                int components) {
   constraints_ = c;
+  components_ = components;
   const int n = static_cast<int>(c.free.size());
   std::vector<PetscInt> global(n);
   std::vector<int> candidate(n, INT_MAX);
   // Local work first: an error found here is raised on all ranks together before any collective call.
   on_every_rank([&] {
+    if (c.values.size() != static_cast<Eigen::Index>(components) * space_.dimension())
+      throw std::logic_error("PetscDistribution: conditions of " + std::to_string(c.values.size()) +
+                             " unknowns for " + std::to_string(components) + " component(s) of " +
+                             std::to_string(space_.dimension()) + " functions");
     basis_ = free_basis(c);
-    for (int k = 0; k < n; ++k)
-      global[k] = global_dofs_.empty() ? c.free[k] : global_dofs_[c.free[k]];
+    // Component q of function i (unknown q·N + i of the space, N its dimension) is unknown
+    // q·N_whole + (i's number in the whole space) of the whole problem.
+    const int local_n = space_.dimension();
+    for (int k = 0; k < n; ++k) {
+      const int q = c.free[k] / local_n, i = c.free[k] % local_n;
+      global[k] = static_cast<PetscInt>(q) * static_cast<PetscInt>(whole_dimension_) +
+                  (global_dofs_.empty() ? i : global_dofs_[i]);
+    }
     std::vector<int> dofs, unknowns;
     for (int e : mine_) {
       element_unknowns(e, dofs, unknowns, nullptr);
       for (int k : unknowns) candidate[k] = rank_;
     }
   });
-  // The directory: function g of the whole space has its entry on the rank of block g. Each unknown
+  // The directory: unknown g of the whole problem has its entry on the rank of block g. Each unknown
   // goes to the lowest rank whose elements couple it; the owners number theirs contiguously.
-  PetscLayout functions = make_layout(PETSC_DECIDE, static_cast<PetscInt>(whole_dimension_));
+  PetscLayout functions = make_layout(PETSC_DECIDE, static_cast<PetscInt>(components_ * whole_dimension_));
   PetscSF directory = make_sf(functions, global);
   PetscInt n_roots = 0;
   petsc_check(PetscLayoutGetLocalSize(functions, &n_roots), "PetscLayoutGetLocalSize");
@@ -257,7 +271,8 @@ void PetscDistribution::matrix(const Formulation& f, const std::vector<FormTerm>
       const PetscInt m = static_cast<PetscInt>(rows.size());
       petsc_check(MatSetValues(A, m, rows.data(), m, rows.data(), K.data(), ADD_VALUES), "MatSetValues");
     };
-    for_each_element_matrix(space_, mine_, terms, f.quadrature_degree(), add_element);
+    for_each_element_matrix(space_, mine_, terms, f.quadrature_degree(), add_element, components_);
+    f.for_each_extra_element_matrix(mine_, add_element);
   });
   petsc_check(MatAssemblyBegin(A, MAT_FINAL_ASSEMBLY), "MatAssemblyBegin");
   petsc_check(MatAssemblyEnd(A, MAT_FINAL_ASSEMBLY), "MatAssemblyEnd");

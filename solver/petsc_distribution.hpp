@@ -55,11 +55,15 @@ class PetscDistribution {
   /// This rank's elements (numbers of `space`) and the sum over the ranks.
   WorkShare share() const;
   /// Number the free unknowns of `c` (conditions on `space`, kept as a copy): each belongs to the
-  /// lowest rank whose own elements couple it, each rank's rows are contiguous. Collective.
-  void lay_out(const Constraints& c, const std::function<void(const std::string&)>& say);
+  /// lowest rank whose own elements couple it, each rank's rows are contiguous. `components`: the
+  /// unknowns per function (a shell's 3, in blocks as the serial assembler numbers them:
+  /// component q of function i at q·N + i), for the conditions and every matrix after. Collective.
+  void lay_out(const Constraints& c, const std::function<void(const std::string&)>& say, int components = 1);
   /// Create `A`, the distributed matrix Σ terms on the unknowns of lay_out (Tᵀ A T in double, T the
   /// free basis), symmetric positive definite, preallocated exactly; each element matrix also
-  /// handed to `extended` in double-double when given. The caller destroys `A`. Collective.
+  /// handed to `extended` in double-double when given. The formulation's element-local terms
+  /// beyond the integrals (Formulation::for_each_extra_element_matrix) are added too. The caller
+  /// destroys `A`. Collective.
   void matrix(const Formulation& f, const std::vector<FormTerm>& terms, ExtendedResidual* extended, Mat& A) const;
   /// The values of every free unknown of `space` (Constraints::free order) from `x`, a vector of
   /// the rows of lay_out (this rank's own and its neighbours'). Collective.
@@ -74,7 +78,8 @@ class PetscDistribution {
   const std::vector<PetscInt>& row_of_unknown() const { return row_; }
   PetscInt owned_rows() const { return owned_rows_; }
   PetscInt rows() const { return rows_; }
-  /// The whole space's number of functions (the part's are numbered within it).
+  /// The whole space's number of functions (the part's are numbered within it), without the
+  /// components.
   long long whole_dimension() const { return whole_dimension_; }
   long long whole_elements() const { return whole_elements_; }
   /// Matrix couplings between unknowns of different ranks, and all (from the last matrix's
@@ -93,6 +98,7 @@ class PetscDistribution {
 
   const Space& space_;
   const int rank_, ranks_;
+  int components_ = 1;             ///< unknowns per function (lay_out)
   std::vector<int> mine_;          ///< this rank's elements
   std::vector<int> global_dofs_;   ///< function of `space` → of the whole space (empty: the same)
   long long whole_dimension_ = 0, whole_elements_ = 0;

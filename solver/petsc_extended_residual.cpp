@@ -59,6 +59,20 @@ std::vector<double> ExtendedResidual::owned_rows(const Eigen::VectorXd* u) const
   return d_.sum_to_owners(reduced);
 }
 
+DoubleDouble ExtendedResidual::energy_part(const Eigen::VectorXd& u) const {
+  if (pattern_.nonZeros() == 0) throw std::logic_error("ExtendedResidual: the matrix was not kept");
+  const int* outer = pattern_.outerIndexPtr();
+  const int* inner = pattern_.innerIndexPtr();
+  DoubleDouble sum;
+  for (Eigen::Index j = 0; j < pattern_.outerSize(); ++j) {
+    if (u(j) == 0) continue;
+    DoubleDouble column;  // (A u)_i u_i summed over the column's rows i, times u_j below
+    for (int p = outer[j]; p < outer[j + 1]; ++p) column += values_[p] * u(inner[p]);
+    sum += column * u(j);
+  }
+  return sum;
+}
+
 }  // namespace iga
 
 #endif

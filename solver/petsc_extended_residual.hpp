@@ -38,6 +38,9 @@ class ExtendedResidual {
   /// and rounded once. `u`: the values of the rank's free unknowns (PetscDistribution::free_values),
   /// or null for u = 0 (the right-hand side).
   std::vector<double> owned_rows(const Eigen::VectorXd* u) const;
+  /// This rank's part of uᵀ A u (u: coefficients of every unknown of the rank's space), the
+  /// matrix of its own elements only: the parts add up to a(u, u) over the ranks.
+  DoubleDouble energy_part(const Eigen::VectorXd& u) const;
 
  private:
   const PetscDistribution& d_;

@@ -14,7 +14,9 @@ bool petsc_available() {
 
 PetscSettings default_petsc_settings(Pde pde) {
   PetscSettings s;
-  if (pde == Pde::biharmonic || pde == Pde::surface_biharmonic) {
+  // Fourth-order problems and shells (membrane and bending stiffness t² apart: ill-conditioned): a
+  // direct factorization.
+  if (pde == Pde::biharmonic || pde == Pde::surface_biharmonic || pde == Pde::kirchhoff_love_shell) {
     s.ksp = "preonly";
     s.pc = "mumps";
   }

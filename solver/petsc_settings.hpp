@@ -26,8 +26,9 @@ struct PetscSettings {
 };
 
 /// The defaults for a PDE: CG preconditioned by algebraic multigrid (GAMG) for second-order
-/// problems; a direct factorization (MUMPS) for the biharmonic one, whose fourth-order matrices
-/// AMG built for Laplacians preconditions poorly.
+/// problems; a direct factorization (MUMPS) for the biharmonic ones, whose fourth-order matrices
+/// AMG built for Laplacians preconditions poorly, and for shells (docs/shells.md: GAMG needs
+/// hundreds of iterations on them).
 PetscSettings default_petsc_settings(Pde pde);
 
 /// Parse `solver:` ({type, ksp, pc, rtol, max_iterations, options}) into `kind` and `petsc`.

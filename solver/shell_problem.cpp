@@ -175,8 +175,7 @@ void ShellFormulation::finish(Eigen::VectorXd& coefficients, const WorkShare&) c
   remove_rigid_motions(basis_, coefficients);
 }
 
-SplitMatrix ShellFormulation::matrix(const std::vector<FormTerm>& terms) const {
-  SplitMatrix m = Formulation::matrix(terms);
+std::vector<BoundaryEdge> ShellFormulation::rotation_edges() const {
   std::vector<BoundaryEdge> edges;
   for (const ShellSupport& s : problem().shell->supports)
     if (s.rotation_held)
@@ -185,12 +184,36 @@ SplitMatrix ShellFormulation::matrix(const std::vector<FormTerm>& terms) const {
               return f.element == e.element && f.local_edge == e.local_edge;
             }))
           edges.push_back(e);
+  return edges;
+}
+
+SplitMatrix ShellFormulation::matrix(const std::vector<FormTerm>& terms) const {
+  SplitMatrix m = Formulation::matrix(terms);
+  const std::vector<BoundaryEdge> edges = rotation_edges();
   if (edges.empty()) return m;
-  // η = 10 (p + 1)²: above the inverse-inequality constant (docs/shells.md measures its effect).
-  const double eta = 10.0 * (space().degree() + 1) * (space().degree() + 1);
-  m.high = m.high + shell_rotation_nitsche(space(), edges, problem().shell->material, eta, quadrature_degree());
+  m.high = m.high + shell_rotation_nitsche(space(), edges, problem().shell->material, nitsche_penalty(), quadrature_degree());
   m.low.resize(0);  // the pattern changed; the element part is summed in double anyway
   return m;
+}
+
+void ShellFormulation::for_each_extra_element_matrix(const std::vector<int>& elements,
+                                                     const ElementMatrixSink& sink) const {
+  const std::vector<BoundaryEdge> edges = rotation_edges();
+  if (edges.empty()) return;
+  std::vector<char> mine(space().num_elements(), 0);
+  for (int e : elements) mine[e] = 1;
+  const std::unique_ptr<Space::Evaluator> evaluator = space().make_evaluator();
+  Eigen::MatrixXd local;
+  std::vector<int> dofs;
+  DoubleDoubleMatrix K;
+  for (const BoundaryEdge& e : edges) {
+    if (!mine[e.element]) continue;
+    shell_rotation_edge_matrix(space(), e, problem().shell->material, nitsche_penalty(), quadrature_degree(),
+                               *evaluator, local, dofs);
+    K.hi = local;  // summed in double, as the serial matrix() sums them
+    K.lo.setZero(local.rows(), local.cols());
+    sink(e.element, dofs, K);
+  }
 }
 
 Constraints ShellFormulation::constraints() const {

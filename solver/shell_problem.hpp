@@ -40,6 +40,11 @@ class ShellFormulation final : public Formulation {
   Constraints constraints() const override;
   /// The energy's terms plus, on parts with {rotation: held}, the Nitsche terms holding the rotation.
   SplitMatrix matrix(const std::vector<FormTerm>& terms) const override;
+  /// The Nitsche terms of the held rotation, edge by edge (the PETSc assembly's share of them).
+  void for_each_extra_element_matrix(const std::vector<int>& elements, const ElementMatrixSink& sink) const override;
+  /// The pins are a choice over the whole space and the point loads are located on it: under PETSc
+  /// every rank holds the whole space (as for eigenproblems).
+  bool works_on_parts() const override { return false; }
   bool has_exact() const override { return problem().shell->exact.has_value(); }
   ErrorNorms errors(const Eigen::VectorXd& coefficients, const WorkShare& share) const override;
   void finish(Eigen::VectorXd& coefficients, const WorkShare& share) const override;
@@ -59,6 +64,12 @@ class ShellFormulation final : public Formulation {
   const std::vector<int>& pinned() const { return pinned_; }
 
  private:
+  /// The boundary edges of the parts that hold the rotation (each once).
+  std::vector<BoundaryEdge> rotation_edges() const;
+  /// η = 10 (p + 1)² of the Nitsche terms: above the inverse-inequality constant (docs/shells.md
+  /// measures its effect).
+  double nitsche_penalty() const { return 10.0 * (space().degree() + 1) * (space().degree() + 1); }
+
   mutable std::optional<RigidMotions> motions_;
   mutable std::optional<SurfaceOrientation> orientation_;
   mutable RigidMotionBasis basis_;

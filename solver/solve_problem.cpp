@@ -48,11 +48,10 @@ LinearSystem assemble_linear_system(const Space& space, const ProblemSpec& probl
 DiscreteSolution solve_problem(const Space& space, const ProblemSpec& problem, SolverKind solver,
                                const ProgressSink& progress, const PetscSettings& petsc) {
   const std::unique_ptr<Formulation> f = make_formulation(space, problem);
-  // The PETSc layouts and the eigen backends count one unknown per function (parse_study refuses
-  // these combinations for configs; this guards library callers).
-  if (f->components() != 1 && (solver == SolverKind::petsc || problem.eigen))
-    throw InputError(problem.source_where + ": " + to_string(problem.pde) +
-                     " is solved serially only (cholmod or umfpack), without problem.eigen, for now");
+  // The eigen backends count one unknown per function (parse_study refuses the combination for
+  // configs; this guards library callers). The linear backends, PETSc's too, take components.
+  if (f->components() != 1 && problem.eigen)
+    throw InputError(problem.source_where + ": " + to_string(problem.pde) + " has no eigenproblems (problem.eigen) yet");
   // Under PETSc every rank runs the pipeline; rank 0 reports its progress.
   const ProgressSink say = [&](const std::string& msg) {
     if (progress && is_root_rank()) progress(msg);

@@ -186,13 +186,10 @@ StudySettings parse_study(const ConfigNode& root, const std::string& config_path
     root["solver"]["type"].fail("the C0 interior penalty form of surface_biharmonic (a C0 space) couples the elements "
                                 "of every edge, which the PETSc assembly element by element does not; use cholmod "
                                 "or umfpack");
-  if (s.problem.pde == Pde::kirchhoff_love_shell) {
-    // The shell's three components are assembled serially only for now: the PETSc layout, the
-    // adaptive indicators and the eigen backends count one unknown per function.
-    if (s.solver == SolverKind::petsc)
-      root["solver"]["type"].fail("kirchhoff_love_shell is solved serially only (cholmod or umfpack) for now");
-    if (s.adaptive) root["refinement"]["type"].fail("kirchhoff_love_shell has no adaptive refinement yet (uniform)");
-  }
+  // The shell's three components: the adaptive indicators count one unknown per function (the
+  // serial and PETSc linear backends take components; eigenproblems are refused at problem.eigen).
+  if (s.problem.pde == Pde::kirchhoff_love_shell && s.adaptive)
+    root["refinement"]["type"].fail("kirchhoff_love_shell has no adaptive refinement yet (uniform)");
   // Boundary part names; a surface's boundary against its Dirichlet data (the pipeline's own check).
   make_formulation(*coarse, s.problem)->check();
   if (s.problem.eigen) {
