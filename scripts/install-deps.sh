@@ -53,4 +53,7 @@ sudo_cmd=""
 echo "install-deps: installing ${missing[*]}"
 export DEBIAN_FRONTEND=noninteractive
 $sudo_cmd apt-get update -qq
-$sudo_cmd apt-get install -y -qq --no-install-recommends "${missing[@]}"
+# --force-unsafe-io: dpkg skips its fsync per unpacked file (a fresh Debian 12 chroot: 2 min 50 s
+# instead of 4 min 54 s for command 1's 600 packages); the price: a power loss during the install
+# could leave an unpacked file half-written.
+$sudo_cmd apt-get install -y -qq --no-install-recommends -o Dpkg::Options::=--force-unsafe-io "${missing[@]}"
