@@ -75,6 +75,78 @@ refinement: {levels: 4}
   for (int index : {1, 2, 4}) EXPECT_NEAR(last_rate(rows, index), 4.0, 0.1) << "index " << index;
 }
 
+TEST(EigenRates, LaplacianOnATMeshConvergesLikeHToThe6) {
+  // configs/eigen-laplace-square-tmesh.yaml: cubic C1 T-splines, the lower-left quarter of the
+  // 4 x 4 grid split once more (T-junctions along x = 0.5 and y = 0.5 at every level). From level 2
+  // to 3 (1924 to 7428 DOFs) measured 5.98, 5.96, 5.96, 5.94, 5.88, 5.88; the higher eigenvalues
+  // approach 2p = 6 from below (λ₅: 5.04, 5.60, 5.88, 5.97 on levels 1 to 4).
+  const std::vector<EigenRow> rows = study_rows(R"yaml(
+problem: {pde: poisson, boundary: {all: dirichlet}, eigen: {count: 6, exact_eigenvalues: "pi^2*(m^2 + n^2)"}}
+domain: {type: rectangle, min: [0, 0], max: [1, 1]}
+space: {type: tmesh, section: poly, n: 3, regularity: 1, elements: [4, 4], refine: [[0, 0, 0.5, 0.5]]}
+refinement: {levels: 4}
+)yaml");
+  for (int index = 1; index <= 6; ++index) EXPECT_NEAR(last_rate(rows, index), 6.0, 0.2) << "index " << index;
+}
+
+TEST(EigenRates, SimplySupportedPlateOnATMeshConvergesLikeHToThe4) {
+  // configs/eigen-plate-simply-supported-tmesh.yaml, the same C1 T-mesh space: 2(p − 1) = 4.
+  // From level 1 to 2 (516 to 1924 DOFs) measured 4.03 (λ₁), 4.02, 4.02, 4.01, 3.99, 3.99.
+  const std::vector<EigenRow> rows = study_rows(R"yaml(
+problem: {pde: biharmonic, boundary: {all: simply_supported}, eigen: {count: 6, exact_eigenvalues: "pi^4*(m^2 + n^2)^2"}}
+domain: {type: rectangle, min: [0, 0], max: [1, 1]}
+space: {type: tmesh, section: poly, n: 3, regularity: 1, elements: [4, 4], refine: [[0, 0, 0.5, 0.5]]}
+refinement: {levels: 3}
+)yaml");
+  for (int index = 1; index <= 6; ++index) EXPECT_NEAR(last_rate(rows, index), 4.0, 0.1) << "index " << index;
+}
+
+TEST(EigenRates, G1MultipatchReachesTwoPAndTwoPMinusTwo) {
+  // configs/eigen-multipatch-g1.yaml: quintic G1 on the 3-patch square (valence-3 vertex). The
+  // Laplacian's rates approach 2p = 10 from above: from level 2 to 3 (846 to 3222 DOFs) measured
+  // 10.65, 10.50, 10.73, 10.54, 10.25 for λ₂ … λ₆ (λ₁ is at 1e-15, round-off, there).
+  const std::vector<EigenRow> laplacian = study_rows(R"yaml(
+problem: {pde: poisson, boundary: {all: dirichlet}, eigen: {count: 6, exact_eigenvalues: "pi^2*(m^2 + n^2)"}}
+domain: {type: multipatch, name: 3p_square}
+space: {type: g1, degree: 5}
+refinement: {levels: 4}
+)yaml");
+  for (int index = 2; index <= 6; ++index) {
+    EXPECT_GT(last_rate(laplacian, index), 10.0 - 0.3) << "index " << index;
+    EXPECT_LT(last_rate(laplacian, index), 10.0 + 1.0) << "index " << index;
+  }
+  EXPECT_NEAR(last_rate(laplacian, 6), 10.0, 0.3);
+  // The simply supported plate, 2(p − 1) = 8: from level 3 to 4 (3222 to 12582 DOFs) measured
+  // 7.84, 8.10, 8.27, 8.28, 8.26 for λ₂ … λ₆ (λ₁ reaches the plates' round-off floor, 1.4e-12).
+  const std::vector<EigenRow> plate = study_rows(R"yaml(
+problem: {pde: biharmonic, boundary: {all: simply_supported}, eigen: {count: 6, exact_eigenvalues: "pi^4*(m^2 + n^2)^2"}}
+domain: {type: multipatch, name: 3p_square}
+space: {type: g1, degree: 5}
+refinement: {levels: 5}
+)yaml");
+  for (int index = 2; index <= 6; ++index) EXPECT_NEAR(last_rate(plate, index), 8.0, 0.3) << "index " << index;
+}
+
+TEST(EigenRates, FourSplitG1ReachesTwoPAndTwoPMinusTwo) {
+  // configs/eigen-multipatch-g1_4split.yaml: quartic 4-split G1 on the 2 x 2 square. From level 1
+  // to 2 (676 to 2500 DOFs) measured 8.08, 8.10, 8.10, 8.10, 8.20, 8.20 for the Laplacian (2p = 8)
+  // and 6.00, 5.99, 5.99, 6.00, 5.97, 5.97 for the simply supported plate (2(p − 1) = 6).
+  const std::vector<EigenRow> laplacian = study_rows(R"yaml(
+problem: {pde: poisson, boundary: {all: dirichlet}, eigen: {count: 6, exact_eigenvalues: "pi^2*(m^2 + n^2)"}}
+domain: {type: multipatch, name: grid2x2}
+space: {type: g1_4split, degree: 4}
+refinement: {levels: 3}
+)yaml");
+  for (int index = 1; index <= 6; ++index) EXPECT_NEAR(last_rate(laplacian, index), 8.0, 0.3) << "index " << index;
+  const std::vector<EigenRow> plate = study_rows(R"yaml(
+problem: {pde: biharmonic, boundary: {all: simply_supported}, eigen: {count: 6, exact_eigenvalues: "pi^4*(m^2 + n^2)^2"}}
+domain: {type: multipatch, name: grid2x2}
+space: {type: g1_4split, degree: 4}
+refinement: {levels: 3}
+)yaml");
+  for (int index = 1; index <= 6; ++index) EXPECT_NEAR(last_rate(plate, index), 6.0, 0.1) << "index " << index;
+}
+
 TEST(EigenRates, LShapeSingularEigenfunctionsLimitTheRates) {
   // λ₁ = 9.6397238440219, λ₂ = 15.19725192645 (Trefethen–Betcke 2006) with eigenfunctions like
   // r^(2/3) and r^(4/3) at the re-entrant corner: rates 4/3 and 8/3 in h on uniform meshes
