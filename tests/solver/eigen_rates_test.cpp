@@ -187,6 +187,34 @@ refinement: {levels: 2}
   }
 }
 
+TEST(EigenRates, FourSplitCubeSurfaceKeepsTheConstantsAndTheCubesMultiplicities) {
+  // configs/eigen-laplace-beltrami-4split-cube.yaml, levels 0 and 1: Laplace–Beltrami with
+  // reaction 0 on the cube made smooth (quintic 4-split G1, refined nested on one fixed surface).
+  // No closed form; what the mathematics fixes: λ₁ = 0 (the constants; nothing is constrained, so
+  // the solver shifts), the multiplicities 3, 3, 2 that the cube's octahedral symmetry gives
+  // (measured λ₂ = 4.30651, λ₅ = 11.90537, λ₈ = 14.59854 on level 0, equal copies to 1e-11
+  // relative), and nested spaces on one surface: no eigenvalue rises from level 0 to level 1.
+  const std::vector<EigenRow> rows = study_rows(R"yaml(
+problem: {pde: laplace_beltrami, reaction: 0, eigen: {count: 10, exact_eigenvalues: [0]}}
+domain: {type: surface, mesh: cube}
+space: {type: g1_4split, degree: 5, blending: q1}
+refinement: {levels: 2}
+output: {vtk: false}
+)yaml");
+  ASSERT_EQ(rows.size(), 20u);
+  for (int level = 0; level < 2; ++level) {
+    const EigenRow* l = &rows[10 * level];
+    EXPECT_LT(std::abs(l[0].eigenvalue), 1e-12) << "level " << level;
+    for (const auto& [first, copies] : {std::pair{1, 3}, std::pair{4, 3}, std::pair{7, 2}}) {
+      for (int i = first + 1; i < first + copies; ++i)
+        EXPECT_NEAR(l[i].eigenvalue, l[first].eigenvalue, 1e-10 * l[first].eigenvalue) << "level " << level << " index " << i + 1;
+      // exactly that many copies: the next value lies clearly above (gaps of 2.7 and more here)
+      EXPECT_GT(l[first + copies].eigenvalue, 1.1 * l[first].eigenvalue) << "level " << level << " index " << first + 1;
+    }
+  }
+  for (int i = 0; i < 10; ++i) EXPECT_LE(rows[10 + i].eigenvalue, rows[i].eigenvalue + 1e-12 * (1 + rows[i].eigenvalue)) << i;
+}
+
 TEST(EigenRates, ClampedPlateMatchesTheLiteratureValues) {
   // λ₁ of Δ²u = λu, u = ∂u/∂n = 0 on the unit square (0, 1)² (on (−1, 1)² it is 16 times
   // smaller). Literature: the enclosure 1294.933940 ≤ λ₁ ≤ 1294.933988, guaranteed by interval
