@@ -75,6 +75,93 @@ refinement: {levels: 4}
   for (int index : {1, 2, 4}) EXPECT_NEAR(last_rate(rows, index), 4.0, 0.1) << "index " << index;
 }
 
+TEST(EigenRates, LaplacianOnATMeshConvergesLikeHToThe6) {
+  // configs/eigen-laplace-square-tmesh.yaml: cubic C1 T-splines, the lower-left quarter of the
+  // 4 x 4 grid split once more (T-junctions along x = 0.5 and y = 0.5 at every level). From level 2
+  // to 3 (1924 to 7428 DOFs) measured 5.98, 5.96, 5.96, 5.94, 5.88, 5.88; the higher eigenvalues
+  // approach 2p = 6 from below (λ₅: 5.04, 5.60, 5.88, 5.97 on levels 1 to 4).
+  const std::vector<EigenRow> rows = study_rows(R"yaml(
+problem: {pde: poisson, boundary: {all: dirichlet}, eigen: {count: 6, exact_eigenvalues: "pi^2*(m^2 + n^2)"}}
+domain: {type: rectangle, min: [0, 0], max: [1, 1]}
+space: {type: tmesh, section: poly, n: 3, regularity: 1, elements: [4, 4], refine: [[0, 0, 0.5, 0.5]]}
+refinement: {levels: 4}
+)yaml");
+  for (int index = 1; index <= 6; ++index) EXPECT_NEAR(last_rate(rows, index), 6.0, 0.2) << "index " << index;
+}
+
+TEST(EigenRates, SimplySupportedPlateOnATMeshConvergesLikeHToThe4) {
+  // configs/eigen-plate-simply-supported-tmesh.yaml, the same C1 T-mesh space: 2(p − 1) = 4.
+  // From level 1 to 2 (516 to 1924 DOFs) measured 4.03 (λ₁), 4.02, 4.02, 4.01, 3.99, 3.99.
+  const std::vector<EigenRow> rows = study_rows(R"yaml(
+problem: {pde: biharmonic, boundary: {all: simply_supported}, eigen: {count: 6, exact_eigenvalues: "pi^4*(m^2 + n^2)^2"}}
+domain: {type: rectangle, min: [0, 0], max: [1, 1]}
+space: {type: tmesh, section: poly, n: 3, regularity: 1, elements: [4, 4], refine: [[0, 0, 0.5, 0.5]]}
+refinement: {levels: 3}
+)yaml");
+  for (int index = 1; index <= 6; ++index) EXPECT_NEAR(last_rate(rows, index), 4.0, 0.1) << "index " << index;
+}
+
+TEST(EigenRates, G1MultipatchReachesTwoPAndTwoPMinusTwo) {
+  // configs/eigen-multipatch-g1.yaml: quintic G1 on the 3-patch square (valence-3 vertex). The
+  // Laplacian's rates approach 2p = 10 from above: from level 2 to 3 (846 to 3222 DOFs) measured
+  // 10.65, 10.50, 10.73, 10.54, 10.25 for λ₂ … λ₆ (λ₁ is at 1e-15, round-off, there).
+  const std::vector<EigenRow> laplacian = study_rows(R"yaml(
+problem: {pde: poisson, boundary: {all: dirichlet}, eigen: {count: 6, exact_eigenvalues: "pi^2*(m^2 + n^2)"}}
+domain: {type: multipatch, name: 3p_square}
+space: {type: g1, degree: 5}
+refinement: {levels: 4}
+)yaml");
+  for (int index = 2; index <= 6; ++index) {
+    EXPECT_GT(last_rate(laplacian, index), 10.0 - 0.3) << "index " << index;
+    EXPECT_LT(last_rate(laplacian, index), 10.0 + 1.0) << "index " << index;
+  }
+  EXPECT_NEAR(last_rate(laplacian, 6), 10.0, 0.3);
+  // The simply supported plate, 2(p − 1) = 8: from level 3 to 4 (3222 to 12582 DOFs) measured
+  // 7.84, 8.10, 8.27, 8.28, 8.26 for λ₂ … λ₆ (λ₁ reaches the plates' round-off floor, 1.4e-12).
+  const std::vector<EigenRow> plate = study_rows(R"yaml(
+problem: {pde: biharmonic, boundary: {all: simply_supported}, eigen: {count: 6, exact_eigenvalues: "pi^4*(m^2 + n^2)^2"}}
+domain: {type: multipatch, name: 3p_square}
+space: {type: g1, degree: 5}
+refinement: {levels: 5}
+)yaml");
+  for (int index = 2; index <= 6; ++index) EXPECT_NEAR(last_rate(plate, index), 8.0, 0.3) << "index " << index;
+}
+
+TEST(EigenRates, FourSplitG1ReachesTwoPAndTwoPMinusTwo) {
+  // configs/eigen-multipatch-g1_4split.yaml: quartic 4-split G1 on the 2 x 2 square. From level 1
+  // to 2 (676 to 2500 DOFs) measured 8.08, 8.10, 8.10, 8.10, 8.20, 8.20 for the Laplacian (2p = 8)
+  // and 6.00, 5.99, 5.99, 6.00, 5.97, 5.97 for the simply supported plate (2(p − 1) = 6).
+  const std::vector<EigenRow> laplacian = study_rows(R"yaml(
+problem: {pde: poisson, boundary: {all: dirichlet}, eigen: {count: 6, exact_eigenvalues: "pi^2*(m^2 + n^2)"}}
+domain: {type: multipatch, name: grid2x2}
+space: {type: g1_4split, degree: 4}
+refinement: {levels: 3}
+)yaml");
+  for (int index = 1; index <= 6; ++index) EXPECT_NEAR(last_rate(laplacian, index), 8.0, 0.3) << "index " << index;
+  const std::vector<EigenRow> plate = study_rows(R"yaml(
+problem: {pde: biharmonic, boundary: {all: simply_supported}, eigen: {count: 6, exact_eigenvalues: "pi^4*(m^2 + n^2)^2"}}
+domain: {type: multipatch, name: grid2x2}
+space: {type: g1_4split, degree: 4}
+refinement: {levels: 3}
+)yaml");
+  for (int index = 1; index <= 6; ++index) EXPECT_NEAR(last_rate(plate, index), 6.0, 0.1) << "index " << index;
+}
+
+TEST(EigenRates, SimplySupportedPlateOnWs4ConvergesLikeHToThe6) {
+  // configs/eigen-plate-simply-supported-ws4.yaml: WS4 is quartic and C3 (C1 is what a plate
+  // needs): 2(p − 1) = 6. From 4 to 8 elements a side (682 to 2442 DOFs) measured 6.04, 6.26,
+  // 6.26, 6.43, 6.10, 6.04 for λ₁ … λ₆; λ₄ approaches 6 from above (6.64, 6.43, 6.17 on levels 1–3).
+  const std::vector<EigenRow> rows = study_rows(R"yaml(
+problem: {pde: biharmonic, boundary: {all: simply_supported}, eigen: {count: 6, exact_eigenvalues: "pi^4*(m^2 + n^2)^2"}}
+domain: {type: unit_square}
+space: {type: ws4, elements: 2}
+refinement: {levels: 3}
+)yaml");
+  for (int index : {1, 2, 3, 5, 6}) EXPECT_NEAR(last_rate(rows, index), 6.0, 0.3) << "index " << index;
+  EXPECT_GT(last_rate(rows, 4), 6.0 - 0.3);
+  EXPECT_LT(last_rate(rows, 4), 6.5);
+}
+
 TEST(EigenRates, LShapeSingularEigenfunctionsLimitTheRates) {
   // λ₁ = 9.6397238440219, λ₂ = 15.19725192645 (Trefethen–Betcke 2006) with eigenfunctions like
   // r^(2/3) and r^(4/3) at the re-entrant corner: rates 4/3 and 8/3 in h on uniform meshes
@@ -113,6 +200,34 @@ refinement: {levels: 2}
     EXPECT_NEAR(finest[i].eigenvalue, finest[4].eigenvalue, 1e-10 * 6);
     EXPECT_NEAR(finest[i].eigenvalue, 6.0, 3.5e-3 * 6);
   }
+}
+
+TEST(EigenRates, FourSplitCubeSurfaceKeepsTheConstantsAndTheCubesMultiplicities) {
+  // configs/eigen-laplace-beltrami-4split-cube.yaml, levels 0 and 1: Laplace–Beltrami with
+  // reaction 0 on the cube made smooth (quintic 4-split G1, refined nested on one fixed surface).
+  // No closed form; what the mathematics fixes: λ₁ = 0 (the constants; nothing is constrained, so
+  // the solver shifts), the multiplicities 3, 3, 2 that the cube's octahedral symmetry gives
+  // (measured λ₂ = 4.30651, λ₅ = 11.90537, λ₈ = 14.59854 on level 0, equal copies to 1e-11
+  // relative), and nested spaces on one surface: no eigenvalue rises from level 0 to level 1.
+  const std::vector<EigenRow> rows = study_rows(R"yaml(
+problem: {pde: laplace_beltrami, reaction: 0, eigen: {count: 10, exact_eigenvalues: [0]}}
+domain: {type: surface, mesh: cube}
+space: {type: g1_4split, degree: 5, blending: q1}
+refinement: {levels: 2}
+output: {vtk: false}
+)yaml");
+  ASSERT_EQ(rows.size(), 20u);
+  for (int level = 0; level < 2; ++level) {
+    const EigenRow* l = &rows[10 * level];
+    EXPECT_LT(std::abs(l[0].eigenvalue), 1e-12) << "level " << level;
+    for (const auto& [first, copies] : {std::pair{1, 3}, std::pair{4, 3}, std::pair{7, 2}}) {
+      for (int i = first + 1; i < first + copies; ++i)
+        EXPECT_NEAR(l[i].eigenvalue, l[first].eigenvalue, 1e-10 * l[first].eigenvalue) << "level " << level << " index " << i + 1;
+      // exactly that many copies: the next value lies clearly above (gaps of 2.7 and more here)
+      EXPECT_GT(l[first + copies].eigenvalue, 1.1 * l[first].eigenvalue) << "level " << level << " index " << first + 1;
+    }
+  }
+  for (int i = 0; i < 10; ++i) EXPECT_LE(rows[10 + i].eigenvalue, rows[i].eigenvalue + 1e-12 * (1 + rows[i].eigenvalue)) << i;
 }
 
 TEST(EigenRates, ClampedPlateMatchesTheLiteratureValues) {
