@@ -9,7 +9,7 @@ set -euo pipefail
 
 # Group 1: building and running iga-run (PETSc is optional in CMake: quickstart.sh builds without it).
 run_packages=(
-  build-essential cmake pkg-config
+  build-essential cmake pkg-config ninja-build
   libeigen3-dev libsuitesparse-dev libyaml-cpp-dev libvtk9-dev
   libginac-dev libmuparser-dev libplplot-dev plplot-driver-cairo
   libcli11-dev nlohmann-json3-dev

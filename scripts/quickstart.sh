@@ -23,9 +23,11 @@ configure() {
   # A first configure leaves out what command 2 adds (tests, Python module, PETSc) and compiles each
   # layer in batches (a unity build: a third less compiler time from scratch, see
   # docs/developing.md); an existing build/ keeps its settings (command 2 may have turned them on).
+  # Ninja (installed by command 1) keeps both cores busy across the layers, where Make waits for
+  # each layer's longest batch (a fresh 2-core chroot: 214 s against 240 s).
   local first=()
   [ -f build/CMakeCache.txt ] ||
-    first=(-DBUILD_TESTING=OFF -DIGA_PYTHON=OFF -DIGA_WITH_PETSC=OFF -DIGA_UNITY_BUILD=ON)
+    first=(-G Ninja -DBUILD_TESTING=OFF -DIGA_PYTHON=OFF -DIGA_WITH_PETSC=OFF -DIGA_UNITY_BUILD=ON)
   cmake -S . -B build -DCMAKE_BUILD_TYPE=Release "${first[@]}" > build-configure.log 2>&1 ||
     { cat build-configure.log; exit 1; }
   rm -f build-configure.log
