@@ -1,7 +1,9 @@
 #include "assembly/surface_essential.hpp"
 
 #include <Eigen/Geometry>  // cross
+#include <set>
 #include <stdexcept>
+#include <utility>
 
 #include "assembly/boundary_projection.hpp"
 #include "config/errors.hpp"
@@ -11,16 +13,27 @@ namespace iga {
 Constraints surface_essential_constraints(const Space& space, const std::vector<BoundaryEdge>& edges,
                                           const SurfaceField& g, const SurfaceConormalField& g_conormal,
                                           int quad_degree) {
+  return surface_essential_constraints(space, EssentialBoundary{edges, g_conormal ? edges : std::vector<BoundaryEdge>{}},
+                                       g, g_conormal, quad_degree);
+}
+
+Constraints surface_essential_constraints(const Space& space, const EssentialBoundary& boundary,
+                                          const SurfaceField& g, const SurfaceConormalField& g_conormal,
+                                          int quad_degree) {
   if (space.ambient_dimension() != 3)
     throw std::logic_error("surface_essential_constraints: the space is not on a surface in 3D");
+  if (!boundary.normal_edges.empty() && !g_conormal)
+    throw std::logic_error("surface_essential_constraints: conormal edges without conormal data");
   const int dim = space.dimension();
-  const bool conormal = static_cast<bool>(g_conormal);
+  std::set<std::pair<int, int>> clamped;
+  for (const BoundaryEdge& e : boundary.normal_edges) clamped.insert({e.element, e.local_edge});
   const auto evaluator = space.make_evaluator();
   PointValues v;
   std::vector<int> local_of(dim, -1), order, active;
   std::vector<Eigen::Triplet<double>> triplets;
   std::vector<std::pair<int, double>> rhs_entries;
-  for (const BoundaryEdge& edge : edges) {
+  for (const BoundaryEdge& edge : boundary.value_edges) {
+    const bool conormal = clamped.count({edge.element, edge.local_edge}) > 0;
     const RulePtr rule = space.edge_quadrature(edge.element, edge.local_edge, quad_degree);
     evaluator->evaluate(edge.element, *rule,
                         update_values | (conormal ? update_gradients | update_surface_curvature : 0u), v);
@@ -49,7 +62,7 @@ Constraints surface_essential_constraints(const Space& space, const std::vector<
     }
     if (!gv.allFinite() || !gn.allFinite())
       throw InputError("the boundary data are not finite on the boundary of the surface");
-    const double vmax = v.value.cwiseAbs().maxCoeff(), nmax = dnu.cwiseAbs().maxCoeff();
+    const double vmax = v.value.cwiseAbs().maxCoeff(), nmax = conormal ? dnu.cwiseAbs().maxCoeff() : 0.0;
     active.clear();
     for (int i = 0; i < n; ++i) {
       const bool seen_value = v.value.row(i).cwiseAbs().maxCoeff() > kActiveTolerance * vmax;

@@ -27,4 +27,11 @@ Constraints surface_essential_constraints(const Space& space, const std::vector<
                                           const SurfaceField& g, const SurfaceConormalField& g_conormal,
                                           int quad_degree);
 
+/// The same with the data per edge: u = g on `boundary.value_edges`, ∂_ν u = g_ν on
+/// `boundary.normal_edges` (clamped parts; each also a value edge), all in one least-squares system,
+/// so a function seen by a clamped and a simply supported edge at a corner is fitted to both data.
+Constraints surface_essential_constraints(const Space& space, const EssentialBoundary& boundary,
+                                          const SurfaceField& g, const SurfaceConormalField& g_conormal,
+                                          int quad_degree);
+
 }  // namespace iga

@@ -166,15 +166,23 @@ ProblemSpec parse_surface_problem(const ConfigNode& node) {
     // Δ_Γ²u + c u = f: ∫ Δ_Γu Δ_Γv + c ∫ u v (the planar bilaplace integrator reads the covariant
     // Hessian on a surface). On a closed surface with c = 0 the constants are the kernel (fixed by
     // the mean, as for Laplace–Beltrami); open ones are clamped (u, ∂_ν u) or simply supported
-    // (u, and Δ_Γu as a natural condition) on their whole boundary, data from `exact`; either
-    // fixes u for any c >= 0.
+    // (u, and Δ_Γu as a natural condition) part by part ("all" first, named parts override it;
+    // the names and that every edge has a condition are checked against the space), data from
+    // `exact`; either fixes u for any c >= 0.
     const auto boundary = node.find("boundary");
     if (boundary) {
-      for (const std::string& key : boundary->keys())
-        if (key != "all") (*boundary)[key].fail("a surface has one boundary part, 'all' (its whole boundary curve)");
-      const ConfigNode all = (*boundary)["all"];
-      const bool clamped = all.as_choice({"clamped", "simply_supported"}) == "clamped";
-      p.boundary.push_back({"all", clamped ? BoundaryKind::clamped : BoundaryKind::simply_supported, all.where()});
+      if (!boundary->is_map() || boundary->keys().empty())
+        boundary->fail("expected a map from boundary part (all, left, ...) to a condition (clamped, simply_supported)");
+      bool clamped = false;
+      for (const std::string& name : boundary->keys()) {
+        const ConfigNode entry = (*boundary)[name];
+        const bool part_clamped = entry.as_choice({"clamped", "simply_supported"}) == "clamped";
+        clamped = clamped || part_clamped;
+        const BoundaryPart part{name, part_clamped ? BoundaryKind::clamped : BoundaryKind::simply_supported,
+                                entry.where()};
+        if (name == "all") p.boundary.insert(p.boundary.begin(), part);
+        else p.boundary.push_back(part);
+      }
       if (!node.has("exact"))
         boundary->fail(clamped ? "clamped data (u and its conormal derivative) are taken from 'exact': give it"
                                : "simply supported data (u and Δ_Γu) are taken from 'exact': give it");

@@ -1,7 +1,11 @@
 #include "solver/surface_problem.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <map>
 #include <set>
+#include <stdexcept>
+#include <utility>
 
 #include "assembly/error_norms.hpp"
 #include "assembly/interior_penalty.hpp"
@@ -42,6 +46,49 @@ std::vector<BoundaryEdge> edges_of_share(const std::vector<BoundaryEdge>& edges,
   for (const BoundaryEdge& e : edges)
     if (mine.count(e.element)) out.push_back(e);
   return out;
+}
+
+/// Every named part is one of the space's ("all" always is); else an InputError at the part's key
+/// naming the parts there are and the nearest one.
+void check_part_names(const Space& space, const std::vector<BoundaryPart>& parts) {
+  const std::vector<std::string> names = space.boundary_names();
+  for (const BoundaryPart& part : parts) {
+    if (part.name == "all" || std::find(names.begin(), names.end(), part.name) != names.end()) continue;
+    std::string list = "all";
+    for (const std::string& n : names) list += ", " + n;
+    const std::string near = nearest_word(part.name, names);
+    throw InputError(part.where + ": unknown boundary part '" + part.name + "' of this " + space.type() +
+                     " surface (parts: " + list + ")" + (near.empty() ? "" : " (did you mean '" + near + "'?)"));
+  }
+}
+
+/// "FILE:LINE:COL: problem.boundary.left" → "FILE:LINE:COL: problem.boundary": messages about the
+/// parts together.
+std::string parent_key(const std::string& where) {
+  const std::size_t colon = where.rfind(": ");
+  const std::size_t dot = where.rfind('.');
+  return dot != std::string::npos && (colon == std::string::npos || dot > colon) ? where.substr(0, dot) : where;
+}
+
+/// No free edge: the parts given cover the whole boundary curve (`covered` of its edges), else an
+/// InputError naming the space's parts that have edges without a condition.
+void check_every_edge_has_a_condition(const Space& space, const std::vector<BoundaryPart>& parts,
+                                      std::size_t covered) {
+  if (parts.empty() || covered == space.boundary_edges("all").size()) return;
+  std::set<std::pair<int, int>> given;
+  for (const BoundaryPart& part : parts)
+    for (const BoundaryEdge& e : space.boundary_edges(part.name)) given.insert({e.element, e.local_edge});
+  std::string missing;
+  for (const std::string& name : space.boundary_names())
+    for (const BoundaryEdge& e : space.boundary_edges(name))
+      if (!given.count({e.element, e.local_edge})) {
+        missing += (missing.empty() ? "" : ", ") + name;
+        break;
+      }
+  throw InputError(parent_key(parts.front().where) + ": the boundary part(s) " +
+                   (missing.empty() ? std::string("of some edges") : missing) +
+                   " have no condition: give every part clamped or simply_supported, or 'all' for the rest (a free "
+                   "edge, with Δ_Γu and its conormal derivative natural, is not supported)");
 }
 
 /// The exact solution's callables (empty when the problem has none).
@@ -140,6 +187,11 @@ void SurfaceBiharmonicFormulation::check() const {
   if (space().ambient_dimension() != 3)
     throw InputError(p.source_where + ": surface_biharmonic needs a space on a surface in 3D");
   const bool open = !space().boundary_edges("all").empty();
+  if (!open && !p.boundary.empty())
+    throw InputError(p.boundary.front().where + ": this surface is closed: it has no boundary for clamped or simply supported data");
+  check_part_names(space(), p.boundary);
+  bool clamped = p.boundary.empty();  // a lift without problem.boundary is clamped
+  for (const BoundaryPart& part : p.boundary) clamped = clamped || part.kind == BoundaryKind::clamped;
   if (space().continuity() < 1) {  // the C0 interior penalty form
     if (space().num_elements() > 1 && space().interior_edges().empty())
       throw InputError(p.source_where + ": surface_biharmonic on a C0 space needs its interior edges (the interior "
@@ -147,13 +199,11 @@ void SurfaceBiharmonicFormulation::check() const {
     // Clamped data through a lift are the planar space's own (u and ∂_n u imposed on the boundary
     // edges, so the test functions have no boundary terms); simply supported boundaries need none
     // either (Δ_Γu is natural: its term is the load's); other clamped surfaces have no such terms yet.
-    if (open && !dynamic_cast<const LiftedSpace*>(&space()) && !simply_supported())
+    if (open && !dynamic_cast<const LiftedSpace*>(&space()) && clamped)
       throw InputError(p.source_where + ": the C0 interior penalty form of surface_biharmonic is for closed surfaces, "
                                         "graph surfaces and simply supported boundaries (no clamped boundary edge terms "
                                         "yet); use a C1 space here");
   }
-  if (!open && !p.boundary.empty())
-    throw InputError(p.boundary.front().where + ": this surface is closed: it has no boundary for clamped or simply supported data");
   if (!open) return;
   // Lifted (graph) surfaces are built in code, where the clamped condition is implied.
   if (p.boundary.empty() && !dynamic_cast<const LiftedSpace*>(&space()))
@@ -162,6 +212,7 @@ void SurfaceBiharmonicFormulation::check() const {
                                       "(u and Δ_Γu from exact)");
   if (!p.surface_exact)
     throw InputError(p.source_where + ": surface_biharmonic on an open surface takes its boundary data from 'exact'");
+  check_every_edge_has_a_condition(space(), p.boundary, parts().essential.value_edges.size());
 }
 
 Eigen::VectorXd SurfaceBiharmonicFormulation::load(const WorkShare& share) const {
@@ -171,11 +222,13 @@ Eigen::VectorXd SurfaceBiharmonicFormulation::load(const WorkShare& share) const
     Eigen::VectorXd b = surface_load(
         space(), [f](const Eigen::Vector3d& x, const Eigen::Vector3d&, double) { return f.at(x); },
         quadrature_degree(), share.elements);
-    // Simply supported: Δ_Γu = g is natural, ∫ g ∂_ν v ds on the load side, over the boundary
+    // Simply supported parts: Δ_Γu = g is natural, ∫ g ∂_ν v ds on the load side, over their
     // edges of this share's elements (each rank its own, as the element part).
-    if (simply_supported())
-      b += surface_conormal_load(space(), edges_of_share(space().boundary_edges("all"), share),
-                                 surface_laplacian(*p.surface_exact), quadrature_degree());
+    if (p.surface_exact && !space().boundary_edges("all").empty()) {
+      const std::vector<BoundaryEdge> supported = edges_of_share(parts().simply_supported, share);
+      if (!supported.empty())
+        b += surface_conormal_load(space(), supported, surface_laplacian(*p.surface_exact), quadrature_degree());
+    }
     if (pure()) kernel_.make_load_orthogonal(b, space(), quadrature_degree(), share);
     return b;
   }
@@ -194,46 +247,84 @@ Eigen::VectorXd SurfaceBiharmonicFormulation::load(const WorkShare& share) const
 }
 
 SplitMatrix SurfaceBiharmonicFormulation::matrix(const std::vector<FormTerm>& terms) const {
+  if (space().continuity() >= 1) {
+    // Each term in double-double and their sum too, so that iterative refinement removes the
+    // floor of a matrix rounded to double (ε h⁻⁴, split_matrix.hpp): on the open 4-split cube
+    // (k = 5, c = 1) it held L2 / H1 at 5.5e−8 / 7.0e−8 at level 5 (docs/surface-biharmonic.md).
+    // The terms share the assembler's pattern: added entry by entry, one term matrix at a time.
+    SplitMatrix m = assembler().matrix_extended(terms.at(0), quadrature_degree());
+    const Eigen::Index nnz = m.high.nonZeros();
+    for (std::size_t i = 1; i < terms.size(); ++i) {
+      const SplitMatrix t = assembler().matrix_extended(terms[i], quadrature_degree());
+      if (t.high.nonZeros() != nnz) throw std::logic_error("SurfaceBiharmonicFormulation::matrix: the terms' patterns differ");
+      double* hi = m.high.valuePtr();
+      for (Eigen::Index k = 0; k < nnz; ++k) {
+        const DoubleDouble v = DoubleDouble(hi[k], m.low(k)) + DoubleDouble(t.high.valuePtr()[k], t.low(k));
+        hi[k] = v.hi;
+        m.low(k) = v.lo;
+      }
+    }
+    return m;
+  }
   SplitMatrix m = Formulation::matrix(terms);
-  if (space().continuity() >= 1) return m;
   m.high = m.high + c0ip_edge_matrix(space(), c0ip_penalty(space().degree()), quadrature_degree());
   m.low.resize(0);  // the pattern changed; the element part is summed in double anyway
   return m;
 }
 
+SurfaceBiharmonicFormulation::Parts SurfaceBiharmonicFormulation::parts() const {
+  const std::vector<BoundaryEdge> all = space().boundary_edges("all");
+  Parts out;
+  if (problem().boundary.empty()) {  // a lift: clamped everywhere (check() refuses other open surfaces)
+    out.essential = {all, all};
+    return out;
+  }
+  std::map<std::pair<int, int>, BoundaryKind> kind_of_edge;
+  for (const BoundaryPart& part : problem().boundary)
+    for (const BoundaryEdge& e : space().boundary_edges(part.name)) kind_of_edge[{e.element, e.local_edge}] = part.kind;
+  for (const BoundaryEdge& e : all) {
+    const auto it = kind_of_edge.find({e.element, e.local_edge});
+    if (it == kind_of_edge.end()) continue;  // no condition: refused by check()
+    out.essential.value_edges.push_back(e);
+    if (it->second == BoundaryKind::clamped) out.essential.normal_edges.push_back(e);
+    else out.simply_supported.push_back(e);
+  }
+  return out;
+}
+
 Constraints SurfaceBiharmonicFormulation::constraints() const {
-  // An open lifted surface: clamped on its whole boundary, u and ∇_Γu from the exact solution,
-  // imposed as the planar space's clamped condition on u ∘ X (same functions, same numbering):
-  // û = u(X(x, y)) and ∂_n û = (J_Xᵀ ∇u) · n with n the planar outward normal.
-  // Simply supported: u only (Δ_Γu is natural), through the planar space for a lift.
-  if (const auto* lifted = dynamic_cast<const LiftedSpace*>(&space());
-      lifted && !space().boundary_edges("all").empty()) {
+  // An open lifted surface: u on every boundary edge, ∇_Γu on the clamped ones, from the exact
+  // solution, imposed as the planar space's clamped / simply supported conditions on u ∘ X (same
+  // functions, numbering and boundary edges): û = u(X(x, y)) and ∂_n û = (J_Xᵀ ∇u) · n with n the
+  // planar outward normal. Δ_Γu on simply supported edges is natural.
+  const Parts boundary = space().boundary_edges("all").empty() ? Parts{} : parts();
+  const bool clamped = !boundary.essential.normal_edges.empty();
+  if (const auto* lifted = dynamic_cast<const LiftedSpace*>(&space()); lifted && !boundary.essential.empty()) {
     const SymbolicFunction u = *problem().surface_exact;
     const SymbolicFunction ux = u.diff_x(), uy = u.diff_y(), uz = u.diff_z();
     const BoundaryField value = [lifted, u](const Point2& x, const Point2&) { return u.at(lifted->lift(x)); };
-    const BoundaryField normal = [lifted, ux, uy, uz](const Point2& x, const Point2& n) {
-      const Eigen::Vector3d X = lifted->lift(x);
-      const Eigen::Vector3d g(ux.at(X), uy.at(X), uz.at(X));
-      return (lifted->lift_jacobian(x).transpose() * g).dot(n);
-    };
-    const std::vector<BoundaryEdge> all = lifted->planar().boundary_edges("all");
-    if (simply_supported())
-      return impose_essential(lifted->planar(), EssentialBoundary{all, {}}, value, {}, quadrature_degree());
-    return impose_essential(lifted->planar(), EssentialBoundary{all, all}, value, normal, quadrature_degree());
+    BoundaryField normal;
+    if (clamped)
+      normal = [lifted, ux, uy, uz](const Point2& x, const Point2& n) {
+        const Eigen::Vector3d X = lifted->lift(x);
+        const Eigen::Vector3d g(ux.at(X), uy.at(X), uz.at(X));
+        return (lifted->lift_jacobian(x).transpose() * g).dot(n);
+      };
+    return impose_essential(lifted->planar(), boundary.essential, value, normal, quadrature_degree());
   }
-  // Any other open surface: clamped through the surface's own conormal ν, u = u_exact and
-  // ∂_ν u = ∇u_exact · ν (ν tangent to Γ, so the ambient gradient gives the surface one's component).
-  if (!space().boundary_edges("all").empty()) {
+  // Any other open surface: through the surface's own conormal ν, u = u_exact and on clamped
+  // edges ∂_ν u = ∇u_exact · ν (ν tangent to Γ, so the ambient gradient gives the surface one's
+  // component).
+  if (!boundary.essential.empty()) {
     const SymbolicFunction u = *problem().surface_exact;
     const SymbolicFunction ux = u.diff_x(), uy = u.diff_y(), uz = u.diff_z();
     SurfaceConormalField conormal;
-    if (!simply_supported())
+    if (clamped)
       conormal = [ux, uy, uz](const Eigen::Vector3d& x, const Eigen::Vector3d& nu) {
         return ux.at(x) * nu(0) + uy.at(x) * nu(1) + uz.at(x) * nu(2);
       };
     return surface_essential_constraints(
-        space(), space().boundary_edges("all"), [u](const Eigen::Vector3d& x) { return u.at(x); }, conormal,
-        quadrature_degree());
+        space(), boundary.essential, [u](const Eigen::Vector3d& x) { return u.at(x); }, conormal, quadrature_degree());
   }
   if (pure()) return kernel_.pinned(space());
   // Closed surface, c > 0: no essential condition.

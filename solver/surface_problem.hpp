@@ -8,6 +8,7 @@
 /// so the surface is the exact geometry of the problem (no geometric error). With c = 0 the solution
 /// is unique up to a constant: zero mean, or the exact solution's mean when one is given.
 
+#include "assembly/boundary_conditions.hpp"
 #include "assembly/fields.hpp"
 #include "config/config_node.hpp"
 #include "solver/constant_kernel.hpp"
@@ -55,10 +56,11 @@ class SurfaceFormulation final : public Formulation {
 double c0ip_penalty(int degree);
 
 /// The surface biharmonic problem Δ_Γ²u + c u = f (c = `reaction`, default 1; with c = 0 on a
-/// closed surface u is fixed up to a constant as for Laplace–Beltrami: ConstantKernel) on a closed surface, or on an open one clamped on its whole boundary (u and the
+/// closed surface u is fixed up to a constant as for Laplace–Beltrami: ConstantKernel) on a closed surface, or on an open one whose boundary parts are clamped (u and the
 /// conormal derivative ∂_ν u from the exact solution: surface_essential.hpp; lifted graph surfaces
 /// through their planar space) or simply supported (u only; Δ_Γu natural: a given source gains
-/// ∫ Δ_Γu ∂_ν v, surface_conormal_load.hpp), as a Formulation: matrix ∫ Δ_Γu Δ_Γv + c ∫ u v (ProblemSpec::terms: the bilaplace
+/// ∫ Δ_Γu ∂_ν v over those edges, surface_conormal_load.hpp), every edge one or the other (no free
+/// edges), as a Formulation: matrix ∫ Δ_Γu Δ_Γv + c ∫ u v (ProblemSpec::terms: the bilaplace
 /// integrator on the covariant Hessians, and mass), on C1 surface spaces. The load is the given
 /// source, or with an exact solution u the bilinear form applied to u,
 ///   ℓ(v) = ∫ Δ_Γu Δ_Γv + c u v,   Δ_Γu = tr ∇²u − n·∇²u n − H ∂_n u   pointwise,
@@ -88,10 +90,15 @@ class SurfaceBiharmonicFormulation final : public Formulation {
   /// Δ_Γ²u = f on a closed surface: the constants are the kernel (ConstantKernel).
   bool pure() const { return problem().reaction == 0 && space().boundary_edges("all").empty() && !problem().eigen; }
   bool works_on_parts() const override { return Formulation::works_on_parts() && !pure(); }
-  /// u and Δ_Γu given on the boundary (Δ_Γu natural), not u and ∂_ν u.
-  bool simply_supported() const {
-    return !problem().boundary.empty() && problem().boundary.front().kind == BoundaryKind::simply_supported;
-  }
+  /// The boundary edges by condition, each list in the order of the space's "all": u on every
+  /// edge (essential.value_edges), ∂_ν u on the clamped ones (essential.normal_edges), Δ_Γu natural
+  /// on the simply supported ones. Parts in config order, "all" first, named parts overriding it;
+  /// a lifted surface without problem.boundary is clamped everywhere.
+  struct Parts {
+    EssentialBoundary essential;
+    std::vector<BoundaryEdge> simply_supported;
+  };
+  Parts parts() const;
   mutable ConstantKernel kernel_;  ///< pure problems: set by load, used by finish
 };
 
