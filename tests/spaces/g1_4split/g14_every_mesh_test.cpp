@@ -100,7 +100,7 @@ PatchMesh bumpy_grid() {
 
 TEST(G14EveryMesh, ClosedSurfaceFilesDimensionIsTheBruteForceNullSpace) {
   // The closed surfaces of docs/spaces/g1_4split.md's table, default gluing, level 0 (k = 5 in the
-  // docs: 626 and 2 048; lower here to keep the dense null space cheap). The torus 8 x 4 has only
+  // docs: 626, 2 048 and the cube's 384; lower here to keep the dense null space cheap). The torus 8 x 4 has only
   // crossing vertices and closed mesh lines, so a = 0 on every edge and its space is the tensor
   // product of periodic C1 splines of degree k: 16 spans around times 8 across, (k - 1) functions
   // per span, 128 (k - 1)^2.
@@ -119,6 +119,11 @@ TEST(G14EveryMesh, ClosedSurfaceFilesDimensionIsTheBruteForceNullSpace) {
     EXPECT_EQ(build_g14_basis(t, g, c.k, 1).dimension(), brute) << c.file;
     if (std::string(c.file) == "g14_torus_8x4.obj") EXPECT_EQ(brute, 128 * (c.k - 1) * (c.k - 1));
   }
+  const QuadTopology cube = cube_topology();  // 8 vertices of valence 3
+  const auto g = symmetric_gluing(cube, Blending::lines);
+  const int brute = brute_force(cube, g, 4);
+  EXPECT_EQ(g14_dimension_formula(cube, g, 4, 1), brute);
+  EXPECT_EQ(build_g14_basis(cube, g, 4, 1).dimension(), brute);
 }
 
 TEST(G14EveryMesh, ZigzagLinesResolveTwoNonZeroLinesAtOneVertex) {
@@ -160,7 +165,7 @@ TEST(G14EveryMesh, PlanarDefaultGluingDimensionAndTwist) {
   // formula, which counts H(γ) from Condition 1), the twist condition at every crossing, every
   // piece linear; on the split fans it is the symmetric lines gluing (the bilinear map is in it).
   const PatchMesh grid = bumpy_grid();
-  for (const PatchMesh& mesh : {g14_domain("fan3s"), grid}) {
+  for (const PatchMesh& mesh : {g14_domain("fan3s"), g14_domain("fan5s"), g14_domain("fan6s"), grid}) {
     const QuadTopology t = quad_topology(mesh);
     LineGluingReport report;
     const auto g = planar_line_gluing(mesh, t, &report);
