@@ -8,7 +8,9 @@
 
 #include <Eigen/Dense>
 
+#include "config/config_node.hpp"
 #include "mesh/read_quad_surface_mesh.hpp"
+#include "spaces/g1/g1_from_config.hpp"
 #include "spaces/g1_4split/fan_values.hpp"
 #include "spaces/g1_4split/g1_4split_basis.hpp"
 #include "spaces/g1_4split/g1_4split_meshes.hpp"
@@ -144,6 +146,24 @@ TEST(G14EveryMesh, ZigzagLinesResolveTwoNonZeroLinesAtOneVertex) {
   const auto gf = inherited_gluing(t, g, fine);
   EXPECT_EQ(twist_incompatible_vertex(fine, gf), -1);
   EXPECT_EQ(build_g14_basis(fine, gf, 4, 1).dimension(), g14_dimension_formula(fine, gf, 4, 1));
+}
+
+TEST(G14EveryMesh, GmshRecombinationDimensionIsTheBruteForceNullSpace) {
+  // The Gmsh row of docs/spaces/g1_4split.md (configs/domains/g1_pentagon_quads.geo at mesh size
+  // 0.8, recombined: 13 quads, interior valence 3 and 4), default planar gluing, level 0, k = 4
+  // (the docs' 910 is k = 5).
+  const PatchMesh mesh = patch_mesh_from_config(ConfigNode::load_string(
+      "{type: mesh_file, file: " + std::string(IGA_SOURCE_DIR) +
+          "/configs/domains/g1_pentagon_quads.geo, mesh_size: 0.8, recombine: true}",
+      "test.yaml"));
+  const QuadTopology t = quad_topology(mesh);
+  ASSERT_EQ(t.num_faces(), 13);
+  const auto g = planar_line_gluing(mesh, t);
+  EXPECT_EQ(twist_incompatible_vertex(t, g), -1);
+  EXPECT_EQ(largest_curvature(t, g), 0.0);
+  const int brute = brute_force(t, g, 4);
+  EXPECT_EQ(g14_dimension_formula(t, g, 4, 1), brute);
+  EXPECT_EQ(build_g14_basis(t, g, 4, 1).dimension(), brute);
 }
 
 TEST(G14EveryMesh, MeshFanValuesRegularFansAreSymmetric) {
