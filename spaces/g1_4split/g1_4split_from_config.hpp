@@ -21,9 +21,10 @@ SpacePtr make_g1_4split_space(const ConfigNode& domain, const ConfigNode& space,
 /// estimated from the file's counts of faces F, edges E and vertices V, each level splitting every
 /// face in four: DOFs about F ((2k-r-3)² + 4) + E (4k-2r-6) + 4V (the dimension formula of the
 /// note with every edge counted as a boundary edge, which has the most functions); per face about
-/// (2k-r-3)² + 4 + 4 (4k-2r-6) + 16 active functions; and building takes about 64 N² bytes per face,
-/// N = (2k-r+1)² its coefficients (measured on flat grids: 0.31, 0.52, 1.24 MB per face at
-/// k = 4, 5, 6). Empty for other domains and for requests the builder refuses (it says why).
+/// (2k-r-3)² + 4 + 4 (4k-2r-6) + 16 active functions; and building level 0 takes about 64 N² bytes
+/// per face, N = (2k-r+1)² its coefficients (measured on flat grids: 0.31, 0.52, 1.24 MB per face at
+/// k = 4, 5, 6), a nested level that plus about 8 N² per face of its own (the refined basis; the fit
+/// is level 0's). Empty for other domains and for requests the builder refuses (it says why).
 std::vector<SpaceRequestSize> g1_4split_requested_sizes(const ConfigNode& domain, const ConfigNode& space, int levels);
 
 }  // namespace iga

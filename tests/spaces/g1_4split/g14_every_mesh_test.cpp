@@ -8,6 +8,9 @@
 
 #include <Eigen/Dense>
 
+#include "config/config_node.hpp"
+#include "mesh/read_quad_surface_mesh.hpp"
+#include "spaces/g1/g1_from_config.hpp"
 #include "spaces/g1_4split/fan_values.hpp"
 #include "spaces/g1_4split/g1_4split_basis.hpp"
 #include "spaces/g1_4split/g1_4split_meshes.hpp"
@@ -97,6 +100,34 @@ PatchMesh bumpy_grid() {
   return PatchMesh(v, faces, "bumpy_grid");
 }
 
+TEST(G14EveryMesh, ClosedSurfaceFilesDimensionIsTheBruteForceNullSpace) {
+  // The closed surfaces of docs/spaces/g1_4split.md's table, default gluing, level 0 (k = 5 in the
+  // docs: 626, 2 048 and the cube's 384; lower here to keep the dense null space cheap). The torus 8 x 4 has only
+  // crossing vertices and closed mesh lines, so a = 0 on every edge and its space is the tensor
+  // product of periodic C1 splines of degree k: 16 spans around times 8 across, (k - 1) functions
+  // per span, 128 (k - 1)^2.
+  struct Case {
+    const char* file;
+    int k;
+  };
+  for (const Case c : {Case{"g14_torus_8x4.obj", 3}, Case{"g14_trapezohedron.obj", 4}}) {
+    const QuadSurfaceFile read = read_quad_surface_mesh(std::string(IGA_SOURCE_DIR) + "/configs/domains/" + c.file);
+    const QuadTopology t(static_cast<int>(read.points.size()), read.quads, c.file);
+    const auto g = symmetric_gluing(t, Blending::lines);
+    EXPECT_EQ(twist_incompatible_vertex(t, g), -1) << c.file;
+    EXPECT_EQ(largest_curvature(t, g), 0.0) << c.file;
+    const int brute = brute_force(t, g, c.k);
+    EXPECT_EQ(g14_dimension_formula(t, g, c.k, 1), brute) << c.file;
+    EXPECT_EQ(build_g14_basis(t, g, c.k, 1).dimension(), brute) << c.file;
+    if (std::string(c.file) == "g14_torus_8x4.obj") EXPECT_EQ(brute, 128 * (c.k - 1) * (c.k - 1));
+  }
+  const QuadTopology cube = cube_topology();  // 8 vertices of valence 3
+  const auto g = symmetric_gluing(cube, Blending::lines);
+  const int brute = brute_force(cube, g, 4);
+  EXPECT_EQ(g14_dimension_formula(cube, g, 4, 1), brute);
+  EXPECT_EQ(build_g14_basis(cube, g, 4, 1).dimension(), brute);
+}
+
 TEST(G14EveryMesh, ZigzagLinesResolveTwoNonZeroLinesAtOneVertex) {
   const PatchMesh mesh = bumpy_grid();
   const QuadTopology t = quad_topology(mesh);
@@ -115,6 +146,24 @@ TEST(G14EveryMesh, ZigzagLinesResolveTwoNonZeroLinesAtOneVertex) {
   const auto gf = inherited_gluing(t, g, fine);
   EXPECT_EQ(twist_incompatible_vertex(fine, gf), -1);
   EXPECT_EQ(build_g14_basis(fine, gf, 4, 1).dimension(), g14_dimension_formula(fine, gf, 4, 1));
+}
+
+TEST(G14EveryMesh, GmshRecombinationDimensionIsTheBruteForceNullSpace) {
+  // The Gmsh row of docs/spaces/g1_4split.md (configs/domains/g1_pentagon_quads.geo at mesh size
+  // 0.8, recombined: 13 quads, interior valence 3 and 4), default planar gluing, level 0, k = 4
+  // (the docs' 910 is k = 5).
+  const PatchMesh mesh = patch_mesh_from_config(ConfigNode::load_string(
+      "{type: mesh_file, file: " + std::string(IGA_SOURCE_DIR) +
+          "/configs/domains/g1_pentagon_quads.geo, mesh_size: 0.8, recombine: true}",
+      "test.yaml"));
+  const QuadTopology t = quad_topology(mesh);
+  ASSERT_EQ(t.num_faces(), 13);
+  const auto g = planar_line_gluing(mesh, t);
+  EXPECT_EQ(twist_incompatible_vertex(t, g), -1);
+  EXPECT_EQ(largest_curvature(t, g), 0.0);
+  const int brute = brute_force(t, g, 4);
+  EXPECT_EQ(g14_dimension_formula(t, g, 4, 1), brute);
+  EXPECT_EQ(build_g14_basis(t, g, 4, 1).dimension(), brute);
 }
 
 TEST(G14EveryMesh, MeshFanValuesRegularFansAreSymmetric) {
@@ -136,7 +185,7 @@ TEST(G14EveryMesh, PlanarDefaultGluingDimensionAndTwist) {
   // formula, which counts H(γ) from Condition 1), the twist condition at every crossing, every
   // piece linear; on the split fans it is the symmetric lines gluing (the bilinear map is in it).
   const PatchMesh grid = bumpy_grid();
-  for (const PatchMesh& mesh : {g14_domain("fan3s"), grid}) {
+  for (const PatchMesh& mesh : {g14_domain("fan3s"), g14_domain("fan5s"), g14_domain("fan6s"), grid}) {
     const QuadTopology t = quad_topology(mesh);
     LineGluingReport report;
     const auto g = planar_line_gluing(mesh, t, &report);
