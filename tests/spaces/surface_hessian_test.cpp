@@ -165,16 +165,22 @@ double laplace_beltrami_error_of_projection(const Space& space) {
   Eigen::VectorXd b = Eigen::VectorXd::Zero(space.dimension());
   PointValues pv;
   Eigen::VectorXd jxw;
+  Eigen::MatrixXd local;
   for (int e = 0; e < space.num_elements(); ++e) {
     const RulePtr rule = space.quadrature(e, qd);
     ev->evaluate(e, *rule, update_values, pv);
     integration_weights(*rule, pv, jxw);
+    // The element's mass matrix first, then one entry per pair: an entry per quadrature point
+    // took 20 GB on the level-2 cube.
+    const int n = pv.num_functions();
+    local.setZero(n, n);
     for (int k = 0; k < rule->size(); ++k)
-      for (int i = 0; i < pv.num_functions(); ++i) {
+      for (int i = 0; i < n; ++i) {
         b(pv.dofs[i]) += pv.value(i, k) * u_exact(pv.x3.col(k)) * jxw(k);
-        for (int j = 0; j < pv.num_functions(); ++j)
-          entries.emplace_back(pv.dofs[i], pv.dofs[j], pv.value(i, k) * pv.value(j, k) * jxw(k));
+        for (int j = 0; j < n; ++j) local(i, j) += pv.value(i, k) * pv.value(j, k) * jxw(k);
       }
+    for (int i = 0; i < n; ++i)
+      for (int j = 0; j < n; ++j) entries.emplace_back(pv.dofs[i], pv.dofs[j], local(i, j));
   }
   Eigen::SparseMatrix<double> M(space.dimension(), space.dimension());
   M.setFromTriplets(entries.begin(), entries.end());
