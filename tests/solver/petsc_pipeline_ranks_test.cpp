@@ -30,6 +30,7 @@
 #include "solver/rank_part.hpp"
 #include "solver/solve_problem.hpp"
 #include "tests/support/rerun_under_mpirun.hpp"
+#include "tests/support/shell_configs.hpp"
 #include "tests/support/test_support.hpp"
 
 namespace iga {
@@ -178,18 +179,7 @@ problem:
 domain: {type: surface_patch, shape: cylinder, radius: 300, length: 300, half_angle: 90}
 space: {type: bspline, degree: 3, elements: [4, 2]}
 )yaml",
-                           R"yaml(
-problem:
-  pde: kirchhoff_love_shell
-  material: {youngs_modulus: 6.825e7, poisson_ratio: 0.3, thickness: 0.04}
-  point_loads:
-    - {point: [10, 0, 0], force: [2, 0, 0]}
-    - {point: [0, 10, 0], force: [0, -2, 0]}
-    - {point: [-10, 0, 0], force: [-2, 0, 0]}
-    - {point: [0, -10, 0], force: [0, 2, 0]}
-domain: {type: surface_patch, shape: sphere, radius: 10, hole: 18, sweep: 360}
-space: {type: bspline, degree: 3, elements: [8, 2]}
-)yaml"}) {
+                           test::kFreePinchedHemisphere}) {
     SCOPED_TRACE(yaml);
     const ProblemSpec problem = test::problem_from_yaml(yaml);
     const SpacePtr space = test::space_from_yaml(yaml, 1);

@@ -132,9 +132,7 @@ TEST(SurfaceC0ip, C0SpaceOnACurvedGraphConvergesAtItsRates) {
       "domain: {type: graph, height: \"x^2 - y^2\", over: {type: rectangle, min: [0, 0], max: [1, 1]}}\n"
       "space: {type: tmesh, section: poly, n: 3, regularity: 0, elements: [2, 2]}\n",
       3);
-  EXPECT_NEAR(r.l2, 4.0, 0.3);
-  EXPECT_NEAR(r.h1, 3.0, 0.3);
-  EXPECT_NEAR(r.h2, 2.0, 0.3);
+  test::expect_rates(r, 4.0, 3.0, 2.0);
 }
 
 }  // namespace

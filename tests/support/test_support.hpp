@@ -1,6 +1,8 @@
 #pragma once
 // Helpers shared by tests: build spaces and problems from YAML text, as a user's config would.
 
+#include <gtest/gtest.h>
+
 #include <Eigen/Core>
 #include <Eigen/Sparse>
 #include <cstdio>
@@ -58,6 +60,13 @@ inline ProblemSpec problem_from_yaml(const std::string& yaml) {
 struct Rates {
   double l2 = 0, h1 = 0, h2 = 0;
 };
+
+/// The rates r within `tolerance` of the expected l2 / h1 / h2 orders (a failure names the norm).
+inline void expect_rates(const Rates& r, double l2, double h1, double h2, double tolerance = 0.3) {
+  EXPECT_NEAR(r.l2, l2, tolerance) << "L2 rate";
+  EXPECT_NEAR(r.h1, h1, tolerance) << "H1 rate";
+  EXPECT_NEAR(r.h2, h2, tolerance) << "H2 rate";
+}
 
 /// Solve the config's problem on levels 0..levels-1 (printing each row, so a failing rate can be
 /// read off the test log) and return the rates between the last two levels.

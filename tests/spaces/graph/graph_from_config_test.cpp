@@ -68,9 +68,7 @@ TEST(GraphFromConfig, GismoSourceGivesTheExactSolution) {
 void expect_rates(const std::string& over, const std::string& space, int levels, double p) {
   const test::Rates r = test::last_rates(kClamped + graph(over, space), levels);
   std::printf("%s: rates %.2f %.2f %.2f\n", space.c_str(), r.l2, r.h1, r.h2);
-  EXPECT_NEAR(r.l2, p + 1, 0.3);
-  EXPECT_NEAR(r.h1, p, 0.3);
-  EXPECT_NEAR(r.h2, p - 1, 0.3);
+  test::expect_rates(r, p + 1, p, p - 1);
 }
 
 TEST(GraphFromConfig, LiftedTmeshConvergesAtItsPlanarRates) {
