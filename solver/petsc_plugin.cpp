@@ -39,7 +39,7 @@ fs::path plugin_path() {
   if (fs::is_regular_file(IGA_PETSC_PLUGIN_INSTALLED_PATH, ec)) return IGA_PETSC_PLUGIN_INSTALLED_PATH;
 #endif
   throw std::runtime_error(std::string("cannot find iga-run's PETSc plugin '") + plugin_name +
-                           "' next to the executable" +
+                           "' next to the executable, in ../lib/iga-run/ from it" +
 #ifdef IGA_PETSC_PLUGIN_INSTALLED_PATH
                            " or at " IGA_PETSC_PLUGIN_INSTALLED_PATH
 #endif
