@@ -1,15 +1,13 @@
+// The PETSc session and the collectives of petsc_session.hpp, forwarded to the PETSc runtime
+// (petsc_runtime.hpp) once it is loaded; one rank's answers before.
 #include "solver/petsc_session.hpp"
 
 #include <cctype>
-#include <climits>
-#include <cmath>
 #include <cstdlib>
-#include <filesystem>
+#include <exception>
 #include <iostream>
-#include <stdexcept>
 #include <vector>
 
-#include "config/errors.hpp"
 #include "solver/petsc_runtime.hpp"
 
 namespace iga {

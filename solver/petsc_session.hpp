@@ -2,7 +2,8 @@
 /// @file
 /// PETSc and MPI for the life of the program, and what the rest of the program needs to know about
 /// the ranks (which one writes files, how an error on one rank reaches all). Free of PETSc types:
-/// without PETSc (IGA_WITH_PETSC off) there is one rank and every function is trivial.
+/// the work is the PETSc runtime's (petsc_runtime.hpp, in iga-run's plugin); until it runs — and
+/// always without PETSc (IGA_WITH_PETSC off) — there is one rank and every function is trivial.
 
 #include <functional>
 #include <string>
