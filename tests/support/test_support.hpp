@@ -61,6 +61,18 @@ struct Rates {
   double l2 = 0, h1 = 0, h2 = 0;
 };
 
+/// The config's problem solved on its space at `level` (CHOLMOD): errors, DOFs, timings.
+inline LevelResult level_result(const std::string& yaml, int level) {
+  return solve_problem(*space_from_yaml(yaml, level), problem_from_yaml(yaml), SolverKind::cholmod).result;
+}
+
+/// Errors below the given bounds (a reproduced solution: the bounds are round-off's).
+inline void expect_errors_below(const LevelResult& r, double l2, double h1, double h2) {
+  EXPECT_LT(*r.l2, l2) << "L2 error";
+  EXPECT_LT(*r.h1, h1) << "H1 error";
+  EXPECT_LT(*r.h2, h2) << "H2 error";
+}
+
 /// The rates r within `tolerance` of the expected l2 / h1 / h2 orders (a failure names the norm).
 inline void expect_rates(const Rates& r, double l2, double h1, double h2, double tolerance = 0.3) {
   EXPECT_NEAR(r.l2, l2, tolerance) << "L2 rate";
