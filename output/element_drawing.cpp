@@ -10,6 +10,7 @@
 #include <string>
 
 #include "config/progress.hpp"
+#include "config/worth_threads.hpp"
 #include "output/lagrange_cells.hpp"
 #include "output/point_merger.hpp"
 
@@ -114,7 +115,7 @@ ElementDrawing draw_elements(const Space& space, bool lagrange_asked, int divisi
   std::vector<double>& xyz = drawing.xyz;
   xyz.resize(3 * unmerged);
   FirstFailure failure;
-#pragma omp parallel if (num_elements > 1)
+#pragma omp parallel if (worth_threads(unmerged))
   {
     const std::unique_ptr<Space::Evaluator> evaluator = failure.make_evaluator(space);
     PointValues geometry;

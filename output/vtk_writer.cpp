@@ -33,6 +33,7 @@
 #include <stdexcept>
 
 #include "config/progress.hpp"
+#include "config/worth_threads.hpp"
 #include "output/element_drawing.hpp"
 #include "output/point_merger.hpp"
 #include "spaces/space.hpp"
@@ -92,7 +93,7 @@ bool write_solution_vtu(const Space& space, const Eigen::VectorXd& coefficients,
     // The batch program over blocks of points (shared subexpressions once per point).
     constexpr std::int64_t block = 1024;
     const auto blocks = static_cast<std::int64_t>((unmerged + block - 1) / block);
-#pragma omp parallel
+#pragma omp parallel if (worth_threads(unmerged))
     {
       Eigen::Matrix2Xd points(2, block);
       std::vector<std::int64_t> ids;
@@ -117,7 +118,7 @@ bool write_solution_vtu(const Space& space, const Eigen::VectorXd& coefficients,
     }
     failure.rethrow();
   } else if (has_exact) {
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (worth_threads(unmerged))
     for (std::int64_t p = 0; p < unmerged; ++p) {
       if (!owner[p]) continue;
       try {
@@ -156,7 +157,7 @@ bool write_solution_vtu(const Space& space, const Eigen::VectorXd& coefficients,
   std::vector<double> element_l2(has_exact ? num_elements : 0), element_h1(has_gradient ? num_elements : 0),
       element_h2(has_hessian ? num_elements : 0);
   const unsigned flags = update_values | update_gradients | (options.laplacian || has_hessian ? update_hessians : 0u);
-#pragma omp parallel if (num_elements > 1)
+#pragma omp parallel if (worth_threads(unmerged))
   {
     const std::unique_ptr<Space::Evaluator> evaluator = failure.make_evaluator(space);
     PointValues geometry;

@@ -14,7 +14,6 @@
 #include "solver/resource_checks.hpp"
 #include "config/errors.hpp"
 #include "config/progress.hpp"
-#include "solver/level_threads.hpp"
 #include "solver/petsc_session.hpp"
 #include "solver/rank_part.hpp"
 #include "solver/slepc_eigen_backend.hpp"
@@ -295,7 +294,6 @@ StudyResult run_study(const StudySettings& settings, const ProgressSink& progres
     const double t_space = t0.seconds() + t_next + (reuse ? settings.level0_seconds : 0.0);
     check_size(measure(*space), settings.limits, space_node, "level " + std::to_string(level),
                memory_model(settings.solver, settings.petsc));  // before assembly
-    const LevelThreads threads(space->dimension());  // solve, errors and outputs of this level
     progress(tag + "space: " + std::to_string(space->dimension()) + " dofs, " +
              std::to_string(space->num_elements()) + " elements (" + format_seconds(t_space) + ")");
 
