@@ -19,6 +19,7 @@
 #include <stdexcept>
 #include <type_traits>
 
+#include "config/companion_file.hpp"
 #include "config/config_node.hpp"
 #include "config/errors.hpp"
 
@@ -33,24 +34,15 @@ namespace fs = std::filesystem;
 constexpr const char* worker_name = "iga-gmsh-worker";
 
 fs::path worker_path() {
-  std::error_code ec;
-  const fs::path beside = fs::read_symlink("/proc/self/exe", ec).parent_path() / worker_name;
-  if (!ec && fs::is_regular_file(beside, ec)) return beside;
+  std::vector<std::string> compiled_in;
 #ifdef IGA_GMSH_WORKER_PATH
-  if (fs::is_regular_file(IGA_GMSH_WORKER_PATH, ec)) return IGA_GMSH_WORKER_PATH;
+  compiled_in.push_back(IGA_GMSH_WORKER_PATH);
 #endif
   // Programs built against the installed package (and the Python module) run from elsewhere.
 #ifdef IGA_GMSH_WORKER_INSTALLED_PATH
-  if (fs::is_regular_file(IGA_GMSH_WORKER_INSTALLED_PATH, ec)) return IGA_GMSH_WORKER_INSTALLED_PATH;
+  compiled_in.push_back(IGA_GMSH_WORKER_INSTALLED_PATH);
 #endif
-  throw std::runtime_error(std::string("cannot find the Gmsh worker '") + worker_name + "' next to the executable" +
-#ifdef IGA_GMSH_WORKER_PATH
-                           " or at " IGA_GMSH_WORKER_PATH
-#endif
-#ifdef IGA_GMSH_WORKER_INSTALLED_PATH
-                           " or " IGA_GMSH_WORKER_INSTALLED_PATH
-#endif
-                           "");
+  return find_companion_file("the Gmsh worker", worker_name, {}, compiled_in);
 }
 
 /// A file descriptor closed when it goes out of scope.

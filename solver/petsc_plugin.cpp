@@ -8,6 +8,7 @@
 #include <string>
 #include <system_error>
 
+#include "config/companion_file.hpp"
 #include "config/errors.hpp"
 #include "solver/petsc_backend.hpp"
 #include "solver/petsc_runtime.hpp"
@@ -27,23 +28,13 @@ namespace fs = std::filesystem;
 constexpr const char* plugin_name = "iga-run-petsc.so";
 
 /// Beside the executable (the build tree), in ../lib/iga-run/ from it (an installed tree moved
-/// elsewhere), or where it was installed. Never a folder a config names.
+/// elsewhere), or where it was installed.
 fs::path plugin_path() {
-  std::error_code ec;
-  const fs::path exe_dir = fs::read_symlink("/proc/self/exe", ec).parent_path();
-  if (!ec) {
-    for (const fs::path& candidate : {exe_dir / plugin_name, exe_dir / ".." / "lib" / "iga-run" / plugin_name})
-      if (fs::is_regular_file(candidate, ec)) return candidate;
-  }
+  std::vector<std::string> installed;
 #ifdef IGA_PETSC_PLUGIN_INSTALLED_PATH
-  if (fs::is_regular_file(IGA_PETSC_PLUGIN_INSTALLED_PATH, ec)) return IGA_PETSC_PLUGIN_INSTALLED_PATH;
+  installed.push_back(IGA_PETSC_PLUGIN_INSTALLED_PATH);
 #endif
-  throw std::runtime_error(std::string("cannot find iga-run's PETSc plugin '") + plugin_name +
-                           "' next to the executable, in ../lib/iga-run/ from it" +
-#ifdef IGA_PETSC_PLUGIN_INSTALLED_PATH
-                           " or at " IGA_PETSC_PLUGIN_INSTALLED_PATH
-#endif
-                           "");
+  return find_companion_file("iga-run's PETSc plugin", plugin_name, {"../lib/iga-run"}, installed);
 }
 
 void* plugin_handle = nullptr;
