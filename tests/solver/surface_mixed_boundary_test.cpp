@@ -7,6 +7,7 @@
 
 #include <string>
 
+#include "tests/support/gismo_surface_example.hpp"
 #include "tests/support/test_support.hpp"
 
 namespace iga {
@@ -58,7 +59,7 @@ TEST(SurfaceMixedBoundary, NaturalConditionOnlyOnTheSimplySupportedSides) {
       "problem:\n"
       "  pde: surface_biharmonic\n"
       "  exact: \"z\"\n"
-      "  source: \"64*(x - y)*(x + y)*(13 + 64*x^4 + 12*y^2 + 64*y^4 + x^2*(12 - 768*y^2))/(1 + 4*x^2 + 4*y^2)^5\"\n"
+      "  source: \"" + std::string(test::kGismoSurfaceSource) + "\"\n"
       "  reaction: 0\n"
       "  boundary: " + kMixed + "\n"
       "domain: {type: graph, height: \"x^2 - y^2\", over: {type: rectangle, min: [-0.5, -0.5], max: [0.5, 0.5]}}\n"

@@ -8,6 +8,7 @@
 
 #include "config/errors.hpp"
 #include "spaces/lifted_space.hpp"
+#include "tests/support/gismo_surface_example.hpp"
 #include "tests/support/test_support.hpp"
 
 namespace iga {
@@ -49,8 +50,7 @@ TEST(GraphFromConfig, GismoSourceGivesTheExactSolution) {
   // data) leaves an error of the size of u itself (|z| ≤ 0.25 here).
   const std::string yaml =
       "problem:\n  pde: surface_biharmonic\n  exact: \"z\"\n  reaction: 0\n  boundary: {all: clamped}\n"
-      "  source: \"64*(x - y)*(x + y)*(13 + 64*x^4 + 12*y^2 + 64*y^4 + x^2*(12 - 768*y^2))/(1 + 4*x^2 + "
-      "4*y^2)^5\"\n" +
+      "  source: \"" + std::string(test::kGismoSurfaceSource) + "\"\n" +
       graph("{type: rectangle, min: [-0.5, -0.5], max: [0.5, 0.5]}",
             "{type: bspline, degree: 3, regularity: 2, elements: [2, 2]}");
   const ProblemSpec problem = test::problem_from_yaml(yaml);
