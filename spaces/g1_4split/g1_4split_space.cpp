@@ -59,6 +59,17 @@ FaceGeometry fitted_geometry(const G14Basis& basis, const QuadTopology& topology
                                   : project_geometry(basis, bilinear_geometry(mesh, basis.bspline));
 }
 
+/// The default (`lines`) gluing of a planar mesh for the chosen fit. The fair map follows the
+/// symmetric vertex values better than the mesh's own fans (line_gluing of 2cos(2π/n), 2cos(α/F)):
+/// H2 at equal DOFs 4× / 10× / 69× `g1`'s on the Gmsh pentagon / moved / bumped 3 × 3 grid against
+/// 9× / 36× / 236× with the mesh-fan values (docs/spaces/g1_4split.md, "Which gluing values");
+/// the least-squares map keeps the mesh-fan values it was measured with (planar_line_gluing).
+std::vector<SplitGluing> default_planar_gluing(const PatchMesh& mesh, const QuadTopology& topology, GeometryFit fit,
+                                               LineGluingReport* report) {
+  if (fit == GeometryFit::fair) return line_gluing(topology, symmetric_vertex_values(topology, vertex_angles(mesh)), report);
+  return planar_line_gluing(mesh, topology, report);
+}
+
 /// The smallest certified det J bound over the faces (check_geometry's margin below).
 constexpr double kCertifiedJacobian = 1e-8;
 double level0_jacobian_bound(const SplitBSpline& b, const FaceGeometry& g) {
@@ -73,7 +84,7 @@ G14Space::G14Space(const PatchMesh& coarse, const G14Options& options) : options
   PatchMesh mesh = coarse;
   QuadTopology topology = quad_topology(mesh);
   LineGluingReport lines;
-  gluing_ = options.blending == Blending::lines ? planar_line_gluing(mesh, topology, &lines)
+  gluing_ = options.blending == Blending::lines ? default_planar_gluing(mesh, topology, options.fit, &lines)
                                                 : symmetric_gluing(topology, options.blending, vertex_angles(mesh));
   basis_ = build_g14_basis(topology, gluing_, options.degree, options.regularity);
   geometry_ = fitted_geometry(basis_, topology, mesh, options.fit);
@@ -104,7 +115,7 @@ G14Space::G14Space(const PatchMesh& coarse, const G14Options& options) : options
       geometry_ = subdivide_geometry(basis_.bspline, geometry_);
       basis_ = build_g14_basis(fine, gluing_, options.degree, options.regularity);
     } else {
-      gluing_ = options.blending == Blending::lines ? planar_line_gluing(finer, fine, nullptr)
+      gluing_ = options.blending == Blending::lines ? default_planar_gluing(finer, fine, options.fit, nullptr)
                                                     : symmetric_gluing(fine, options.blending, vertex_angles(finer));
       basis_ = build_g14_basis(fine, gluing_, options.degree, options.regularity);
       geometry_ = fitted_geometry(basis_, fine, finer, fit, order);
