@@ -59,17 +59,6 @@ FaceGeometry fitted_geometry(const G14Basis& basis, const QuadTopology& topology
                                   : project_geometry(basis, bilinear_geometry(mesh, basis.bspline));
 }
 
-/// The default (`lines`) gluing of a planar mesh for the chosen fit. The fair map follows the
-/// symmetric vertex values better than the mesh's own fans (line_gluing of 2cos(2π/n), 2cos(α/F)):
-/// H2 at equal DOFs 4× / 10× / 69× `g1`'s on the Gmsh pentagon / moved / bumped 3 × 3 grid against
-/// 9× / 36× / 236× with the mesh-fan values (docs/spaces/g1_4split.md, "Which gluing values");
-/// the least-squares map keeps the mesh-fan values it was measured with (planar_line_gluing).
-std::vector<SplitGluing> default_planar_gluing(const PatchMesh& mesh, const QuadTopology& topology, GeometryFit fit,
-                                               LineGluingReport* report) {
-  if (fit == GeometryFit::fair) return line_gluing(topology, symmetric_vertex_values(topology, vertex_angles(mesh)), report);
-  return planar_line_gluing(mesh, topology, report);
-}
-
 /// The smallest certified det J bound over the faces (check_geometry's margin below).
 constexpr double kCertifiedJacobian = 1e-8;
 double level0_jacobian_bound(const SplitBSpline& b, const FaceGeometry& g) {
@@ -78,16 +67,72 @@ double level0_jacobian_bound(const SplitBSpline& b, const FaceGeometry& g) {
   return bound;
 }
 
+/// The level-0 gluing, basis and fitted map, and how the gluing was built.
+struct Level0 {
+  std::vector<SplitGluing> gluing;
+  G14Basis basis;
+  FaceGeometry geometry;
+  LineGluingReport report;
+  std::string values;  ///< which vertex values the lines gluing took, and why (`lines` only)
+};
+
+Level0 level0(const PatchMesh& mesh, const QuadTopology& topology, std::vector<SplitGluing> gluing,
+              const LineGluingReport& report, const G14Options& options) {
+  Level0 out{std::move(gluing), {}, {}, report, {}};
+  out.basis = build_g14_basis(topology, out.gluing, options.degree, options.regularity);
+  out.geometry = fitted_geometry(out.basis, topology, mesh, options.fit);
+  return out;
+}
+
+/// The default gluing `lines` of a planar mesh with its map. The least-squares map keeps the
+/// vertex values from the mesh's own fans (planar_line_gluing) it was measured with. With the fair
+/// map both choices of vertex values are built — the mesh fans and the symmetric values
+/// 2cos(2π/n), 2cos(α/F) (line_gluing) — and the one whose fair map is certified regular and
+/// fairer (smaller fair energy: the smoother change of the bilinear map the gluing forces) is
+/// taken. Neither wins on every mesh: the plate's H2 at equal DOFs is 3.6× / 9.7× / 69× `g1`'s on
+/// the Gmsh pentagon / moved / bumped 3 × 3 grid with the symmetric values against 9× / 36× / 236×
+/// with the fans, and 10× lower with the fans on `5p_square`; the energy picks the better one on
+/// 9 of the 10 meshes measured (docs/spaces/g1_4split.md, "Which gluing values with the fair map").
+/// Where the two maps are equally fair (both the bilinear map, e.g. the split fans) the fans are kept.
+Level0 default_planar_level0(const PatchMesh& mesh, const QuadTopology& topology, const G14Options& options) {
+  LineGluingReport fans_report, symmetric_report;
+  std::vector<SplitGluing> fans = planar_line_gluing(mesh, topology, &fans_report);
+  Level0 a = level0(mesh, topology, std::move(fans), fans_report, options);
+  if (options.fit != GeometryFit::fair || !fans_report.mesh_fans) {  // (no mesh fans: it is the symmetric gluing)
+    a.values = fans_report.mesh_fans ? "mesh fans" : "symmetric";
+    return a;
+  }
+  std::vector<SplitGluing> symmetric =
+      line_gluing(topology, symmetric_vertex_values(topology, vertex_angles(mesh)), &symmetric_report);
+  Level0 b = level0(mesh, topology, std::move(symmetric), symmetric_report, options);
+  const FaceGeometry bilinear = bilinear_geometry(mesh, a.basis.bspline);
+  const double ea = fair_energy(a.basis.bspline, a.geometry, bilinear), eb = fair_energy(b.basis.bspline, b.geometry, bilinear);
+  const bool ca = level0_jacobian_bound(a.basis.bspline, a.geometry) > kCertifiedJacobian;
+  const bool cb = level0_jacobian_bound(b.basis.bspline, b.geometry) > kCertifiedJacobian;
+  double scale = 1.0;  // energies of maps within round-off of the bilinear one are equal
+  for (int v = 0; v < mesh.num_vertices(); ++v) scale = std::max(scale, mesh.vertex(v).norm());
+  const bool symmetric_wins = cb && (!ca || eb < 0.999 * ea - 1e-14 * scale * scale);
+  char buf[160];
+  std::snprintf(buf, sizeof buf, "%s (fair energy %.3e, %.3e with the %s)", symmetric_wins ? "symmetric" : "mesh fans",
+                symmetric_wins ? eb : ea, symmetric_wins ? ea : eb, symmetric_wins ? "mesh fans" : "symmetric values");
+  Level0& chosen = symmetric_wins ? b : a;
+  chosen.values = buf;
+  return std::move(chosen);
+}
+
 }  // namespace
 
 G14Space::G14Space(const PatchMesh& coarse, const G14Options& options) : options_(options) {
   PatchMesh mesh = coarse;
   QuadTopology topology = quad_topology(mesh);
-  LineGluingReport lines;
-  gluing_ = options.blending == Blending::lines ? default_planar_gluing(mesh, topology, options.fit, &lines)
-                                                : symmetric_gluing(topology, options.blending, vertex_angles(mesh));
-  basis_ = build_g14_basis(topology, gluing_, options.degree, options.regularity);
-  geometry_ = fitted_geometry(basis_, topology, mesh, options.fit);
+  Level0 start = options.blending == Blending::lines
+                     ? default_planar_level0(mesh, topology, options)
+                     : level0(mesh, topology, symmetric_gluing(topology, options.blending, vertex_angles(mesh)), {}, options);
+  const LineGluingReport lines = start.report;
+  const std::string gluing_values = start.values;
+  gluing_ = std::move(start.gluing);
+  basis_ = std::move(start.basis);
+  geometry_ = std::move(start.geometry);
   double jacobian = level0_jacobian_bound(basis_.bspline, geometry_);  // refinement keeps the map
   GeometryFit fit = options.fit;
   int order = 3;  // of the fair energy
@@ -115,10 +160,14 @@ G14Space::G14Space(const PatchMesh& coarse, const G14Options& options) : options
       geometry_ = subdivide_geometry(basis_.bspline, geometry_);
       basis_ = build_g14_basis(fine, gluing_, options.degree, options.regularity);
     } else {
-      gluing_ = options.blending == Blending::lines ? default_planar_gluing(finer, fine, options.fit, nullptr)
-                                                    : symmetric_gluing(fine, options.blending, vertex_angles(finer));
-      basis_ = build_g14_basis(fine, gluing_, options.degree, options.regularity);
-      geometry_ = fitted_geometry(basis_, fine, finer, fit, order);
+      G14Options rebuilt = options;
+      rebuilt.fit = fit;
+      Level0 next = options.blending == Blending::lines
+                        ? default_planar_level0(finer, fine, rebuilt)
+                        : level0(finer, fine, symmetric_gluing(fine, options.blending, vertex_angles(finer)), {}, rebuilt);
+      gluing_ = std::move(next.gluing);
+      basis_ = std::move(next.basis);
+      geometry_ = order == 3 ? std::move(next.geometry) : fitted_geometry(basis_, fine, finer, fit, order);
     }
     mesh = std::move(finer);
     topology = std::move(fine);
@@ -141,6 +190,7 @@ G14Space::G14Space(const PatchMesh& coarse, const G14Options& options) : options
                                                                           " chains through crossings"
                                                                     : std::to_string(lines.lines) + " lines, " +
                                                                           std::to_string(lines.zigzag_lines) + " zigzag");
+    facts.parameters.emplace_back("gluing_values", gluing_values);
     char buf[32];
     std::snprintf(buf, sizeof buf, "%.3e", jacobian);
     facts.parameters.emplace_back("jacobian_bound", buf);
