@@ -22,7 +22,8 @@ namespace iga {
 /// on the Gmsh pentagon (H2 at level 1: 7.7e-3 for n = 2, 9.6e-4 for n = 3, where the least-squares
 /// fit has 4.4e-2; n = 4 loses det J > 0, n = 5 gives 5.6e-3); w from 1e-4 to 1e-2 changes nothing in
 /// 3 digits there (the conditions and the gluing fix the low modes), it only keeps the energy
-/// definite. On finer Gmsh meshes n = 3 folds and G14Space falls back to n = 2 (thin plate).
+/// definite. On finer Gmsh meshes with the mesh-fan gluing n = 3 folds and G14Space falls back to
+/// n = 2 (thin plate); with the symmetric gluing, which the default takes there, n = 3 is certified.
 struct FairFit {
   int order = 3;
   double fit_weight = 1e-2;

@@ -138,7 +138,8 @@ G14Space::G14Space(const PatchMesh& coarse, const G14Options& options) : options
   int order = 3;  // of the fair energy
   std::string fit_name = fit == GeometryFit::fair ? "fair" : "least_squares";
   if (fit == GeometryFit::fair && jacobian <= kCertifiedJacobian) {
-    // Where the D3 map folds (Gmsh's pentagon at mesh size 0.2) the thin-plate one (D2), stiffer
+    // Where the D3 map folds (Gmsh's pentagon at mesh size 0.2 with the mesh-fan gluing; no mesh
+    // tried with the gluing the default takes) the thin-plate one (D2), stiffer
     // against folding, then (default fit only: asked for, `fair` is refused below) the
     // least-squares map (Gmsh's L-shape); summary.json says which.
     order = 2;
