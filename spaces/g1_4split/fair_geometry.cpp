@@ -94,16 +94,6 @@ std::vector<PointCondition> boundary_conditions(const QuadTopology& t, const Pat
 
 }  // namespace
 
-double fair_energy(const SplitBSpline& b, const FaceGeometry& g, const FaceGeometry& bilinear, const FairFit& fit) {
-  const Eigen::MatrixXd E = face_energy(b, fit);
-  double energy = 0.0;
-  for (std::size_t f = 0; f < g.x.size(); ++f) {
-    const Eigen::VectorXd dx = g.x[f] - bilinear.x[f], dy = g.y[f] - bilinear.y[f];
-    energy += dx.dot(E * dx) + dy.dot(E * dy);
-  }
-  return energy;
-}
-
 FaceGeometry fair_geometry(const G14Basis& basis, const QuadTopology& topology, const PatchMesh& mesh,
                            const FairFit& fit) {
   const SplitBSpline& b = basis.bspline;

@@ -35,11 +35,6 @@ struct FairFit {
 FaceGeometry fair_geometry(const G14Basis& basis, const QuadTopology& topology, const PatchMesh& mesh,
                            const FairFit& fit = {});
 
-/// The fair energy of a map G of the faces: Σ_faces ∫ |D^n (G − B)|² + w |G − B|² (face parameters,
-/// B = `bilinear`, the mesh's bilinear map in the same face bases). Compares the fair maps of two
-/// gluings of one mesh: the one with the smaller energy is the smoother change of B.
-double fair_energy(const SplitBSpline& b, const FaceGeometry& g, const FaceGeometry& bilinear, const FairFit& fit = {});
-
 /// Gram matrix of the n-th derivatives of the univariate basis on [0, 1] (exact Gauss rule per half).
 Eigen::MatrixXd derivative_gram_1d(const SplitBSpline& b, int n);
 

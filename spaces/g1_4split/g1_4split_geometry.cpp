@@ -3,6 +3,7 @@
 #include <Eigen/SparseCholesky>
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "config/errors.hpp"
 #include "quadrature/quadrature_rule.hpp"
@@ -174,6 +175,24 @@ double certified_jacobian_bound(const SplitBSpline& b, const Eigen::VectorXd& x,
       if (bound <= 0.0) return bound;
     }
   return bound;
+}
+
+double largest_jacobian_ratio(const SplitBSpline& b, const FaceGeometry& g) {
+  constexpr int kSamples = 24;  // intervals per direction; the split lines (1/2) are sampled
+  std::vector<Point2> points;
+  for (int i = 0; i <= kSamples; ++i)
+    for (int j = 0; j <= kSamples; ++j) points.emplace_back(double(i) / kSamples, double(j) / kSamples);
+  Eigen::MatrixXd t[6];
+  tensor_tables(b, points, t);
+  double worst = 1.0;
+  for (std::size_t f = 0; f < g.x.size(); ++f) {
+    const Eigen::RowVectorXd xu = g.x[f].transpose() * t[1], xv = g.x[f].transpose() * t[2];
+    const Eigen::RowVectorXd yu = g.y[f].transpose() * t[1], yv = g.y[f].transpose() * t[2];
+    const Eigen::RowVectorXd det = xu.cwiseProduct(yv) - xv.cwiseProduct(yu);
+    if (det.minCoeff() <= 0.0) return std::numeric_limits<double>::infinity();
+    worst = std::max(worst, det.maxCoeff() / det.minCoeff());
+  }
+  return worst;
 }
 
 void check_geometry(const SplitBSpline& b, const FaceGeometry& g, const std::string& mesh_name, bool fair) {

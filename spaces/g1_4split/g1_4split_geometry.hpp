@@ -41,6 +41,12 @@ FaceGeometry subdivide_geometry(const SplitBSpline& b, const FaceGeometry& coars
 /// <= 0 when positivity cannot be certified (in particular when det J <= 0 somewhere).
 double certified_jacobian_bound(const SplitBSpline& b, const Eigen::VectorXd& x, const Eigen::VectorXd& y);
 
+/// The largest ratio max det J / min det J inside one face (face parameters, a 25 × 25 grid of
+/// samples per face), over the faces: how unevenly the map spreads each face's area. With b ≡ −1
+/// det J is continuous across every edge, so faces of unequal area, and gluing that forces the map
+/// away from the mesh's, show here (docs/spaces/g1_4split.md, "Which gluing values").
+double largest_jacobian_ratio(const SplitBSpline& b, const FaceGeometry& g);
+
 /// Throws InputError naming the first face of `mesh_name` whose det J is not certified positive
 /// (bound above 1e-8: a zero of det J leaves coefficients at round-off); `fair`: the map is the
 /// fair one (the message names the other fit).

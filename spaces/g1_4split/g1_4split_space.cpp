@@ -88,12 +88,12 @@ Level0 level0(const PatchMesh& mesh, const QuadTopology& topology, std::vector<S
 /// vertex values from the mesh's own fans (planar_line_gluing) it was measured with. With the fair
 /// map both choices of vertex values are built — the mesh fans and the symmetric values
 /// 2cos(2π/n), 2cos(α/F) (line_gluing) — and the one whose fair map is certified regular and
-/// fairer (smaller fair energy: the smoother change of the bilinear map the gluing forces) is
-/// taken. Neither wins on every mesh: the plate's H2 at equal DOFs is 3.6× / 9.7× / 69× `g1`'s on
-/// the Gmsh pentagon / moved / bumped 3 × 3 grid with the symmetric values against 9× / 36× / 236×
-/// with the fans, and 10× lower with the fans on `5p_square`; the energy picks the better one on
-/// 9 of the 10 meshes measured (docs/spaces/g1_4split.md, "Which gluing values with the fair map").
-/// Where the two maps are equally fair (both the bilinear map, e.g. the split fans) the fans are kept.
+/// spreads each face's area more evenly (the smaller largest_jacobian_ratio) is taken. Neither
+/// wins on every mesh: the plate's H2 at equal DOFs is 3.6× / 9.7× / 69× `g1`'s on the Gmsh
+/// pentagon / moved / bumped 3 × 3 grid with the symmetric values against 9× / 36× / 236× with the
+/// fans, and 10× lower with the fans on `5p_square`; the ratio picks the better one on all 13
+/// meshes measured (docs/spaces/g1_4split.md, "Which gluing values with the fair map"). Where the
+/// two maps are the same (both the bilinear map, e.g. the split fans) the fans are kept.
 Level0 default_planar_level0(const PatchMesh& mesh, const QuadTopology& topology, const G14Options& options) {
   LineGluingReport fans_report, symmetric_report;
   std::vector<SplitGluing> fans = planar_line_gluing(mesh, topology, &fans_report);
@@ -105,16 +105,14 @@ Level0 default_planar_level0(const PatchMesh& mesh, const QuadTopology& topology
   std::vector<SplitGluing> symmetric =
       line_gluing(topology, symmetric_vertex_values(topology, vertex_angles(mesh)), &symmetric_report);
   Level0 b = level0(mesh, topology, std::move(symmetric), symmetric_report, options);
-  const FaceGeometry bilinear = bilinear_geometry(mesh, a.basis.bspline);
-  const double ea = fair_energy(a.basis.bspline, a.geometry, bilinear), eb = fair_energy(b.basis.bspline, b.geometry, bilinear);
+  const double ra = largest_jacobian_ratio(a.basis.bspline, a.geometry);
+  const double rb = largest_jacobian_ratio(b.basis.bspline, b.geometry);
   const bool ca = level0_jacobian_bound(a.basis.bspline, a.geometry) > kCertifiedJacobian;
   const bool cb = level0_jacobian_bound(b.basis.bspline, b.geometry) > kCertifiedJacobian;
-  double scale = 1.0;  // energies of maps within round-off of the bilinear one are equal
-  for (int v = 0; v < mesh.num_vertices(); ++v) scale = std::max(scale, mesh.vertex(v).norm());
-  const bool symmetric_wins = cb && (!ca || eb < 0.999 * ea - 1e-14 * scale * scale);
+  const bool symmetric_wins = cb && (!ca || rb < ra * (1.0 - 1e-6));  // equal maps: keep the fans
   char buf[160];
-  std::snprintf(buf, sizeof buf, "%s (fair energy %.3e, %.3e with the %s)", symmetric_wins ? "symmetric" : "mesh fans",
-                symmetric_wins ? eb : ea, symmetric_wins ? ea : eb, symmetric_wins ? "mesh fans" : "symmetric values");
+  std::snprintf(buf, sizeof buf, "%s (det J ratio %.3g, %.3g with the %s)", symmetric_wins ? "symmetric" : "mesh fans",
+                symmetric_wins ? rb : ra, symmetric_wins ? ra : rb, symmetric_wins ? "mesh fans" : "symmetric values");
   Level0& chosen = symmetric_wins ? b : a;
   chosen.values = buf;
   return std::move(chosen);

@@ -232,10 +232,10 @@ PatchMesh mesh_file(const std::string& domain) {
 
 TEST(G14EveryMesh, FairDefaultGluingIsSymmetricLinesWithTheBruteForceDimension) {
   // With the fair map (the default fit) the planar default gluing takes the vertex values whose
-  // fair map is fairer (docs/spaces/g1_4split.md, "Which gluing values"): on the Gmsh
-  // recombination and on the two 3 × 3 grids of the docs the symmetric ones (lines gluing); its
-  // dimension is the brute-force null space and the formula (k = 4, level 0), the twist condition
-  // holds and every piece of a(t) is linear.
+  // fair map spreads the faces' area more evenly (docs/spaces/g1_4split.md, "Which gluing
+  // values"): on the Gmsh recombination and on the two 3 × 3 grids of the docs the symmetric ones
+  // (lines gluing); its dimension is the brute-force null space and the formula (k = 4, level 0),
+  // the twist condition holds and every piece of a(t) is linear.
   G14Options o;
   o.degree = 4;
   for (const char* domain : {"g1_pentagon_quads.geo, mesh_size: 0.8, recombine: true", "g14_grid3_moved.obj",
@@ -271,12 +271,12 @@ TEST(G14EveryMesh, MovedGridPlateNearTheG1SpaceAtEqualDofs) {
   EXPECT_LT(*split.h2, 12.0 * *g1.h2);
 }
 
-TEST(G14EveryMesh, FairDefaultTakesTheFairerOfTheTwoVertexValueChoices) {
-  // The fair energy of the two fair maps (mesh fans, symmetric values) decides, said in the facts:
-  // on `5p_square` the fans (energy 9.9e-3 against 10.1; the plate's H2 at level 1 1.26e-4
-  // against 1.31e-3 with the symmetric values), on the moved 3 × 3 grid the symmetric values
-  // (1.0e-4 against 0.76; 4.8e-6 against 1.7e-5 at level 2), on the split hexagon, where both
-  // maps are the bilinear one (energy at round-off), the fans.
+TEST(G14EveryMesh, FairDefaultTakesTheVertexValuesWithTheEvenerJacobian) {
+  // Of the two fair maps (mesh fans, symmetric values) the one with the smaller largest
+  // det J ratio inside a face is taken, said in the facts: on `5p_square` the fans (3.16 against
+  // 16.8; the plate's H2 at level 1 1.26e-4 against 1.31e-3 with the symmetric values), on the
+  // moved 3 × 3 grid the symmetric values (2.20 against 2.41; 4.8e-6 against 1.7e-5 at level 2),
+  // on the split hexagon, where both maps are the bilinear one, the fans.
   struct Case {
     std::string domain, values;
   };
