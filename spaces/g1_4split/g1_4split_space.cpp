@@ -110,9 +110,15 @@ Level0 default_planar_level0(const PatchMesh& mesh, const QuadTopology& topology
   const bool ca = level0_jacobian_bound(a.basis.bspline, a.geometry) > kCertifiedJacobian;
   const bool cb = level0_jacobian_bound(b.basis.bspline, b.geometry) > kCertifiedJacobian;
   const bool symmetric_wins = cb && (!ca || rb < ra * (1.0 - 1e-6));  // equal maps: keep the fans
+  const bool other_certified = symmetric_wins ? ca : cb;
+  const char* other = symmetric_wins ? "mesh fans" : "symmetric values";
   char buf[160];
-  std::snprintf(buf, sizeof buf, "%s (det J ratio %.3g, %.3g with the %s)", symmetric_wins ? "symmetric" : "mesh fans",
-                symmetric_wins ? rb : ra, symmetric_wins ? ra : rb, symmetric_wins ? "mesh fans" : "symmetric values");
+  if (other_certified)
+    std::snprintf(buf, sizeof buf, "%s (det J ratio %.3g, %.3g with the %s)", symmetric_wins ? "symmetric" : "mesh fans",
+                  symmetric_wins ? rb : ra, symmetric_wins ? ra : rb, other);
+  else
+    std::snprintf(buf, sizeof buf, "%s (det J ratio %.3g; the map with the %s is not certified regular)",
+                  symmetric_wins ? "symmetric" : "mesh fans", symmetric_wins ? rb : ra, other);
   Level0& chosen = symmetric_wins ? b : a;
   chosen.values = buf;
   return std::move(chosen);
