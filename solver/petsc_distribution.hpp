@@ -93,8 +93,14 @@ class PetscDistribution {
   /// The unknowns this rank's own elements couple (sorted), and T_e with
   /// u|element = values|element + T_e u_unknowns (rows: the element's functions).
   void element_unknowns(int element, std::vector<int>& dofs, std::vector<int>& unknowns, Eigen::MatrixXd* T_e) const;
-  /// Nonzeros of the rows this rank owns in and outside its diagonal block (collective).
-  void preallocation(std::vector<PetscInt>& d_nnz, std::vector<PetscInt>& o_nnz) const;
+  /// The couplings of this rank's own elements, row by row: for each free unknown of `space` (its
+  /// position k in constraints().free), the unknowns its row couples, increasing, in
+  /// columns[start[k] .. start[k + 1]) (empty for the unknowns no own element touches).
+  void couplings(std::vector<int>& start, std::vector<int>& columns) const;
+  /// Nonzeros of the rows this rank owns in and outside its diagonal block, from every rank's
+  /// couplings (collective).
+  void preallocation(const std::vector<int>& start, const std::vector<int>& columns, std::vector<PetscInt>& d_nnz,
+                     std::vector<PetscInt>& o_nnz) const;
 
   const Space& space_;
   const int rank_, ranks_;
