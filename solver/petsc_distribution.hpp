@@ -97,6 +97,9 @@ class PetscDistribution {
   /// position k in constraints().free), the unknowns its row couples, increasing, in
   /// columns[start[k] .. start[k + 1]) (empty for the unknowns no own element touches).
   void couplings(std::vector<int>& start, std::vector<int>& columns) const;
+  /// The rows of couplings() with their `values` into `A` (preallocated, not yet assembled).
+  void set_rows(Mat A, const std::vector<int>& start, const std::vector<int>& columns,
+                const std::vector<double>& values) const;
   /// Nonzeros of the rows this rank owns in and outside its diagonal block, from every rank's
   /// couplings (collective).
   void preallocation(const std::vector<int>& start, const std::vector<int>& columns, std::vector<PetscInt>& d_nnz,
