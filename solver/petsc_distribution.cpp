@@ -163,8 +163,10 @@ void PetscDistribution::lay_out(const Constraints& c, const std::function<void(c
                              std::to_string(owned_rows_) + " of " + std::to_string(rows_));
 }
 
-void PetscDistribution::couplings(std::vector<int>& start, std::vector<int>& columns) const {
+PetscDistribution::Rows PetscDistribution::couplings() const {
   const int n = static_cast<int>(row_.size());
+  Rows rows;
+  std::vector<int>& start = rows.start;
   // The unknowns of each of this rank's elements (CSR), and its transpose.
   std::vector<int> offsets, unknowns, dofs, local;
   offsets.reserve(mine_.size() + 1);
@@ -197,17 +199,27 @@ void PetscDistribution::couplings(std::vector<int>& start, std::vector<int>& col
   start.assign(n + 1, 0);
   for (int k = 0; k < n; ++k) for_each_coupling(k, [&](int) { ++start[k + 1]; });
   for (int k = 0; k < n; ++k) start[k + 1] += start[k];
-  columns.resize(start[n]);
+  // Blocks of about 2^23 entries (32 MB of columns, 64 MB of values: above the size from which the
+  // allocator maps memory of its own, so that releasing a block returns it to the system).
+  constexpr long long block_entries = 1LL << 23;
+  rows.rows_per_block = static_cast<int>(std::clamp<long long>(
+      block_entries * n / std::max(1, start[n]), 1, std::max(1, n)));
+  for (int b = 0; b * static_cast<long long>(rows.rows_per_block) < n; ++b) {
+    const int from = b * rows.rows_per_block, to = std::min(n, from + rows.rows_per_block);
+    rows.columns.emplace_back(start[to] - start[from]);
+    rows.values.emplace_back(start[to] - start[from], 0.0);
+  }
   std::fill(mark.begin(), mark.end(), -1);
   for (int k = 0; k < n; ++k) {
-    int at = start[k];
+    int* columns = rows.columns_of(k);
+    int at = 0;
     for_each_coupling(k, [&](int u) { columns[at++] = u; });
-    std::sort(columns.begin() + start[k], columns.begin() + start[k + 1]);
+    std::sort(columns, columns + at);
   }
+  return rows;
 }
 
-void PetscDistribution::preallocation(const std::vector<int>& start, const std::vector<int>& columns,
-                                      std::vector<PetscInt>& d_nnz, std::vector<PetscInt>& o_nnz) const {
+void PetscDistribution::preallocation(const Rows& rows, std::vector<PetscInt>& d_nnz, std::vector<PetscInt>& o_nnz) const {
   // Each rank counts, for every unknown its elements couple, the columns they couple it with, in
   // and outside the diagonal block of the row's owner; the owner adds the counts of all ranks. A
   // row on the cut between ranks is counted by each side, so its count may exceed its columns by
@@ -218,13 +230,14 @@ void PetscDistribution::preallocation(const std::vector<int>& start, const std::
   for (int r = 0; r < ranks_; ++r) first[r + 1] += first[r];
   std::vector<PetscInt> leaf_d(n, 0), leaf_o(n, 0);
   for (int k = 0; k < n; ++k) {
-    if (start[k] == start[k + 1]) continue;
+    const int count = rows.count(k);
+    if (count == 0) continue;
     const int owner = static_cast<int>(std::upper_bound(first.begin(), first.end(), row_[k]) - first.begin()) - 1;
+    const int* columns = rows.columns_of(k);
     PetscInt inside = 0;
-    for (int p = start[k]; p < start[k + 1]; ++p)
-      inside += row_[columns[p]] >= first[owner] && row_[columns[p]] < first[owner + 1];
+    for (int p = 0; p < count; ++p) inside += row_[columns[p]] >= first[owner] && row_[columns[p]] < first[owner + 1];
     leaf_d[k] = inside;
-    leaf_o[k] = static_cast<PetscInt>(start[k + 1] - start[k]) - inside;
+    leaf_o[k] = count - inside;
   }
   d_nnz.assign(owned_rows_, 0);
   o_nnz.assign(owned_rows_, 0);
@@ -246,8 +259,7 @@ void PetscDistribution::preallocation(const std::vector<int>& start, const std::
   all_couplings_ = couplings[1];
 }
 
-void PetscDistribution::set_rows(Mat A, const std::vector<int>& start, const std::vector<int>& columns,
-                                 const std::vector<double>& values) const {
+void PetscDistribution::set_rows(Mat A, Rows& rows) const {
   // The rows this rank owns go straight into PETSc's two blocks (the columns in and outside the
   // rank's diagonal block; before the first assembly the outer block numbers its columns
   // globally) with MAT_SORTED_FULL: each row given once, its columns increasing, is copied rather
@@ -273,13 +285,21 @@ void PetscDistribution::set_rows(Mat A, const std::vector<int>& start, const std
     petsc_check(MatSetValues(block, 1, &row, static_cast<PetscInt>(cols.size()), cols.data(), vals.data(), INSERT_VALUES),
                 "MatSetValues");
   };
-  for (std::size_t k = 0; k + 1 < start.size(); ++k) {
-    if (start[k] == start[k + 1]) continue;
+  const int n = static_cast<int>(row_.size());
+  for (int k = 0; k < n; ++k) {
+    if (k > 0 && k % rows.rows_per_block == 0) {  // the previous block is in PETSc
+      std::vector<int>().swap(rows.columns[k / rows.rows_per_block - 1]);
+      std::vector<double>().swap(rows.values[k / rows.rows_per_block - 1]);
+    }
+    const int count = rows.count(k);
+    if (count == 0) continue;
+    const int* columns = rows.columns_of(k);
+    const double* values = rows.values_of(k);
     const PetscInt row = row_[k];
     in.clear();
     out.clear();
     if (row < first || row >= last) {  // another rank's row: all columns, global, added at its owner
-      for (int p = start[k]; p < start[k + 1]; ++p) in.emplace_back(row_[columns[p]], values[p]);
+      for (int p = 0; p < count; ++p) in.emplace_back(row_[columns[p]], values[p]);
       std::sort(in.begin(), in.end());
       cols.resize(in.size());
       vals.resize(in.size());
@@ -288,7 +308,7 @@ void PetscDistribution::set_rows(Mat A, const std::vector<int>& start, const std
                   "MatSetValues");
       continue;
     }
-    for (int p = start[k]; p < start[k + 1]; ++p) {
+    for (int p = 0; p < count; ++p) {
       const PetscInt column = row_[columns[p]];
       if (column >= first && column < last) in.emplace_back(distributed ? column - first : column, values[p]);
       else out.emplace_back(column, values[p]);
@@ -297,6 +317,7 @@ void PetscDistribution::set_rows(Mat A, const std::vector<int>& start, const std
     put(inner, local, in);
     put(outer, local, out);
   }
+  rows = Rows();
   for (Mat block : {inner, outer})
     if (block) petsc_check(MatSetOption(block, MAT_SORTED_FULL, PETSC_FALSE), "MatSetOption");
 }
@@ -304,17 +325,17 @@ void PetscDistribution::set_rows(Mat A, const std::vector<int>& start, const std
 void PetscDistribution::matrix(const Formulation& f, const std::vector<FormTerm>& terms, ExtendedResidual* extended,
                                Mat& A) const {
   // The element matrices are summed here, in the rows of this rank's couplings, and each row goes
-  // to PETSc in one MatSetValues: PETSc's search of every entry's place in its row cost more than
-  // computing the element matrices' double parts (2.5 s of 6 s at 10⁶ cubic B-spline DOFs). The
-  // sums are PETSc's: each entry adds its elements in the same order.
-  std::vector<int> start, columns;
-  on_every_rank([&] { couplings(start, columns); });
+  // to PETSc in one piece (set_rows): PETSc's search of every entry's place in its row cost more
+  // than computing the element matrices' double parts (2.5 s of 6 s at 10⁶ cubic B-spline DOFs).
+  // The sums are PETSc's: each entry adds its elements in the same order.
+  Rows couplings_of_rows;
+  on_every_rank([&] { couplings_of_rows = couplings(); });
   petsc_check(MatCreate(PETSC_COMM_WORLD, &A), "MatCreate");
   petsc_check(MatSetSizes(A, owned_rows_, owned_rows_, rows_, rows_), "MatSetSizes");
   petsc_check(MatSetType(A, MATAIJ), "MatSetType");
   {
     std::vector<PetscInt> d_nnz, o_nnz;
-    preallocation(start, columns, d_nnz, o_nnz);
+    preallocation(couplings_of_rows, d_nnz, o_nnz);
     petsc_check(MatSeqAIJSetPreallocation(A, 0, d_nnz.data()), "MatSeqAIJSetPreallocation");
     petsc_check(MatMPIAIJSetPreallocation(A, 0, d_nnz.data(), 0, o_nnz.data()), "MatMPIAIJSetPreallocation");
   }
@@ -322,7 +343,6 @@ void PetscDistribution::matrix(const Formulation& f, const std::vector<FormTerm>
   petsc_check(MatSetOption(A, MAT_SYMMETRIC, PETSC_TRUE), "MatSetOption");
   petsc_check(MatSetOption(A, MAT_SPD, PETSC_TRUE), "MatSetOption");
   on_every_rank([&] {
-    std::vector<double> values(columns.size(), 0.0);
     std::vector<int> dofs, local, order;
     Eigen::MatrixXd T;
     Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> K;
@@ -332,8 +352,10 @@ void PetscDistribution::matrix(const Formulation& f, const std::vector<FormTerm>
       const int m = static_cast<int>(order.size());
       for (int a = 0; a < m; ++a) {
         const int row = unknowns[order[a]];
-        int p = start[row];
-        const int end = start[row + 1];
+        const int* columns = couplings_of_rows.columns_of(row);
+        double* values = couplings_of_rows.values_of(row);
+        const int end = couplings_of_rows.count(row);
+        int p = 0;
         for (int b = 0; b < m; ++b) {
           const int column = unknowns[order[b]];
           while (p < end && columns[p] != column) ++p;
@@ -376,7 +398,7 @@ void PetscDistribution::matrix(const Formulation& f, const std::vector<FormTerm>
     };
     for_each_element_matrix(space_, mine_, terms, f.quadrature_degree(), add_element, components_);
     f.for_each_extra_element_matrix(mine_, add_element);
-    set_rows(A, start, columns, values);
+    set_rows(A, couplings_of_rows);
   });
   petsc_check(MatAssemblyBegin(A, MAT_FINAL_ASSEMBLY), "MatAssemblyBegin");
   petsc_check(MatAssemblyEnd(A, MAT_FINAL_ASSEMBLY), "MatAssemblyEnd");
