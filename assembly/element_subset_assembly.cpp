@@ -110,17 +110,18 @@ Eigen::VectorXd edge_load(const Space& space, const std::vector<BoundaryEdge>& e
   return b;
 }
 
-std::vector<Point2> element_centres(const Space& space) {
-  const int ne = space.num_elements();
-  std::vector<Point2> centres(ne);
+std::vector<Point2> element_centres(const Space& space) { return element_centres(space, 0, space.num_elements()); }
+
+std::vector<Point2> element_centres(const Space& space, int first, int last) {
+  std::vector<Point2> centres(std::max(0, last - first));
   const std::unique_ptr<Space::Evaluator> evaluator = space.make_evaluator();
   PointValues geometry;
   Eigen::VectorXd jxw;
-  for (int e = 0; e < ne; ++e) {
+  for (int e = first; e < last; ++e) {
     const RulePtr rule = space.quadrature(e, 1);
     evaluator->evaluate_geometry(e, *rule, geometry);
     integration_weights(*rule, geometry, jxw);
-    centres[e] = geometry.x * jxw / jxw.sum();
+    centres[e - first] = geometry.x * jxw / jxw.sum();
   }
   return centres;
 }

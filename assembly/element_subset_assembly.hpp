@@ -40,5 +40,7 @@ Eigen::VectorXd edge_load(const Space& space, const std::vector<BoundaryEdge>& e
 /// A physical point inside each element: the centroid of the element's quadrature points (a rule
 /// of degree 1, weighted by the integration weights). For partitioning the mesh.
 std::vector<Point2> element_centres(const Space& space);
+/// The same for the elements first, …, last − 1 only.
+std::vector<Point2> element_centres(const Space& space, int first, int last);
 
 }  // namespace iga

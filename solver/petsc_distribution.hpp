@@ -93,8 +93,28 @@ class PetscDistribution {
   /// The unknowns this rank's own elements couple (sorted), and T_e with
   /// u|element = values|element + T_e u_unknowns (rows: the element's functions).
   void element_unknowns(int element, std::vector<int>& dofs, std::vector<int>& unknowns, Eigen::MatrixXd* T_e) const;
-  /// Nonzeros of the rows this rank owns in and outside its diagonal block (collective).
-  void preallocation(std::vector<PetscInt>& d_nnz, std::vector<PetscInt>& o_nnz) const;
+  /// The couplings of this rank's own elements, row by row, with a value each: for each free
+  /// unknown of `space` (its position k in constraints().free), the unknowns its row couples,
+  /// increasing (none for the unknowns no own element touches). Kept in blocks of whole rows of
+  /// some tens of megabytes, each released once PETSc has its rows: the rows and PETSc's matrix
+  /// are not both whole in memory.
+  struct Rows {
+    std::vector<int> start;  ///< row k: entries start[k] .. start[k + 1] − 1
+    int rows_per_block = 1;
+    std::vector<std::vector<int>> columns;    ///< per block, from the entry of its first row
+    std::vector<std::vector<double>> values;  ///< aligned with columns
+    int count(int k) const { return start[k + 1] - start[k]; }
+    int* columns_of(int k) { return columns[k / rows_per_block].data() + offset(k); }
+    const int* columns_of(int k) const { return columns[k / rows_per_block].data() + offset(k); }
+    double* values_of(int k) { return values[k / rows_per_block].data() + offset(k); }
+    int offset(int k) const { return start[k] - start[(k / rows_per_block) * rows_per_block]; }
+  };
+  Rows couplings() const;
+  /// The rows with their values into `A` (preallocated, not yet assembled); releases them.
+  void set_rows(Mat A, Rows& rows) const;
+  /// Nonzeros of the rows this rank owns in and outside its diagonal block, from every rank's
+  /// couplings (collective).
+  void preallocation(const Rows& rows, std::vector<PetscInt>& d_nnz, std::vector<PetscInt>& o_nnz) const;
 
   const Space& space_;
   const int rank_, ranks_;

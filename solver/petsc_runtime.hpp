@@ -35,6 +35,7 @@ class PetscRuntime {
   virtual double sum(double value) const = 0;
   virtual double max(double value) const = 0;
   virtual double first_known(double value) const = 0;
+  virtual std::vector<double> gather(const std::vector<double>& mine) const = 0;
   virtual void on_every_rank(const std::function<void()>& work) const = 0;
   virtual std::string broadcast_from_root(const std::string& text) const = 0;
   virtual bool failure_shared_by_all_ranks() const = 0;

@@ -134,6 +134,19 @@ class Runtime final : public PetscRuntime {
     return value;
   }
 
+  std::vector<double> gather(const std::vector<double>& mine) const override {
+    if (!petsc_up()) return mine;
+    const int ranks = size();
+    const int count = static_cast<int>(mine.size());
+    std::vector<int> counts(ranks), offsets(ranks + 1, 0);
+    MPI_Allgather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, PETSC_COMM_WORLD);
+    for (int r = 0; r < ranks; ++r) offsets[r + 1] = offsets[r] + counts[r];
+    std::vector<double> all(offsets[ranks]);
+    MPI_Allgatherv(mine.data(), count, MPI_DOUBLE, all.data(), counts.data(), offsets.data(), MPI_DOUBLE,
+                   PETSC_COMM_WORLD);
+    return all;
+  }
+
   void on_every_rank(const std::function<void()>& work) const override {
     if (!petsc_up()) return work();
     int code = 0;  // 0 ok, 1 numerical, 2 input, 3 other

@@ -124,6 +124,9 @@ int ranks_on_this_node() { return running() ? running()->ranks_on_this_node() : 
 double sum_over_ranks(double value) { return running() ? running()->sum(value) : value; }
 double max_over_ranks(double value) { return running() ? running()->max(value) : value; }
 double first_known_over_ranks(double value) { return running() ? running()->first_known(value) : value; }
+std::vector<double> gather_over_ranks(const std::vector<double>& mine) {
+  return running() ? running()->gather(mine) : mine;
+}
 void on_every_rank(const std::function<void()>& work) { running() ? running()->on_every_rank(work) : work(); }
 std::string broadcast_from_root(const std::string& text) {
   return running() ? running()->broadcast_from_root(text) : text;

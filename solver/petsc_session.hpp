@@ -44,6 +44,8 @@ int ranks_on_this_node();
 double sum_over_ranks(double value);
 double max_over_ranks(double value);
 double first_known_over_ranks(double value);
+/// Collective: every rank's `mine`, one after the other in rank order, on every rank.
+std::vector<double> gather_over_ranks(const std::vector<double>& mine);
 /// Rank 0: the one that prints and writes files.
 inline bool is_root_rank() { return mpi_rank() == 0; }
 

@@ -9,7 +9,8 @@
 ///    rank and the ranks agree on which functions are constrained;
 ///  - for spaces that report gradient jumps, the elements across the interior edges of its own
 ///    (the jump of an edge between two ranks is measured by both).
-/// Plain computation, no PETSc: every rank computes the same partition from the same space.
+/// No PETSc types: every rank arrives at the same partition from the same space (the ranks of a run
+/// compute it together in rank_part, each a block of the elements, petsc_session.hpp's collectives).
 
 #include <memory>
 

@@ -52,5 +52,25 @@ TEST(ElementPartition, BalancedAndCompact) {
   EXPECT_EQ(partition_elements(centres, 1), std::vector<int>(m * m, 0));
 }
 
+TEST(ElementPartition, RunsOfTheOrderByKeyThenElementNumber) {
+  // partition_by_keys finds the cuts by selection: the same runs as a stable sort of the keys cut
+  // into equal lengths, with many equal keys (elements in one cell of the curve's grid).
+  const int n = 1001;
+  std::vector<unsigned long long> keys(n);
+  unsigned long long state = 12345;
+  for (auto& k : keys) {
+    state = state * 6364136223846793005ULL + 1442695040888963407ULL;
+    k = (state >> 33) % 97;
+  }
+  std::vector<int> order(n);
+  for (int e = 0; e < n; ++e) order[e] = e;
+  std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return keys[a] < keys[b]; });
+  for (int parts : {2, 3, 7, 1000, 1001, 1500}) {
+    std::vector<int> expected(n);
+    for (int k = 0; k < n; ++k) expected[order[k]] = static_cast<int>(static_cast<long long>(k) * parts / n);
+    EXPECT_EQ(partition_by_keys(keys, parts), expected) << parts << " parts";
+  }
+}
+
 }  // namespace
 }  // namespace iga
