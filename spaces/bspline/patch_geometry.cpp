@@ -101,9 +101,22 @@ GeometryJet PatchGeometry::evaluate(const Point2& uv, int span_u, int span_v, bo
         }
     }
   }
+  GeometryJet g;
+  if (!rational_) {
+    // W = 1 and its derivatives vanish, but summed they come out at round-off (1e-17): through the
+    // quotient rule that made ∂x/∂v of the unit square 1e-20 instead of 0, and the closed-form
+    // element matrices then kept the mixed terms of half the elements (twice the work there).
+    g.x = A[0][0];
+    g.jacobian.col(0) = A[1][0];
+    g.jacobian.col(1) = A[0][1];
+    if (second) {
+      g.hessian_x << A[2][0].x(), A[1][1].x(), A[1][1].x(), A[0][2].x();
+      g.hessian_y << A[2][0].y(), A[1][1].y(), A[1][1].y(), A[0][2].y();
+    }
+    return g;
+  }
   // Quotient rule for x = A / W:
   //   x_k = (A_k - W_k x) / W,  x_kl = (A_kl - W_kl x - W_k x_l - W_l x_k) / W.
-  GeometryJet g;
   const double w0 = W[0][0];
   g.x = A[0][0] / w0;
   const Point2 xu = (A[1][0] - W[1][0] * g.x) / w0;
