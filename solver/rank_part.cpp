@@ -5,6 +5,7 @@
 #include "assembly/element_subset_assembly.hpp"
 #include "solver/petsc_partition.hpp"
 #include "solver/petsc_session.hpp"
+#include "spaces/builds_on_elements.hpp"
 
 namespace iga {
 
@@ -37,7 +38,10 @@ std::shared_ptr<const SpacePart> rank_part(const std::shared_ptr<const Space>& w
   elements.insert(elements.end(), neighbours.begin(), neighbours.end());
   std::sort(elements.begin(), elements.end());
   elements.erase(std::unique(elements.begin(), elements.end()), elements.end());
-  return std::make_shared<SpacePart>(whole, std::move(elements), own);
+  // A space built as its skeleton (BuildsOnElements) gets its per-element data here, for the
+  // part's elements only.
+  SpacePtr built = on_elements(whole, elements);
+  return std::make_shared<SpacePart>(std::move(built), std::move(elements), own);
 }
 
 WorkShare rank_share(const std::vector<int>* elements) {
