@@ -31,7 +31,7 @@ SpacePtr make_space(const ConfigNode& domain, const ConfigNode& space, int level
   if (type == "ws4") return make_ws4_space(domain, space, level, extent);
   if (type == "tmesh") return make_tmesh_space(domain, space, level);
   if (type == "g1") return make_g1_space(domain, space, level, extent);
-  if (type == "g1_4split") return make_g1_4split_space(domain, space, level);
+  if (type == "g1_4split") return make_g1_4split_space(domain, space, level, extent);
   if (type == "surface") return make_surface_space(domain, space, level, coarser);
   space["type"].fail("unsupported space type '" + type + "'");
 }

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cstdio>
 #include <map>
+#include <stdexcept>
+#include <string>
 
 #include "spaces/extracted_evaluator.hpp"
 #include "spaces/g1/boundary_parts.hpp"
@@ -24,6 +26,7 @@ struct G14Core {
   static constexpr bool identity = false;
   const G14Basis& basis;
   const FaceGeometry& geometry;
+  const std::vector<char>& built;
 
   int kind(int /*e*/) const { return 0; }
   int tabulate(int /*kind*/, const std::vector<Point2>& points, int /*order*/, LocalTables& t) const {
@@ -31,7 +34,12 @@ struct G14Core {
     return 2;
   }
   const std::vector<int>& active(int e) const { return basis.face_dofs[e]; }
-  Extraction extraction(int e) const { return extraction_view(basis.extraction[e]); }
+  Extraction extraction(int e) const {
+    if (!built[e])
+      throw std::logic_error("G14Space: element " + std::to_string(e) +
+                             " was not built on (a space built on some elements is asked for another)");
+    return extraction_view(basis.extraction[e]);
+  }
   void map(int e, const QuadratureRule& rule, const LocalTables& t, int /*order*/, std::vector<Jet>& jets) const {
     const int q = rule.size();
     Eigen::Matrix<double, 6, Eigen::Dynamic> X(6, q), Y(6, q);
@@ -70,14 +78,16 @@ double level0_jacobian_bound(const SplitBSpline& b, const FaceGeometry& g) {
 }  // namespace
 
 G14Space::G14Space(const PatchMesh& coarse, const G14Options& options) : options_(options) {
+  std::vector<SplitGluing> gluing;
+  FaceGeometry geometry;
   PatchMesh mesh = coarse;
   QuadTopology topology = quad_topology(mesh);
   LineGluingReport lines;
-  gluing_ = options.blending == Blending::lines ? planar_line_gluing(mesh, topology, &lines)
+  gluing = options.blending == Blending::lines ? planar_line_gluing(mesh, topology, &lines)
                                                 : symmetric_gluing(topology, options.blending, vertex_angles(mesh));
-  basis_ = build_g14_basis(topology, gluing_, options.degree, options.regularity);
-  geometry_ = fitted_geometry(basis_, topology, mesh, options.fit);
-  double jacobian = level0_jacobian_bound(basis_.bspline, geometry_);  // refinement keeps the map
+  basis_ = build_g14_basis(topology, gluing, options.degree, options.regularity);
+  geometry = fitted_geometry(basis_, topology, mesh, options.fit);
+  double jacobian = level0_jacobian_bound(basis_.bspline, geometry);  // refinement keeps the map
   GeometryFit fit = options.fit;
   int order = 3;  // of the fair energy
   std::string fit_name = fit == GeometryFit::fair ? "fair" : "least_squares";
@@ -86,13 +96,13 @@ G14Space::G14Space(const PatchMesh& coarse, const G14Options& options) : options
     // against folding, then (default fit only: asked for, `fair` is refused below) the
     // least-squares map (Gmsh's L-shape); summary.json says which.
     order = 2;
-    geometry_ = fitted_geometry(basis_, topology, mesh, fit, order);
-    jacobian = level0_jacobian_bound(basis_.bspline, geometry_);
+    geometry = fitted_geometry(basis_, topology, mesh, fit, order);
+    jacobian = level0_jacobian_bound(basis_.bspline, geometry);
     fit_name = "fair, thin plate (the D3 map is not certified regular)";
     if (jacobian <= kCertifiedJacobian && !options.fit_required) {
       fit = GeometryFit::least_squares;
-      geometry_ = fitted_geometry(basis_, topology, mesh, fit);
-      jacobian = level0_jacobian_bound(basis_.bspline, geometry_);
+      geometry = fitted_geometry(basis_, topology, mesh, fit);
+      jacobian = level0_jacobian_bound(basis_.bspline, geometry);
       fit_name = "least_squares (the fair map is not certified regular)";
     }
   }
@@ -100,19 +110,19 @@ G14Space::G14Space(const PatchMesh& coarse, const G14Options& options) : options
     PatchMesh finer = mesh.refined();
     QuadTopology fine = quad_topology(finer);
     if (options.nested) {
-      gluing_ = inherited_gluing(topology, gluing_, fine);
-      geometry_ = subdivide_geometry(basis_.bspline, geometry_);
-      basis_ = build_g14_basis(fine, gluing_, options.degree, options.regularity);
+      gluing = inherited_gluing(topology, gluing, fine);
+      geometry = subdivide_geometry(basis_.bspline, geometry);
+      basis_ = build_g14_basis(fine, gluing, options.degree, options.regularity);
     } else {
-      gluing_ = options.blending == Blending::lines ? planar_line_gluing(finer, fine, nullptr)
+      gluing = options.blending == Blending::lines ? planar_line_gluing(finer, fine, nullptr)
                                                     : symmetric_gluing(fine, options.blending, vertex_angles(finer));
-      basis_ = build_g14_basis(fine, gluing_, options.degree, options.regularity);
-      geometry_ = fitted_geometry(basis_, fine, finer, fit, order);
+      basis_ = build_g14_basis(fine, gluing, options.degree, options.regularity);
+      geometry = fitted_geometry(basis_, fine, finer, fit, order);
     }
     mesh = std::move(finer);
     topology = std::move(fine);
   }
-  check_geometry(basis_.bspline, geometry_, mesh.name(), fit == GeometryFit::fair);
+  check_geometry(basis_.bspline, geometry, mesh.name(), fit == GeometryFit::fair);
   mesh_ = std::make_shared<const PatchMesh>(std::move(mesh));
   topology_ = std::make_shared<const QuadTopology>(std::move(topology));
   SpaceFacts facts;
@@ -147,16 +157,63 @@ G14Space::G14Space(const PatchMesh& coarse, const G14Options& options) : options
     for (int j = 0; j < 4; ++j)
       for (int s = 0; s < 4; ++s) {
         const Point2 uv = reference_edge_point(CellShape::quadrilateral, j, s / 4.0);
-        pts.emplace_back(face_jet(basis_.bspline, geometry_.x[f], uv)(0), face_jet(basis_.bspline, geometry_.y[f], uv)(0));
+        pts.emplace_back(face_jet(basis_.bspline, geometry.x[f], uv)(0), face_jet(basis_.bspline, geometry.y[f], uv)(0));
       }
     for (const Point2& a : pts)
       for (const Point2& b : pts) facts.mesh_size = std::max(facts.mesh_size, (a - b).norm());
   }
   set_facts(std::move(facts));
+  gluing_ = std::make_shared<const std::vector<SplitGluing>>(std::move(gluing));
+  geometry_ = std::make_shared<const FaceGeometry>(std::move(geometry));
+  built_.assign(topology_->num_faces(), options_.extent == SpaceExtent::whole ? 1 : 0);
+  if (options_.extent == SpaceExtent::skeleton) {  // the numbering stays, the extractions wait
+    pending_ = std::move(basis_.extraction);
+    basis_.extraction.assign(topology_->num_faces(), {});
+    basis_.functions = {};
+  }
+}
+
+G14Space::G14Space(const G14Space& skeleton, const std::vector<int>& elements,
+                   std::vector<Eigen::SparseMatrix<double>> extraction)
+    : options_(skeleton.options_),
+      mesh_(skeleton.mesh_),
+      topology_(skeleton.topology_),
+      gluing_(skeleton.gluing_),
+      geometry_(skeleton.geometry_),
+      built_(skeleton.topology_->num_faces(), 0) {
+  basis_.bspline = skeleton.basis_.bspline;
+  basis_.vertex_functions = skeleton.basis_.vertex_functions;
+  basis_.edge_functions = skeleton.basis_.edge_functions;
+  basis_.face_functions = skeleton.basis_.face_functions;
+  basis_.face_dofs = skeleton.basis_.face_dofs;
+  basis_.extraction.resize(topology_->num_faces());
+  for (int e : elements) {
+    basis_.extraction[e] = std::move(extraction[e]);
+    built_[e] = 1;
+  }
+  set_facts(skeleton.facts());
+}
+
+SpacePtr G14Space::build_on(const std::vector<int>& elements) const {
+  if (!std::is_sorted(elements.begin(), elements.end()) ||
+      std::adjacent_find(elements.begin(), elements.end()) != elements.end() ||
+      (!elements.empty() && (elements.front() < 0 || elements.back() >= topology_->num_faces())))
+    throw std::invalid_argument("G14Space::build_on: the elements must be increasing element numbers");
+  std::vector<Eigen::SparseMatrix<double>> extraction;
+  {
+    const std::lock_guard<std::mutex> lock(pending_mutex_);
+    extraction = std::move(pending_);
+    pending_.clear();
+  }
+  // The level's basis is built from its topology and gluing (nested levels inherit the gluing, not
+  // the basis): the same local problems give the same extractions, bit for bit.
+  if (extraction.empty())
+    extraction = build_g14_basis(*topology_, *gluing_, options_.degree, options_.regularity).extraction;
+  return std::shared_ptr<const G14Space>(new G14Space(*this, elements, std::move(extraction)));
 }
 
 std::unique_ptr<Space::Evaluator> G14Space::make_evaluator() const {
-  return std::make_unique<ExtractedEvaluator<G14Core>>(*this, G14Core{basis_, geometry_});
+  return std::make_unique<ExtractedEvaluator<G14Core>>(*this, G14Core{basis_, *geometry_, built_});
 }
 
 std::vector<InteriorEdge> quad_interior_edges(const QuadTopology& t) {
