@@ -1,6 +1,9 @@
 #include "solver/rank_part.hpp"
 
 #include <algorithm>
+#ifdef __GLIBC__
+#include <malloc.h>
+#endif
 
 #include "assembly/element_subset_assembly.hpp"
 #include "solver/petsc_partition.hpp"
@@ -8,6 +11,20 @@
 #include "spaces/builds_on_elements.hpp"
 
 namespace iga {
+
+namespace {
+
+/// Hand the heap's free pages back to the system. The G1 constructions still solve their local
+/// problems for the whole mesh (the numbering) and free what is not the part's; glibc keeps such
+/// freed small blocks resident, so without this the peak of the solve would carry the whole
+/// construction (g1 k = 5 plate, 197 766 DOFs, two ranks: 0.845 GB per rank without, 0.797 GB with).
+void release_freed_memory() {
+#ifdef __GLIBC__
+  malloc_trim(0);
+#endif
+}
+
+}  // namespace
 
 std::vector<int> element_ranks(const Space& space, int ranks) {
   return partition_elements(element_centres(space), ranks);
@@ -41,7 +58,9 @@ std::shared_ptr<const SpacePart> rank_part(const std::shared_ptr<const Space>& w
   // A space built as its skeleton (BuildsOnElements) gets its per-element data here, for the
   // part's elements only.
   SpacePtr built = on_elements(whole, elements);
-  return std::make_shared<SpacePart>(std::move(built), std::move(elements), own);
+  auto part = std::make_shared<SpacePart>(std::move(built), std::move(elements), own);
+  release_freed_memory();
+  return part;
 }
 
 WorkShare rank_share(const std::vector<int>* elements) {
