@@ -78,16 +78,14 @@ double level0_jacobian_bound(const SplitBSpline& b, const FaceGeometry& g) {
 }  // namespace
 
 G14Space::G14Space(const PatchMesh& coarse, const G14Options& options) : options_(options) {
-  std::vector<SplitGluing> gluing;
-  FaceGeometry geometry;
   PatchMesh mesh = coarse;
   QuadTopology topology = quad_topology(mesh);
   LineGluingReport lines;
-  gluing = options.blending == Blending::lines ? planar_line_gluing(mesh, topology, &lines)
+  gluing_ = options.blending == Blending::lines ? planar_line_gluing(mesh, topology, &lines)
                                                 : symmetric_gluing(topology, options.blending, vertex_angles(mesh));
-  basis_ = build_g14_basis(topology, gluing, options.degree, options.regularity);
-  geometry = fitted_geometry(basis_, topology, mesh, options.fit);
-  double jacobian = level0_jacobian_bound(basis_.bspline, geometry);  // refinement keeps the map
+  basis_ = build_g14_basis(topology, gluing_, options.degree, options.regularity);
+  geometry_ = fitted_geometry(basis_, topology, mesh, options.fit);
+  double jacobian = level0_jacobian_bound(basis_.bspline, geometry_);  // refinement keeps the map
   GeometryFit fit = options.fit;
   int order = 3;  // of the fair energy
   std::string fit_name = fit == GeometryFit::fair ? "fair" : "least_squares";
@@ -96,13 +94,13 @@ G14Space::G14Space(const PatchMesh& coarse, const G14Options& options) : options
     // against folding, then (default fit only: asked for, `fair` is refused below) the
     // least-squares map (Gmsh's L-shape); summary.json says which.
     order = 2;
-    geometry = fitted_geometry(basis_, topology, mesh, fit, order);
-    jacobian = level0_jacobian_bound(basis_.bspline, geometry);
+    geometry_ = fitted_geometry(basis_, topology, mesh, fit, order);
+    jacobian = level0_jacobian_bound(basis_.bspline, geometry_);
     fit_name = "fair, thin plate (the D3 map is not certified regular)";
     if (jacobian <= kCertifiedJacobian && !options.fit_required) {
       fit = GeometryFit::least_squares;
-      geometry = fitted_geometry(basis_, topology, mesh, fit);
-      jacobian = level0_jacobian_bound(basis_.bspline, geometry);
+      geometry_ = fitted_geometry(basis_, topology, mesh, fit);
+      jacobian = level0_jacobian_bound(basis_.bspline, geometry_);
       fit_name = "least_squares (the fair map is not certified regular)";
     }
   }
@@ -110,19 +108,19 @@ G14Space::G14Space(const PatchMesh& coarse, const G14Options& options) : options
     PatchMesh finer = mesh.refined();
     QuadTopology fine = quad_topology(finer);
     if (options.nested) {
-      gluing = inherited_gluing(topology, gluing, fine);
-      geometry = subdivide_geometry(basis_.bspline, geometry);
-      basis_ = build_g14_basis(fine, gluing, options.degree, options.regularity);
+      gluing_ = inherited_gluing(topology, gluing_, fine);
+      geometry_ = subdivide_geometry(basis_.bspline, geometry_);
+      basis_ = build_g14_basis(fine, gluing_, options.degree, options.regularity);
     } else {
-      gluing = options.blending == Blending::lines ? planar_line_gluing(finer, fine, nullptr)
+      gluing_ = options.blending == Blending::lines ? planar_line_gluing(finer, fine, nullptr)
                                                     : symmetric_gluing(fine, options.blending, vertex_angles(finer));
-      basis_ = build_g14_basis(fine, gluing, options.degree, options.regularity);
-      geometry = fitted_geometry(basis_, fine, finer, fit, order);
+      basis_ = build_g14_basis(fine, gluing_, options.degree, options.regularity);
+      geometry_ = fitted_geometry(basis_, fine, finer, fit, order);
     }
     mesh = std::move(finer);
     topology = std::move(fine);
   }
-  check_geometry(basis_.bspline, geometry, mesh.name(), fit == GeometryFit::fair);
+  check_geometry(basis_.bspline, geometry_, mesh.name(), fit == GeometryFit::fair);
   mesh_ = std::make_shared<const PatchMesh>(std::move(mesh));
   topology_ = std::make_shared<const QuadTopology>(std::move(topology));
   SpaceFacts facts;
@@ -157,14 +155,12 @@ G14Space::G14Space(const PatchMesh& coarse, const G14Options& options) : options
     for (int j = 0; j < 4; ++j)
       for (int s = 0; s < 4; ++s) {
         const Point2 uv = reference_edge_point(CellShape::quadrilateral, j, s / 4.0);
-        pts.emplace_back(face_jet(basis_.bspline, geometry.x[f], uv)(0), face_jet(basis_.bspline, geometry.y[f], uv)(0));
+        pts.emplace_back(face_jet(basis_.bspline, geometry_.x[f], uv)(0), face_jet(basis_.bspline, geometry_.y[f], uv)(0));
       }
     for (const Point2& a : pts)
       for (const Point2& b : pts) facts.mesh_size = std::max(facts.mesh_size, (a - b).norm());
   }
   set_facts(std::move(facts));
-  gluing_ = std::make_shared<const std::vector<SplitGluing>>(std::move(gluing));
-  geometry_ = std::make_shared<const FaceGeometry>(std::move(geometry));
   built_.assign(topology_->num_faces(), options_.extent == SpaceExtent::whole ? 1 : 0);
   if (options_.extent == SpaceExtent::skeleton) {  // the numbering stays, the extractions wait
     pending_ = std::move(basis_.extraction);
@@ -173,25 +169,25 @@ G14Space::G14Space(const PatchMesh& coarse, const G14Options& options) : options
   }
 }
 
-G14Space::G14Space(const G14Space& skeleton, const std::vector<int>& elements,
+G14Space::G14Space(std::shared_ptr<const G14Space> skeleton, const std::vector<int>& elements,
                    std::vector<Eigen::SparseMatrix<double>> extraction)
-    : options_(skeleton.options_),
-      mesh_(skeleton.mesh_),
-      topology_(skeleton.topology_),
-      gluing_(skeleton.gluing_),
-      geometry_(skeleton.geometry_),
-      built_(skeleton.topology_->num_faces(), 0) {
-  basis_.bspline = skeleton.basis_.bspline;
-  basis_.vertex_functions = skeleton.basis_.vertex_functions;
-  basis_.edge_functions = skeleton.basis_.edge_functions;
-  basis_.face_functions = skeleton.basis_.face_functions;
-  basis_.face_dofs = skeleton.basis_.face_dofs;
+    : options_(skeleton->options_),
+      mesh_(skeleton->mesh_),
+      topology_(skeleton->topology_),
+      skeleton_(skeleton),
+      built_(skeleton->topology_->num_faces(), 0) {
+  const G14Space& skeleton_space = *skeleton;
+  basis_.bspline = skeleton_space.basis_.bspline;
+  basis_.vertex_functions = skeleton_space.basis_.vertex_functions;
+  basis_.edge_functions = skeleton_space.basis_.edge_functions;
+  basis_.face_functions = skeleton_space.basis_.face_functions;
+  basis_.face_dofs = skeleton_space.basis_.face_dofs;
   basis_.extraction.resize(topology_->num_faces());
   for (int e : elements) {
     basis_.extraction[e] = std::move(extraction[e]);
     built_[e] = 1;
   }
-  set_facts(skeleton.facts());
+  set_facts(skeleton_space.facts());
 }
 
 SpacePtr G14Space::build_on(const std::vector<int>& elements) const {
@@ -208,12 +204,14 @@ SpacePtr G14Space::build_on(const std::vector<int>& elements) const {
   // The level's basis is built from its topology and gluing (nested levels inherit the gluing, not
   // the basis): the same local problems give the same extractions, bit for bit.
   if (extraction.empty())
-    extraction = build_g14_basis(*topology_, *gluing_, options_.degree, options_.regularity).extraction;
-  return std::shared_ptr<const G14Space>(new G14Space(*this, elements, std::move(extraction)));
+    extraction = build_g14_basis(*topology_, gluing(), options_.degree, options_.regularity).extraction;
+  // The data every element shares stay with the skeleton (this space's own, or its skeleton).
+  const auto skeleton = skeleton_ ? skeleton_ : std::static_pointer_cast<const G14Space>(shared_from_this());
+  return std::shared_ptr<const G14Space>(new G14Space(skeleton, elements, std::move(extraction)));
 }
 
 std::unique_ptr<Space::Evaluator> G14Space::make_evaluator() const {
-  return std::make_unique<ExtractedEvaluator<G14Core>>(*this, G14Core{basis_, *geometry_, built_});
+  return std::make_unique<ExtractedEvaluator<G14Core>>(*this, G14Core{basis_, geometry(), built_});
 }
 
 std::vector<InteriorEdge> quad_interior_edges(const QuadTopology& t) {

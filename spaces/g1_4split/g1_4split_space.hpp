@@ -66,20 +66,23 @@ class G14Space final : public Space, public BuildsOnElements {
 
   const QuadTopology& topology() const { return *topology_; }
   const G14Basis& basis() const { return basis_; }
-  const FaceGeometry& geometry() const { return *geometry_; }
-  const std::vector<SplitGluing>& gluing() const { return *gluing_; }
+  /// A space built on some elements shares its skeleton's.
+  const FaceGeometry& geometry() const { return skeleton_ ? skeleton_->geometry_ : geometry_; }
+  const std::vector<SplitGluing>& gluing() const { return skeleton_ ? skeleton_->gluing_ : gluing_; }
+  /// (A space built on some elements holds the skeleton itself, never another built space.)
 
  private:
   G14Options options_;
   std::shared_ptr<const PatchMesh> mesh_;  // level mesh: boundary parts and names
   /// A skeleton's space built on `elements`, with `extraction` the extractions of every face.
-  G14Space(const G14Space& skeleton, const std::vector<int>& elements,
+  G14Space(std::shared_ptr<const G14Space> skeleton, const std::vector<int>& elements,
            std::vector<Eigen::SparseMatrix<double>> extraction);
 
   std::shared_ptr<const QuadTopology> topology_;
-  std::shared_ptr<const std::vector<SplitGluing>> gluing_;
-  G14Basis basis_;  ///< extraction: empty for the elements not built on
-  std::shared_ptr<const FaceGeometry> geometry_;
+  std::vector<SplitGluing> gluing_;  ///< empty in a space built on some elements: its skeleton's
+  G14Basis basis_;                   ///< extraction: empty for the elements not built on
+  FaceGeometry geometry_;            ///< empty in a space built on some elements: its skeleton's
+  std::shared_ptr<const G14Space> skeleton_;  ///< the skeleton of a space built on some elements
   std::vector<char> built_;
   /// A skeleton's extractions of every face until the first build_on takes them; later calls
   /// build the basis again from the level's topology and gluing (the same, bit for bit).

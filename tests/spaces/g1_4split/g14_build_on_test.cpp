@@ -71,6 +71,13 @@ TEST(G14BuildOn, APartOfANestedSkeletonEvaluatesItsFacesAsTheWholeSpaceAndRefuse
       EXPECT_EQ(u.dyy, v.dyy) << round << " " << e;
     }
   }
+  // A space built on some faces asked for another: built again from the same skeleton.
+  const SpacePtr first = on_elements(skeleton, some), second = on_elements(first, {1});
+  second->element_dofs(1, a);
+  const Eigen::VectorXd ones = Eigen::VectorXd::Ones(static_cast<Eigen::Index>(a.size()));
+  EXPECT_EQ(evaluated(*second, 1, ones).value, evaluated(*whole, 1, ones).value);
+  second->element_dofs(0, a);
+  EXPECT_THROW(evaluated(*second, 0, Eigen::VectorXd::Ones(static_cast<Eigen::Index>(a.size()))), std::logic_error);
 }
 
 }  // namespace
