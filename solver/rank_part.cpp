@@ -2,12 +2,30 @@
 
 #include <algorithm>
 #include <cmath>
+#ifdef __GLIBC__
+#include <malloc.h>
+#endif
 
 #include "assembly/element_subset_assembly.hpp"
 #include "solver/petsc_partition.hpp"
 #include "solver/petsc_session.hpp"
+#include "spaces/builds_on_elements.hpp"
 
 namespace iga {
+
+namespace {
+
+/// Hand the heap's free pages back to the system. The G1 constructions still solve their local
+/// problems for the whole mesh (the numbering) and free what is not the part's; glibc keeps such
+/// freed small blocks resident, so without this the peak of the solve would carry the whole
+/// construction (g1 k = 5 plate, 197 766 DOFs, two ranks: 0.845 GB per rank without, 0.797 GB with).
+void release_freed_memory() {
+#ifdef __GLIBC__
+  malloc_trim(0);
+#endif
+}
+
+}  // namespace
 
 std::vector<int> element_ranks(const Space& space, int ranks) {
   if (ranks <= 1) return std::vector<int>(space.num_elements(), 0);  // no centres to compute
@@ -65,7 +83,12 @@ std::shared_ptr<const SpacePart> rank_part(const std::shared_ptr<const Space>& w
   elements.insert(elements.end(), neighbours.begin(), neighbours.end());
   std::sort(elements.begin(), elements.end());
   elements.erase(std::unique(elements.begin(), elements.end()), elements.end());
-  return std::make_shared<SpacePart>(whole, std::move(elements), own);
+  // A space built as its skeleton (BuildsOnElements) gets its per-element data here, for the
+  // part's elements only.
+  SpacePtr built = on_elements(whole, elements);
+  auto part = std::make_shared<SpacePart>(std::move(built), std::move(elements), own);
+  release_freed_memory();
+  return part;
 }
 
 WorkShare rank_share(const std::vector<int>* elements) {

@@ -24,7 +24,10 @@ std::vector<int> element_ranks(const Space& space, int ranks);
 /// The elements of `rank` of `ranks` (increasing): where a rank assembles on the whole space.
 std::vector<int> rank_elements(const Space& space, int rank, int ranks);
 
-/// The part of `whole` for `rank` of `ranks`.
+/// The part of `whole` for `rank` of `ranks`. `whole` may be a skeleton (SpaceExtent::skeleton):
+/// the part's space is then built on the part's elements only (on_elements, builds_on_elements.hpp), so that the
+/// heavy per-element data of the mesh-based spaces is not replicated on every rank; its geometry,
+/// numbering and edges (what the partition and the mesh outlines read) are the skeleton's.
 std::shared_ptr<const SpacePart> rank_part(const std::shared_ptr<const Space>& whole, int rank, int ranks);
 
 /// The share of a process that works on `elements` (kept by the caller) with the sums, maxima and

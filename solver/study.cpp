@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <numeric>
 
 #include "assembly/error_indicator.hpp"
 #include "solver/boundary_edge_kinds.hpp"
@@ -29,6 +30,15 @@ std::string format_seconds(double s) {
   char buf[32];
   std::snprintf(buf, sizeof buf, "%.3f s", s);
   return buf;
+}
+
+/// Whether the levels may work on parts of the space (rank_part.hpp; the formulation has the last
+/// word): then the spaces that can are built as skeletons, and each rank builds the per-element
+/// data of its part only. Eigenproblems, adaptive studies, level differences and the matrix export
+/// take the whole space.
+bool may_work_on_parts(const StudySettings& s) {
+  const bool differences = !s.problem.exact && !on_surface(s.problem.pde) && !s.problem.eigen;
+  return s.solver == SolverKind::petsc && !s.problem.eigen && !s.adaptive && !differences && !s.write_matrices;
 }
 }  // namespace
 
@@ -138,7 +148,8 @@ StudySettings parse_study(const ConfigNode& root, const std::string& config_path
                          levels_override > 0 ? "--levels" : "refinement.levels", memory);
 
   const Stopwatch t_coarse;
-  const SpacePtr coarse = make_space(domain_node, space_node, 0);
+  const SpacePtr coarse = make_space(domain_node, space_node, 0, nullptr,
+                                     may_work_on_parts(s) ? SpaceExtent::skeleton : SpaceExtent::whole);
   s.level0 = coarse;
   s.level0_seconds = t_coarse.seconds();
   if (on_surface(s.problem.pde) != (coarse->ambient_dimension() == 3))
@@ -283,13 +294,14 @@ StudyResult run_study(const StudySettings& settings, const ProgressSink& progres
     progress(tag + "building space");
     const Stopwatch t0;
     const bool reuse = !next && level == 0 && settings.level0;
-    const SpacePtr space = next    ? next
-                           : reuse ? settings.level0
-                                   : [&] {
-                                       const ProgressPhase phase("building space", 0);
-                                       return make_space(domain, space_node, settings.adaptive ? 0 : level,
-                                                         previous.get());
-                                     }();
+    const SpaceExtent extent = may_work_on_parts(settings) ? SpaceExtent::skeleton : SpaceExtent::whole;
+    SpacePtr space = next    ? next
+                     : reuse ? settings.level0
+                             : [&] {
+                                 const ProgressPhase phase("building space", 0);
+                                 return make_space(domain, space_node, settings.adaptive ? 0 : level, previous.get(),
+                                                   extent);
+                               }();
     previous = space;
     const double t_space = t0.seconds() + t_next + (reuse ? settings.level0_seconds : 0.0);
     check_size(measure(*space), settings.limits, space_node, "level " + std::to_string(level),
@@ -302,11 +314,16 @@ StudyResult run_study(const StudySettings& settings, const ProgressSink& progres
     // whole system from rank 0) still take the whole.
     std::shared_ptr<const SpacePart> part;
     std::vector<int> own;
-    if (settings.solver == SolverKind::petsc && !settings.problem.eigen && !settings.adaptive && !differences &&
-        !settings.write_matrices && make_formulation(*space, settings.problem)->works_on_parts()) {
-      part = rank_part(space, mpi_rank(), mpi_size());
+    const Stopwatch t_part;  // a skeleton's per-element data are built here: part of building the space
+    if (extent == SpaceExtent::skeleton && make_formulation(*space, settings.problem)->works_on_parts()) {
+      part = rank_part(space, mpi_rank(), mpi_size());  // builds the part's elements of a skeleton
       own = part->owned_elements();
+    } else if (extent == SpaceExtent::skeleton) {  // the whole after all
+      std::vector<int> all(space->num_elements());
+      std::iota(all.begin(), all.end(), 0);
+      space = on_elements(space, all);
     }
+    const double t_built = t_space + (extent == SpaceExtent::skeleton ? t_part.seconds() : 0.0);
     const Space& work = part ? static_cast<const Space&>(*part) : *space;
     const WorkShare share = part ? rank_share(&own) : WorkShare{};
     // Quadrature points miss poles on mesh lines; new vertices and edges come with every level.
@@ -316,7 +333,7 @@ StudyResult run_study(const StudySettings& settings, const ProgressSink& progres
     DiscreteSolution sol = solve_problem(work, settings.problem, settings.solver,
                                          [&](const std::string& msg) { progress(tag + msg); }, settings.petsc);
     sol.result.level = level;
-    sol.result.t_space = t_space;
+    sol.result.t_space = t_built;
     if (settings.problem.eigen)
       result.eigen.push_back(
           {level, sol.result.h, sol.result.dofs, sol.result.free_dofs, sol.eigenvalues, sol.spectrum});

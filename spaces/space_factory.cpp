@@ -19,7 +19,8 @@ std::vector<SpaceCatalogueEntry> space_catalogue() {
 
 std::vector<DomainFamily> lifted_domain_families() { return {graph_domain_family()}; }
 
-SpacePtr make_space(const ConfigNode& domain, const ConfigNode& space, int level, const Space* coarser) {
+SpacePtr make_space(const ConfigNode& domain, const ConfigNode& space, int level, const Space* coarser,
+                    SpaceExtent extent) {
   // A graph surface z = g(x, y): the planar space on domain.over, lifted.
   if (is_graph_domain(domain))
     return make_graph_space(domain, space, [&](const ConfigNode& over) {
@@ -27,10 +28,10 @@ SpacePtr make_space(const ConfigNode& domain, const ConfigNode& space, int level
     });
   const std::string type = space["type"].as_choice(space_types());
   if (type == "bspline") return make_bspline_space(domain, space, level);
-  if (type == "ws4") return make_ws4_space(domain, space, level);
+  if (type == "ws4") return make_ws4_space(domain, space, level, extent);
   if (type == "tmesh") return make_tmesh_space(domain, space, level);
-  if (type == "g1") return make_g1_space(domain, space, level);
-  if (type == "g1_4split") return make_g1_4split_space(domain, space, level);
+  if (type == "g1") return make_g1_space(domain, space, level, extent);
+  if (type == "g1_4split") return make_g1_4split_space(domain, space, level, extent);
   if (type == "surface") return make_surface_space(domain, space, level, coarser);
   space["type"].fail("unsupported space type '" + type + "'");
 }

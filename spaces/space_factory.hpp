@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "config/config_node.hpp"
+#include "spaces/builds_on_elements.hpp"
 #include "spaces/space.hpp"
 #include "spaces/space_catalogue.hpp"
 #include "spaces/space_request_size.hpp"
@@ -26,8 +27,12 @@ std::vector<DomainFamily> lifted_domain_families();
 /// `coarser`, when given, is a space built from the same two nodes at a lower level: the new space
 /// may share its expensive level-independent parts (the smooth surface of a surface space) instead
 /// of building them again; the caller owns it, the new space keeps what it shares alive.
+/// `extent`: SpaceExtent::skeleton builds the spaces that can (BuildsOnElements) without their
+/// per-element data, for on_elements to add a part's (a rank of a distributed solve); the
+/// others, and graph surfaces (whose conditions are the planar space's), are built whole.
 /// Throws InputError naming the config place for anything it cannot build.
-SpacePtr make_space(const ConfigNode& domain, const ConfigNode& space, int level, const Space* coarser = nullptr);
+SpacePtr make_space(const ConfigNode& domain, const ConfigNode& space, int level, const Space* coarser = nullptr,
+                    SpaceExtent extent = SpaceExtent::whole);
 
 /// Levels 0 .. levels - 1 of the space, estimated from the request alone (a g1_4split surface from
 /// a file: the file's face, edge and vertex counts, read without building anything), or empty for

@@ -17,7 +17,7 @@ PatchMesh patch_mesh_from_config(const ConfigNode& domain) {
   return domain["file"].guard([&] { return patch_mesh_from_file(request.path.string(), request.options); });
 }
 
-SpacePtr make_g1_space(const ConfigNode& domain, const ConfigNode& space, int level) {
+SpacePtr make_g1_space(const ConfigNode& domain, const ConfigNode& space, int level, SpaceExtent extent) {
   space.check_keys({"type", "degree"});
   if (space.has("type")) space["type"].as_choice({"g1"});
   const std::string type = domain["type"].as_choice({"multipatch", "mesh_file"});
@@ -30,7 +30,7 @@ SpacePtr make_g1_space(const ConfigNode& domain, const ConfigNode& space, int le
   PatchMesh mesh = type == "multipatch" ? multipatch_domain(domain["name"].as_choice(multipatch_domain_names()))
                                         : patch_mesh_from_config(domain);
   for (int l = 0; l < level; ++l) mesh = mesh.refined();
-  return dn.guard([&] { return std::make_shared<const G1Space>(std::make_shared<const PatchMesh>(std::move(mesh)), k); });
+  return dn.guard([&] { return std::make_shared<const G1Space>(std::make_shared<const PatchMesh>(std::move(mesh)), k, extent); });
 }
 
 SpaceCatalogueEntry g1_catalogue_entry() {

@@ -8,13 +8,16 @@
 
 #include "config/config_node.hpp"
 #include "spaces/g1/patch_mesh.hpp"
+#include "spaces/builds_on_elements.hpp"
 #include "spaces/space.hpp"
 
 namespace iga {
 
 /// The G1 space of degree k on the named multipatch domain or the mesh file's mesh, every patch
 /// split uniformly into 4^level sub-patches (the geometry unchanged).
-SpacePtr make_g1_space(const ConfigNode& domain, const ConfigNode& space, int level);
+/// With SpaceExtent::skeleton the space keeps no extraction (G1Space, BuildsOnElements).
+SpacePtr make_g1_space(const ConfigNode& domain, const ConfigNode& space, int level,
+                       SpaceExtent extent = SpaceExtent::whole);
 
 /// `domain: {type: mesh_file, file, mesh_size, recombine}`: a relative path is relative to the
 /// config file's folder; mesh_size and recombine apply to .geo files (meshed by Gmsh) only.

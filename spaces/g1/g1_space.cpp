@@ -1,6 +1,8 @@
 #include "spaces/g1/g1_space.hpp"
 
 #include <algorithm>
+#include <stdexcept>
+#include <string>
 
 #include "config/errors.hpp"
 #include "spaces/extracted_evaluator.hpp"
@@ -24,8 +26,15 @@ struct G1Core {
     bernstein_tables(static_cast<CellShape>(kind), basis.degree, points, t);
     return 2;
   }
+  const std::vector<char>& built;
+
   const std::vector<int>& active(int e) const { return basis.face_dofs[e]; }
-  Extraction extraction(int e) const { return extraction_view(basis.extraction[e]); }
+  Extraction extraction(int e) const {
+    if (!built[e])
+      throw std::logic_error("G1Space: element " + std::to_string(e) +
+                             " was not built on (a space built on some elements is asked for another)");
+    return extraction_view(basis.extraction[e]);
+  }
   void map(int e, const QuadratureRule& rule, const LocalTables& /*t*/, int /*order*/, std::vector<Jet>& jets) const {
     jets.resize(rule.size());
     for (int p = 0; p < rule.size(); ++p) jets[p] = mesh.map(e, rule.points[p]);
@@ -34,16 +43,17 @@ struct G1Core {
 
 }  // namespace
 
-G1Space::G1Space(std::shared_ptr<const PatchMesh> mesh, int k) : mesh_(std::move(mesh)) {
-  gluing_ = gluing_from_geometry(*mesh_);
+G1Space::G1Space(std::shared_ptr<const PatchMesh> mesh, int k, SpaceExtent extent) : mesh_(std::move(mesh)) {
+  gluing_ = std::make_shared<const std::vector<EdgeGluing>>(gluing_from_geometry(*mesh_));
+  const std::vector<EdgeGluing>& gluing = *gluing_;
   try {
-    basis_ = build_g1_basis(*mesh_, gluing_, k);
+    basis_ = build_g1_basis(*mesh_, gluing, k);
   } catch (const IncompleteBasis& e) {
     // Find the smallest degree for which the local construction is complete (separability, §2.5).
     int works = -1;
     for (int trial = std::max(k + 1, 3); trial <= 10 && works < 0; ++trial) {
       try {
-        build_g1_basis(*mesh_, gluing_, trial);
+        build_g1_basis(*mesh_, gluing, trial);
         works = trial;
       } catch (const IncompleteBasis&) {
       }
@@ -70,6 +80,41 @@ G1Space::G1Space(std::shared_ptr<const PatchMesh> mesh, int k) : mesh_(std::move
   set_boundary_parts(*mesh_, facts);
   facts.gradient_jump_samples = 2 * basis_.degree + 4;
   set_facts(std::move(facts));
+  built_.assign(mesh_->num_faces(), extent == SpaceExtent::whole ? 1 : 0);
+  if (extent == SpaceExtent::skeleton) {
+    pending_ = std::move(basis_.extraction);
+    basis_.extraction.assign(mesh_->num_faces(), {});
+  }
+}
+
+G1Space::G1Space(const G1Space& skeleton, const std::vector<int>& elements,
+                 std::vector<Eigen::SparseMatrix<double>> extraction)
+    : mesh_(skeleton.mesh_), gluing_(skeleton.gluing_), built_(skeleton.mesh_->num_faces(), 0) {
+  basis_.degree = skeleton.basis_.degree;
+  basis_.info = skeleton.basis_.info;
+  basis_.face_dofs = skeleton.basis_.face_dofs;
+  basis_.extraction.resize(mesh_->num_faces());
+  for (int e : elements) {
+    basis_.extraction[e] = std::move(extraction[e]);
+    built_[e] = 1;
+  }
+  set_facts(skeleton.facts());
+}
+
+SpacePtr G1Space::build_on(const std::vector<int>& elements) const {
+  if (!std::is_sorted(elements.begin(), elements.end()) ||
+      std::adjacent_find(elements.begin(), elements.end()) != elements.end() ||
+      (!elements.empty() && (elements.front() < 0 || elements.back() >= mesh_->num_faces())))
+    throw std::invalid_argument("G1Space::build_on: the elements must be increasing element numbers");
+  std::vector<Eigen::SparseMatrix<double>> extraction;
+  {
+    const std::lock_guard<std::mutex> lock(pending_mutex_);
+    extraction = std::move(pending_);
+    pending_.clear();
+  }
+  // The same local problems give the same extractions, bit for bit.
+  if (extraction.empty()) extraction = build_g1_basis(*mesh_, *gluing_, basis_.degree).extraction;
+  return std::shared_ptr<const G1Space>(new G1Space(*this, elements, std::move(extraction)));
 }
 
 std::vector<InteriorEdge> G1Space::interior_edges() const {
@@ -84,7 +129,7 @@ std::vector<InteriorEdge> G1Space::interior_edges() const {
 }
 
 std::unique_ptr<Space::Evaluator> G1Space::make_evaluator() const {
-  return std::make_unique<ExtractedEvaluator<G1Core>>(*this, G1Core{*mesh_, basis_});
+  return std::make_unique<ExtractedEvaluator<G1Core>>(*this, G1Core{*mesh_, basis_, built_});
 }
 
 RulePtr G1Space::quadrature(int element, int degree) const {

@@ -17,15 +17,19 @@
 #include "spaces/g1/g1_basis.hpp"
 #include "spaces/g1/gluing_data.hpp"
 #include "spaces/g1/patch_mesh.hpp"
+#include "spaces/builds_on_elements.hpp"
 #include "spaces/space.hpp"
 
 namespace iga {
 
-class G1Space final : public Space {
+class G1Space final : public Space, public BuildsOnElements {
  public:
   /// Build on `mesh` with degree k. Throws InputError when k is below the degree the local
   /// construction needs on this mesh (the message names the smallest degree that works).
-  G1Space(std::shared_ptr<const PatchMesh> mesh, int k);
+  /// With SpaceExtent::skeleton the space keeps no extraction (BuildsOnElements): the local
+  /// problems are solved for the whole mesh (they give the numbering), and their extractions wait
+  /// for the first build_on, which keeps those of its elements and releases the rest.
+  G1Space(std::shared_ptr<const PatchMesh> mesh, int k, SpaceExtent extent = SpaceExtent::whole);
 
   /// Facts: type "g1", parameters degree, patches (faces), domain; C1 in physical coordinates by
   /// construction (route A); boundary parts: the sides of the domain's bounding box that boundary
@@ -41,14 +45,26 @@ class G1Space final : public Space {
   /// jump times both Jacobian determinants is a polynomial of degree <= k + 2 along an edge).
   std::vector<InteriorEdge> interior_edges() const override;
 
+  /// The space with the extractions of `elements` (increasing) only, sharing mesh and gluing.
+  SpacePtr build_on(const std::vector<int>& elements) const override;
+  bool built_on(int element) const override { return built_[element] != 0; }
+
   const PatchMesh& mesh() const { return *mesh_; }
-  const std::vector<EdgeGluing>& gluing() const { return gluing_; }
+  const std::vector<EdgeGluing>& gluing() const { return *gluing_; }
   const G1Basis& basis() const { return basis_; }
 
  private:
+  /// A skeleton's space built on `elements`, with `extraction` the extractions of every face.
+  G1Space(const G1Space& skeleton, const std::vector<int>& elements, std::vector<Eigen::SparseMatrix<double>> extraction);
+
   std::shared_ptr<const PatchMesh> mesh_;
-  std::vector<EdgeGluing> gluing_;
-  G1Basis basis_;
+  std::shared_ptr<const std::vector<EdgeGluing>> gluing_;
+  G1Basis basis_;  ///< extraction: empty for the elements not built on
+  std::vector<char> built_;
+  /// A skeleton's extractions of every face until the first build_on takes them (one construction
+  /// per level; afterwards no space keeps them all). Later calls solve the local problems again.
+  mutable std::mutex pending_mutex_;
+  mutable std::vector<Eigen::SparseMatrix<double>> pending_;
 
   GaussRuleCache rules_;
 };

@@ -191,9 +191,10 @@ std::vector<SpaceRequestSize> g1_4split_requested_sizes(const ConfigNode& domain
   }
 }
 
-SpacePtr make_g1_4split_space(const ConfigNode& domain, const ConfigNode& space, int level) {
+SpacePtr make_g1_4split_space(const ConfigNode& domain, const ConfigNode& space, int level, SpaceExtent extent) {
   space.check_keys({"type", "degree", "regularity", "blending", "refinement", "geometry_fit"});
   G14Options o;
+  o.extent = extent;
   const ConfigNode dn = space["degree"];
   o.degree = dn.as_int();
   if (o.degree < 3 || o.degree > 10) dn.fail("g1_4split degree must be in 3..10 (got " + std::to_string(o.degree) + ")");

@@ -9,13 +9,17 @@
 /// singular at the edge midpoints. Errors are InputErrors naming the config place (exit code 2).
 
 #include "config/config_node.hpp"
+#include "spaces/builds_on_elements.hpp"
 #include "spaces/space.hpp"
 #include "spaces/space_request_size.hpp"
 
 namespace iga {
 
 /// The space on the domain refined `level` times (nested: gluing and geometry inherited).
-SpacePtr make_g1_4split_space(const ConfigNode& domain, const ConfigNode& space, int level);
+/// With SpaceExtent::skeleton a planar space keeps no extraction (G14Space, BuildsOnElements);
+/// surfaces are built whole.
+SpacePtr make_g1_4split_space(const ConfigNode& domain, const ConfigNode& space, int level,
+                              SpaceExtent extent = SpaceExtent::whole);
 
 /// Levels 0 .. levels - 1 of a surface from a quad file (domain: {type: surface, file: F}),
 /// estimated from the file's counts of faces F, edges E and vertices V, each level splitting every

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cstdio>
 #include <map>
+#include <stdexcept>
+#include <string>
 
 #include "spaces/extracted_evaluator.hpp"
 #include "spaces/g1/boundary_parts.hpp"
@@ -24,6 +26,7 @@ struct G14Core {
   static constexpr bool identity = false;
   const G14Basis& basis;
   const FaceGeometry& geometry;
+  const std::vector<char>& built;
 
   int kind(int /*e*/) const { return 0; }
   int tabulate(int /*kind*/, const std::vector<Point2>& points, int /*order*/, LocalTables& t) const {
@@ -31,7 +34,12 @@ struct G14Core {
     return 2;
   }
   const std::vector<int>& active(int e) const { return basis.face_dofs[e]; }
-  Extraction extraction(int e) const { return extraction_view(basis.extraction[e]); }
+  Extraction extraction(int e) const {
+    if (!built[e])
+      throw std::logic_error("G14Space: element " + std::to_string(e) +
+                             " was not built on (a space built on some elements is asked for another)");
+    return extraction_view(basis.extraction[e]);
+  }
   void map(int e, const QuadratureRule& rule, const LocalTables& t, int /*order*/, std::vector<Jet>& jets) const {
     const int q = rule.size();
     Eigen::Matrix<double, 6, Eigen::Dynamic> X(6, q), Y(6, q);
@@ -219,10 +227,57 @@ G14Space::G14Space(const PatchMesh& coarse, const G14Options& options) : options
       for (const Point2& b : pts) facts.mesh_size = std::max(facts.mesh_size, (a - b).norm());
   }
   set_facts(std::move(facts));
+  built_.assign(topology_->num_faces(), options_.extent == SpaceExtent::whole ? 1 : 0);
+  if (options_.extent == SpaceExtent::skeleton) {  // the numbering stays, the extractions wait
+    pending_ = std::move(basis_.extraction);
+    basis_.extraction.assign(topology_->num_faces(), {});
+    basis_.functions = {};
+  }
+}
+
+G14Space::G14Space(std::shared_ptr<const G14Space> skeleton, const std::vector<int>& elements,
+                   std::vector<Eigen::SparseMatrix<double>> extraction)
+    : options_(skeleton->options_),
+      mesh_(skeleton->mesh_),
+      topology_(skeleton->topology_),
+      skeleton_(skeleton),
+      built_(skeleton->topology_->num_faces(), 0) {
+  const G14Space& skeleton_space = *skeleton;
+  basis_.bspline = skeleton_space.basis_.bspline;
+  basis_.vertex_functions = skeleton_space.basis_.vertex_functions;
+  basis_.edge_functions = skeleton_space.basis_.edge_functions;
+  basis_.face_functions = skeleton_space.basis_.face_functions;
+  basis_.face_dofs = skeleton_space.basis_.face_dofs;
+  basis_.extraction.resize(topology_->num_faces());
+  for (int e : elements) {
+    basis_.extraction[e] = std::move(extraction[e]);
+    built_[e] = 1;
+  }
+  set_facts(skeleton_space.facts());
+}
+
+SpacePtr G14Space::build_on(const std::vector<int>& elements) const {
+  if (!std::is_sorted(elements.begin(), elements.end()) ||
+      std::adjacent_find(elements.begin(), elements.end()) != elements.end() ||
+      (!elements.empty() && (elements.front() < 0 || elements.back() >= topology_->num_faces())))
+    throw std::invalid_argument("G14Space::build_on: the elements must be increasing element numbers");
+  std::vector<Eigen::SparseMatrix<double>> extraction;
+  {
+    const std::lock_guard<std::mutex> lock(pending_mutex_);
+    extraction = std::move(pending_);
+    pending_.clear();
+  }
+  // The level's basis is built from its topology and gluing (nested levels inherit the gluing, not
+  // the basis): the same local problems give the same extractions, bit for bit.
+  if (extraction.empty())
+    extraction = build_g14_basis(*topology_, gluing(), options_.degree, options_.regularity).extraction;
+  // The data every element shares stay with the skeleton (this space's own, or its skeleton).
+  const auto skeleton = skeleton_ ? skeleton_ : std::static_pointer_cast<const G14Space>(shared_from_this());
+  return std::shared_ptr<const G14Space>(new G14Space(skeleton, elements, std::move(extraction)));
 }
 
 std::unique_ptr<Space::Evaluator> G14Space::make_evaluator() const {
-  return std::make_unique<ExtractedEvaluator<G14Core>>(*this, G14Core{basis_, geometry_});
+  return std::make_unique<ExtractedEvaluator<G14Core>>(*this, G14Core{basis_, geometry(), built_});
 }
 
 std::vector<InteriorEdge> quad_interior_edges(const QuadTopology& t) {

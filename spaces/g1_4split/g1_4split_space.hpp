@@ -6,11 +6,13 @@
 /// the same space. Elements are the mesh faces; their polynomial pieces are the 4 sub-squares.
 
 #include <memory>
+#include <mutex>
 
 #include "spaces/g1/patch_mesh.hpp"
 #include "spaces/g1_4split/g1_4split_basis.hpp"
 #include "spaces/g1_4split/g1_4split_geometry.hpp"
 #include "spaces/gauss_rule_cache.hpp"
+#include "spaces/builds_on_elements.hpp"
 #include "spaces/space.hpp"
 
 namespace iga {
@@ -31,12 +33,15 @@ struct G14Options {
   /// false (the default fit): a fair map that is not certified regular gives way to the
   /// least-squares map; true (asked for): it is refused (InputError).
   bool fit_required = false;
+  /// skeleton: no extraction kept (BuildsOnElements; the construction gives the numbering), the
+  /// first build_on takes those of its elements and releases the rest.
+  SpaceExtent extent = SpaceExtent::whole;
 };
 
 /// Every interior edge of `t` once, with the faces' parameters (t runs the same or opposite way).
 std::vector<InteriorEdge> quad_interior_edges(const QuadTopology& t);
 
-class G14Space final : public Space {
+class G14Space final : public Space, public BuildsOnElements {
  public:
   /// Build on `coarse` refined `options.level` times. Throws NotSeparable when the degree is below
   /// the separability degree of some edge, InputError when the geometry is not regular.
@@ -54,18 +59,35 @@ class G14Space final : public Space {
   /// piecewise rational of moderate degree on each half).
   std::vector<InteriorEdge> interior_edges() const override { return quad_interior_edges(*topology_); }
 
+  /// The space with the extractions of `elements` (increasing) only, sharing topology, gluing and
+  /// geometry; its basis has no global `functions` matrix.
+  SpacePtr build_on(const std::vector<int>& elements) const override;
+  bool built_on(int element) const override { return built_[element] != 0; }
+
   const QuadTopology& topology() const { return *topology_; }
   const G14Basis& basis() const { return basis_; }
-  const FaceGeometry& geometry() const { return geometry_; }
-  const std::vector<SplitGluing>& gluing() const { return gluing_; }
+  /// A space built on some elements shares its skeleton's.
+  const FaceGeometry& geometry() const { return skeleton_ ? skeleton_->geometry_ : geometry_; }
+  const std::vector<SplitGluing>& gluing() const { return skeleton_ ? skeleton_->gluing_ : gluing_; }
+  /// (A space built on some elements holds the skeleton itself, never another built space.)
 
  private:
   G14Options options_;
   std::shared_ptr<const PatchMesh> mesh_;  // level mesh: boundary parts and names
+  /// A skeleton's space built on `elements`, with `extraction` the extractions of every face.
+  G14Space(std::shared_ptr<const G14Space> skeleton, const std::vector<int>& elements,
+           std::vector<Eigen::SparseMatrix<double>> extraction);
+
   std::shared_ptr<const QuadTopology> topology_;
-  std::vector<SplitGluing> gluing_;
-  G14Basis basis_;
-  FaceGeometry geometry_;
+  std::vector<SplitGluing> gluing_;  ///< empty in a space built on some elements: its skeleton's
+  G14Basis basis_;                   ///< extraction: empty for the elements not built on
+  FaceGeometry geometry_;            ///< empty in a space built on some elements: its skeleton's
+  std::shared_ptr<const G14Space> skeleton_;  ///< the skeleton of a space built on some elements
+  std::vector<char> built_;
+  /// A skeleton's extractions of every face until the first build_on takes them; later calls
+  /// build the basis again from the level's topology and gluing (the same, bit for bit).
+  mutable std::mutex pending_mutex_;
+  mutable std::vector<Eigen::SparseMatrix<double>> pending_;
   GaussRuleCache rules_{2};  ///< Gauss on each of the 4 sub-squares and on each half of an edge
 };
 

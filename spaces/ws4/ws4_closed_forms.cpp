@@ -25,7 +25,7 @@ void Ws4ClosedForms::compute_double_double(int element, BilinearForm form, Doubl
 
 bool Ws4ClosedForms::double_double(int element, BilinearForm form, DoubleDoubleMatrix& local) const {
   // Every element of a class has the same J (its translated corners) and extraction.
-  cache_.get(space_.shape_classes().of_element[element], form, local,
+  cache_.get(space_.class_of(element), form, local,
              [&](DoubleDoubleMatrix& out) { compute_double_double(element, form, out); });
   return true;
 }
@@ -38,7 +38,7 @@ void Ws4ClosedForms::prepare_double_double(BilinearForm form) const {
 }
 
 const DoubleDoubleMatrix* Ws4ClosedForms::shared_double_double(int element, BilinearForm form) const {
-  return cache_.find(space_.shape_classes().of_element[element], form);
+  return cache_.find(space_.class_of(element), form);
 }
 
 }  // namespace iga::ws4

@@ -115,7 +115,7 @@ BaseMesh mesh_file(const ConfigNode& domain, const ConfigNode& space) {
 
 }  // namespace
 
-SpacePtr make_ws4_space(const ConfigNode& domain, const ConfigNode& space, int level) {
+SpacePtr make_ws4_space(const ConfigNode& domain, const ConfigNode& space, int level, SpaceExtent extent) {
   space.check_keys({"type", "elements"});
   if (space.has("type")) space["type"].as_choice({"ws4"});
   if (level < 0 || level > 12) space.fail("refinement level must be in 0..12 (got " + std::to_string(level) + ")");
@@ -147,7 +147,7 @@ SpacePtr make_ws4_space(const ConfigNode& domain, const ConfigNode& space, int l
     s << ", interior vertices jittered by " << jitter << " (seed " << seed << ")";
     description += s.str();
   }
-  return std::make_shared<const ws4::Ws4Space>(std::move(mesh), description);
+  return std::make_shared<const ws4::Ws4Space>(std::move(mesh), description, extent);
 }
 
 SpaceCatalogueEntry ws4_catalogue_entry() {

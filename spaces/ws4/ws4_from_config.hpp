@@ -23,10 +23,13 @@
 /// default seed 1). Every error is an InputError naming the config place (exit code 2).
 
 #include "config/config_node.hpp"
+#include "spaces/builds_on_elements.hpp"
 #include "spaces/space.hpp"
 
 namespace iga {
 
-SpacePtr make_ws4_space(const ConfigNode& domain, const ConfigNode& space, int level);
+/// With SpaceExtent::skeleton the space is built on no element (Ws4Space, BuildsOnElements).
+SpacePtr make_ws4_space(const ConfigNode& domain, const ConfigNode& space, int level,
+                        SpaceExtent extent = SpaceExtent::whole);
 
 }  // namespace iga

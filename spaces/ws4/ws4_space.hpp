@@ -25,10 +25,16 @@
 /// computed without inversion as C_K = A⁻¹ T_K (exact A⁻¹, T_K from the corners; notes §8.2–8.3,
 /// ws4_hermite_transform.hpp). Both neighbours of an edge use the same normal and points, hence C³
 /// (notes §2.3).
+///
+/// Built on some elements (BuildsOnElements): the skeleton is the triangulation, the vertex frames
+/// and the numbering above (all O(mesh), shared by the spaces built from it); the per-element data
+/// are the shape classes of the built elements and their extractions C_K (a 51 x 51 matrix per
+/// class: one per element on an unstructured mesh, 20.8 kB), computed for the built elements only.
 
 
 #include "spaces/element_core.hpp"
 #include "spaces/gauss_rule_cache.hpp"
+#include "spaces/builds_on_elements.hpp"
 #include "spaces/space.hpp"
 #include "spaces/ws4/triangulation.hpp"
 #include "spaces/ws4/ws4_hermite_transform.hpp"
@@ -38,12 +44,15 @@ namespace iga::ws4 {
 
 /// Its evaluator is a specialisation (ws4_evaluator.hpp): one function and load vectors piece by
 /// piece; make_generic_evaluator evaluates the explicit core through the generic path.
-class Ws4Space final : public Space, public FastEvaluator {
+class Ws4Space final : public Space, public FastEvaluator, public BuildsOnElements {
  public:
   static constexpr int dofs_per_vertex = 10, dofs_per_edge = 6, dofs_per_triangle = 3, dofs_per_element = 51;
 
   /// The space on `mesh`; `description` names the domain in parameters().
-  explicit Ws4Space(Triangulation mesh, std::string description = "triangulation");
+  /// The space on `mesh`; `description` names the domain in parameters(). With
+  /// SpaceExtent::skeleton no element is built on (build_on adds the extractions of some).
+  explicit Ws4Space(Triangulation mesh, std::string description = "triangulation",
+                    SpaceExtent extent = SpaceExtent::whole);
 
   ~Ws4Space() override;
 
@@ -64,14 +73,26 @@ class Ws4Space final : public Space, public FastEvaluator {
   /// C_Kᵀ K_B C_K from the universal reference matrices (ws4_closed_forms.hpp).
   const ClosedForms* closed_forms() const override;
 
-  const Triangulation& mesh() const { return mesh_; }
+  /// The space on the same skeleton with the extractions of `elements` (increasing) only.
+  SpacePtr build_on(const std::vector<int>& elements) const override;
+  bool built_on(int element) const override { return classes_.of_element[element] >= 0; }
+
+  const Triangulation& mesh() const { return *mesh_; }
   /// J = [P1 - P0, P2 - P0] of element t.
   Eigen::Matrix2d jacobian(int element) const;
   /// Extraction C_K of element t (51 x 51, see the file comment), shared by its shape class.
-  const Eigen::MatrixXd& extraction(int element) const { return class_extraction_[classes_.of_element[element]]; }
+  /// std::logic_error for an element not built on.
+  const Eigen::MatrixXd& extraction(int element) const { return class_extraction_[class_of(element)]; }
   /// Elements with equal extraction and element matrices (translates of each other with the same
-  /// frames, edge orientations and scales; ws4_shape_classes.hpp).
+  /// frames, edge orientations and scales; ws4_shape_classes.hpp), among the built elements (the
+  /// others' class is -1).
   const ShapeClasses& shape_classes() const { return classes_; }
+  /// The shape class of a built element; std::logic_error for another.
+  int class_of(int element) const {
+    const int c = classes_.of_element[element];
+    if (c < 0) not_built(element);
+    return c;
+  }
   /// G_K: the 51 DOF functionals of element t applied to the 51 reference B_i (rows: functionals);
   /// C_K G_K = I (an independent route to the extraction, for tests).
   Eigen::MatrixXd element_functionals(int element) const;
@@ -87,17 +108,22 @@ class Ws4Space final : public Space, public FastEvaluator {
 
  private:
   struct Core;
+  /// The space on `skeleton`'s mesh and frames, built on `elements`.
+  Ws4Space(const Ws4Space& skeleton, const std::vector<int>& elements);
   void compute_vertex_frames();
+  /// Shape classes, extractions and closed forms of `elements` (increasing).
+  void build_extractions(const std::vector<int>& elements);
+  [[noreturn]] void not_built(int element) const;
   /// Boundary edges of part `part` of the triangulation (-1: every boundary edge).
   std::vector<BoundaryEdge> part_edges(int part) const;
 
-  Triangulation mesh_;
+  std::shared_ptr<const Triangulation> mesh_;
   std::string description_;
   double mesh_size_ = 0.0, h_ = 1.0;
   ShapeClasses classes_;
   std::vector<Eigen::MatrixXd> class_extraction_;
   std::unique_ptr<const ClosedForms> closed_forms_;
-  std::vector<Eigen::Matrix2d> vertex_frame_;
+  std::shared_ptr<const std::vector<Eigen::Matrix2d>> vertex_frame_;
   GaussRuleCache rules_{4};  ///< edges: Gauss on each quarter (the pieces of the split along it)
 };
 

@@ -10,6 +10,9 @@
 
 #include "solver/rank_part.hpp"
 #include "solver/solve_problem.hpp"
+#include "spaces/closed_forms.hpp"
+#include "spaces/ws4/ws4_space.hpp"
+#include "tests/spaces/ws4/ws4_test_meshes.hpp"
 #include "tests/support/test_support.hpp"
 
 namespace iga {
@@ -81,6 +84,29 @@ domain: {type: multipatch, name: fan3}
 space: {type: g1_4split, degree: 4, blending: linear, refinement: nested}
 )yaml",
                       0, false);
+}
+
+// A mesh-based space built as its skeleton (spaces/builds_on_elements.hpp): each part builds the
+// per-element data of its own elements only, and computes what the part of the whole space does.
+TEST(RankPart, APartOfASkeletonBuildsItsElementsOnlyAndMatchesThePartOfTheWholeSpace) {
+  const ws4::Triangulation mesh = test::perturbed_square(8, 5);
+  const auto whole = std::make_shared<const ws4::Ws4Space>(mesh);
+  const auto skeleton = std::make_shared<const ws4::Ws4Space>(mesh, "triangulation", SpaceExtent::skeleton);
+  for (int rank = 0; rank < 2; ++rank) {
+    const auto from_whole = rank_part(whole, rank, 2), from_skeleton = rank_part(skeleton, rank, 2);
+    EXPECT_EQ(from_skeleton->elements(), from_whole->elements());
+    EXPECT_EQ(from_skeleton->global_dofs(), from_whole->global_dofs());
+    const auto& built = dynamic_cast<const ws4::Ws4Space&>(from_skeleton->whole());
+    // Every element its own class: the part's extractions, not the whole's 128.
+    EXPECT_EQ(built.shape_classes().size(), from_skeleton->num_elements());
+    EXPECT_LT(from_skeleton->num_elements(), whole->num_elements());
+    for (int e = 0; e < from_skeleton->num_elements(); ++e) {
+      Eigen::MatrixXd p, q;
+      ASSERT_TRUE(from_skeleton->closed_forms()->element_matrix(e, BilinearForm::laplace, p));
+      ASSERT_TRUE(from_whole->closed_forms()->element_matrix(e, BilinearForm::laplace, q));
+      EXPECT_EQ(p, q) << e;
+    }
+  }
 }
 
 }  // namespace
