@@ -13,6 +13,7 @@
 #include "spaces/closed_forms.hpp"
 #include "spaces/ws4/ws4_space.hpp"
 #include "tests/spaces/ws4/ws4_test_meshes.hpp"
+#include "tests/support/build_on_checks.hpp"
 
 namespace iga::ws4 {
 namespace {
@@ -25,16 +26,6 @@ std::vector<int> some_elements(int n) {
   return e;
 }
 
-/// u_h = Σ c_i N_i of the active functions at the degree-4 rule of the element, with derivatives.
-FunctionValues evaluated(const Space& space, int element, const Eigen::VectorXd& local) {
-  const std::unique_ptr<Space::Evaluator> ev = space.make_evaluator();
-  PointValues geometry;
-  FunctionValues out;
-  ev->evaluate_element_function(element, *space.quadrature(element, 4), local,
-                                update_values | update_gradients | update_hessians, geometry, out);
-  return out;
-}
-
 TEST(Ws4BuildOn, TheSkeletonHasTheWholeNumberingAndGeometryAndNoElementData) {
   const auto whole = std::make_shared<const Ws4Space>(test::perturbed_square(4, 7));
   const auto skeleton = std::make_shared<const Ws4Space>(test::perturbed_square(4, 7), "triangulation",
@@ -42,25 +33,9 @@ TEST(Ws4BuildOn, TheSkeletonHasTheWholeNumberingAndGeometryAndNoElementData) {
   ASSERT_EQ(skeleton->num_elements(), 32);
   // 10 n_V + 6 n_E + 3 n_T on the 4 x 4 squares: 25 vertices, 56 edges, 32 triangles.
   EXPECT_EQ(skeleton->dimension(), 10 * 25 + 6 * 56 + 3 * 32);
-  EXPECT_EQ(skeleton->dimension(), whole->dimension());
   EXPECT_EQ(skeleton->boundary_edges("all").size(), 16u);
   EXPECT_EQ(skeleton->shape_classes().size(), 0);
-  const std::unique_ptr<Space::Evaluator> a = skeleton->make_evaluator(), b = whole->make_evaluator();
-  std::vector<int> dofs_a, dofs_b;
-  for (int t = 0; t < skeleton->num_elements(); ++t) {
-    EXPECT_FALSE(skeleton->built_on(t));
-    skeleton->element_dofs(t, dofs_a);
-    whole->element_dofs(t, dofs_b);
-    EXPECT_EQ(dofs_a, dofs_b) << t;
-    // The geometry (element centres of the partition, mesh outlines) is the skeleton's.
-    PointValues ga, gb;
-    a->evaluate_geometry(t, *skeleton->quadrature(t, 1), ga);
-    b->evaluate_geometry(t, *whole->quadrature(t, 1), gb);
-    EXPECT_EQ(ga.x, gb.x) << t;
-    EXPECT_EQ(ga.jacobian, gb.jacobian) << t;
-  }
-  PointValues values;
-  EXPECT_THROW(a->evaluate(0, *skeleton->quadrature(0, 4), update_values, values), std::logic_error);
+  test::expect_skeleton_of(*skeleton, *whole);
   Eigen::MatrixXd k;
   EXPECT_THROW(skeleton->closed_forms()->element_matrix(0, BilinearForm::laplace, k), std::logic_error);
 }
@@ -75,24 +50,16 @@ TEST(Ws4BuildOn, BuiltElementsEvaluateBitForBitAsInTheWholeSpaceAndOthersAreRefu
     const std::vector<int> elements = some_elements(whole->num_elements());
     const SpacePtr built = on_elements(skeleton, elements);
     const auto& space = dynamic_cast<const Ws4Space&>(*built);
-    EXPECT_EQ(space.dimension(), whole->dimension());
     EXPECT_LE(space.shape_classes().size(), static_cast<int>(elements.size()));
     if (perturbed) EXPECT_EQ(space.shape_classes().size(), static_cast<int>(elements.size()));
-    Eigen::VectorXd local(Ws4Space::dofs_per_element);
-    for (int m = 0; m < local.size(); ++m) local(m) = std::sin(1.0 + m);
+    test::expect_built_as_whole(space, *whole, elements, 4);
     for (int t = 0; t < whole->num_elements(); ++t) {
       const bool in = std::binary_search(elements.begin(), elements.end(), t);
-      ASSERT_EQ(space.built_on(t), in) << t;
       if (!in) {
         EXPECT_THROW(space.extraction(t), std::logic_error) << t;
-        EXPECT_THROW(evaluated(space, t, local), std::logic_error) << t;
         continue;
       }
       EXPECT_EQ(space.extraction(t), whole->extraction(t)) << t;
-      const FunctionValues u = evaluated(space, t, local), v = evaluated(*whole, t, local);
-      EXPECT_EQ(u.value, v.value) << t;
-      EXPECT_EQ(u.dx, v.dx) << t;
-      EXPECT_EQ(u.dxx, v.dxx) << t;
       for (BilinearForm form : {BilinearForm::laplace, BilinearForm::bilaplace}) {
         DoubleDoubleMatrix p, q;
         ASSERT_TRUE(space.closed_forms()->element_matrix(t, form, p));
