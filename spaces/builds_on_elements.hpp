@@ -33,6 +33,10 @@ class BuildsOnElements {
   virtual bool built_on(int element) const = 0;
 };
 
+/// Throws std::invalid_argument naming `who` unless `elements` are increasing element numbers
+/// below `num_elements` (what build_on takes).
+void check_element_set(const std::vector<int>& elements, int num_elements, const char* who);
+
 /// `space` with the per-element data of `elements` (increasing): `space` itself when it has them
 /// all already (every space without BuildsOnElements), else the space built on those elements.
 SpacePtr on_elements(const SpacePtr& space, const std::vector<int>& elements);

@@ -102,10 +102,7 @@ G1Space::G1Space(const G1Space& skeleton, const std::vector<int>& elements,
 }
 
 SpacePtr G1Space::build_on(const std::vector<int>& elements) const {
-  if (!std::is_sorted(elements.begin(), elements.end()) ||
-      std::adjacent_find(elements.begin(), elements.end()) != elements.end() ||
-      (!elements.empty() && (elements.front() < 0 || elements.back() >= mesh_->num_faces())))
-    throw std::invalid_argument("G1Space::build_on: the elements must be increasing element numbers");
+  check_element_set(elements, mesh_->num_faces(), "G1Space::build_on");
   std::vector<Eigen::SparseMatrix<double>> extraction;
   {
     const std::lock_guard<std::mutex> lock(pending_mutex_);

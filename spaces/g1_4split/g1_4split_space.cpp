@@ -257,10 +257,7 @@ G14Space::G14Space(std::shared_ptr<const G14Space> skeleton, const std::vector<i
 }
 
 SpacePtr G14Space::build_on(const std::vector<int>& elements) const {
-  if (!std::is_sorted(elements.begin(), elements.end()) ||
-      std::adjacent_find(elements.begin(), elements.end()) != elements.end() ||
-      (!elements.empty() && (elements.front() < 0 || elements.back() >= topology_->num_faces())))
-    throw std::invalid_argument("G14Space::build_on: the elements must be increasing element numbers");
+  check_element_set(elements, topology_->num_faces(), "G14Space::build_on");
   std::vector<Eigen::SparseMatrix<double>> extraction;
   {
     const std::lock_guard<std::mutex> lock(pending_mutex_);

@@ -135,10 +135,7 @@ Ws4Space::Ws4Space(const Ws4Space& skeleton, const std::vector<int>& elements)
       mesh_size_(skeleton.mesh_size_),
       h_(skeleton.h_),
       vertex_frame_(skeleton.vertex_frame_) {
-  if (!std::is_sorted(elements.begin(), elements.end()) ||
-      std::adjacent_find(elements.begin(), elements.end()) != elements.end() ||
-      (!elements.empty() && (elements.front() < 0 || elements.back() >= mesh_->num_triangles())))
-    throw std::invalid_argument("Ws4Space::build_on: the elements must be increasing element numbers");
+  check_element_set(elements, mesh_->num_triangles(), "Ws4Space::build_on");
   build_extractions(elements);
   set_facts(skeleton.facts());
 }
