@@ -166,9 +166,10 @@ void PetscDistribution::lay_out(const Constraints& c, const std::function<void(c
 PetscDistribution::Rows PetscDistribution::couplings() const {
   const int n = static_cast<int>(row_.size());
   Rows rows;
-  std::vector<int>& start = rows.start;
   // The unknowns of each of this rank's elements (CSR), and its transpose.
-  std::vector<int> offsets, unknowns, dofs, local;
+  std::vector<int>& offsets = rows.element_offsets;
+  std::vector<int>& unknowns = rows.element_unknowns;
+  std::vector<int> dofs, local;
   offsets.reserve(mine_.size() + 1);
   offsets.push_back(0);
   for (int e : mine_) {
@@ -176,50 +177,58 @@ PetscDistribution::Rows PetscDistribution::couplings() const {
     unknowns.insert(unknowns.end(), local.begin(), local.end());
     offsets.push_back(static_cast<int>(unknowns.size()));
   }
-  std::vector<int> first(n + 1, 0), elements_of(unknowns.size());
+  std::vector<int>& first = rows.row_first;
+  first.assign(n + 1, 0);
+  rows.row_elements.resize(unknowns.size());
   for (int k : unknowns) ++first[k + 1];
   for (int k = 0; k < n; ++k) first[k + 1] += first[k];
   {
     std::vector<int> fill(first.begin(), first.end() - 1);
     for (int i = 0; i + 1 < static_cast<int>(offsets.size()); ++i)
-      for (int p = offsets[i]; p < offsets[i + 1]; ++p) elements_of[fill[unknowns[p]]++] = i;
+      for (int p = offsets[i]; p < offsets[i + 1]; ++p) rows.row_elements[fill[unknowns[p]]++] = i;
   }
   // Row k is the union of its elements' unknowns: marked once each (a row of cubic splines meets
-  // 16 elements of 16 unknowns for its 49 couplings), so only the distinct ones are sorted. Counted
-  // first, then written, so that no array grows by copies.
-  std::vector<int> mark(n, -1);
-  const auto for_each_coupling = [&](int k, auto&& take) {
-    for (int q = first[k]; q < first[k + 1]; ++q)
-      for (int p = offsets[elements_of[q]]; p < offsets[elements_of[q] + 1]; ++p)
-        if (const int u = unknowns[p]; mark[u] != k) {
-          mark[u] = k;
-          take(u);
-        }
-  };
+  // 16 elements of 16 unknowns for its 49 couplings), so only the distinct ones are sorted.
+  rows.mark.assign(n, 0);
+  std::vector<int>& start = rows.start;
   start.assign(n + 1, 0);
-  for (int k = 0; k < n; ++k) for_each_coupling(k, [&](int) { ++start[k + 1]; });
+  for (int k = 0; k < n; ++k) rows.for_each_coupling(k, [&](int) { ++start[k + 1]; });
   for (int k = 0; k < n; ++k) start[k + 1] += start[k];
   // Blocks of about 2^23 entries (32 MB of columns, 64 MB of values: above the size from which the
   // allocator maps memory of its own, so that releasing a block returns it to the system).
   constexpr long long block_entries = 1LL << 23;
   rows.rows_per_block = static_cast<int>(std::clamp<long long>(
       block_entries * n / std::max(1, start[n]), 1, std::max(1, n)));
-  for (int b = 0; b * static_cast<long long>(rows.rows_per_block) < n; ++b) {
-    const int from = b * rows.rows_per_block, to = std::min(n, from + rows.rows_per_block);
-    rows.columns.emplace_back(start[to] - start[from]);
-    rows.values.emplace_back(start[to] - start[from], 0.0);
-  }
-  std::fill(mark.begin(), mark.end(), -1);
-  for (int k = 0; k < n; ++k) {
-    int* columns = rows.columns_of(k);
-    int at = 0;
-    for_each_coupling(k, [&](int u) { columns[at++] = u; });
-    std::sort(columns, columns + at);
-  }
+  const int blocks = static_cast<int>((static_cast<long long>(n) + rows.rows_per_block - 1) / rows.rows_per_block);
+  rows.columns.resize(blocks);
+  rows.values.resize(blocks);
+  rows.filled.assign(blocks, 0);
+  rows.complete_after.assign(blocks, -1);
+  for (int k = 0; k < n; ++k)
+    for (int q = first[k]; q < first[k + 1]; ++q) {
+      int& last = rows.complete_after[k / rows.rows_per_block];
+      last = std::max(last, rows.row_elements[q]);
+    }
+  for (int b = 1; b < blocks; ++b) rows.complete_after[b] = std::max(rows.complete_after[b], rows.complete_after[b - 1]);
   return rows;
 }
 
-void PetscDistribution::preallocation(const Rows& rows, std::vector<PetscInt>& d_nnz, std::vector<PetscInt>& o_nnz) const {
+void PetscDistribution::Rows::fill(int b) {
+  if (filled[b]) return;
+  filled[b] = 1;
+  const int n = static_cast<int>(start.size()) - 1;
+  const int from = b * rows_per_block, to = std::min(n, from + rows_per_block);
+  columns[b].resize(start[to] - start[from]);
+  values[b].assign(start[to] - start[from], 0.0);
+  for (int k = from; k < to; ++k) {
+    int* row = columns_of(k);
+    int at = 0;
+    for_each_coupling(k, [&](int u) { row[at++] = u; });
+    std::sort(row, row + at);
+  }
+}
+
+void PetscDistribution::preallocation(Rows& rows, std::vector<PetscInt>& d_nnz, std::vector<PetscInt>& o_nnz) const {
   // Each rank counts, for every unknown its elements couple, the columns they couple it with, in
   // and outside the diagonal block of the row's owner; the owner adds the counts of all ranks. A
   // row on the cut between ranks is counted by each side, so its count may exceed its columns by
@@ -233,9 +242,8 @@ void PetscDistribution::preallocation(const Rows& rows, std::vector<PetscInt>& d
     const int count = rows.count(k);
     if (count == 0) continue;
     const int owner = static_cast<int>(std::upper_bound(first.begin(), first.end(), row_[k]) - first.begin()) - 1;
-    const int* columns = rows.columns_of(k);
     PetscInt inside = 0;
-    for (int p = 0; p < count; ++p) inside += row_[columns[p]] >= first[owner] && row_[columns[p]] < first[owner + 1];
+    rows.for_each_coupling(k, [&](int u) { inside += row_[u] >= first[owner] && row_[u] < first[owner + 1]; });
     leaf_d[k] = inside;
     leaf_o[k] = count - inside;
   }
@@ -259,7 +267,7 @@ void PetscDistribution::preallocation(const Rows& rows, std::vector<PetscInt>& d
   all_couplings_ = couplings[1];
 }
 
-void PetscDistribution::set_rows(Mat A, Rows& rows) const {
+void PetscDistribution::set_rows(Mat A, Rows& rows, int from_block, int to_block) const {
   // The rows this rank owns go straight into PETSc's two blocks (the columns in and outside the
   // rank's diagonal block; before the first assembly the outer block numbers its columns
   // globally) with MAT_SORTED_FULL: each row given once, its columns increasing, is copied rather
@@ -286,8 +294,10 @@ void PetscDistribution::set_rows(Mat A, Rows& rows) const {
                 "MatSetValues");
   };
   const int n = static_cast<int>(row_.size());
-  for (int k = 0; k < n; ++k) {
-    if (k > 0 && k % rows.rows_per_block == 0) {  // the previous block is in PETSc
+  for (int b = from_block; b < to_block; ++b) rows.fill(b);  // (a block no element touched: its rows are empty)
+  const int end = static_cast<int>(std::min<long long>(n, static_cast<long long>(to_block) * rows.rows_per_block));
+  for (int k = from_block * rows.rows_per_block; k < end; ++k) {
+    if (k % rows.rows_per_block == 0 && k / rows.rows_per_block > from_block) {  // the previous block is in PETSc
       std::vector<int>().swap(rows.columns[k / rows.rows_per_block - 1]);
       std::vector<double>().swap(rows.values[k / rows.rows_per_block - 1]);
     }
@@ -317,7 +327,10 @@ void PetscDistribution::set_rows(Mat A, Rows& rows) const {
     put(inner, local, in);
     put(outer, local, out);
   }
-  rows = Rows();
+  if (to_block > from_block) {
+    std::vector<int>().swap(rows.columns[to_block - 1]);
+    std::vector<double>().swap(rows.values[to_block - 1]);
+  }
   for (Mat block : {inner, outer})
     if (block) petsc_check(MatSetOption(block, MAT_SORTED_FULL, PETSC_FALSE), "MatSetOption");
 }
@@ -343,6 +356,7 @@ void PetscDistribution::matrix(const Formulation& f, const std::vector<FormTerm>
   petsc_check(MatSetOption(A, MAT_SYMMETRIC, PETSC_TRUE), "MatSetOption");
   petsc_check(MatSetOption(A, MAT_SPD, PETSC_TRUE), "MatSetOption");
   on_every_rank([&] {
+    int handed_over = 0;  // blocks of rows in PETSc
     std::vector<int> dofs, local, order;
     Eigen::MatrixXd T;
     Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> K;
@@ -352,6 +366,10 @@ void PetscDistribution::matrix(const Formulation& f, const std::vector<FormTerm>
       const int m = static_cast<int>(order.size());
       for (int a = 0; a < m; ++a) {
         const int row = unknowns[order[a]];
+        const int block = row / couplings_of_rows.rows_per_block;
+        if (block < handed_over)
+          throw std::logic_error("PetscDistribution: an element matrix after its rows went to PETSc");
+        couplings_of_rows.fill(block);
         const int* columns = couplings_of_rows.columns_of(row);
         double* values = couplings_of_rows.values_of(row);
         const int end = couplings_of_rows.count(row);
@@ -396,9 +414,20 @@ void PetscDistribution::matrix(const Formulation& f, const std::vector<FormTerm>
         std::sort(order.begin(), order.end(), [&](int a, int b) { return local[a] < local[b]; });
       add_rows(local);
     };
-    for_each_element_matrix(space_, mine_, terms, f.quadrature_degree(), add_element, components_);
+    // The extra terms (a shell's Nitsche terms) first: the blocks of rows go to PETSc while the
+    // elements' loop runs, each once the last element adding to it is done.
     f.for_each_extra_element_matrix(mine_, add_element);
-    set_rows(A, couplings_of_rows);
+    const auto add_and_hand_over = [&](int e, const std::vector<int>& element_dofs, const DoubleDoubleMatrix& A_e) {
+      add_element(e, element_dofs, A_e);
+      const int position = static_cast<int>(std::lower_bound(mine_.begin(), mine_.end(), e) - mine_.begin());
+      int complete = handed_over;
+      while (complete < couplings_of_rows.blocks() && couplings_of_rows.complete_after[complete] <= position) ++complete;
+      if (complete > handed_over) set_rows(A, couplings_of_rows, handed_over, complete);
+      handed_over = complete;
+    };
+    for_each_element_matrix(space_, mine_, terms, f.quadrature_degree(), add_and_hand_over, components_);
+    set_rows(A, couplings_of_rows, handed_over, couplings_of_rows.blocks());
+    couplings_of_rows = Rows();
   });
   petsc_check(MatAssemblyBegin(A, MAT_FINAL_ASSEMBLY), "MatAssemblyBegin");
   petsc_check(MatAssemblyEnd(A, MAT_FINAL_ASSEMBLY), "MatAssemblyEnd");

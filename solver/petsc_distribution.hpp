@@ -96,25 +96,51 @@ class PetscDistribution {
   /// The couplings of this rank's own elements, row by row, with a value each: for each free
   /// unknown of `space` (its position k in constraints().free), the unknowns its row couples,
   /// increasing (none for the unknowns no own element touches). Kept in blocks of whole rows of
-  /// some tens of megabytes, each released once PETSc has its rows: the rows and PETSc's matrix
-  /// are not both whole in memory.
+  /// some tens of megabytes, each filled when the first element adds to it and released once
+  /// PETSc has its rows (the element loop runs in the order of the rows, near enough): the rows
+  /// and PETSc's matrix are never both whole in memory.
   struct Rows {
     std::vector<int> start;  ///< row k: entries start[k] .. start[k + 1] − 1
     int rows_per_block = 1;
-    std::vector<std::vector<int>> columns;    ///< per block, from the entry of its first row
+    std::vector<std::vector<int>> columns;    ///< per block, from the entry of its first row; empty until filled
     std::vector<std::vector<double>> values;  ///< aligned with columns
+    std::vector<char> filled;                 ///< per block
+    /// Per block: the position in mine_ of the last element adding to its rows, as prefix maxima
+    /// (blocks complete in order).
+    std::vector<int> complete_after;
+    /// What a block's columns are made from: the unknowns of each own element (CSR, positions
+    /// in mine_) and, per row, the elements that touch it.
+    std::vector<int> element_offsets, element_unknowns, row_first, row_elements;
+    std::vector<int> mark;  ///< scratch of for_each_coupling: the visit that last took each unknown
+    int visits = 0;
+
+    int blocks() const { return static_cast<int>(columns.size()); }
     int count(int k) const { return start[k + 1] - start[k]; }
+    /// Fills block b (its columns, its values zero) if it is not yet.
+    void fill(int b);
     int* columns_of(int k) { return columns[k / rows_per_block].data() + offset(k); }
     const int* columns_of(int k) const { return columns[k / rows_per_block].data() + offset(k); }
     double* values_of(int k) { return values[k / rows_per_block].data() + offset(k); }
     int offset(int k) const { return start[k] - start[(k / rows_per_block) * rows_per_block]; }
+    /// take(u) for each distinct unknown u that row k couples (in no particular order).
+    template <class Take>
+    void for_each_coupling(int k, Take&& take) {
+      const int visit = ++visits;  // a new stamp per visit: no reset between passes
+      for (int q = row_first[k]; q < row_first[k + 1]; ++q)
+        for (int p = element_offsets[row_elements[q]]; p < element_offsets[row_elements[q] + 1]; ++p)
+          if (const int u = element_unknowns[p]; mark[u] != visit) {
+            mark[u] = visit;
+            take(u);
+          }
+    }
   };
   Rows couplings() const;
-  /// The rows with their values into `A` (preallocated, not yet assembled); releases them.
-  void set_rows(Mat A, Rows& rows) const;
+  /// The rows of blocks from_block … to_block − 1 with their values into `A` (preallocated, not
+  /// yet assembled); releases each block once it is in.
+  void set_rows(Mat A, Rows& rows, int from_block, int to_block) const;
   /// Nonzeros of the rows this rank owns in and outside its diagonal block, from every rank's
   /// couplings (collective).
-  void preallocation(const Rows& rows, std::vector<PetscInt>& d_nnz, std::vector<PetscInt>& o_nnz) const;
+  void preallocation(Rows& rows, std::vector<PetscInt>& d_nnz, std::vector<PetscInt>& o_nnz) const;
 
   const Space& space_;
   const int rank_, ranks_;
