@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <initializer_list>
 
 #include "solver/eigen_table.hpp"
 #include "tests/support/test_support.hpp"
@@ -31,16 +32,33 @@ double last_rate(const std::vector<EigenRow>& rows, int index) {
   throw std::logic_error("no such index");
 }
 
+/// The first six eigenvalues of the unit square's Dirichlet Laplacian, π²(m² + n²), and of its
+/// simply supported plate, π⁴(m² + n²)², for the `problem:` line of a study.
+constexpr const char* laplacian_on_the_square =
+    R"yaml(problem: {pde: poisson, boundary: {all: dirichlet}, eigen: {count: 6, exact_eigenvalues: "pi^2*(m^2 + n^2)"}})yaml";
+constexpr const char* plate_on_the_square =
+    R"yaml(problem: {pde: biharmonic, boundary: {all: simply_supported}, eigen: {count: 6, exact_eigenvalues: "pi^4*(m^2 + n^2)^2"}})yaml";
+
+/// The eigen rows of `problem` with the rest of a config (domain, space, refinement).
+std::vector<EigenRow> study_rows(const char* problem, const std::string& rest) {
+  return study_rows(std::string(problem) + "\n" + rest);
+}
+
+/// Every eigenvalue of `indices` converges at the last level with rate `rate` ± `tolerance`.
+void expect_last_rates(const std::vector<EigenRow>& rows, std::initializer_list<int> indices, double rate,
+                       double tolerance) {
+  for (int index : indices) EXPECT_NEAR(last_rate(rows, index), rate, tolerance) << "index " << index;
+}
+
 TEST(EigenRates, LaplacianOnCubicBSplinesConvergesLikeHToThe6) {
-  const std::vector<EigenRow> rows = study_rows(R"yaml(
-problem: {pde: poisson, boundary: {all: dirichlet}, eigen: {count: 6, exact_eigenvalues: "pi^2*(m^2 + n^2)"}}
+  const std::vector<EigenRow> rows = study_rows(laplacian_on_the_square, R"yaml(
 domain: {type: rectangle, min: [0, 0], max: [1, 1]}
 space: {type: bspline, degree: 3, elements: [4, 4]}
 refinement: {levels: 4}
 )yaml");
   // From 16 x 16 to 32 x 32 elements, measured 6.02 (λ₁), 6.08 (λ₂, λ₄), 6.17 (λ₅): the rates of
   // the higher eigenvalues approach 2p from above (6.53, 6.17, 6.05 for λ₅ on 8, 16, 32 elements).
-  for (int index : {1, 2, 4}) EXPECT_NEAR(last_rate(rows, index), 6.0, 0.1) << "index " << index;
+  expect_last_rates(rows, {1, 2, 4}, 6.0, 0.1);
   EXPECT_NEAR(last_rate(rows, 5), 6.0, 0.25);
   EXPECT_LT(rows[rows.size() - 6].relative_error.value(), 4e-11);  // λ₁ on 32 x 32: 2.97e-11
   // λ₂ = λ₃ (m, n = 1, 2 and 2, 1) to round-off: the square's symmetry is kept by the space.
@@ -48,8 +66,7 @@ refinement: {levels: 4}
 }
 
 TEST(EigenRates, LaplacianOnWs4ConvergesLikeHToThe8) {
-  const std::vector<EigenRow> rows = study_rows(R"yaml(
-problem: {pde: poisson, boundary: {all: dirichlet}, eigen: {count: 6, exact_eigenvalues: "pi^2*(m^2 + n^2)"}}
+  const std::vector<EigenRow> rows = study_rows(laplacian_on_the_square, R"yaml(
 domain: {type: unit_square}
 space: {type: ws4, elements: 2}
 refinement: {levels: 3}
@@ -65,14 +82,13 @@ refinement: {levels: 3}
 }
 
 TEST(EigenRates, SimplySupportedPlateConvergesLikeHToThe4) {
-  const std::vector<EigenRow> rows = study_rows(R"yaml(
-problem: {pde: biharmonic, boundary: {all: simply_supported}, eigen: {count: 6, exact_eigenvalues: "pi^4*(m^2 + n^2)^2"}}
+  const std::vector<EigenRow> rows = study_rows(plate_on_the_square, R"yaml(
 domain: {type: rectangle, min: [0, 0], max: [1, 1]}
 space: {type: bspline, degree: 3, elements: [4, 4]}
 refinement: {levels: 4}
 )yaml");
   // 2(p − 1) = 4 (measured 4.01 for λ₁ from 16 x 16 to 32 x 32 elements).
-  for (int index : {1, 2, 4}) EXPECT_NEAR(last_rate(rows, index), 4.0, 0.1) << "index " << index;
+  expect_last_rates(rows, {1, 2, 4}, 4.0, 0.1);
 }
 
 TEST(EigenRates, LaplacianOnATMeshConvergesLikeHToThe6) {
@@ -80,33 +96,30 @@ TEST(EigenRates, LaplacianOnATMeshConvergesLikeHToThe6) {
   // 4 x 4 grid split once more (T-junctions along x = 0.5 and y = 0.5 at every level). From level 2
   // to 3 (1924 to 7428 DOFs) measured 5.98, 5.96, 5.96, 5.94, 5.88, 5.88; the higher eigenvalues
   // approach 2p = 6 from below (λ₅: 5.04, 5.60, 5.88, 5.97 on levels 1 to 4).
-  const std::vector<EigenRow> rows = study_rows(R"yaml(
-problem: {pde: poisson, boundary: {all: dirichlet}, eigen: {count: 6, exact_eigenvalues: "pi^2*(m^2 + n^2)"}}
+  const std::vector<EigenRow> rows = study_rows(laplacian_on_the_square, R"yaml(
 domain: {type: rectangle, min: [0, 0], max: [1, 1]}
 space: {type: tmesh, section: poly, n: 3, regularity: 1, elements: [4, 4], refine: [[0, 0, 0.5, 0.5]]}
 refinement: {levels: 4}
 )yaml");
-  for (int index = 1; index <= 6; ++index) EXPECT_NEAR(last_rate(rows, index), 6.0, 0.2) << "index " << index;
+  expect_last_rates(rows, {1, 2, 3, 4, 5, 6}, 6.0, 0.2);
 }
 
 TEST(EigenRates, SimplySupportedPlateOnATMeshConvergesLikeHToThe4) {
   // configs/eigen-plate-simply-supported-tmesh.yaml, the same C1 T-mesh space: 2(p − 1) = 4.
   // From level 1 to 2 (516 to 1924 DOFs) measured 4.03 (λ₁), 4.02, 4.02, 4.01, 3.99, 3.99.
-  const std::vector<EigenRow> rows = study_rows(R"yaml(
-problem: {pde: biharmonic, boundary: {all: simply_supported}, eigen: {count: 6, exact_eigenvalues: "pi^4*(m^2 + n^2)^2"}}
+  const std::vector<EigenRow> rows = study_rows(plate_on_the_square, R"yaml(
 domain: {type: rectangle, min: [0, 0], max: [1, 1]}
 space: {type: tmesh, section: poly, n: 3, regularity: 1, elements: [4, 4], refine: [[0, 0, 0.5, 0.5]]}
 refinement: {levels: 3}
 )yaml");
-  for (int index = 1; index <= 6; ++index) EXPECT_NEAR(last_rate(rows, index), 4.0, 0.1) << "index " << index;
+  expect_last_rates(rows, {1, 2, 3, 4, 5, 6}, 4.0, 0.1);
 }
 
 TEST(EigenRates, G1MultipatchReachesTwoPAndTwoPMinusTwo) {
   // configs/eigen-multipatch-g1.yaml: quintic G1 on the 3-patch square (valence-3 vertex). The
   // Laplacian's rates approach 2p = 10 from above: from level 2 to 3 (846 to 3222 DOFs) measured
   // 10.65, 10.50, 10.73, 10.54, 10.25 for λ₂ … λ₆ (λ₁ is at 1e-15, round-off, there).
-  const std::vector<EigenRow> laplacian = study_rows(R"yaml(
-problem: {pde: poisson, boundary: {all: dirichlet}, eigen: {count: 6, exact_eigenvalues: "pi^2*(m^2 + n^2)"}}
+  const std::vector<EigenRow> laplacian = study_rows(laplacian_on_the_square, R"yaml(
 domain: {type: multipatch, name: 3p_square}
 space: {type: g1, degree: 5}
 refinement: {levels: 4}
@@ -118,46 +131,42 @@ refinement: {levels: 4}
   EXPECT_NEAR(last_rate(laplacian, 6), 10.0, 0.3);
   // The simply supported plate, 2(p − 1) = 8: from level 3 to 4 (3222 to 12582 DOFs) measured
   // 7.84, 8.10, 8.27, 8.28, 8.26 for λ₂ … λ₆ (λ₁ reaches the plates' round-off floor, 1.4e-12).
-  const std::vector<EigenRow> plate = study_rows(R"yaml(
-problem: {pde: biharmonic, boundary: {all: simply_supported}, eigen: {count: 6, exact_eigenvalues: "pi^4*(m^2 + n^2)^2"}}
+  const std::vector<EigenRow> plate = study_rows(plate_on_the_square, R"yaml(
 domain: {type: multipatch, name: 3p_square}
 space: {type: g1, degree: 5}
 refinement: {levels: 5}
 )yaml");
-  for (int index = 2; index <= 6; ++index) EXPECT_NEAR(last_rate(plate, index), 8.0, 0.3) << "index " << index;
+  expect_last_rates(plate, {2, 3, 4, 5, 6}, 8.0, 0.3);
 }
 
 TEST(EigenRates, FourSplitG1ReachesTwoPAndTwoPMinusTwo) {
   // configs/eigen-multipatch-g1_4split.yaml: quartic 4-split G1 on the 2 x 2 square. From level 1
   // to 2 (676 to 2500 DOFs) measured 8.08, 8.10, 8.10, 8.10, 8.20, 8.20 for the Laplacian (2p = 8)
   // and 6.00, 5.99, 5.99, 6.00, 5.97, 5.97 for the simply supported plate (2(p − 1) = 6).
-  const std::vector<EigenRow> laplacian = study_rows(R"yaml(
-problem: {pde: poisson, boundary: {all: dirichlet}, eigen: {count: 6, exact_eigenvalues: "pi^2*(m^2 + n^2)"}}
+  const std::vector<EigenRow> laplacian = study_rows(laplacian_on_the_square, R"yaml(
 domain: {type: multipatch, name: grid2x2}
 space: {type: g1_4split, degree: 4}
 refinement: {levels: 3}
 )yaml");
-  for (int index = 1; index <= 6; ++index) EXPECT_NEAR(last_rate(laplacian, index), 8.0, 0.3) << "index " << index;
-  const std::vector<EigenRow> plate = study_rows(R"yaml(
-problem: {pde: biharmonic, boundary: {all: simply_supported}, eigen: {count: 6, exact_eigenvalues: "pi^4*(m^2 + n^2)^2"}}
+  expect_last_rates(laplacian, {1, 2, 3, 4, 5, 6}, 8.0, 0.3);
+  const std::vector<EigenRow> plate = study_rows(plate_on_the_square, R"yaml(
 domain: {type: multipatch, name: grid2x2}
 space: {type: g1_4split, degree: 4}
 refinement: {levels: 3}
 )yaml");
-  for (int index = 1; index <= 6; ++index) EXPECT_NEAR(last_rate(plate, index), 6.0, 0.1) << "index " << index;
+  expect_last_rates(plate, {1, 2, 3, 4, 5, 6}, 6.0, 0.1);
 }
 
 TEST(EigenRates, SimplySupportedPlateOnWs4ConvergesLikeHToThe6) {
   // configs/eigen-plate-simply-supported-ws4.yaml: WS4 is quartic and C3 (C1 is what a plate
   // needs): 2(p − 1) = 6. From 4 to 8 elements a side (682 to 2442 DOFs) measured 6.04, 6.26,
   // 6.26, 6.43, 6.10, 6.04 for λ₁ … λ₆; λ₄ approaches 6 from above (6.64, 6.43, 6.17 on levels 1–3).
-  const std::vector<EigenRow> rows = study_rows(R"yaml(
-problem: {pde: biharmonic, boundary: {all: simply_supported}, eigen: {count: 6, exact_eigenvalues: "pi^4*(m^2 + n^2)^2"}}
+  const std::vector<EigenRow> rows = study_rows(plate_on_the_square, R"yaml(
 domain: {type: unit_square}
 space: {type: ws4, elements: 2}
 refinement: {levels: 3}
 )yaml");
-  for (int index : {1, 2, 3, 5, 6}) EXPECT_NEAR(last_rate(rows, index), 6.0, 0.3) << "index " << index;
+  expect_last_rates(rows, {1, 2, 3, 5, 6}, 6.0, 0.3);
   EXPECT_GT(last_rate(rows, 4), 6.0 - 0.3);
   EXPECT_LT(last_rate(rows, 4), 6.5);
 }
