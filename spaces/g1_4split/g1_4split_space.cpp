@@ -15,6 +15,7 @@
 #include "spaces/g1_4split/fair_geometry.hpp"
 #include "spaces/g1_4split/g14_local_problems.hpp"
 #include "spaces/g1_4split/line_gluing.hpp"
+#include "spaces/g1_4split/nested_geometry.hpp"
 
 namespace iga {
 
@@ -27,9 +28,26 @@ struct G14Core {
   using Jet = GeometryJet;
   static constexpr bool identity = false;
   const G14Basis& basis;
-  const FaceGeometry& geometry;
+  /// The faces' maps: every face's (`every`), else the built faces' (`built`, by slot) and the
+  /// others from the level-0 map (`nested`, along `path`).
+  const FaceGeometry* every;
+  const FaceGeometry* built;
+  const NestedGeometry* nested;
   const QuadTopology& topology;
   const std::vector<int>& slot;
+  mutable NestedGeometry::Path path{};
+
+  void coefficients(int e, const Eigen::VectorXd*& x, const Eigen::VectorXd*& y) const {
+    if (every) {
+      x = &every->x[e];
+      y = &every->y[e];
+    } else if (built && slot[e] >= 0) {
+      x = &built->x[slot[e]];
+      y = &built->y[slot[e]];
+    } else {
+      nested->face(e, path, x, y);
+    }
+  }
 
   int kind(int /*e*/) const { return 0; }
   int tabulate(int /*kind*/, const std::vector<Point2>& points, int /*order*/, LocalTables& t) const {
@@ -51,9 +69,11 @@ struct G14Core {
   void map(int e, const QuadratureRule& rule, const LocalTables& t, int /*order*/, std::vector<Jet>& jets) const {
     const int q = rule.size();
     Eigen::Matrix<double, 6, Eigen::Dynamic> X(6, q), Y(6, q);
+    const Eigen::VectorXd *x, *y;
+    coefficients(e, x, y);
     for (int d = 0; d < 6; ++d) {
-      X.row(d) = geometry.x[e].transpose() * t[d];
-      Y.row(d) = geometry.y[e].transpose() * t[d];
+      X.row(d) = x->transpose() * t[d];
+      Y.row(d) = y->transpose() * t[d];
     }
     jets.resize(q);
     for (int p = 0; p < q; ++p) {
@@ -173,12 +193,14 @@ G14Space::G14Space(const PatchMesh& coarse, const G14Options& options) : options
       fit_name = "least_squares (the fair map is not certified regular)";
     }
   }
+  // A skeleton of a nested level keeps the level-0 map only (nested_geometry.hpp).
+  const bool lazy = options.nested && options.level > 0 && options.extent == SpaceExtent::skeleton;
   for (int l = 0; l < options.level; ++l) {
     PatchMesh finer = mesh.refined();
     QuadTopology fine = quad_topology(finer);
     if (options.nested) {
       gluing_ = inherited_gluing(topology, gluing_, fine);
-      geometry_ = subdivide_geometry(basis_.bspline, geometry_);
+      if (!lazy) geometry_ = subdivide_geometry(basis_.bspline, geometry_);
       if (l + 1 < options.level || options.extent == SpaceExtent::skeleton) {
         // A level on the way, or a skeleton: its errors (NotSeparable) and counts, no basis kept
         // (the same lifts as build_g14_basis, one vertex at a time).
@@ -206,7 +228,33 @@ G14Space::G14Space(const PatchMesh& coarse, const G14Options& options) : options
     mesh = std::move(finer);
     topology = std::move(fine);
   }
-  check_geometry(basis_.bspline, geometry_, mesh.name(), fit == GeometryFit::fair);
+  if (lazy) {
+    nested_ = std::make_shared<const NestedGeometry>(basis_.bspline, std::move(geometry_), options.level);
+    geometry_ = {};
+  }
+  // Every face's map, in order (check_geometry's first failing face), and the mesh size.
+  double mesh_size = 0.0;
+  {
+    NestedGeometry::Path path;
+    for (int f = 0; f < topology.num_faces(); ++f) {
+      const Eigen::VectorXd *x = lazy ? nullptr : &geometry_.x[f], *y = lazy ? nullptr : &geometry_.y[f];
+      if (lazy) nested_->face(f, path, x, y);
+      check_face_geometry(basis_.bspline, *x, *y, f, mesh.name(), fit == GeometryFit::fair);
+    }
+    // Diameter: largest distance between samples of the face boundary (after the check, as before).
+    for (int f = 0; f < topology.num_faces(); ++f) {
+      const Eigen::VectorXd *x = lazy ? nullptr : &geometry_.x[f], *y = lazy ? nullptr : &geometry_.y[f];
+      if (lazy) nested_->face(f, path, x, y);
+      std::vector<Point2> pts;
+      for (int j = 0; j < 4; ++j)
+        for (int s = 0; s < 4; ++s) {
+          const Point2 uv = reference_edge_point(CellShape::quadrilateral, j, s / 4.0);
+          pts.emplace_back(face_jet(basis_.bspline, *x, uv)(0), face_jet(basis_.bspline, *y, uv)(0));
+        }
+      for (const Point2& a : pts)
+        for (const Point2& b : pts) mesh_size = std::max(mesh_size, (a - b).norm());
+    }
+  }
   mesh_ = std::make_shared<const PatchMesh>(std::move(mesh));
   topology_ = std::make_shared<const QuadTopology>(std::move(topology));
   SpaceFacts facts;
@@ -236,17 +284,7 @@ G14Space::G14Space(const PatchMesh& coarse, const G14Options& options) : options
   facts.continuity = 1;
   facts.gradient_jump_samples = 4 * options_.degree + 8;
   set_boundary_parts(*mesh_, facts);
-  // Diameter: largest distance between samples of the face boundary.
-  for (int f = 0; f < topology_->num_faces(); ++f) {
-    std::vector<Point2> pts;
-    for (int j = 0; j < 4; ++j)
-      for (int s = 0; s < 4; ++s) {
-        const Point2 uv = reference_edge_point(CellShape::quadrilateral, j, s / 4.0);
-        pts.emplace_back(face_jet(basis_.bspline, geometry_.x[f], uv)(0), face_jet(basis_.bspline, geometry_.y[f], uv)(0));
-      }
-    for (const Point2& a : pts)
-      for (const Point2& b : pts) facts.mesh_size = std::max(facts.mesh_size, (a - b).norm());
-  }
+  facts.mesh_size = mesh_size;
   set_facts(std::move(facts));
   if (options_.extent == SpaceExtent::skeleton) {  // the numbering stays, the local problems wait
     basis_.functions = {};
@@ -265,6 +303,15 @@ G14Space::G14Space(std::shared_ptr<const G14Space> skeleton, const std::vector<i
       topology_(skeleton->topology_),
       skeleton_(skeleton),
       slot_(skeleton->topology_->num_faces(), -1) {
+  if (skeleton->nested_) {  // the built faces' maps from the level-0 map, in order
+    NestedGeometry::Path path;
+    for (int f : elements) {
+      const Eigen::VectorXd *x, *y;
+      skeleton->nested_->face(f, path, x, y);
+      geometry_.x.push_back(*x);
+      geometry_.y.push_back(*y);
+    }
+  }
   const QuadTopology& t = *topology_;
   basis_.bspline = skeleton->basis_.bspline;
   basis_.numbering = skeleton->basis_.numbering;
@@ -327,6 +374,25 @@ G14Space::G14Space(std::shared_ptr<const G14Space> skeleton, const std::vector<i
   set_facts(skeleton->facts());
 }
 
+const FaceGeometry* G14Space::every_face_geometry() const {
+  const G14Space& owner = skeleton_ ? *skeleton_ : *this;
+  return owner.nested_ ? nullptr : &owner.geometry_;
+}
+
+void G14Space::face_geometry(int f, Eigen::VectorXd& x, Eigen::VectorXd& y) const {
+  const G14Space& owner = skeleton_ ? *skeleton_ : *this;
+  if (!owner.nested_) {
+    x = owner.geometry_.x[f];
+    y = owner.geometry_.y[f];
+    return;
+  }
+  NestedGeometry::Path path;
+  const Eigen::VectorXd *px, *py;
+  owner.nested_->face(f, path, px, py);
+  x = *px;
+  y = *py;
+}
+
 const Eigen::SparseMatrix<double>& G14Space::extraction(int element) const {
   if (slot_[element] < 0)
     throw std::logic_error("G14Space: element " + std::to_string(element) + " was not built on");
@@ -346,7 +412,8 @@ SpacePtr G14Space::build_on(const std::vector<int>& elements) const {
 }
 
 std::unique_ptr<Space::Evaluator> G14Space::make_evaluator() const {
-  return std::make_unique<ExtractedEvaluator<G14Core>>(*this, G14Core{basis_, geometry(), *topology_, slot_});
+  return std::make_unique<ExtractedEvaluator<G14Core>>(*this, G14Core{basis_, every_face_geometry(), skeleton_ && skeleton_->nested_ ? &geometry_ : nullptr,
+                              skeleton_ ? skeleton_->nested_.get() : nested_.get(), *topology_, slot_});
 }
 
 std::vector<InteriorEdge> quad_interior_edges(const QuadTopology& t) {

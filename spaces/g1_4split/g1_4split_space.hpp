@@ -10,6 +10,7 @@
 #include "spaces/g1/patch_mesh.hpp"
 #include "spaces/g1_4split/g1_4split_basis.hpp"
 #include "spaces/g1_4split/g1_4split_geometry.hpp"
+#include "spaces/g1_4split/nested_geometry.hpp"
 #include "spaces/gauss_rule_cache.hpp"
 #include "spaces/builds_on_elements.hpp"
 #include "spaces/space.hpp"
@@ -70,8 +71,11 @@ class G14Space final : public Space, public BuildsOnElements {
   /// Face `element`'s extraction, (m+1)² x its functions; std::logic_error when not built on.
   const Eigen::SparseMatrix<double>& extraction(int element) const;
   const G14Basis& basis() const { return basis_; }
-  /// A space built on some elements shares its skeleton's.
+  /// Every face's map (a whole space; a space built on some elements shares its skeleton's). A
+  /// skeleton of a nested level keeps the level-0 map only: empty (face_geometry).
   const FaceGeometry& geometry() const { return skeleton_ ? skeleton_->geometry_ : geometry_; }
+  /// Face f's map, whatever the space keeps.
+  void face_geometry(int f, Eigen::VectorXd& x, Eigen::VectorXd& y) const;
   const std::vector<SplitGluing>& gluing() const { return skeleton_ ? skeleton_->gluing_ : gluing_; }
   /// (A space built on some elements holds the skeleton itself, never another built space.)
 
@@ -86,7 +90,12 @@ class G14Space final : public Space, public BuildsOnElements {
   /// Whole: everything. Skeleton: bspline and numbering. Built on some faces: and their
   /// extractions, in the order of the faces.
   G14Basis basis_;
-  FaceGeometry geometry_;            ///< empty in a space built on some elements: its skeleton's
+  /// Whole: every face's map. Skeleton of a nested level: empty (nested_). Built on some faces:
+  /// empty (its skeleton's), or, when the skeleton has nested_, the built faces' (by slot).
+  FaceGeometry geometry_;
+  std::shared_ptr<const NestedGeometry> nested_;  ///< a skeleton's level-0 map of a nested level
+  /// geometry_ of the space that has every face's, or null.
+  const FaceGeometry* every_face_geometry() const;
   std::shared_ptr<const G14Space> skeleton_;  ///< the skeleton of a space built on some elements
   /// Per face: its extraction's index in basis_.extraction, or -1 (not built on).
   std::vector<int> slot_;

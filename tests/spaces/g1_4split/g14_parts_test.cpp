@@ -97,6 +97,13 @@ TEST(G14Parts, APartHasTheWholeSpacesFunctionsExtractionsAndValuesOnItsFaces) {
     const auto skeleton = std::make_shared<const G14Space>(g14_domain(name), o);
     test::expect_skeleton_of(*skeleton, *whole);
     const int n = skeleton->num_elements();
+    // The skeleton keeps the level-0 map; each face's, subdivided along its path, is the whole's.
+    EXPECT_TRUE(skeleton->geometry().x.empty());
+    for (int f = 0; f < n; ++f) {
+      Eigen::VectorXd x, y;
+      skeleton->face_geometry(f, x, y);
+      EXPECT_TRUE(x == whole->geometry().x[f] && y == whole->geometry().y[f]) << name << " face " << f;
+    }
     // The first third (a rank's block of faces), every fifth face, the last face alone.
     std::vector<int> block, spread, last{n - 1};
     for (int e = 0; e < n / 3; ++e) block.push_back(e);
