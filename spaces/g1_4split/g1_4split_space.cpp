@@ -232,7 +232,8 @@ G14Space::G14Space(const PatchMesh& coarse, const G14Options& options) : options
     nested_ = std::make_shared<const NestedGeometry>(basis_.bspline, std::move(geometry_), options.level);
     geometry_ = {};
   }
-  // Every face's map, in order (check_geometry's first failing face), and the mesh size.
+  // Every face's map, in order (check_geometry's first failing face), and the mesh size: one
+  // visit of each face (a skeleton subdivides each ancestor once).
   double mesh_size = 0.0;
   {
     NestedGeometry::Path path;
@@ -240,11 +241,7 @@ G14Space::G14Space(const PatchMesh& coarse, const G14Options& options) : options
       const Eigen::VectorXd *x = lazy ? nullptr : &geometry_.x[f], *y = lazy ? nullptr : &geometry_.y[f];
       if (lazy) nested_->face(f, path, x, y);
       check_face_geometry(basis_.bspline, *x, *y, f, mesh.name(), fit == GeometryFit::fair);
-    }
-    // Diameter: largest distance between samples of the face boundary (after the check, as before).
-    for (int f = 0; f < topology.num_faces(); ++f) {
-      const Eigen::VectorXd *x = lazy ? nullptr : &geometry_.x[f], *y = lazy ? nullptr : &geometry_.y[f];
-      if (lazy) nested_->face(f, path, x, y);
+      // Diameter: largest distance between samples of the face boundary.
       std::vector<Point2> pts;
       for (int j = 0; j < 4; ++j)
         for (int s = 0; s < 4; ++s) {
@@ -255,7 +252,6 @@ G14Space::G14Space(const PatchMesh& coarse, const G14Options& options) : options
         for (const Point2& b : pts) mesh_size = std::max(mesh_size, (a - b).norm());
     }
   }
-  mesh_ = std::make_shared<const PatchMesh>(std::move(mesh));
   topology_ = std::make_shared<const QuadTopology>(std::move(topology));
   SpaceFacts facts;
   facts.type = "g1_4split";
@@ -265,7 +261,7 @@ G14Space::G14Space(const PatchMesh& coarse, const G14Options& options) : options
                       {"refinement", options_.nested ? "nested" : "rebuild"},
                       {"geometry_fit", fit_name},
                       {"faces", std::to_string(topology_->num_faces())},
-                      {"domain", mesh_->name()}};
+                      {"domain", mesh.name()}};
   if (options_.blending == Blending::lines) {
     // How the gluing was built, and how far the fitted map is from degenerate (docs/spaces/g1_4split.md).
     facts.parameters.emplace_back("gluing_lines", lines.mesh_fans ? "mesh fans, " + std::to_string(lines.lines) +
@@ -283,7 +279,7 @@ G14Space::G14Space(const PatchMesh& coarse, const G14Options& options) : options
   facts.degree = options_.degree;
   facts.continuity = 1;
   facts.gradient_jump_samples = 4 * options_.degree + 8;
-  set_boundary_parts(*mesh_, facts);
+  set_boundary_parts(mesh, facts);  // the level mesh is needed no more: not kept
   facts.mesh_size = mesh_size;
   set_facts(std::move(facts));
   if (options_.extent == SpaceExtent::skeleton) {  // the numbering stays, the local problems wait
@@ -299,7 +295,6 @@ G14Space::G14Space(const PatchMesh& coarse, const G14Options& options) : options
 
 G14Space::G14Space(std::shared_ptr<const G14Space> skeleton, const std::vector<int>& elements)
     : options_(skeleton->options_),
-      mesh_(skeleton->mesh_),
       topology_(skeleton->topology_),
       skeleton_(skeleton),
       slot_(skeleton->topology_->num_faces(), -1) {

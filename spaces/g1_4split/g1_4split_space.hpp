@@ -81,7 +81,6 @@ class G14Space final : public Space, public BuildsOnElements {
 
  private:
   G14Options options_;
-  std::shared_ptr<const PatchMesh> mesh_;  // level mesh: boundary parts and names
   /// A skeleton's space built on `elements` (increasing).
   G14Space(std::shared_ptr<const G14Space> skeleton, const std::vector<int>& elements);
 
