@@ -10,6 +10,7 @@
 #include <memory>
 #include <stdexcept>
 #include <string>
+#include <tuple>
 
 #include "spaces/g1_4split/g14_local_problems.hpp"
 #include "spaces/g1_4split/g1_4split_basis.hpp"
@@ -88,10 +89,13 @@ TEST(G14Parts, TheCountsRefuseADegreeBelowSeparabilityAsTheWholeBasis) {
 }
 
 TEST(G14Parts, APartHasTheWholeSpacesFunctionsExtractionsAndValuesOnItsFaces) {
-  for (const char* name : {"fan5", "fan3"}) {
+  // fan5 with q1 on level 2 (80 faces: gluing and geometry inherited twice), fan3 with the default
+  // `lines` on level 1 (12 faces).
+  for (const auto& [name, blending, level] : {std::tuple("fan5", Blending::q1, 2), std::tuple("fan3", Blending::lines, 1)}) {
     G14Options o;
     o.degree = 5;
-    o.level = 2;  // 80 / 48 faces: gluing and geometry inherited twice
+    o.blending = blending;
+    o.level = level;
     const auto whole = std::make_shared<const G14Space>(g14_domain(name), o);
     o.extent = SpaceExtent::skeleton;
     const auto skeleton = std::make_shared<const G14Space>(g14_domain(name), o);
