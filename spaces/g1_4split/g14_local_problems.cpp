@@ -3,6 +3,7 @@
 #include <Eigen/SVD>
 #include <algorithm>
 #include <cmath>
+#include <set>
 #include <string>
 
 #include "spaces/g1_4split/edge_equations.hpp"
@@ -61,6 +62,13 @@ G14EdgeSystem G14LocalProblems::edge_system(int e) const {
   return s;
 }
 
+NotSeparable G14LocalProblems::not_separable(int v, int e, double residual) const {
+  return NotSeparable(e, v,
+                      "the corner data at vertex " + std::to_string(v) + " cannot be lifted along the edge " +
+                          std::to_string(t_.edge(e).g0) + "-" + std::to_string(t_.edge(e).g1) + " (residual " +
+                          std::to_string(residual) + ")");
+}
+
 Eigen::MatrixXd G14LocalProblems::corner_data(int v, std::vector<int>& vc) const {
   const int fs = b_.face_size();
   vc.clear();
@@ -100,11 +108,7 @@ std::vector<BrokenFunction> G14LocalProblems::lifted(int v, const std::vector<in
       for (int p : s.end_corner[end]) rhs -= s.M.col(p) * H(pos.at(s.columns[p]), h);
       const Eigen::VectorXd x = s.solver.solve(rhs);
       const double residual = (s.M_strip * x - rhs).norm();
-      if (residual > 1e-9 * std::max(1.0, rhs.norm()))
-        throw NotSeparable(e, v,
-                           "the corner data at vertex " + std::to_string(v) + " cannot be lifted along the edge " +
-                               std::to_string(t_.edge(e).g0) + "-" + std::to_string(t_.edge(e).g1) + " (residual " +
-                               std::to_string(residual) + ")");
+      if (residual > 1e-9 * std::max(1.0, rhs.norm())) throw not_separable(v, e, residual);
       for (std::size_t c = 0; c < s.strip.size(); ++c) fn[s.columns[s.strip[c]]] += x(c);
     }
     out.push_back(std::move(fn));
@@ -140,12 +144,27 @@ std::vector<BrokenFunction> G14LocalProblems::vertex_functions(int v, const Syst
 int G14LocalProblems::vertex_count(int v, const SystemOf& system) const {
   std::vector<int> vc;
   const Eigen::MatrixXd H = corner_data(v, vc);
-  const std::vector<BrokenFunction> lifts = lifted(v, vc, H, system);
-  std::map<int, int> rows;
-  for (const auto& fn : lifts)
-    for (const auto& [i, x] : fn) rows.emplace(i, 0);
+  if (H.cols() == 0) return 0;
+  // The lifts' rows (every corner index and every strip index of v's interior edges, whatever
+  // the values), and the same solves and residual checks as lifted, without the functions.
+  std::set<int> rows(vc.begin(), vc.end());
+  std::map<int, int> pos;
+  for (std::size_t i = 0; i < vc.size(); ++i) pos[vc[i]] = static_cast<int>(i);
+  for (int h = 0; h < H.cols(); ++h)
+    for (int e : t_.vertex_edges(v)) {
+      if (t_.edge(e).boundary()) continue;
+      const G14EdgeSystem& s = system(e);
+      const int end = t_.edge(e).g0 == v ? 0 : 1;
+      Eigen::VectorXd rhs = Eigen::VectorXd::Zero(s.M.rows());
+      for (int p : s.end_corner[end]) rhs -= s.M.col(p) * H(pos.at(s.columns[p]), h);
+      const Eigen::VectorXd x = s.solver.solve(rhs);
+      const double residual = (s.M_strip * x - rhs).norm();
+      if (residual > 1e-9 * std::max(1.0, rhs.norm())) throw not_separable(v, e, residual);
+      if (h == 0)
+        for (int c : s.strip) rows.insert(s.columns[c]);
+    }
   // The thin U of the rows x lifts matrix vertex_functions orthonormalises.
-  return std::min(static_cast<int>(rows.size()), static_cast<int>(lifts.size()));
+  return std::min(static_cast<int>(rows.size()), static_cast<int>(H.cols()));
 }
 
 std::vector<BrokenFunction> G14LocalProblems::edge_functions(int e, const G14EdgeSystem* s) const {

@@ -18,6 +18,8 @@
 
 namespace iga {
 
+class NotSeparable;
+
 /// One basis function as broken coefficients (index f (m+1)² + i → value), before round-off
 /// entries are dropped (kept_entries).
 using BrokenFunction = std::map<int, double>;
@@ -76,6 +78,8 @@ class G14LocalProblems {
   /// The lifts of the corner data H over vc along v's interior edges.
   std::vector<BrokenFunction> lifted(int v, const std::vector<int>& vc, const Eigen::MatrixXd& H,
                                      const SystemOf& system) const;
+  /// The error of a vertex datum that does not lift along edge e.
+  NotSeparable not_separable(int v, int e, double residual) const;
   const QuadTopology& t_;
   const std::vector<SplitGluing>& gluing_;
   const SplitBSpline& b_;
