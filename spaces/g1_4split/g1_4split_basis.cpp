@@ -7,51 +7,10 @@
 #include <map>
 
 #include "spaces/g1_4split/edge_equations.hpp"
+#include "spaces/g1_4split/g14_local_problems.hpp"
 #include "spaces/g1_4split/line_gluing.hpp"
 
 namespace iga {
-
-namespace {
-
-/// Orthonormal basis of the numerical nullspace of M (columns).
-Eigen::MatrixXd nullspace(const Eigen::MatrixXd& M) {
-  if (M.rows() == 0) return Eigen::MatrixXd::Identity(M.cols(), M.cols());
-  Eigen::JacobiSVD<Eigen::MatrixXd> svd(M, Eigen::ComputeFullV);
-  const Eigen::VectorXd& s = svd.singularValues();
-  const double tol = 1e-10 * std::max(s.size() ? s(0) : 0.0, 1e-300);
-  int rank = 0;
-  for (int i = 0; i < s.size(); ++i)
-    if (s(i) > tol) ++rank;
-  return svd.matrixV().rightCols(M.cols() - rank);
-}
-
-/// One interior edge's equations split into the corner columns at each end and the strip.
-struct EdgeSystem {
-  Eigen::MatrixXd M;                 ///< all equations over `columns`
-  std::vector<int> columns;          ///< global broken indices
-  std::vector<int> strip;            ///< positions (in columns) of the strip unknowns
-  std::vector<int> end_corner[2];    ///< positions of the corner unknowns at g0 / g1
-  Eigen::MatrixXd M_strip;
-  Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd> solver;
-};
-
-EdgeSystem edge_system(const QuadTopology& t, const SplitBSpline& b, const SplitGluing& a, int e) {
-  EdgeSystem s;
-  s.M = edge_equations(t, b, a, e, s.columns);
-  const int n = b.size(), m = b.last();
-  for (int p = 0; p < static_cast<int>(s.columns.size()); ++p) {
-    const int i = p % n;
-    if (i <= 1) s.end_corner[0].push_back(p);
-    else if (i >= m - 1) s.end_corner[1].push_back(p);
-    else s.strip.push_back(p);
-  }
-  s.M_strip.resize(s.M.rows(), static_cast<Eigen::Index>(s.strip.size()));
-  for (std::size_t c = 0; c < s.strip.size(); ++c) s.M_strip.col(c) = s.M.col(s.strip[c]);
-  s.solver.compute(s.M_strip);
-  return s;
-}
-
-}  // namespace
 
 int nullspace_dimension(const Eigen::MatrixXd& M) {
   if (M.rows() == 0) return static_cast<int>(M.cols());
@@ -165,127 +124,63 @@ G14Basis build_g14_basis(const QuadTopology& t, const std::vector<SplitGluing>& 
   G14Basis basis;
   basis.bspline = SplitBSpline(k, r);
   const SplitBSpline& b = basis.bspline;
-  const int fs = b.face_size(), m = b.last();
+  const int fs = b.face_size();
+  const G14LocalProblems local(t, gluing, b);
   std::vector<Eigen::Triplet<double>> trip;
   int col = 0;
-  auto add = [&](const std::map<int, double>& v) {
-    double big = 0.0;
-    for (const auto& [i, x] : v) big = std::max(big, std::abs(x));
-    for (const auto& [i, x] : v)
-      if (std::abs(x) > 1e-14 * big) trip.emplace_back(i, col, x);
-    ++col;
+  auto add = [&](const std::vector<BrokenFunction>& functions) {
+    for (const BrokenFunction& fn : functions) {
+      for (const auto& [i, x] : kept_entries(fn)) trip.emplace_back(i, col, x);
+      ++col;
+    }
   };
+  G14Numbering& n = basis.numbering;
 
-  std::vector<EdgeSystem> systems(t.num_edges());
+  std::vector<G14EdgeSystem> systems(t.num_edges());
   for (int e = 0; e < t.num_edges(); ++e)
-    if (!t.edge(e).boundary()) systems[e] = edge_system(t, b, gluing[e], e);
+    if (!t.edge(e).boundary()) systems[e] = local.edge_system(e);
+  const G14LocalProblems::SystemOf system = [&](int e) -> const G14EdgeSystem& { return systems[e]; };
 
   // Vertex functions: a basis of the admissible corner data, lifted along every interior edge.
+  n.vertex_first.assign(t.num_vertices() + 1, 0);
   for (int v = 0; v < t.num_vertices(); ++v) {
-    std::vector<int> vc;
-    for (const auto& [f, c] : t.vertex_corners(v))
-      for (int i : corner_block(b, c)) vc.push_back(f * fs + i);
-    std::map<int, int> pos;
-    for (std::size_t i = 0; i < vc.size(); ++i) pos[vc[i]] = static_cast<int>(i);
-    std::vector<Eigen::RowVectorXd> eqs;
-    for (int e : t.vertex_edges(v)) {
-      if (t.edge(e).boundary()) continue;
-      std::vector<int> cols;
-      const Eigen::MatrixXd M = vertex_equations(t, b, gluing[e], e, t.edge(e).g0 == v ? 0 : 1, cols);
-      for (int rr = 0; rr < M.rows(); ++rr) {
-        Eigen::RowVectorXd row = Eigen::RowVectorXd::Zero(static_cast<Eigen::Index>(vc.size()));
-        for (std::size_t c = 0; c < cols.size(); ++c) row(pos.at(cols[c])) += M(rr, c);
-        eqs.push_back(row);
-      }
-    }
-    Eigen::MatrixXd E(static_cast<Eigen::Index>(eqs.size()), static_cast<Eigen::Index>(vc.size()));
-    for (std::size_t rr = 0; rr < eqs.size(); ++rr) E.row(rr) = eqs[rr];
-    const Eigen::MatrixXd H = nullspace(E);
-    std::vector<std::map<int, double>> lifted;
-    for (int h = 0; h < H.cols(); ++h) {
-      std::map<int, double> fn;
-      for (std::size_t i = 0; i < vc.size(); ++i) fn[vc[i]] += H(i, h);
-      for (int e : t.vertex_edges(v)) {
-        if (t.edge(e).boundary()) continue;
-        const EdgeSystem& s = systems[e];
-        const int end = t.edge(e).g0 == v ? 0 : 1;
-        Eigen::VectorXd rhs = Eigen::VectorXd::Zero(s.M.rows());
-        for (int p : s.end_corner[end]) rhs -= s.M.col(p) * H(pos.at(s.columns[p]), h);
-        const Eigen::VectorXd x = s.solver.solve(rhs);
-        const double residual = (s.M_strip * x - rhs).norm();
-        if (residual > 1e-9 * std::max(1.0, rhs.norm()))
-          throw NotSeparable(e, v,
-                             "the corner data at vertex " + std::to_string(v) + " cannot be lifted along the edge " +
-                                 std::to_string(t.edge(e).g0) + "-" + std::to_string(t.edge(e).g1) + " (residual " +
-                                 std::to_string(residual) + ")");
-        for (std::size_t c = 0; c < s.strip.size(); ++c) fn[s.columns[s.strip[c]]] += x(c);
-      }
-      lifted.push_back(std::move(fn));
-    }
-    // Orthonormalize the lifted functions (same span): near a vertex whose gluing value is small
-    // but not zero, twist data force second tangential derivatives ~ 1/A along the edge, and the
-    // raw lifts would be badly scaled and nearly dependent.
-    std::map<int, int> rows;
-    for (const auto& fn : lifted)
-      for (const auto& [i, x] : fn) rows.emplace(i, 0);
-    int r = 0;
-    for (auto& [i, pos] : rows) pos = r++;
-    Eigen::MatrixXd L = Eigen::MatrixXd::Zero(r, static_cast<Eigen::Index>(lifted.size()));
-    for (std::size_t c = 0; c < lifted.size(); ++c)
-      for (const auto& [i, x] : lifted[c]) L(rows.at(i), c) = x;
-    const Eigen::MatrixXd Q = Eigen::JacobiSVD<Eigen::MatrixXd>(L, Eigen::ComputeThinU).matrixU();
-    for (int c = 0; c < Q.cols(); ++c) {
-      std::map<int, double> fn;
-      for (const auto& [i, pos] : rows) fn[i] = Q(pos, c);
-      add(fn);
-    }
+    add(local.vertex_functions(v, system));
+    n.vertex_first[v + 1] = col;
   }
   basis.vertex_functions = col;
 
   // Edge functions: strip solutions with zero corner data.
+  n.edge_first.assign(t.num_edges() + 1, col);
   for (int e = 0; e < t.num_edges(); ++e) {
-    const QuadEdge& edge = t.edge(e);
-    if (edge.boundary()) {
-      const QuadSide s = edge.sides[0];
-      for (int rr = 0; rr < 2; ++rr) {
-        const std::vector<int> row = side_row(b, s.local_edge, rr);
-        for (int i = 2; i <= m - 2; ++i) add({{s.face * fs + row[i], 1.0}});
-      }
-      continue;
-    }
-    const EdgeSystem& s = systems[e];
-    const Eigen::MatrixXd N = nullspace(s.M_strip);
-    for (int c = 0; c < N.cols(); ++c) {
-      std::map<int, double> fn;
-      for (std::size_t i = 0; i < s.strip.size(); ++i) fn[s.columns[s.strip[i]]] += N(i, c);
-      add(fn);
-    }
+    add(local.edge_functions(e, t.edge(e).boundary() ? nullptr : &systems[e]));
+    n.edge_first[e + 1] = col;
   }
   basis.edge_functions = col - basis.vertex_functions;
 
   // Face functions.
-  const std::vector<int> inner = interior_indices(b);
-  for (int f = 0; f < t.num_faces(); ++f)
-    for (int i : inner) add({{f * fs + i, 1.0}});
+  n.per_face = local.face_count();
+  for (int f = 0; f < t.num_faces(); ++f) add(local.face_functions(f));
   basis.face_functions = col - basis.vertex_functions - basis.edge_functions;
 
   basis.functions.resize(t.num_faces() * fs, col);
   basis.functions.setFromTriplets(trip.begin(), trip.end());
 
-  // Per-face extraction.
-  std::vector<std::vector<Eigen::Triplet<double>>> local(t.num_faces());
+  // Per-face extraction over the face's functions by entity (G14Numbering::face_functions: what
+  // a skeleton numbers without solving).
+  std::vector<std::vector<Eigen::Triplet<double>>> local_trip(t.num_faces());
   basis.face_dofs.assign(t.num_faces(), {});
+  for (int f = 0; f < t.num_faces(); ++f) n.face_functions(t, f, basis.face_dofs[f]);
   for (int c = 0; c < basis.functions.outerSize(); ++c)
     for (Eigen::SparseMatrix<double>::InnerIterator it(basis.functions, c); it; ++it) {
       const int f = static_cast<int>(it.row()) / fs;
-      auto& d = basis.face_dofs[f];
-      if (d.empty() || d.back() != c) d.push_back(c);
-      local[f].emplace_back(static_cast<int>(it.row()) % fs, static_cast<int>(d.size()) - 1, it.value());
+      const auto& d = basis.face_dofs[f];
+      const int j = static_cast<int>(std::lower_bound(d.begin(), d.end(), c) - d.begin());
+      local_trip[f].emplace_back(static_cast<int>(it.row()) % fs, j, it.value());
     }
   basis.extraction.resize(t.num_faces());
   for (int f = 0; f < t.num_faces(); ++f) {
     basis.extraction[f].resize(fs, static_cast<Eigen::Index>(basis.face_dofs[f].size()));
-    basis.extraction[f].setFromTriplets(local[f].begin(), local[f].end());
+    basis.extraction[f].setFromTriplets(local_trip[f].begin(), local_trip[f].end());
   }
   return basis;
 }

@@ -10,6 +10,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "spaces/g1_4split/g14_local_problems.hpp"
 #include "spaces/g1_4split/gluing.hpp"
 #include "spaces/g1_4split/quad_topology.hpp"
 #include "spaces/g1_4split/split_bspline.hpp"
@@ -28,7 +29,10 @@ struct G14Basis {
   /// broken size x dimension; columns: vertex functions, then edge functions, then face functions.
   Eigen::SparseMatrix<double> functions;
   int vertex_functions = 0, edge_functions = 0, face_functions = 0;
-  /// Per face: the global functions non-zero on it (sorted) and their coefficients there,
+  /// Each vertex's and edge's range of columns.
+  G14Numbering numbering;
+  /// Per face: the functions of its vertices, edges and its own (G14Numbering::face_functions,
+  /// sorted; every one non-zero on it on the meshes tested) and their coefficients there,
   /// (m+1)² x face_dofs[f].size().
   std::vector<std::vector<int>> face_dofs;
   std::vector<Eigen::SparseMatrix<double>> extraction;

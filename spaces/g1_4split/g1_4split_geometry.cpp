@@ -89,24 +89,27 @@ FaceGeometry project_geometry(const G14Basis& basis, const FaceGeometry& broken)
   return out;
 }
 
-FaceGeometry subdivide_geometry(const SplitBSpline& b, const FaceGeometry& coarse) {
+Eigen::VectorXd subdivided_face(const SplitBSpline& b, const Eigen::VectorXd& coarse, int c) {
   const int n = b.size();
   const Eigen::VectorXd g = b.greville();
   static const Point2 corner[4] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+  // Child c: corner c of the parent, halves of its edges c (child u) and c-1 (child v).
+  const Point2 p0 = corner[c], e1 = 0.5 * (corner[(c + 1) % 4] - p0), e2 = 0.5 * (corner[(c + 3) % 4] - p0);
+  std::vector<double> values(n * n);
+  for (int q = 0; q < n; ++q)
+    for (int p = 0; p < n; ++p) {
+      const Point2 uv = p0 + g(p) * e1 + g(q) * e2;
+      values[p + q * n] = face_jet(b, coarse, uv)(0);
+    }
+  return interpolate_face(b, values);
+}
+
+FaceGeometry subdivide_geometry(const SplitBSpline& b, const FaceGeometry& coarse) {
   FaceGeometry out;
   for (std::size_t f = 0; f < coarse.x.size(); ++f)
     for (int c = 0; c < 4; ++c) {
-      // Child c: corner c of the parent, halves of its edges c (child u) and c-1 (child v).
-      const Point2 p0 = corner[c], e1 = 0.5 * (corner[(c + 1) % 4] - p0), e2 = 0.5 * (corner[(c + 3) % 4] - p0);
-      std::vector<double> xs(n * n), ys(n * n);
-      for (int q = 0; q < n; ++q)
-        for (int p = 0; p < n; ++p) {
-          const Point2 uv = p0 + g(p) * e1 + g(q) * e2;
-          xs[p + q * n] = face_jet(b, coarse.x[f], uv)(0);
-          ys[p + q * n] = face_jet(b, coarse.y[f], uv)(0);
-        }
-      out.x.push_back(interpolate_face(b, xs));
-      out.y.push_back(interpolate_face(b, ys));
+      out.x.push_back(subdivided_face(b, coarse.x[f], c));
+      out.y.push_back(subdivided_face(b, coarse.y[f], c));
     }
   return out;
 }
@@ -195,15 +198,19 @@ double largest_jacobian_ratio(const SplitBSpline& b, const FaceGeometry& g) {
   return worst;
 }
 
+void check_face_geometry(const SplitBSpline& b, const Eigen::VectorXd& x, const Eigen::VectorXd& y, int f,
+                         const std::string& mesh_name, bool fair) {
+  // A margin: det J vanishing at a point (q0 blending) leaves Bernstein coefficients at round-off.
+  if (certified_jacobian_bound(b, x, y) <= 1e-8)
+    throw InputError("g1_4split geometry of '" + mesh_name + "': det J of the " + (fair ? "fair" : "least-squares") +
+                     " map is not certified positive on face " + std::to_string(f) +
+                     (fair ? " (the map is not injective; try space.geometry_fit: least_squares)"
+                           : " (the mesh does not fit the symmetric gluing there: an extraordinary vertex needs its "
+                             "edges spread like a regular fan, a valence-4 vertex straight mesh lines)"));
+}
+
 void check_geometry(const SplitBSpline& b, const FaceGeometry& g, const std::string& mesh_name, bool fair) {
-  for (std::size_t f = 0; f < g.x.size(); ++f)
-    // A margin: det J vanishing at a point (q0 blending) leaves Bernstein coefficients at round-off.
-    if (certified_jacobian_bound(b, g.x[f], g.y[f]) <= 1e-8)
-      throw InputError("g1_4split geometry of '" + mesh_name + "': det J of the " +
-                       (fair ? "fair" : "least-squares") + " map is not certified positive on face " + std::to_string(f) +
-                       (fair ? " (the map is not injective; try space.geometry_fit: least_squares)"
-                             : " (the mesh does not fit the symmetric gluing there: an extraordinary vertex needs its "
-                               "edges spread like a regular fan, a valence-4 vertex straight mesh lines)"));
+  for (std::size_t f = 0; f < g.x.size(); ++f) check_face_geometry(b, g.x[f], g.y[f], static_cast<int>(f), mesh_name, fair);
 }
 
 }  // namespace iga

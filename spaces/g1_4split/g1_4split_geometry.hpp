@@ -36,6 +36,10 @@ FaceGeometry project_geometry(const G14Basis& basis, const FaceGeometry& broken)
 /// The geometry of the refined mesh (children 4f + c as in QuadTopology::refined), the same map.
 FaceGeometry subdivide_geometry(const SplitBSpline& b, const FaceGeometry& coarse);
 
+/// One coordinate of child c (the quarter at corner c) of a face, from the face's coefficients:
+/// what subdivide_geometry does for each face and child.
+Eigen::VectorXd subdivided_face(const SplitBSpline& b, const Eigen::VectorXd& coarse, int child);
+
 /// A lower bound of det J / (diameter² of the face's control net) on face f, certified from the
 /// Bernstein coefficients of det J on each sub-square (recursively subdivided where needed);
 /// <= 0 when positivity cannot be certified (in particular when det J <= 0 somewhere).
@@ -51,5 +55,8 @@ double largest_jacobian_ratio(const SplitBSpline& b, const FaceGeometry& g);
 /// (bound above 1e-8: a zero of det J leaves coefficients at round-off); `fair`: the map is the
 /// fair one (the message names the other fit).
 void check_geometry(const SplitBSpline& b, const FaceGeometry& g, const std::string& mesh_name, bool fair = false);
+/// The same check of face f's map (x, y).
+void check_face_geometry(const SplitBSpline& b, const Eigen::VectorXd& x, const Eigen::VectorXd& y, int f,
+                         const std::string& mesh_name, bool fair);
 
 }  // namespace iga

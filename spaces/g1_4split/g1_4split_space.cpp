@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <map>
+#include <set>
 #include <stdexcept>
 #include <string>
 
@@ -12,7 +13,9 @@
 #include "spaces/g1_4split/g1_4split_meshes.hpp"
 #include "spaces/g1_4split/fan_values.hpp"
 #include "spaces/g1_4split/fair_geometry.hpp"
+#include "spaces/g1_4split/g14_local_problems.hpp"
 #include "spaces/g1_4split/line_gluing.hpp"
+#include "spaces/g1_4split/nested_geometry.hpp"
 
 namespace iga {
 
@@ -25,27 +28,52 @@ struct G14Core {
   using Jet = GeometryJet;
   static constexpr bool identity = false;
   const G14Basis& basis;
-  const FaceGeometry& geometry;
-  const std::vector<char>& built;
+  /// The faces' maps: every face's (`every`), else the built faces' (`built`, by slot) and the
+  /// others from the level-0 map (`nested`, along `path`).
+  const FaceGeometry* every;
+  const FaceGeometry* built;
+  const NestedGeometry* nested;
+  const QuadTopology& topology;
+  const std::vector<int>& slot;
+  mutable NestedGeometry::Path path{};
+
+  void coefficients(int e, const Eigen::VectorXd*& x, const Eigen::VectorXd*& y) const {
+    if (every) {
+      x = &every->x[e];
+      y = &every->y[e];
+    } else if (built && slot[e] >= 0) {
+      x = &built->x[slot[e]];
+      y = &built->y[slot[e]];
+    } else {
+      nested->face(e, path, x, y);
+    }
+  }
 
   int kind(int /*e*/) const { return 0; }
   int tabulate(int /*kind*/, const std::vector<Point2>& points, int /*order*/, LocalTables& t) const {
     tensor_tables(basis.bspline, points, t);
     return 2;
   }
-  const std::vector<int>& active(int e) const { return basis.face_dofs[e]; }
+  std::vector<int> active(int e) const {
+    if (!basis.face_dofs.empty()) return basis.face_dofs[e];
+    std::vector<int> out;
+    basis.numbering.face_functions(topology, e, out);
+    return out;
+  }
   Extraction extraction(int e) const {
-    if (!built[e])
+    if (slot[e] < 0)
       throw std::logic_error("G14Space: element " + std::to_string(e) +
                              " was not built on (a space built on some elements is asked for another)");
-    return extraction_view(basis.extraction[e]);
+    return extraction_view(basis.extraction[slot[e]]);
   }
   void map(int e, const QuadratureRule& rule, const LocalTables& t, int /*order*/, std::vector<Jet>& jets) const {
     const int q = rule.size();
     Eigen::Matrix<double, 6, Eigen::Dynamic> X(6, q), Y(6, q);
+    const Eigen::VectorXd *x, *y;
+    coefficients(e, x, y);
     for (int d = 0; d < 6; ++d) {
-      X.row(d) = geometry.x[e].transpose() * t[d];
-      Y.row(d) = geometry.y[e].transpose() * t[d];
+      X.row(d) = x->transpose() * t[d];
+      Y.row(d) = y->transpose() * t[d];
     }
     jets.resize(q);
     for (int p = 0; p < q; ++p) {
@@ -165,13 +193,28 @@ G14Space::G14Space(const PatchMesh& coarse, const G14Options& options) : options
       fit_name = "least_squares (the fair map is not certified regular)";
     }
   }
+  // A skeleton of a nested level keeps the level-0 map only (nested_geometry.hpp).
+  const bool lazy = options.nested && options.level > 0 && options.extent == SpaceExtent::skeleton;
   for (int l = 0; l < options.level; ++l) {
     PatchMesh finer = mesh.refined();
     QuadTopology fine = quad_topology(finer);
     if (options.nested) {
       gluing_ = inherited_gluing(topology, gluing_, fine);
-      geometry_ = subdivide_geometry(basis_.bspline, geometry_);
-      basis_ = build_g14_basis(fine, gluing_, options.degree, options.regularity);
+      if (!lazy) geometry_ = subdivide_geometry(basis_.bspline, geometry_);
+      if (l + 1 < options.level || options.extent == SpaceExtent::skeleton) {
+        // A level on the way, or a skeleton: its errors (NotSeparable) and counts, no basis kept
+        // (the same lifts as build_g14_basis, one vertex at a time).
+        G14Basis counted;
+        counted.bspline = basis_.bspline;
+        counted.numbering = G14LocalProblems(fine, gluing_, counted.bspline).count_functions();
+        const G14Numbering& n = counted.numbering;
+        counted.vertex_functions = n.vertex_first.back();
+        counted.edge_functions = n.edge_first.back() - n.vertex_first.back();
+        counted.face_functions = fine.num_faces() * n.per_face;
+        basis_ = std::move(counted);
+      } else {
+        basis_ = build_g14_basis(fine, gluing_, options.degree, options.regularity);
+      }
     } else {
       G14Options rebuilt = options;
       rebuilt.fit = fit;
@@ -185,8 +228,30 @@ G14Space::G14Space(const PatchMesh& coarse, const G14Options& options) : options
     mesh = std::move(finer);
     topology = std::move(fine);
   }
-  check_geometry(basis_.bspline, geometry_, mesh.name(), fit == GeometryFit::fair);
-  mesh_ = std::make_shared<const PatchMesh>(std::move(mesh));
+  if (lazy) {
+    nested_ = std::make_shared<const NestedGeometry>(basis_.bspline, std::move(geometry_), options.level);
+    geometry_ = {};
+  }
+  // Every face's map, in order (check_geometry's first failing face), and the mesh size: one
+  // visit of each face (a skeleton subdivides each ancestor once).
+  double mesh_size = 0.0;
+  {
+    NestedGeometry::Path path;
+    for (int f = 0; f < topology.num_faces(); ++f) {
+      const Eigen::VectorXd *x = lazy ? nullptr : &geometry_.x[f], *y = lazy ? nullptr : &geometry_.y[f];
+      if (lazy) nested_->face(f, path, x, y);
+      check_face_geometry(basis_.bspline, *x, *y, f, mesh.name(), fit == GeometryFit::fair);
+      // Diameter: largest distance between samples of the face boundary.
+      std::vector<Point2> pts;
+      for (int j = 0; j < 4; ++j)
+        for (int s = 0; s < 4; ++s) {
+          const Point2 uv = reference_edge_point(CellShape::quadrilateral, j, s / 4.0);
+          pts.emplace_back(face_jet(basis_.bspline, *x, uv)(0), face_jet(basis_.bspline, *y, uv)(0));
+        }
+      for (const Point2& a : pts)
+        for (const Point2& b : pts) mesh_size = std::max(mesh_size, (a - b).norm());
+    }
+  }
   topology_ = std::make_shared<const QuadTopology>(std::move(topology));
   SpaceFacts facts;
   facts.type = "g1_4split";
@@ -196,7 +261,7 @@ G14Space::G14Space(const PatchMesh& coarse, const G14Options& options) : options
                       {"refinement", options_.nested ? "nested" : "rebuild"},
                       {"geometry_fit", fit_name},
                       {"faces", std::to_string(topology_->num_faces())},
-                      {"domain", mesh_->name()}};
+                      {"domain", mesh.name()}};
   if (options_.blending == Blending::lines) {
     // How the gluing was built, and how far the fitted map is from degenerate (docs/spaces/g1_4split.md).
     facts.parameters.emplace_back("gluing_lines", lines.mesh_fans ? "mesh fans, " + std::to_string(lines.lines) +
@@ -208,73 +273,142 @@ G14Space::G14Space(const PatchMesh& coarse, const G14Options& options) : options
     std::snprintf(buf, sizeof buf, "%.3e", jacobian);
     facts.parameters.emplace_back("jacobian_bound", buf);
   }
-  facts.dimension = basis_.dimension();
+  facts.dimension = basis_.numbering.dimension(topology_->num_faces());
   facts.num_elements = topology_->num_faces();
   facts.cell_shapes = {CellShape::quadrilateral};
   facts.degree = options_.degree;
   facts.continuity = 1;
   facts.gradient_jump_samples = 4 * options_.degree + 8;
-  set_boundary_parts(*mesh_, facts);
-  // Diameter: largest distance between samples of the face boundary.
-  for (int f = 0; f < topology_->num_faces(); ++f) {
-    std::vector<Point2> pts;
-    for (int j = 0; j < 4; ++j)
-      for (int s = 0; s < 4; ++s) {
-        const Point2 uv = reference_edge_point(CellShape::quadrilateral, j, s / 4.0);
-        pts.emplace_back(face_jet(basis_.bspline, geometry_.x[f], uv)(0), face_jet(basis_.bspline, geometry_.y[f], uv)(0));
-      }
-    for (const Point2& a : pts)
-      for (const Point2& b : pts) facts.mesh_size = std::max(facts.mesh_size, (a - b).norm());
-  }
+  set_boundary_parts(mesh, facts);  // the level mesh is needed no more: not kept
+  facts.mesh_size = mesh_size;
   set_facts(std::move(facts));
-  built_.assign(topology_->num_faces(), options_.extent == SpaceExtent::whole ? 1 : 0);
-  if (options_.extent == SpaceExtent::skeleton) {  // the numbering stays, the extractions wait
-    pending_ = std::move(basis_.extraction);
-    basis_.extraction.assign(topology_->num_faces(), {});
+  if (options_.extent == SpaceExtent::skeleton) {  // the numbering stays, the local problems wait
     basis_.functions = {};
+    basis_.face_dofs = {};
+    basis_.extraction = {};
+    slot_.assign(topology_->num_faces(), -1);
+  } else {
+    slot_.resize(topology_->num_faces());
+    for (int f = 0; f < topology_->num_faces(); ++f) slot_[f] = f;
   }
 }
 
-G14Space::G14Space(std::shared_ptr<const G14Space> skeleton, const std::vector<int>& elements,
-                   std::vector<Eigen::SparseMatrix<double>> extraction)
+G14Space::G14Space(std::shared_ptr<const G14Space> skeleton, const std::vector<int>& elements)
     : options_(skeleton->options_),
-      mesh_(skeleton->mesh_),
       topology_(skeleton->topology_),
       skeleton_(skeleton),
-      built_(skeleton->topology_->num_faces(), 0) {
-  const G14Space& skeleton_space = *skeleton;
-  basis_.bspline = skeleton_space.basis_.bspline;
-  basis_.vertex_functions = skeleton_space.basis_.vertex_functions;
-  basis_.edge_functions = skeleton_space.basis_.edge_functions;
-  basis_.face_functions = skeleton_space.basis_.face_functions;
-  basis_.face_dofs = skeleton_space.basis_.face_dofs;
-  basis_.extraction.resize(topology_->num_faces());
-  for (int e : elements) {
-    basis_.extraction[e] = std::move(extraction[e]);
-    built_[e] = 1;
+      slot_(skeleton->topology_->num_faces(), -1) {
+  if (skeleton->nested_) {  // the built faces' maps from the level-0 map, in order
+    NestedGeometry::Path path;
+    for (int f : elements) {
+      const Eigen::VectorXd *x, *y;
+      skeleton->nested_->face(f, path, x, y);
+      geometry_.x.push_back(*x);
+      geometry_.y.push_back(*y);
+    }
   }
-  set_facts(skeleton_space.facts());
+  const QuadTopology& t = *topology_;
+  basis_.bspline = skeleton->basis_.bspline;
+  basis_.numbering = skeleton->basis_.numbering;
+  basis_.vertex_functions = skeleton->basis_.vertex_functions;
+  basis_.edge_functions = skeleton->basis_.edge_functions;
+  basis_.face_functions = skeleton->basis_.face_functions;
+  const G14Numbering& n = basis_.numbering;
+  const int fs = basis_.bspline.face_size();
+  std::vector<std::vector<int>> dofs(elements.size());
+  for (std::size_t s = 0; s < elements.size(); ++s) {
+    slot_[elements[s]] = static_cast<int>(s);
+    n.face_functions(t, elements[s], dofs[s]);
+  }
+  // The entities whose functions live on these faces, and the systems of the edges at their vertices.
+  std::set<int> vertices, edges;
+  for (int f : elements)
+    for (int j = 0; j < 4; ++j) {
+      vertices.insert(t.face(f)[j]);
+      edges.insert(t.face_edge(f, j));
+    }
+  const G14LocalProblems local(t, gluing(), basis_.bspline);
+  std::map<int, G14EdgeSystem> systems;
+  for (int v : vertices)
+    for (int e : t.vertex_edges(v))
+      if (!t.edge(e).boundary() && !systems.count(e)) systems.emplace(e, local.edge_system(e));
+  const G14LocalProblems::SystemOf system = [&](int e) -> const G14EdgeSystem& { return systems.at(e); };
+  // Each function's entries on the built faces, as the whole basis's extraction has them.
+  std::vector<std::vector<Eigen::Triplet<double>>> trip(elements.size());
+  const auto distribute = [&](const std::vector<BrokenFunction>& functions, int first, int expected, const char* what,
+                              int entity) {
+    if (static_cast<int>(functions.size()) != expected)
+      throw std::logic_error("G14Space::build_on: " + std::string(what) + " " + std::to_string(entity) + " has " +
+                             std::to_string(functions.size()) + " functions, the skeleton counted " +
+                             std::to_string(expected));
+    for (std::size_t i = 0; i < functions.size(); ++i) {
+      const int c = first + static_cast<int>(i);
+      for (const auto& [index, x] : kept_entries(functions[i])) {
+        const int s = slot_[index / fs];
+        if (s < 0) continue;
+        const std::vector<int>& d = dofs[s];
+        const int j = static_cast<int>(std::lower_bound(d.begin(), d.end(), c) - d.begin());
+        trip[s].emplace_back(index % fs, j, x);
+      }
+    }
+  };
+  for (int v : vertices)
+    distribute(local.vertex_functions(v, system), n.vertex_first[v], n.vertex_first[v + 1] - n.vertex_first[v],
+               "vertex", v);
+  for (int e : edges)
+    distribute(local.edge_functions(e, t.edge(e).boundary() ? nullptr : &systems.at(e)), n.edge_first[e],
+               n.edge_first[e + 1] - n.edge_first[e], "edge", e);
+  systems.clear();
+  for (int f : elements)
+    distribute(local.face_functions(f), n.edge_first.back() + f * n.per_face, n.per_face, "face", f);
+  basis_.extraction.resize(elements.size());
+  for (std::size_t s = 0; s < elements.size(); ++s) {
+    basis_.extraction[s].resize(fs, static_cast<Eigen::Index>(dofs[s].size()));
+    basis_.extraction[s].setFromTriplets(trip[s].begin(), trip[s].end());
+  }
+  set_facts(skeleton->facts());
+}
+
+const FaceGeometry* G14Space::every_face_geometry() const {
+  const G14Space& owner = skeleton_ ? *skeleton_ : *this;
+  return owner.nested_ ? nullptr : &owner.geometry_;
+}
+
+void G14Space::face_geometry(int f, Eigen::VectorXd& x, Eigen::VectorXd& y) const {
+  const G14Space& owner = skeleton_ ? *skeleton_ : *this;
+  if (!owner.nested_) {
+    x = owner.geometry_.x[f];
+    y = owner.geometry_.y[f];
+    return;
+  }
+  NestedGeometry::Path path;
+  const Eigen::VectorXd *px, *py;
+  owner.nested_->face(f, path, px, py);
+  x = *px;
+  y = *py;
+}
+
+const Eigen::SparseMatrix<double>& G14Space::extraction(int element) const {
+  if (slot_[element] < 0)
+    throw std::logic_error("G14Space: element " + std::to_string(element) + " was not built on");
+  return basis_.extraction[slot_[element]];
+}
+
+void G14Space::element_dofs(int element, std::vector<int>& out) const {
+  if (!basis_.face_dofs.empty()) out = basis_.face_dofs[element];
+  else basis_.numbering.face_functions(*topology_, element, out);
 }
 
 SpacePtr G14Space::build_on(const std::vector<int>& elements) const {
   check_element_set(elements, topology_->num_faces(), "G14Space::build_on");
-  std::vector<Eigen::SparseMatrix<double>> extraction;
-  {
-    const std::lock_guard<std::mutex> lock(pending_mutex_);
-    extraction = std::move(pending_);
-    pending_.clear();
-  }
-  // The level's basis is built from its topology and gluing (nested levels inherit the gluing, not
-  // the basis): the same local problems give the same extractions, bit for bit.
-  if (extraction.empty())
-    extraction = build_g14_basis(*topology_, gluing(), options_.degree, options_.regularity).extraction;
   // The data every element shares stay with the skeleton (this space's own, or its skeleton).
   const auto skeleton = skeleton_ ? skeleton_ : std::static_pointer_cast<const G14Space>(shared_from_this());
-  return std::shared_ptr<const G14Space>(new G14Space(skeleton, elements, std::move(extraction)));
+  return std::shared_ptr<const G14Space>(new G14Space(skeleton, elements));
 }
 
 std::unique_ptr<Space::Evaluator> G14Space::make_evaluator() const {
-  return std::make_unique<ExtractedEvaluator<G14Core>>(*this, G14Core{basis_, geometry(), built_});
+  return std::make_unique<ExtractedEvaluator<G14Core>>(*this, G14Core{basis_, every_face_geometry(), skeleton_ && skeleton_->nested_ ? &geometry_ : nullptr,
+                              skeleton_ ? skeleton_->nested_.get() : nested_.get(), *topology_, slot_});
 }
 
 std::vector<InteriorEdge> quad_interior_edges(const QuadTopology& t) {

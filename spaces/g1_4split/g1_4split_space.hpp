@@ -6,11 +6,11 @@
 /// the same space. Elements are the mesh faces; their polynomial pieces are the 4 sub-squares.
 
 #include <memory>
-#include <mutex>
 
 #include "spaces/g1/patch_mesh.hpp"
 #include "spaces/g1_4split/g1_4split_basis.hpp"
 #include "spaces/g1_4split/g1_4split_geometry.hpp"
+#include "spaces/g1_4split/nested_geometry.hpp"
 #include "spaces/gauss_rule_cache.hpp"
 #include "spaces/builds_on_elements.hpp"
 #include "spaces/space.hpp"
@@ -33,8 +33,8 @@ struct G14Options {
   /// false (the default fit): a fair map that is not certified regular gives way to the
   /// least-squares map; true (asked for): it is refused (InputError).
   bool fit_required = false;
-  /// skeleton: no extraction kept (BuildsOnElements; the construction gives the numbering), the
-  /// first build_on takes those of its elements and releases the rest.
+  /// skeleton: the functions counted per vertex and edge, no local problem kept (BuildsOnElements);
+  /// build_on solves those of the entities at its faces.
   SpaceExtent extent = SpaceExtent::whole;
 };
 
@@ -50,7 +50,8 @@ class G14Space final : public Space, public BuildsOnElements {
   /// Facts: type "g1_4split", C1, curved elements (the map is in the space), boundary parts of
   /// the level mesh (boundary_parts.hpp).
   std::unique_ptr<Evaluator> make_evaluator() const override;
-  void element_dofs(int element, std::vector<int>& out) const override { out = basis_.face_dofs[element]; }
+  /// The functions of the face's vertices, edges and its own (G14Numbering::face_functions).
+  void element_dofs(int element, std::vector<int>& out) const override;
 
   RulePtr quadrature(int, int degree) const override { return rules_.cell(degree); }
   RulePtr edge_quadrature(int, int edge, int degree) const override { return rules_.edge(edge, degree); }
@@ -59,35 +60,44 @@ class G14Space final : public Space, public BuildsOnElements {
   /// piecewise rational of moderate degree on each half).
   std::vector<InteriorEdge> interior_edges() const override { return quad_interior_edges(*topology_); }
 
-  /// The space with the extractions of `elements` (increasing) only, sharing topology, gluing and
-  /// geometry; its basis has no global `functions` matrix.
+  /// The space with the extractions of `elements` (increasing) only, sharing topology, gluing,
+  /// geometry and numbering: it solves the local problems of the vertices and edges at those faces
+  /// only (the same problems as the whole basis, so the same extractions bit for bit). Its basis
+  /// has no `functions` matrix and no face_dofs; `extraction` holds the built faces' only.
   SpacePtr build_on(const std::vector<int>& elements) const override;
-  bool built_on(int element) const override { return built_[element] != 0; }
+  bool built_on(int element) const override { return slot_[element] >= 0; }
 
   const QuadTopology& topology() const { return *topology_; }
+  /// Face `element`'s extraction, (m+1)² x its functions; std::logic_error when not built on.
+  const Eigen::SparseMatrix<double>& extraction(int element) const;
   const G14Basis& basis() const { return basis_; }
-  /// A space built on some elements shares its skeleton's.
+  /// Every face's map (a whole space; a space built on some elements shares its skeleton's). A
+  /// skeleton of a nested level keeps the level-0 map only: empty (face_geometry).
   const FaceGeometry& geometry() const { return skeleton_ ? skeleton_->geometry_ : geometry_; }
+  /// Face f's map, whatever the space keeps.
+  void face_geometry(int f, Eigen::VectorXd& x, Eigen::VectorXd& y) const;
   const std::vector<SplitGluing>& gluing() const { return skeleton_ ? skeleton_->gluing_ : gluing_; }
   /// (A space built on some elements holds the skeleton itself, never another built space.)
 
  private:
   G14Options options_;
-  std::shared_ptr<const PatchMesh> mesh_;  // level mesh: boundary parts and names
-  /// A skeleton's space built on `elements`, with `extraction` the extractions of every face.
-  G14Space(std::shared_ptr<const G14Space> skeleton, const std::vector<int>& elements,
-           std::vector<Eigen::SparseMatrix<double>> extraction);
+  /// A skeleton's space built on `elements` (increasing).
+  G14Space(std::shared_ptr<const G14Space> skeleton, const std::vector<int>& elements);
 
   std::shared_ptr<const QuadTopology> topology_;
   std::vector<SplitGluing> gluing_;  ///< empty in a space built on some elements: its skeleton's
-  G14Basis basis_;                   ///< extraction: empty for the elements not built on
-  FaceGeometry geometry_;            ///< empty in a space built on some elements: its skeleton's
+  /// Whole: everything. Skeleton: bspline and numbering. Built on some faces: and their
+  /// extractions, in the order of the faces.
+  G14Basis basis_;
+  /// Whole: every face's map. Skeleton of a nested level: empty (nested_). Built on some faces:
+  /// empty (its skeleton's), or, when the skeleton has nested_, the built faces' (by slot).
+  FaceGeometry geometry_;
+  std::shared_ptr<const NestedGeometry> nested_;  ///< a skeleton's level-0 map of a nested level
+  /// geometry_ of the space that has every face's, or null.
+  const FaceGeometry* every_face_geometry() const;
   std::shared_ptr<const G14Space> skeleton_;  ///< the skeleton of a space built on some elements
-  std::vector<char> built_;
-  /// A skeleton's extractions of every face until the first build_on takes them; later calls
-  /// build the basis again from the level's topology and gluing (the same, bit for bit).
-  mutable std::mutex pending_mutex_;
-  mutable std::vector<Eigen::SparseMatrix<double>> pending_;
+  /// Per face: its extraction's index in basis_.extraction, or -1 (not built on).
+  std::vector<int> slot_;
   GaussRuleCache rules_{2};  ///< Gauss on each of the 4 sub-squares and on each half of an edge
 };
 

@@ -2,8 +2,8 @@
 /// A 4-split G1 space built on some of its elements (BuildsOnElements, what one rank of a
 /// distributed solve keeps), on a nested level: the skeleton has the whole numbering, geometry and
 /// inherited gluing and no extraction; the space built on a set of faces evaluates them bit for bit
-/// as the whole space does (the level's basis is rebuilt from the level's topology and gluing
-/// when the skeleton's own extractions are gone), and asking it for another face is refused.
+/// as the whole space does (it solves the local problems of those faces' vertices and edges, every
+/// time it is asked), and asking it for another face is refused.
 
 #include <gtest/gtest.h>
 
@@ -27,7 +27,7 @@ TEST(G14BuildOn, APartOfANestedSkeletonEvaluatesItsFacesAsTheWholeSpaceAndRefuse
   const auto skeleton = std::make_shared<const G14Space>(g14_domain("fan5"), o);
   ASSERT_EQ(skeleton->num_elements(), 20);
   test::expect_skeleton_of(*skeleton, *whole);
-  // Every third face: first from the skeleton's extractions, then from a rebuilt basis.
+  // Every third face, twice: each build solves its faces' local problems again.
   std::vector<int> some;
   for (int e = 0; e < skeleton->num_elements(); e += 3) some.push_back(e);
   for (int round = 0; round < 2; ++round) test::expect_built_as_whole(*on_elements(skeleton, some), *whole, some, 6);
