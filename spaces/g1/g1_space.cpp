@@ -29,7 +29,11 @@ struct G1Core {
   }
   const std::vector<int>& slot;
 
-  const std::vector<int>& active(int e) const { return basis.face_dofs[checked(e)]; }
+  /// None for an element not built on (its geometry may still be evaluated; its functions not).
+  const std::vector<int>& active(int e) const {
+    static const std::vector<int> none;
+    return slot[e] < 0 ? none : basis.face_dofs[slot[e]];
+  }
   Extraction extraction(int e) const { return extraction_view(basis.extraction[checked(e)]); }
   int checked(int e) const {
     if (slot[e] < 0)
