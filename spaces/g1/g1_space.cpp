@@ -95,12 +95,15 @@ G1Space::G1Space(std::shared_ptr<const PatchMesh> mesh, int k, SpaceExtent exten
   set_facts(std::move(facts));
   slot_.assign(mesh_->num_faces(), -1);
   if (extent == SpaceExtent::whole) std::iota(slot_.begin(), slot_.end(), 0);
+  else gluing_.reset();  // build_on computes it again
 }
 
 G1Space::G1Space(const G1Space& from, const std::vector<int>& elements)
     : mesh_(from.mesh_), gluing_(from.gluing_), numbering_(from.numbering_), slot_(mesh_->num_faces(), -1) {
   if (numbering_) {
-    basis_ = build_g1_basis_on(*mesh_, *gluing_, *numbering_, elements);
+    // The gluing of every edge again (a skeleton does not keep it: 80 bytes per edge), for the
+    // time of this construction only.
+    basis_ = build_g1_basis_on(*mesh_, gluing_from_geometry(*mesh_), *numbering_, elements);
   } else {  // a whole space's entries: copied
     basis_.degree = from.basis_.degree;
     for (int e : elements) {
@@ -116,6 +119,11 @@ G1Space::G1Space(const G1Space& from, const std::vector<int>& elements)
 SpacePtr G1Space::build_on(const std::vector<int>& elements) const {
   check_element_set(elements, mesh_->num_faces(), "G1Space::build_on");
   return std::shared_ptr<const G1Space>(new G1Space(*this, elements));
+}
+
+const std::vector<EdgeGluing>& G1Space::gluing() const {
+  if (!gluing_) throw std::logic_error("G1Space: a skeleton and its parts keep no gluing data");
+  return *gluing_;
 }
 
 void G1Space::element_dofs(int element, std::vector<int>& out) const {

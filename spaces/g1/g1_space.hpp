@@ -28,8 +28,9 @@ class G1Space final : public Space, public BuildsOnElements {
   /// construction needs on this mesh (the message names the smallest degree that works).
   /// With SpaceExtent::skeleton the space keeps no extraction (BuildsOnElements), only the
   /// numbering (g1_numbering.hpp: a few ints per edge, vertex and face): it solves every local
-  /// problem to count and check its functions, one vertex fan at a time, and keeps none; the same
-  /// input errors as the whole construction, with the same messages, on every rank.
+  /// problem to count and check its functions, one vertex fan at a time, and keeps none (nor the
+  /// gluing data); the same input errors as the whole construction, with the same messages, on
+  /// every rank.
   G1Space(std::shared_ptr<const PatchMesh> mesh, int k, SpaceExtent extent = SpaceExtent::whole);
 
   /// Facts: type "g1", parameters degree, patches (faces), domain; C1 in physical coordinates by
@@ -52,7 +53,8 @@ class G1Space final : public Space, public BuildsOnElements {
   bool built_on(int element) const override { return slot_[element] >= 0; }
 
   const PatchMesh& mesh() const { return *mesh_; }
-  const std::vector<EdgeGluing>& gluing() const { return *gluing_; }
+  /// The gluing data of every edge: kept by the whole space (and its parts) only, else std::logic_error.
+  const std::vector<EdgeGluing>& gluing() const;
   /// The whole space's basis, indexed by face (a skeleton's is empty; a space built on some
   /// elements has their entries only, in their order, and no `info`).
   const G1Basis& basis() const { return basis_; }
@@ -63,7 +65,7 @@ class G1Space final : public Space, public BuildsOnElements {
   G1Space(const G1Space& from, const std::vector<int>& elements);
 
   std::shared_ptr<const PatchMesh> mesh_;
-  std::shared_ptr<const std::vector<EdgeGluing>> gluing_;
+  std::shared_ptr<const std::vector<EdgeGluing>> gluing_;  ///< null in skeletons and their parts
   std::shared_ptr<const G1Numbering> numbering_;  ///< skeletons and their parts; null for the whole
   G1Basis basis_;                                 ///< face_dofs, extraction: per built element
   std::vector<int> slot_;                         ///< per face: its entry in basis_, −1 if not built
