@@ -9,6 +9,7 @@
 #include <string>
 
 #include "spaces/g1/bernstein_face.hpp"
+#include "spaces/g1/g1_local_problems.hpp"
 
 namespace iga {
 
@@ -56,15 +57,6 @@ Eigen::MatrixXd null_space(const Eigen::MatrixXd& m, int n) {
   qr.setThreshold(kRankTolerance);
   const Eigen::MatrixXd q = qr.householderQ() * Eigen::MatrixXd::Identity(n, n);
   return q.rightCols(n - qr.rank());
-}
-
-std::vector<FaceCoefficient> to_function(const Eigen::VectorXd& x, const std::vector<std::pair<int, int>>& u,
-                                         bool normalize) {
-  const double scale = normalize ? x.cwiseAbs().maxCoeff() : 1.0;
-  std::vector<FaceCoefficient> f;
-  for (size_t i = 0; i < u.size(); ++i)
-    if (x[static_cast<Eigen::Index>(i)] != 0.0) f.push_back({u[i].first, u[i].second, x[static_cast<Eigen::Index>(i)] / scale});
-  return f;
 }
 
 /// Orthonormal bases of ker(a) and of its orthogonal complement in R^r (r = a.cols()).
@@ -132,24 +124,6 @@ void throw_first(const std::vector<std::string>& errors) {
     if (!e.empty()) throw IncompleteBasis(e);
 }
 
-/// What one interior edge's local problem gives, kept for the vertex problems at its ends.
-/// With E = the edge's C0 + G1 rows restricted to `unknowns` (rows 0–1 along the edge minus both
-/// corner sets), E = U S Vᵀ, and A = the rows restricted to the two corner sets at one end:
-/// `null` = ker E (the edge functions); per end, `compat` = coker(E)ᵀ A (the conditions on that
-/// end's corner data) and `scaled` = S_r⁻¹ U_rᵀ A, so that −V_r (scaled · x) = −E⁺ A x is the
-/// minimum-norm rest of a function with corner data x. E⁺ is never formed: its entries are all of
-/// size 1/σ_min, and multiplying by it would leave G1 residuals of eps·cond(E) even where the
-/// result is O(1); through the factors the error stays relative to the result. The rows are not kept.
-struct EdgeLocal {
-  struct End {
-    std::vector<std::pair<int, int>> corners;  ///< 8 (face, index): both faces' corner sets at this end
-    Eigen::MatrixXd compat, scaled;            ///< dim coker x 8, rank x 8
-  };
-  std::vector<std::pair<int, int>> unknowns;
-  Eigen::MatrixXd null, range;  ///< ker E and V_r: |unknowns| x nullity, |unknowns| x rank
-  End end[2];                   ///< at X, at Y
-};
-
 void solve_edge_local(const PatchMesh& mesh, int e, const std::vector<std::vector<FaceCoefficient>>& rows, int k,
                       EdgeLocal& l) {
   Unknowns u(k);
@@ -184,6 +158,15 @@ void solve_edge_local(const PatchMesh& mesh, int e, const std::vector<std::vecto
 
 }  // namespace
 
+std::vector<FaceCoefficient> to_function(const Eigen::VectorXd& x, const std::vector<std::pair<int, int>>& u,
+                                         bool normalize) {
+  const double scale = normalize ? x.cwiseAbs().maxCoeff() : 1.0;
+  std::vector<FaceCoefficient> f;
+  for (size_t i = 0; i < u.size(); ++i)
+    if (x[static_cast<Eigen::Index>(i)] != 0.0) f.push_back({u[i].first, u[i].second, x[static_cast<Eigen::Index>(i)] / scale});
+  return f;
+}
+
 int vertex_function_count(const PatchMesh& mesh, const std::vector<EdgeGluing>& gluing, int v) {
   const VertexFan& fan = mesh.fan(v);
   int crossing = 0;
@@ -216,8 +199,6 @@ int theorem_dimension(const PatchMesh& mesh, const std::vector<EdgeGluing>& glui
          9 * mesh.num_edges() + 3 * used_vertices + crossing_vertices;
 }
 
-namespace {
-
 /// The vertex functions of vertex v (notes §4.5), value function first. The local problem has the
 /// unknowns C (corner sets of v, 4 per face) and R_τ (each edge τ at v: rows 0–1 along τ minus the
 /// corner sets, the edge problem's unknowns); the rows of an interior edge τ at v are
@@ -229,7 +210,7 @@ namespace {
 /// (Σ dim coker) x 4F matrix per vertex, the edge parts reused from the edge problems.
 std::vector<std::vector<FaceCoefficient>> build_vertex_functions(const PatchMesh& mesh,
                                                                  const std::vector<EdgeGluing>& gluing, int k, int v,
-                                                                 const std::vector<EdgeLocal>& local,
+                                                                 const std::vector<const EdgeLocal*>& at,
                                                                  const std::string& where) {
   const VertexFan& fan = mesh.fan(v);
   const int nf = static_cast<int>(fan.face.size());
@@ -245,16 +226,16 @@ std::vector<std::vector<FaceCoefficient>> build_vertex_functions(const PatchMesh
   std::vector<const EdgeLocal*> edges;
   std::vector<std::array<int, 8>> columns;
   Eigen::Index compat_rows = 0;
-  for (int e : fan.edge)
-    if (!mesh.edge(e).boundary()) {
-      const EdgeLocal::End& d = local[e].end[mesh.edge(e).x == v ? 0 : 1];
+  for (size_t t = 0; t < fan.edge.size(); ++t)
+    if (const int e = fan.edge[t]; !mesh.edge(e).boundary()) {
+      const EdgeLocal::End& d = at[t]->end[mesh.edge(e).x == v ? 0 : 1];
       std::array<int, 8> col;
       for (int j = 0; j < 8; ++j) {
         col[j] = corners.find(d.corners[j].first, d.corners[j].second);
         if (col[j] < 0) throw std::logic_error("G1 basis: edge corner set outside the vertex fan");
       }
       ends.push_back(&d);
-      edges.push_back(&local[e]);
+      edges.push_back(at[t]);
       columns.push_back(col);
       compat_rows += d.compat.rows();
     }
@@ -311,9 +292,7 @@ std::vector<std::vector<FaceCoefficient>> build_vertex_functions(const PatchMesh
   return out;
 }
 
-}  // namespace
-
-G1Basis build_g1_basis(const PatchMesh& mesh, const std::vector<EdgeGluing>& gluing, int k) {
+void check_g1_degree(const PatchMesh& mesh, int k) {
   if (k < 3) throw IncompleteBasis("G1 basis needs degree >= 3");
   // Below 4 the corner sets of a triangle overlap (λ0 λ1 λ2 belongs to all three).
   if (k < 4 && mesh.has_triangles()) throw IncompleteBasis("G1 basis on triangles needs degree >= 4");
@@ -322,6 +301,28 @@ G1Basis build_g1_basis(const PatchMesh& mesh, const std::vector<EdgeGluing>& glu
   if (k < 4 && mesh.num_faces() > 0)
     throw IncompleteBasis("G1 basis on quadrilaterals needs degree >= 4 (at degree " + std::to_string(k) +
                           " the corner coefficients leave no edge coefficients)");
+}
+
+std::string solve_g1_edge(const PatchMesh& mesh, const std::vector<EdgeGluing>& gluing,
+                          const EdgeCollocation& collocation, int k, int e, const std::string& where, EdgeLocal& l) {
+  const MeshEdge& me = mesh.edge(e);
+  add_edge_rows(mesh, k, me.first.face, me.first.local_edge, 2, 2, l.unknowns);
+  if (me.boundary()) return {};
+  add_edge_rows(mesh, k, me.second.face, me.second.local_edge, 2, 2, l.unknowns);
+  try {
+    solve_edge_local(mesh, e, edge_constraint_rows(mesh, gluing[e], collocation), k, l);
+  } catch (const IncompleteBasis& ex) {
+    return where + ex.what();
+  }
+  const int expected = syzygy_dimension(gluing[e], k) - 9 + (gluing[e].crossing_x ? 1 : 0) + (gluing[e].crossing_y ? 1 : 0);
+  if (l.null.cols() != expected)
+    return where + "edge " + std::to_string(e) + " has " + std::to_string(l.null.cols()) +
+           " local functions, expected " + std::to_string(expected);
+  return {};
+}
+
+G1Basis build_g1_basis(const PatchMesh& mesh, const std::vector<EdgeGluing>& gluing, int k) {
+  check_g1_degree(mesh, k);
   G1Basis basis;
   basis.degree = k;
   std::vector<std::vector<FaceCoefficient>> functions;
@@ -339,21 +340,8 @@ G1Basis build_g1_basis(const PatchMesh& mesh, const std::vector<EdgeGluing>& glu
   std::vector<std::string> errors(mesh.num_edges());
 #pragma omp parallel for schedule(dynamic, 16) if (worth_threads(mesh.num_edges()))
   for (int e = 0; e < mesh.num_edges(); ++e) {
-    const MeshEdge& me = mesh.edge(e);
-    EdgeLocal& l = local[e];
-    add_edge_rows(mesh, k, me.first.face, me.first.local_edge, 2, 2, l.unknowns);
-    if (me.boundary()) continue;
-    add_edge_rows(mesh, k, me.second.face, me.second.local_edge, 2, 2, l.unknowns);
-    try {  // nothing may leave an OpenMP region by an exception
-      solve_edge_local(mesh, e, edge_constraint_rows(mesh, gluing[e], collocation), k, l);
-    } catch (const IncompleteBasis& ex) {
-      errors[e] = where + ex.what();
-      continue;
-    }
-    const int expected = syzygy_dimension(gluing[e], k) - 9 + (gluing[e].crossing_x ? 1 : 0) + (gluing[e].crossing_y ? 1 : 0);
-    if (l.null.cols() != expected)
-      errors[e] = where + "edge " + std::to_string(e) + " has " + std::to_string(l.null.cols()) +
-                  " local functions, expected " + std::to_string(expected);
+    // nothing may leave an OpenMP region by an exception: solve_g1_edge returns its message
+    errors[e] = solve_g1_edge(mesh, gluing, collocation, k, e, where, local[e]);
   }
   throw_first(errors);
   for (int e = 0; e < mesh.num_edges(); ++e) {
@@ -373,7 +361,9 @@ G1Basis build_g1_basis(const PatchMesh& mesh, const std::vector<EdgeGluing>& glu
   for (int v = 0; v < mesh.num_vertices(); ++v) {
     if (mesh.fan(v).face.empty()) continue;
     try {
-      vertex_functions[v] = build_vertex_functions(mesh, gluing, k, v, local, where);
+      std::vector<const EdgeLocal*> at;
+      for (int e : mesh.fan(v).edge) at.push_back(&local[e]);
+      vertex_functions[v] = build_vertex_functions(mesh, gluing, k, v, at, where);
     } catch (const IncompleteBasis& ex) {
       errors[v] = ex.what();
     }

@@ -1,6 +1,7 @@
 #include "spaces/g1/g1_space.hpp"
 
 #include <algorithm>
+#include <numeric>
 #include <stdexcept>
 #include <string>
 
@@ -26,14 +27,19 @@ struct G1Core {
     bernstein_tables(static_cast<CellShape>(kind), basis.degree, points, t);
     return 2;
   }
-  const std::vector<char>& built;
+  const std::vector<int>& slot;
 
-  const std::vector<int>& active(int e) const { return basis.face_dofs[e]; }
-  Extraction extraction(int e) const {
-    if (!built[e])
+  /// None for an element not built on (its geometry may still be evaluated; its functions not).
+  const std::vector<int>& active(int e) const {
+    static const std::vector<int> none;
+    return slot[e] < 0 ? none : basis.face_dofs[slot[e]];
+  }
+  Extraction extraction(int e) const { return extraction_view(basis.extraction[checked(e)]); }
+  int checked(int e) const {
+    if (slot[e] < 0)
       throw std::logic_error("G1Space: element " + std::to_string(e) +
                              " was not built on (a space built on some elements is asked for another)");
-    return extraction_view(basis.extraction[e]);
+    return slot[e];
   }
   void map(int e, const QuadratureRule& rule, const LocalTables& /*t*/, int /*order*/, std::vector<Jet>& jets) const {
     jets.resize(rule.size());
@@ -46,14 +52,19 @@ struct G1Core {
 G1Space::G1Space(std::shared_ptr<const PatchMesh> mesh, int k, SpaceExtent extent) : mesh_(std::move(mesh)) {
   gluing_ = std::make_shared<const std::vector<EdgeGluing>>(gluing_from_geometry(*mesh_));
   const std::vector<EdgeGluing>& gluing = *gluing_;
+  // The whole basis, or the skeleton's numbering: both throw the same IncompleteBasis.
+  auto construct = [&](int degree) {
+    if (extent == SpaceExtent::whole) basis_ = build_g1_basis(*mesh_, gluing, degree);
+    else numbering_ = std::make_shared<const G1Numbering>(number_g1_basis(*mesh_, gluing, degree));
+  };
   try {
-    basis_ = build_g1_basis(*mesh_, gluing, k);
+    construct(k);
   } catch (const IncompleteBasis& e) {
     // Find the smallest degree for which the local construction is complete (separability, §2.5).
     int works = -1;
     for (int trial = std::max(k + 1, 3); trial <= 10 && works < 0; ++trial) {
       try {
-        build_g1_basis(*mesh_, gluing, trial);
+        construct(trial);
         works = trial;
       } catch (const IncompleteBasis&) {
       }
@@ -62,12 +73,14 @@ G1Space::G1Space(std::shared_ptr<const PatchMesh> mesh, int k, SpaceExtent exten
                      "': degree below the separability degree of this mesh (" + e.what() + "); use degree >= " +
                      (works > 0 ? std::to_string(works) : std::string("11")));
   }
+  const int dimension = numbering_ ? numbering_->dimension() : basis_.dimension();
+  basis_.degree = k;
   SpaceFacts facts;
   facts.type = "g1";
   facts.parameters = {{"degree", std::to_string(basis_.degree)},
                       {"patches", std::to_string(mesh_->num_faces())},
                       {"domain", mesh_->name()}};
-  facts.dimension = basis_.dimension();
+  facts.dimension = dimension;
   facts.num_elements = mesh_->num_faces();
   facts.affine_elements = true;
   for (int f = 0; f < mesh_->num_faces(); ++f) {
@@ -80,38 +93,43 @@ G1Space::G1Space(std::shared_ptr<const PatchMesh> mesh, int k, SpaceExtent exten
   set_boundary_parts(*mesh_, facts);
   facts.gradient_jump_samples = 2 * basis_.degree + 4;
   set_facts(std::move(facts));
-  built_.assign(mesh_->num_faces(), extent == SpaceExtent::whole ? 1 : 0);
-  if (extent == SpaceExtent::skeleton) {
-    pending_ = std::move(basis_.extraction);
-    basis_.extraction.assign(mesh_->num_faces(), {});
-  }
+  slot_.assign(mesh_->num_faces(), -1);
+  if (extent == SpaceExtent::whole) std::iota(slot_.begin(), slot_.end(), 0);
+  else gluing_.reset();  // build_on computes it again
 }
 
-G1Space::G1Space(const G1Space& skeleton, const std::vector<int>& elements,
-                 std::vector<Eigen::SparseMatrix<double>> extraction)
-    : mesh_(skeleton.mesh_), gluing_(skeleton.gluing_), built_(skeleton.mesh_->num_faces(), 0) {
-  basis_.degree = skeleton.basis_.degree;
-  basis_.info = skeleton.basis_.info;
-  basis_.face_dofs = skeleton.basis_.face_dofs;
-  basis_.extraction.resize(mesh_->num_faces());
-  for (int e : elements) {
-    basis_.extraction[e] = std::move(extraction[e]);
-    built_[e] = 1;
+G1Space::G1Space(const G1Space& from, const std::vector<int>& elements)
+    : mesh_(from.mesh_), gluing_(from.gluing_), numbering_(from.numbering_), slot_(mesh_->num_faces(), -1) {
+  if (numbering_) {
+    // The gluing of every edge again (a skeleton does not keep it: 80 bytes per edge), for the
+    // time of this construction only.
+    basis_ = build_g1_basis_on(*mesh_, gluing_from_geometry(*mesh_), *numbering_, elements);
+  } else {  // a whole space's entries: copied
+    basis_.degree = from.basis_.degree;
+    for (int e : elements) {
+      basis_.face_dofs.push_back(from.basis_.face_dofs[e]);
+      basis_.extraction.push_back(from.basis_.extraction[e]);
+    }
+    whole_face_dofs_ = std::make_shared<const std::vector<std::vector<int>>>(from.basis_.face_dofs);
   }
-  set_facts(skeleton.facts());
+  for (size_t s = 0; s < elements.size(); ++s) slot_[elements[s]] = static_cast<int>(s);
+  set_facts(from.facts());
 }
 
 SpacePtr G1Space::build_on(const std::vector<int>& elements) const {
   check_element_set(elements, mesh_->num_faces(), "G1Space::build_on");
-  std::vector<Eigen::SparseMatrix<double>> extraction;
-  {
-    const std::lock_guard<std::mutex> lock(pending_mutex_);
-    extraction = std::move(pending_);
-    pending_.clear();
-  }
-  // The same local problems give the same extractions, bit for bit.
-  if (extraction.empty()) extraction = build_g1_basis(*mesh_, *gluing_, basis_.degree).extraction;
-  return std::shared_ptr<const G1Space>(new G1Space(*this, elements, std::move(extraction)));
+  return std::shared_ptr<const G1Space>(new G1Space(*this, elements));
+}
+
+const std::vector<EdgeGluing>& G1Space::gluing() const {
+  if (!gluing_) throw std::logic_error("G1Space: a skeleton and its parts keep no gluing data");
+  return *gluing_;
+}
+
+void G1Space::element_dofs(int element, std::vector<int>& out) const {
+  if (slot_[element] >= 0) out = basis_.face_dofs[slot_[element]];
+  else if (numbering_) numbering_->face_dofs(*mesh_, element, out);
+  else out = (*whole_face_dofs_)[element];
 }
 
 std::vector<InteriorEdge> G1Space::interior_edges() const {
@@ -126,7 +144,7 @@ std::vector<InteriorEdge> G1Space::interior_edges() const {
 }
 
 std::unique_ptr<Space::Evaluator> G1Space::make_evaluator() const {
-  return std::make_unique<ExtractedEvaluator<G1Core>>(*this, G1Core{*mesh_, basis_, built_});
+  return std::make_unique<ExtractedEvaluator<G1Core>>(*this, G1Core{*mesh_, basis_, slot_});
 }
 
 RulePtr G1Space::quadrature(int element, int degree) const {

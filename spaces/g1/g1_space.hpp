@@ -11,10 +11,10 @@
 
 #include <map>
 #include <memory>
-#include <mutex>
 
 #include "spaces/gauss_rule_cache.hpp"
 #include "spaces/g1/g1_basis.hpp"
+#include "spaces/g1/g1_numbering.hpp"
 #include "spaces/g1/gluing_data.hpp"
 #include "spaces/g1/patch_mesh.hpp"
 #include "spaces/builds_on_elements.hpp"
@@ -26,9 +26,11 @@ class G1Space final : public Space, public BuildsOnElements {
  public:
   /// Build on `mesh` with degree k. Throws InputError when k is below the degree the local
   /// construction needs on this mesh (the message names the smallest degree that works).
-  /// With SpaceExtent::skeleton the space keeps no extraction (BuildsOnElements): the local
-  /// problems are solved for the whole mesh (they give the numbering), and their extractions wait
-  /// for the first build_on, which keeps those of its elements and releases the rest.
+  /// With SpaceExtent::skeleton the space keeps no extraction (BuildsOnElements), only the
+  /// numbering (g1_numbering.hpp: a few ints per edge, vertex and face): it solves every local
+  /// problem to count and check its functions, one vertex fan at a time, and keeps none (nor the
+  /// gluing data); the same input errors as the whole construction, with the same messages, on
+  /// every rank.
   G1Space(std::shared_ptr<const PatchMesh> mesh, int k, SpaceExtent extent = SpaceExtent::whole);
 
   /// Facts: type "g1", parameters degree, patches (faces), domain; C1 in physical coordinates by
@@ -36,7 +38,7 @@ class G1Space final : public Space, public BuildsOnElements {
   /// edges lie on, `left` (x = x_min), `right`, `bottom` (y = y_min), `top`, only the nonempty
   /// ones, or the mesh's groups (boundary_parts.hpp).
   std::unique_ptr<Evaluator> make_evaluator() const override;
-  void element_dofs(int element, std::vector<int>& out) const override { out = basis_.face_dofs[element]; }
+  void element_dofs(int element, std::vector<int>& out) const override;
 
   RulePtr quadrature(int element, int degree) const override;
   RulePtr edge_quadrature(int element, int edge, int degree) const override;
@@ -45,26 +47,30 @@ class G1Space final : public Space, public BuildsOnElements {
   /// jump times both Jacobian determinants is a polynomial of degree <= k + 2 along an edge).
   std::vector<InteriorEdge> interior_edges() const override;
 
-  /// The space with the extractions of `elements` (increasing) only, sharing mesh and gluing.
+  /// The space with the extractions of `elements` (increasing) only, sharing mesh, gluing and
+  /// numbering: solves the local problems of their edges and corners only.
   SpacePtr build_on(const std::vector<int>& elements) const override;
-  bool built_on(int element) const override { return built_[element] != 0; }
+  bool built_on(int element) const override { return slot_[element] >= 0; }
 
   const PatchMesh& mesh() const { return *mesh_; }
-  const std::vector<EdgeGluing>& gluing() const { return *gluing_; }
+  /// The gluing data of every edge: kept by the whole space (and its parts) only, else std::logic_error.
+  const std::vector<EdgeGluing>& gluing() const;
+  /// The whole space's basis, indexed by face (a skeleton's is empty; a space built on some
+  /// elements has their entries only, in their order, and no `info`).
   const G1Basis& basis() const { return basis_; }
 
  private:
-  /// A skeleton's space built on `elements`, with `extraction` the extractions of every face.
-  G1Space(const G1Space& skeleton, const std::vector<int>& elements, std::vector<Eigen::SparseMatrix<double>> extraction);
+  /// `from` built on `elements`: their local problems solved (from a skeleton) or their entries
+  /// copied (from a whole space).
+  G1Space(const G1Space& from, const std::vector<int>& elements);
 
   std::shared_ptr<const PatchMesh> mesh_;
-  std::shared_ptr<const std::vector<EdgeGluing>> gluing_;
-  G1Basis basis_;  ///< extraction: empty for the elements not built on
-  std::vector<char> built_;
-  /// A skeleton's extractions of every face until the first build_on takes them (one construction
-  /// per level; afterwards no space keeps them all). Later calls solve the local problems again.
-  mutable std::mutex pending_mutex_;
-  mutable std::vector<Eigen::SparseMatrix<double>> pending_;
+  std::shared_ptr<const std::vector<EdgeGluing>> gluing_;  ///< null in skeletons and their parts
+  std::shared_ptr<const G1Numbering> numbering_;  ///< skeletons and their parts; null for the whole
+  G1Basis basis_;                                 ///< face_dofs, extraction: per built element
+  std::vector<int> slot_;                         ///< per face: its entry in basis_, −1 if not built
+  /// A whole space's face_dofs, kept by a space built on some elements of it (not of a skeleton).
+  std::shared_ptr<const std::vector<std::vector<int>>> whole_face_dofs_;
 
   GaussRuleCache rules_;
 };

@@ -64,8 +64,11 @@ PatchMesh::PatchMesh(std::vector<Point2> vertices, std::vector<std::vector<int>>
 }
 
 int PatchMesh::find_edge(int a, int b) const {
-  const auto it = edge_ids_.find({std::min(a, b), std::max(a, b)});
-  return it == edge_ids_.end() ? -1 : it->second;
+  // Among the edges at a (its fan): no table of all edges kept for this.
+  if (a < 0 || a >= num_vertices()) return -1;
+  for (int e : fans_[a].edge)
+    if ((edges_[e].x == a && edges_[e].y == b) || (edges_[e].x == b && edges_[e].y == a)) return e;
+  return -1;
 }
 
 void PatchMesh::check_groups() const {
@@ -117,7 +120,6 @@ void PatchMesh::build_topology() {
                          " traverse their shared edge in the same direction (inconsistent orientation)");
     }
     const int id = num_edges();
-    edge_ids_[key] = id;
     edges_.push_back(edge);
     for (const FaceEdge& fe : list) face_edges_[fe.face][fe.local_edge] = id;
   }

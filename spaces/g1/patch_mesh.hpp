@@ -98,7 +98,6 @@ class PatchMesh {
   std::vector<MeshEdge> edges_;
   std::vector<std::vector<int>> face_edges_;
   std::vector<VertexFan> fans_;
-  std::map<std::pair<int, int>, int> edge_ids_;  ///< (min, max) vertex pair -> edge
   BoundaryGroups groups_;
 };
 
