@@ -15,10 +15,11 @@ namespace iga {
 
 namespace {
 
-/// Hand the heap's free pages back to the system. The G1 constructions still solve their local
-/// problems for the whole mesh (the numbering) and free what is not the part's; glibc keeps such
-/// freed small blocks resident, so without this the peak of the solve would carry the whole
-/// construction (g1 k = 5 plate, 197 766 DOFs, two ranks: 0.845 GB per rank without, 0.797 GB with).
+/// Hand the heap's free pages back to the system. The G1 skeletons count their functions by solving
+/// every local problem one vertex fan at a time and keep only the counts; glibc keeps the freed
+/// small blocks of such passes resident, so without this the peak of the solve would carry them
+/// (measured when the skeleton still held the whole construction: g1 k = 5 plate, 197 766 DOFs, two
+/// ranks, 0.845 GB per rank without, 0.797 GB with).
 void release_freed_memory() {
 #ifdef __GLIBC__
   malloc_trim(0);
