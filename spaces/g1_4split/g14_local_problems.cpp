@@ -92,6 +92,17 @@ Eigen::MatrixXd G14LocalProblems::corner_data(int v, std::vector<int>& vc) const
   return numerical_nullspace(E);
 }
 
+Eigen::VectorXd G14LocalProblems::lift_along(int v, int e, const G14EdgeSystem& s, const Eigen::MatrixXd& H, int h,
+                                             const std::map<int, int>& pos) const {
+  const int end = t_.edge(e).g0 == v ? 0 : 1;
+  Eigen::VectorXd rhs = Eigen::VectorXd::Zero(s.M.rows());
+  for (int p : s.end_corner[end]) rhs -= s.M.col(p) * H(pos.at(s.columns[p]), h);
+  Eigen::VectorXd x = s.solver.solve(rhs);
+  const double residual = (s.M_strip * x - rhs).norm();
+  if (residual > 1e-9 * std::max(1.0, rhs.norm())) throw not_separable(v, e, residual);
+  return x;
+}
+
 std::vector<BrokenFunction> G14LocalProblems::lifted(int v, const std::vector<int>& vc, const Eigen::MatrixXd& H,
                                                      const SystemOf& system) const {
   std::map<int, int> pos;
@@ -103,12 +114,7 @@ std::vector<BrokenFunction> G14LocalProblems::lifted(int v, const std::vector<in
     for (int e : t_.vertex_edges(v)) {
       if (t_.edge(e).boundary()) continue;
       const G14EdgeSystem& s = system(e);
-      const int end = t_.edge(e).g0 == v ? 0 : 1;
-      Eigen::VectorXd rhs = Eigen::VectorXd::Zero(s.M.rows());
-      for (int p : s.end_corner[end]) rhs -= s.M.col(p) * H(pos.at(s.columns[p]), h);
-      const Eigen::VectorXd x = s.solver.solve(rhs);
-      const double residual = (s.M_strip * x - rhs).norm();
-      if (residual > 1e-9 * std::max(1.0, rhs.norm())) throw not_separable(v, e, residual);
+      const Eigen::VectorXd x = lift_along(v, e, s, H, h, pos);
       for (std::size_t c = 0; c < s.strip.size(); ++c) fn[s.columns[s.strip[c]]] += x(c);
     }
     out.push_back(std::move(fn));
@@ -154,12 +160,7 @@ int G14LocalProblems::vertex_count(int v, const SystemOf& system) const {
     for (int e : t_.vertex_edges(v)) {
       if (t_.edge(e).boundary()) continue;
       const G14EdgeSystem& s = system(e);
-      const int end = t_.edge(e).g0 == v ? 0 : 1;
-      Eigen::VectorXd rhs = Eigen::VectorXd::Zero(s.M.rows());
-      for (int p : s.end_corner[end]) rhs -= s.M.col(p) * H(pos.at(s.columns[p]), h);
-      const Eigen::VectorXd x = s.solver.solve(rhs);
-      const double residual = (s.M_strip * x - rhs).norm();
-      if (residual > 1e-9 * std::max(1.0, rhs.norm())) throw not_separable(v, e, residual);
+      lift_along(v, e, s, H, h, pos);  // its check only
       if (h == 0)
         for (int c : s.strip) rows.insert(s.columns[c]);
     }

@@ -78,6 +78,10 @@ class G14LocalProblems {
   /// The lifts of the corner data H over vc along v's interior edges.
   std::vector<BrokenFunction> lifted(int v, const std::vector<int>& vc, const Eigen::MatrixXd& H,
                                      const SystemOf& system) const;
+  /// The strip coefficients of edge e's system that lift column h of the corner data H (over the
+  /// corner indices with positions `pos`) from v's end; throws NotSeparable when none does.
+  Eigen::VectorXd lift_along(int v, int e, const G14EdgeSystem& s, const Eigen::MatrixXd& H, int h,
+                             const std::map<int, int>& pos) const;
   /// The error of a vertex datum that does not lift along edge e.
   NotSeparable not_separable(int v, int e, double residual) const;
   const QuadTopology& t_;
