@@ -6,6 +6,7 @@
 #include <array>
 #include <cmath>
 #include <stdexcept>
+#include <numeric>
 #include <string>
 
 #include "spaces/g1/bernstein_face.hpp"
@@ -167,6 +168,45 @@ std::vector<FaceCoefficient> to_function(const Eigen::VectorXd& x, const std::ve
   return f;
 }
 
+std::vector<std::vector<FaceCoefficient>> edge_functions(const PatchMesh& mesh, int e, const EdgeLocal& l) {
+  std::vector<std::vector<FaceCoefficient>> out;
+  if (mesh.edge(e).boundary()) {
+    for (const auto& [f, i] : l.unknowns) out.push_back({{f, i, 1.0}});
+  } else {
+    for (Eigen::Index j = 0; j < l.null.cols(); ++j) out.push_back(to_function(l.null.col(j), l.unknowns, true));
+  }
+  return out;
+}
+
+std::vector<std::vector<FaceCoefficient>> face_functions(const PatchMesh& mesh, int f, int k) {
+  std::vector<std::vector<FaceCoefficient>> out;
+  for (int i : interior_coefficients(mesh.shape(f), k)) out.push_back({{f, i, 1.0}});
+  return out;
+}
+
+FaceExtractionAssembly::FaceExtractionAssembly(std::vector<int> faces)
+    : faces_(std::move(faces)), dofs_(faces_.size()), triplets_(faces_.size()) {}
+
+void FaceExtractionAssembly::add(int g, const std::vector<FaceCoefficient>& function) {
+  for (const FaceCoefficient& c : function) {
+    const auto it = std::lower_bound(faces_.begin(), faces_.end(), c.face);
+    if (it == faces_.end() || *it != c.face) continue;
+    const size_t s = static_cast<size_t>(it - faces_.begin());
+    std::vector<int>& dofs = dofs_[s];
+    if (dofs.empty() || dofs.back() != g) dofs.push_back(g);
+    triplets_[s].push_back({c.index, static_cast<int>(dofs.size()) - 1, c.value});
+  }
+}
+
+void FaceExtractionAssembly::finish(const PatchMesh& mesh, int k, G1Basis& basis) {
+  basis.extraction.resize(faces_.size());
+  for (size_t s = 0; s < faces_.size(); ++s) {
+    basis.extraction[s].resize(bernstein_count(mesh.shape(faces_[s]), k), static_cast<Eigen::Index>(dofs_[s].size()));
+    basis.extraction[s].setFromTriplets(triplets_[s].begin(), triplets_[s].end());
+  }
+  basis.face_dofs = std::move(dofs_);
+}
+
 int vertex_function_count(const PatchMesh& mesh, const std::vector<EdgeGluing>& gluing, int v) {
   const VertexFan& fan = mesh.fan(v);
   int crossing = 0;
@@ -325,9 +365,11 @@ G1Basis build_g1_basis(const PatchMesh& mesh, const std::vector<EdgeGluing>& glu
   check_g1_degree(mesh, k);
   G1Basis basis;
   basis.degree = k;
-  std::vector<std::vector<FaceCoefficient>> functions;
-  auto add = [&](std::vector<FaceCoefficient> f, G1FunctionInfo info) {
-    functions.push_back(std::move(f));
+  std::vector<int> all_faces(mesh.num_faces());
+  std::iota(all_faces.begin(), all_faces.end(), 0);
+  FaceExtractionAssembly extraction(std::move(all_faces));
+  auto add = [&](const std::vector<FaceCoefficient>& f, G1FunctionInfo info) {
+    extraction.add(basis.dimension(), f);
     basis.info.push_back(info);
   };
   const std::string where = mesh.name() + ", degree " + std::to_string(k) + ": ";
@@ -344,14 +386,8 @@ G1Basis build_g1_basis(const PatchMesh& mesh, const std::vector<EdgeGluing>& glu
     errors[e] = solve_g1_edge(mesh, gluing, collocation, k, e, where, local[e]);
   }
   throw_first(errors);
-  for (int e = 0; e < mesh.num_edges(); ++e) {
-    const EdgeLocal& l = local[e];
-    if (mesh.edge(e).boundary()) {
-      for (const auto& [f, i] : l.unknowns) add({{f, i, 1.0}}, {G1Entity::edge, e});
-      continue;
-    }
-    for (Eigen::Index j = 0; j < l.null.cols(); ++j) add(to_function(l.null.col(j), l.unknowns, true), {G1Entity::edge, e});
-  }
+  for (int e = 0; e < mesh.num_edges(); ++e)
+    for (const std::vector<FaceCoefficient>& f : edge_functions(mesh, e, local[e])) add(f, {G1Entity::edge, e});
 
   // Vertex functions: per vertex a list of functions, built in parallel, appended in vertex order
   // (the basis does not depend on the number of threads).
@@ -370,30 +406,11 @@ G1Basis build_g1_basis(const PatchMesh& mesh, const std::vector<EdgeGluing>& glu
   }
   throw_first(errors);
   for (int v = 0; v < mesh.num_vertices(); ++v)
-    for (size_t j = 0; j < vertex_functions[v].size(); ++j)
-      add(std::move(vertex_functions[v][j]), {G1Entity::vertex, v, j == 0});
+    for (size_t j = 0; j < vertex_functions[v].size(); ++j) add(vertex_functions[v][j], {G1Entity::vertex, v, j == 0});
 
-  // Face functions: interior Bernstein coefficients.
   for (int f = 0; f < mesh.num_faces(); ++f)
-    for (int i : interior_coefficients(mesh.shape(f), k)) add({{f, i, 1.0}}, {G1Entity::face, f});
-
-  // Per-face extraction.
-  basis.face_dofs.assign(mesh.num_faces(), {});
-  for (int g = 0; g < static_cast<int>(functions.size()); ++g)
-    for (const FaceCoefficient& c : functions[g])
-      if (basis.face_dofs[c.face].empty() || basis.face_dofs[c.face].back() != g) basis.face_dofs[c.face].push_back(g);
-  basis.extraction.resize(mesh.num_faces());
-  std::vector<std::vector<Eigen::Triplet<double>>> triplets(mesh.num_faces());
-  for (int g = 0; g < static_cast<int>(functions.size()); ++g)
-    for (const FaceCoefficient& c : functions[g]) {
-      const std::vector<int>& d = basis.face_dofs[c.face];
-      const int col = static_cast<int>(std::lower_bound(d.begin(), d.end(), g) - d.begin());
-      triplets[c.face].push_back({c.index, col, c.value});
-    }
-  for (int f = 0; f < mesh.num_faces(); ++f) {
-    basis.extraction[f].resize(bernstein_count(mesh.shape(f), k), static_cast<Eigen::Index>(basis.face_dofs[f].size()));
-    basis.extraction[f].setFromTriplets(triplets[f].begin(), triplets[f].end());
-  }
+    for (const std::vector<FaceCoefficient>& fn : face_functions(mesh, f, k)) add(fn, {G1Entity::face, f});
+  extraction.finish(mesh, k, basis);
   return basis;
 }
 

@@ -5,11 +5,13 @@
 /// both call these same functions, so a function comes out bit for bit the same either way.
 
 #include <Eigen/Core>
+#include <Eigen/SparseCore>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "spaces/g1/edge_rows.hpp"
+#include "spaces/g1/g1_basis.hpp"
 #include "spaces/g1/gluing_data.hpp"
 #include "spaces/g1/patch_mesh.hpp"
 
@@ -55,5 +57,28 @@ std::vector<std::vector<FaceCoefficient>> build_vertex_functions(const PatchMesh
 /// when `normalize`.
 std::vector<FaceCoefficient> to_function(const Eigen::VectorXd& x, const std::vector<std::pair<int, int>>& u,
                                          bool normalize);
+
+/// The functions of edge e from its local problem `l`, in their order: one unit function per
+/// unknown on a boundary edge, the null-space columns on an interior one.
+std::vector<std::vector<FaceCoefficient>> edge_functions(const PatchMesh& mesh, int e, const EdgeLocal& l);
+
+/// The face functions of face f: one per interior Bernstein coefficient.
+std::vector<std::vector<FaceCoefficient>> face_functions(const PatchMesh& mesh, int f, int k);
+
+/// The per-face extraction of some faces (increasing), from the basis functions handed over in
+/// increasing global number: each function becomes a column of every listed face it has
+/// coefficients on (face_dofs increasing, as the columns).
+class FaceExtractionAssembly {
+ public:
+  explicit FaceExtractionAssembly(std::vector<int> faces);
+  void add(int g, const std::vector<FaceCoefficient>& function);
+  /// face_dofs and extraction of `basis`, one entry per listed face.
+  void finish(const PatchMesh& mesh, int k, G1Basis& basis);
+
+ private:
+  std::vector<int> faces_;
+  std::vector<std::vector<int>> dofs_;
+  std::vector<std::vector<Eigen::Triplet<double>>> triplets_;
+};
 
 }  // namespace iga

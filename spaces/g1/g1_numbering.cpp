@@ -114,13 +114,11 @@ G1Numbering number_g1_basis(const PatchMesh& mesh, const std::vector<EdgeGluing>
       }
       at[t] = &local[t];
       if (me.x != v) continue;
-      const EdgeLocal& l = local[t];
-      n.edge_first[e + 1] = static_cast<int>(l.null.cols());
-      for (Eigen::Index j = 0; j < l.null.cols(); ++j) {
-        const std::vector<FaceCoefficient> function = to_function(l.null.col(j), l.unknowns, true);
+      const std::vector<std::vector<FaceCoefficient>> functions = edge_functions(mesh, e, local[t]);
+      n.edge_first[e + 1] = static_cast<int>(functions.size());
+      for (size_t j = 0; j < functions.size(); ++j)
         for (int face : {me.first.face, me.second.face})
-          if (!has_face(function, face)) here.push_back({face, false, e, static_cast<int>(j)});
-      }
+          if (!has_face(functions[j], face)) here.push_back({face, false, e, static_cast<int>(j)});
     }
     if (!complete) continue;  // build_g1_basis stops at the edges
     try {
@@ -200,49 +198,21 @@ G1Basis build_g1_basis_on(const PatchMesh& mesh, const std::vector<EdgeGluing>& 
   // the faces of `faces` it has coefficients on, as build_g1_basis appends them.
   G1Basis basis;
   basis.degree = k;
-  basis.face_dofs.assign(faces.size(), {});
-  std::vector<std::vector<Eigen::Triplet<double>>> triplets(faces.size());
-  auto add = [&](int g, const std::vector<FaceCoefficient>& function) {
-    for (const FaceCoefficient& c : function) {
-      const auto it = std::lower_bound(faces.begin(), faces.end(), c.face);
-      if (it == faces.end() || *it != c.face) continue;
-      const size_t s = static_cast<size_t>(it - faces.begin());
-      std::vector<int>& dofs = basis.face_dofs[s];
-      if (dofs.empty() || dofs.back() != g) dofs.push_back(g);
-      triplets[s].push_back({c.index, static_cast<int>(dofs.size()) - 1, c.value});
-    }
-  };
-  auto expect_count = [](int count, int first, int next, const char* what, int id) {
-    if (count != next - first)
+  FaceExtractionAssembly extraction(faces);
+  auto add_all = [&](const std::vector<std::vector<FaceCoefficient>>& functions, int first, int next,
+                     const char* what, int id) {
+    if (static_cast<int>(functions.size()) != next - first)
       throw std::logic_error("G1 basis on faces: " + std::string(what) + " " + std::to_string(id) +
                              " has another number of functions than the skeleton counted");
+    for (size_t j = 0; j < functions.size(); ++j) extraction.add(first + static_cast<int>(j), functions[j]);
   };
-  for (int e : edges) {
-    const EdgeLocal& l = *local_of(e);
-    int g = numbering.edge_first[e];
-    if (mesh.edge(e).boundary()) {
-      for (const auto& [f, i] : l.unknowns) add(g++, {{f, i, 1.0}});
-    } else {
-      for (Eigen::Index j = 0; j < l.null.cols(); ++j) add(g++, to_function(l.null.col(j), l.unknowns, true));
-    }
-    expect_count(g - numbering.edge_first[e], numbering.edge_first[e], numbering.edge_first[e + 1], "edge", e);
-  }
-  for (size_t i = 0; i < vertices.size(); ++i) {
-    const int v = vertices[i];
-    int g = numbering.vertex_first[v];
-    for (const std::vector<FaceCoefficient>& function : vertex_functions[i]) add(g++, function);
-    expect_count(g - numbering.vertex_first[v], numbering.vertex_first[v], numbering.vertex_first[v + 1], "vertex", v);
-  }
-  for (int f : faces) {
-    int g = numbering.face_first[f];
-    for (int i : interior_coefficients(mesh.shape(f), k)) add(g++, {{f, i, 1.0}});
-  }
-  basis.extraction.resize(faces.size());
-  for (size_t s = 0; s < faces.size(); ++s) {
-    basis.extraction[s].resize(bernstein_count(mesh.shape(faces[s]), k),
-                               static_cast<Eigen::Index>(basis.face_dofs[s].size()));
-    basis.extraction[s].setFromTriplets(triplets[s].begin(), triplets[s].end());
-  }
+  for (int e : edges)
+    add_all(edge_functions(mesh, e, *local_of(e)), numbering.edge_first[e], numbering.edge_first[e + 1], "edge", e);
+  for (size_t i = 0; i < vertices.size(); ++i)
+    add_all(vertex_functions[i], numbering.vertex_first[vertices[i]], numbering.vertex_first[vertices[i] + 1],
+            "vertex", vertices[i]);
+  for (int f : faces) add_all(face_functions(mesh, f, k), numbering.face_first[f], numbering.face_first[f + 1], "face", f);
+  extraction.finish(mesh, k, basis);
   return basis;
 }
 
