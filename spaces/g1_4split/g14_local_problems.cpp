@@ -46,6 +46,27 @@ void G14Numbering::face_functions(const QuadTopology& t, int f, std::vector<int>
   for (int c = first; c < first + per_face; ++c) out.push_back(c);
 }
 
+G14FaceExtractions::G14FaceExtractions(int face_size, const std::vector<int>& slot,
+                                       std::vector<std::vector<int>> face_functions)
+    : fs_(face_size), slot_(slot), dofs_(std::move(face_functions)), trip_(dofs_.size()) {}
+
+void G14FaceExtractions::add(int column, int index, double value) {
+  const int s = slot_[index / fs_];
+  if (s < 0) return;
+  const std::vector<int>& d = dofs_[s];
+  const int j = static_cast<int>(std::lower_bound(d.begin(), d.end(), column) - d.begin());
+  trip_[s].emplace_back(index % fs_, j, value);
+}
+
+std::vector<Eigen::SparseMatrix<double>> G14FaceExtractions::finish() const {
+  std::vector<Eigen::SparseMatrix<double>> out(dofs_.size());
+  for (std::size_t s = 0; s < dofs_.size(); ++s) {
+    out[s].resize(fs_, static_cast<Eigen::Index>(dofs_[s].size()));
+    out[s].setFromTriplets(trip_[s].begin(), trip_[s].end());
+  }
+  return out;
+}
+
 G14EdgeSystem G14LocalProblems::edge_system(int e) const {
   G14EdgeSystem s;
   s.M = edge_equations(t_, b_, gluing_[e], e, s.columns);

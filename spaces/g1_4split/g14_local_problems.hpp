@@ -8,6 +8,7 @@
 /// that every vertex datum lifts, with no more than one vertex's problems alive at a time.
 
 #include <Eigen/Dense>
+#include <Eigen/SparseCore>
 #include <functional>
 #include <map>
 #include <vector>
@@ -44,6 +45,26 @@ struct G14Numbering {
   /// The functions of face f's vertices, edges and its own, increasing: every function that can be
   /// non-zero on f (a vertex's functions live on the faces at it, an edge's on its faces).
   void face_functions(const QuadTopology& t, int f, std::vector<int>& out) const;
+};
+
+/// The per-face extractions of some faces from basis functions given entry by entry (broken index
+/// f (m+1)² + i, column c): each entry on a listed face goes to column "position of c in the face's
+/// functions" (G14Numbering::face_functions) of that face's matrix. Shared by the whole basis and a
+/// rank's part, so that both give the same matrices.
+class G14FaceExtractions {
+ public:
+  /// `slot[f]`: face f's position among the listed faces, or −1; `face_functions[s]` the
+  /// functions of listed face s (increasing).
+  G14FaceExtractions(int face_size, const std::vector<int>& slot, std::vector<std::vector<int>> face_functions);
+  void add(int column, int index, double value);
+  std::vector<Eigen::SparseMatrix<double>> finish() const;
+  const std::vector<std::vector<int>>& face_functions() const { return dofs_; }
+
+ private:
+  int fs_;
+  const std::vector<int>& slot_;
+  std::vector<std::vector<int>> dofs_;
+  std::vector<std::vector<Eigen::Triplet<double>>> trip_;
 };
 
 class G14LocalProblems {

@@ -3,6 +3,7 @@
 #include <Eigen/Dense>
 #include <Eigen/SVD>
 #include <algorithm>
+#include <numeric>
 #include <cmath>
 #include <map>
 
@@ -167,21 +168,16 @@ G14Basis build_g14_basis(const QuadTopology& t, const std::vector<SplitGluing>& 
 
   // Per-face extraction over the face's functions by entity (G14Numbering::face_functions: what
   // a skeleton numbers without solving).
-  std::vector<std::vector<Eigen::Triplet<double>>> local_trip(t.num_faces());
-  basis.face_dofs.assign(t.num_faces(), {});
-  for (int f = 0; f < t.num_faces(); ++f) n.face_functions(t, f, basis.face_dofs[f]);
+  std::vector<int> every(t.num_faces());
+  std::iota(every.begin(), every.end(), 0);
+  std::vector<std::vector<int>> face_dofs(t.num_faces());
+  for (int f = 0; f < t.num_faces(); ++f) n.face_functions(t, f, face_dofs[f]);
+  G14FaceExtractions extractions(fs, every, std::move(face_dofs));
   for (int c = 0; c < basis.functions.outerSize(); ++c)
-    for (Eigen::SparseMatrix<double>::InnerIterator it(basis.functions, c); it; ++it) {
-      const int f = static_cast<int>(it.row()) / fs;
-      const auto& d = basis.face_dofs[f];
-      const int j = static_cast<int>(std::lower_bound(d.begin(), d.end(), c) - d.begin());
-      local_trip[f].emplace_back(static_cast<int>(it.row()) % fs, j, it.value());
-    }
-  basis.extraction.resize(t.num_faces());
-  for (int f = 0; f < t.num_faces(); ++f) {
-    basis.extraction[f].resize(fs, static_cast<Eigen::Index>(basis.face_dofs[f].size()));
-    basis.extraction[f].setFromTriplets(local_trip[f].begin(), local_trip[f].end());
-  }
+    for (Eigen::SparseMatrix<double>::InnerIterator it(basis.functions, c); it; ++it)
+      extractions.add(c, static_cast<int>(it.row()), it.value());
+  basis.extraction = extractions.finish();
+  basis.face_dofs = extractions.face_functions();
   return basis;
 }
 

@@ -314,12 +314,12 @@ G14Space::G14Space(std::shared_ptr<const G14Space> skeleton, const std::vector<i
   basis_.edge_functions = skeleton->basis_.edge_functions;
   basis_.face_functions = skeleton->basis_.face_functions;
   const G14Numbering& n = basis_.numbering;
-  const int fs = basis_.bspline.face_size();
   std::vector<std::vector<int>> dofs(elements.size());
   for (std::size_t s = 0; s < elements.size(); ++s) {
     slot_[elements[s]] = static_cast<int>(s);
     n.face_functions(t, elements[s], dofs[s]);
   }
+  G14FaceExtractions extractions(basis_.bspline.face_size(), slot_, std::move(dofs));
   // The entities whose functions live on these faces, and the systems of the edges at their vertices.
   std::set<int> vertices, edges;
   for (int f : elements)
@@ -334,23 +334,14 @@ G14Space::G14Space(std::shared_ptr<const G14Space> skeleton, const std::vector<i
       if (!t.edge(e).boundary() && !systems.count(e)) systems.emplace(e, local.edge_system(e));
   const G14LocalProblems::SystemOf system = [&](int e) -> const G14EdgeSystem& { return systems.at(e); };
   // Each function's entries on the built faces, as the whole basis's extraction has them.
-  std::vector<std::vector<Eigen::Triplet<double>>> trip(elements.size());
   const auto distribute = [&](const std::vector<BrokenFunction>& functions, int first, int expected, const char* what,
                               int entity) {
     if (static_cast<int>(functions.size()) != expected)
       throw std::logic_error("G14Space::build_on: " + std::string(what) + " " + std::to_string(entity) + " has " +
                              std::to_string(functions.size()) + " functions, the skeleton counted " +
                              std::to_string(expected));
-    for (std::size_t i = 0; i < functions.size(); ++i) {
-      const int c = first + static_cast<int>(i);
-      for (const auto& [index, x] : kept_entries(functions[i])) {
-        const int s = slot_[index / fs];
-        if (s < 0) continue;
-        const std::vector<int>& d = dofs[s];
-        const int j = static_cast<int>(std::lower_bound(d.begin(), d.end(), c) - d.begin());
-        trip[s].emplace_back(index % fs, j, x);
-      }
-    }
+    for (std::size_t i = 0; i < functions.size(); ++i)
+      for (const auto& [index, x] : kept_entries(functions[i])) extractions.add(first + static_cast<int>(i), index, x);
   };
   for (int v : vertices)
     distribute(local.vertex_functions(v, system), n.vertex_first[v], n.vertex_first[v + 1] - n.vertex_first[v],
@@ -361,11 +352,7 @@ G14Space::G14Space(std::shared_ptr<const G14Space> skeleton, const std::vector<i
   systems.clear();
   for (int f : elements)
     distribute(local.face_functions(f), n.edge_first.back() + f * n.per_face, n.per_face, "face", f);
-  basis_.extraction.resize(elements.size());
-  for (std::size_t s = 0; s < elements.size(); ++s) {
-    basis_.extraction[s].resize(fs, static_cast<Eigen::Index>(dofs[s].size()));
-    basis_.extraction[s].setFromTriplets(trip[s].begin(), trip[s].end());
-  }
+  basis_.extraction = extractions.finish();
   set_facts(skeleton->facts());
 }
 
