@@ -1,5 +1,5 @@
 #pragma once
-// Test helper: the message of the InputError a call is expected to throw.
+// Test helpers: the message of the InputError (or another error) a call throws.
 
 #include <gtest/gtest.h>
 
@@ -18,6 +18,18 @@ std::string input_error(F&& f) {
     return e.what();
   }
   ADD_FAILURE() << "no InputError";
+  return "";
+}
+
+/// Runs `f` and returns the message of the `Error` it throws, "" when it throws none (for comparing
+/// two constructions' refusals, which may both accept).
+template <class Error, class F>
+std::string message_of(F&& f) {
+  try {
+    f();
+  } catch (const Error& e) {
+    return e.what();
+  }
   return "";
 }
 

@@ -12,6 +12,7 @@
 #include <string>
 #include <tuple>
 
+#include "tests/support/input_error.hpp"
 #include "spaces/g1_4split/g14_local_problems.hpp"
 #include "spaces/g1_4split/g1_4split_basis.hpp"
 #include "spaces/g1_4split/g1_4split_meshes.hpp"
@@ -60,12 +61,7 @@ TEST(G14Parts, TheCountsNumberTheFunctionsAsTheWholeBasisAndEveryFunctionOfAFace
 /// The error build_g14_basis throws (NotSeparable), or "" when it builds.
 template <class Build>
 std::string refusal(const Build& build) {
-  try {
-    build();
-  } catch (const NotSeparable& e) {
-    return e.what();
-  }
-  return "";
+  return test::message_of<NotSeparable>(build);
 }
 
 TEST(G14Parts, TheCountsRefuseADegreeBelowSeparabilityAsTheWholeBasis) {
