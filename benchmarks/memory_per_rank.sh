@@ -7,6 +7,14 @@
 # RANKS="1 2" (default "1 2 4") chooses the rank counts: oversubscribed MUMPS runs crawl.
 # REPEAT=3 (default 1) runs each rank count that often and takes the median peak: one run's peak
 # moves by up to ±5 % with where the allocator's free blocks happen to lie.
+# HEAP=1 measures each rank's peak heap (heaptrack: what the program allocated, touched or not)
+# instead of its resident set (what the system charged: touched pages, libraries, freed pages the
+# allocator kept). The two differ by PETSc's preallocations that are never filled and by the
+# allocator's kept pages; heaptrack makes the runs 2-3 times slower.
+# RANKS="2 4" fits over parallel runs only: PETSc builds some structures only when a matrix has
+# more than one rank (GAMG's aggregate graph, the off-diagonal blocks), of a size proportional to
+# the rank's rows — divided, not replicated, but absent at np = 1, so a fit through np = 1 books
+# them as replicated.
 # The config runs as given except solver.type (petsc), output (no VTK, no plot) and limits.
 set -euo pipefail
 build=${1:?build directory}
@@ -30,34 +38,54 @@ refinement: {levels: 1}
 solver: {type: petsc}
 output: {vtk: false, plot: false}
 YAML
-/usr/bin/time -v "$build/iga-run" "$work/tiny.yaml" --quiet -o "$work/tiny" > /dev/null 2> "$work/tiny.err"
-base=$(grep "Maximum resident" "$work/tiny.err" | awk '{ print $6 * 1024 }')
+# heaptrack's peak, "1.30G", in bytes.
+heap_peak() { heaptrack_print -f "$1" --print-peaks 0 --print-allocators 0 --print-temporary 0 --print-leaks 0 2> /dev/null |
+  awk '/^peak heap memory consumption:/ { v = $5; u = substr(v, length(v)); v = substr(v, 1, length(v) - 1);
+       f = (u == "K") ? 1e3 : (u == "M") ? 1e6 : (u == "G") ? 1e9 : 1; if (u ~ /[0-9]/) { v = $5; f = 1 } printf "%.0f\n", v * f }'; }
+cat > "$work/traced" <<'SH'
+#!/usr/bin/env bash
+exec heaptrack -o "$HEAP_OUT.${OMPI_COMM_WORLD_RANK:-0}" "$@" > /dev/null
+SH
+chmod +x "$work/traced"
+run=(/usr/bin/time -v)
+[[ ${HEAP:-0} == 1 ]] && run=("$work/traced")
+# Peak of the rank that peaks highest, in bytes, of a run whose output went to $1.err / $1.heap.*.
+peak_of() {
+  if [[ ${HEAP:-0} == 1 ]]; then
+    for f in "$1".heap.*; do heap_peak "$f"; done | sort -n | tail -1
+    rm -f "$1".heap.*
+  else
+    grep "Maximum resident" "$1.err" | awk '{ if ($6 > m) m = $6 } END { print m * 1024 }'
+  fi
+}
+HEAP_OUT="$work/tiny.heap" "${run[@]}" "$build/iga-run" "$work/tiny.yaml" --quiet -o "$work/tiny" > /dev/null 2> "$work/tiny.err"
+base=$(peak_of "$work/tiny")
 declare -A peak
 ranks=(${RANKS:-1 2 4})
 for np in "${ranks[@]}"; do
   runs=()
   for r in $(seq "${REPEAT:-1}"); do
-    mpirun --allow-run-as-root --oversubscribe -np "$np" /usr/bin/time -v "$build/iga-run" "$work/run.yaml" \
-      --levels "$levels" --quiet -o "$work/out$np" "$@" > /dev/null 2> "$work/err$np"
-    runs+=("$(grep "Maximum resident" "$work/err$np" | awk '{ if ($6 > m) m = $6 } END { print m * 1024 }')")
+    HEAP_OUT="$work/run$np.heap" mpirun --allow-run-as-root --oversubscribe -x HEAP_OUT -np "$np" "${run[@]}" \
+      "$build/iga-run" "$work/run.yaml" --levels "$levels" --quiet -o "$work/out$np" "$@" > /dev/null 2> "$work/run$np.err"
+    runs+=("$(peak_of "$work/run$np")")
   done
   peak[$np]=$(printf '%s\n' "${runs[@]}" | sort -n | awk '{ v[NR] = $1 } END { print v[int((NR + 1) / 2)] }')
   echo "np=$np peaks per run (largest rank): ${runs[*]}" >&2
 done
-dofs=$(tail -1 "$work/out1/convergence.csv" | cut -d, -f3)
+dofs=$(tail -1 "$work/out${ranks[0]}/convergence.csv" | cut -d, -f3)
 points=""
 for np in "${ranks[@]}"; do points+=" $np:${peak[$np]}"; done
-python3 - "$dofs" "$base" $points <<'PY'
+python3 - "$dofs" "$base" "${HEAP:-0}" $points <<'PY'
 import sys
-dofs, base = int(sys.argv[1]), float(sys.argv[2])
-pairs = [(int(a), float(b)) for a, b in (p.split(":") for p in sys.argv[3:])]
+dofs, base, heap = int(sys.argv[1]), float(sys.argv[2]), sys.argv[3] == "1"
+pairs = [(int(a), float(b)) for a, b in (p.split(":") for p in sys.argv[4:])]
 # Least squares over the points of M = R + D/np (x = 1/np).
 xs, ys = [1 / n for n, _ in pairs], [m for _, m in pairs]
 xm, ym = sum(xs) / len(xs), sum(ys) / len(ys)
 D = sum((x - xm) * (y - ym) for x, y in zip(xs, ys)) / sum((x - xm) ** 2 for x in xs)
 R = ym - D * xm
 peaks = ", ".join(f"np={n} {m/1e9:.3f} GB" for n, m in pairs)
-print(f"dofs {dofs}: peak per rank {peaks}; "
+print(f"dofs {dofs}: {'heap' if heap else 'resident'} peak per rank {peaks}; "
       f"fit R = {R/1e6:.0f} MB, of which the process alone {base/1e6:.0f} MB: replicated "
       f"{(R-base)/1e6:.0f} MB ({(R-base)/dofs:.0f} B/DOF); shared D = {D/1e9:.3f} GB ({D/dofs:.0f} B/DOF)")
 PY
