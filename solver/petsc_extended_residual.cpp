@@ -24,6 +24,7 @@ void ExtendedResidual::add(const std::vector<int>& dofs, const DoubleDoubleMatri
   const int* inner = pattern_.innerIndexPtr();
   for (int j = 0; j < n; ++j) {
     const double g = c.values(dofs[j]);
+    if (g == 0 && !keep) continue;  // nothing to add: most columns of a Krylov solve's elements
     const int* first = keep ? inner + outer[dofs[j]] : nullptr;
     const int* last = keep ? inner + outer[dofs[j] + 1] : nullptr;
     for (int i = 0; i < n; ++i) {
