@@ -122,3 +122,32 @@ TEST(DependentBoundaryTraces, ManyDependentTracesAreSplitWithoutADenseFactorizat
   }
   EXPECT_LT(worst, 1e-10);
 }
+
+// Which of two dependent traces is kept: the larger. Pairs of functions with the same trace shape,
+// one of them 1000 times smaller (both above the rank threshold), the small one first in half the
+// pairs and second in the others, so that an order blind to the sizes (COLAMD's ties) keeps some
+// small ones and expresses the large one through them: a coefficient of 1000 in the basis change,
+// an ill-conditioned free basis. Keeping the larger gives 1/1000.
+TEST(DependentBoundaryTraces, TheLargerOfTwoDependentTracesIsKept) {
+  constexpr int pairs = 400, m = 2 * pairs;
+  std::vector<Eigen::Triplet<double>> gram;
+  std::vector<std::pair<int, double>> rhs;
+  for (int p = 0; p < pairs; ++p) {
+    const double small = 1e-3;
+    const double scale[2] = {p % 2 ? 1.0 : small, p % 2 ? small : 1.0};
+    for (int a = 0; a < 2; ++a) {
+      rhs.emplace_back(2 * p + a, 4.0 * scale[a]);  // ∫ 1 · hat [1, 2, 1]
+      for (int b = 0; b < 2; ++b) gram.emplace_back(2 * p + a, 2 * p + b, 6.0 * scale[a] * scale[b]);
+    }
+  }
+  std::vector<int> order(m), local_of(m);
+  for (int i = 0; i < m; ++i) order[i] = local_of[i] = i;
+  const Constraints c = solve_boundary_projection(m, gram, rhs, order, local_of);
+  ASSERT_EQ(static_cast<int>(c.free.size()), pairs);
+  ASSERT_EQ(static_cast<int>(c.basis_change.size()), pairs);
+  for (int k : c.free) {
+    const int p = k / 2;
+    EXPECT_EQ(k % 2, p % 2 ? 1 : 0) << "pair " << p << ": the small trace is the one left free";
+  }
+  for (const auto& t : c.basis_change) EXPECT_NEAR(std::abs(t.value()), 1e-3, 1e-12);
+}
