@@ -4,7 +4,7 @@
 
 #include <Eigen/SparseCholesky>
 #include <Eigen/QR>
-#include <Eigen/SparseQR>
+#include <Eigen/SPQRSupport>
 #include <algorithm>
 #include <cmath>
 #include <map>
@@ -69,24 +69,29 @@ class IndependentTraces {
   Eigen::SimplicialLLT<SparseMatrix> llt_;
 };
 
-/// Which traces are dependent, found by a rank-revealing sparse QR: a column whose part outside the
-/// span of the columns before it (in COLAMD's order, which depends on the pattern only, so every
-/// rank and the serial run choose alike) is below the threshold (relative, as a column-pivoted
-/// QR's) is dependent.
+/// Which traces are dependent, found by SuiteSparseQR's rank-revealing sparse QR: a column whose
+/// part outside the span of the columns before it (in its fill-reducing order, which depends on the
+/// pattern only, so every rank and the serial run choose alike) is below the threshold (relative,
+/// as a column-pivoted QR's) is dependent; the first `rank` columns of its permutation are the
+/// others. (Eigen's own SparseQR chose alike but took 7 s for 8 000 functions: it recomputes its
+/// elimination tree at every dependent column.)
 TraceSelection sparse_selection(const SparseMatrix& M) {
   const int m = static_cast<int>(M.cols());
   double largest = 0;
   for (int k = 0; k < m; ++k) largest = std::max(largest, M.col(k).norm());
-  Eigen::SparseQR<SparseMatrix, Eigen::COLAMDOrdering<int>> qr;
+  Eigen::SPQR<SparseMatrix> qr;
   qr.setPivotThreshold(1e-10 * largest);
   qr.compute(M);
   if (qr.info() != Eigen::Success) throw NumericalError("boundary projection: the QR of the boundary traces failed");
   const int rank = static_cast<int>(qr.rank());
-  const auto& perm = qr.colsPermutation().indices();
-  return {std::vector<int>(perm.data(), perm.data() + rank), std::vector<int>(perm.data() + rank, perm.data() + m)};
+  const auto perm = qr.colsPermutation();
+  const auto& order = perm.indices();
+  TraceSelection s;
+  for (int j = 0; j < m; ++j) (j < rank ? s.independent : s.dependent).push_back(static_cast<int>(order[j]));
+  return s;
 }
 
-/// COLAMD's order knows nothing of the traces' sizes: it may keep a small trace and express a large
+/// The QR's order knows nothing of the traces' sizes: it may keep a small trace and express a large
 /// one through it (large α, an ill-conditioned basis change: CG + GAMG needed twice the iterations
 /// and stopped 40× farther from the solution on the 4-split fan5 plate at 3.3·10⁵ DOFs). Each
 /// dependency is local, so the choice is redone where it matters: the dependent traces and the
@@ -129,7 +134,7 @@ void pivot_within_clusters(const SparseMatrix& M, TraceSelection& s) {
         }
       Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(block);
       qr.setThreshold(1e-10);
-      if (qr.rank() == kept) {  // otherwise the cluster missed a coefficient below 1e-12: keep COLAMD's
+      if (qr.rank() == kept) {  // otherwise the cluster missed a coefficient below 1e-12: keep the QR's
         const auto& perm = qr.colsPermutation().indices();
         for (int j = 0; j < static_cast<int>(columns.size()); ++j)
           (j < kept ? chosen.independent : chosen.dependent).push_back(columns[perm[j]]);
