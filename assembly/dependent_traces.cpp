@@ -37,22 +37,32 @@ class IndependentTraces {
     if (llt_.info() != Eigen::Success) throw NumericalError("boundary projection: independent boundary traces not found");
   }
   Eigen::VectorXd solve(const Eigen::VectorXd& b) const { return llt_.solve(b); }
+  /// α of dependent column k.
+  Eigen::VectorXd alpha(int k) const { return combination(k).alpha; }
   /// α of dependent column k; throws when its trace is not (to 1e-8 of its size) in their span.
-  Eigen::VectorXd alpha(int k) const {
-    Eigen::VectorXd mik = Eigen::VectorXd::Zero(rank_);
-    double mkk = 0;
-    for (SparseMatrix::InnerIterator it(M_, k); it; ++it) {
-      if (position_[it.row()] >= 0) mik(position_[it.row()]) = it.value();
-      if (it.row() == k) mkk = it.value();
-    }
-    Eigen::VectorXd a = llt_.solve(mik);
-    const double residual = mkk - 2 * a.dot(mik) + a.dot(M_ii_ * a);
-    if (residual > 1e-8 * mkk)
+  Eigen::VectorXd checked_alpha(int k) const {
+    const Combination c = combination(k);
+    const double residual = c.mkk - 2 * c.alpha.dot(c.mik) + c.alpha.dot(M_ii_ * c.alpha);
+    if (residual > 1e-8 * c.mkk)
       throw NumericalError("boundary projection: a boundary trace is neither independent nor dependent (ill-conditioned)");
-    return a;
+    return c.alpha;
   }
 
  private:
+  struct Combination {
+    Eigen::VectorXd mik, alpha;  ///< M_ik and α = M_ii⁻¹ M_ik
+    double mkk = 0;
+  };
+  Combination combination(int k) const {
+    Combination c;
+    c.mik = Eigen::VectorXd::Zero(rank_);
+    for (SparseMatrix::InnerIterator it(M_, k); it; ++it) {
+      if (position_[it.row()] >= 0) c.mik(position_[it.row()]) = it.value();
+      if (it.row() == k) c.mkk = it.value();
+    }
+    c.alpha = llt_.solve(c.mik);
+    return c;
+  }
   const SparseMatrix& M_;
   std::vector<int> position_;
   int rank_;
@@ -100,7 +110,7 @@ void pivot_within_clusters(const SparseMatrix& M, TraceSelection& s) {
   {
     const IndependentTraces traces(M, s.independent);
     for (int k : s.dependent) {
-      const Eigen::VectorXd a = traces.alpha(k);
+      const Eigen::VectorXd a = traces.alpha(k);  // only which traces: the final choice is checked
       const double amax = a.cwiseAbs().maxCoeff();
       for (std::size_t j = 0; j < s.independent.size(); ++j)
         if (std::abs(a(j)) > 1e-12 * amax) root[find(s.independent[j])] = find(k);
@@ -158,9 +168,9 @@ void split_dependent_traces(const SparseMatrix& M, const Eigen::VectorXd& r, con
   for (int i = 0; i < static_cast<int>(local_of.size()); ++i)
     if (!is_constrained[i]) c.free.push_back(i);
 
-  // Each dependent φ_k: its trace equals Σ α_j tr φ_j exactly (checked by alpha()).
+  // Each dependent φ_k: its trace equals Σ α_j tr φ_j exactly (checked).
   for (int k : s.dependent) {
-    const Eigen::VectorXd alpha = traces.alpha(k);
+    const Eigen::VectorXd alpha = traces.checked_alpha(k);
     const int column = static_cast<int>(std::lower_bound(c.free.begin(), c.free.end(), order[k]) - c.free.begin());
     const double amax = alpha.cwiseAbs().maxCoeff();
     for (int j = 0; j < rank; ++j)
