@@ -118,13 +118,6 @@ Eigen::MatrixXd vertex_targets(const Eigen::MatrixXd& ur, const Eigen::VectorXd&
   return out;
 }
 
-/// Throws IncompleteBasis with the first nonempty message (lowest entity index: deterministic
-/// whatever the number of threads).
-void throw_first(const std::vector<std::string>& errors) {
-  for (const std::string& e : errors)
-    if (!e.empty()) throw IncompleteBasis(e);
-}
-
 void solve_edge_local(const PatchMesh& mesh, int e, const std::vector<std::vector<FaceCoefficient>>& rows, int k,
                       EdgeLocal& l) {
   Unknowns u(k);
@@ -372,27 +365,26 @@ G1Basis build_g1_basis(const PatchMesh& mesh, const std::vector<EdgeGluing>& glu
     extraction.add(basis.dimension(), f);
     basis.info.push_back(info);
   };
-  const std::string where = mesh.name() + ", degree " + std::to_string(k) + ": ";
+  const std::string where = where_of(mesh, k);
 
   // Per interior edge: its rows (the Bernstein jets at the collocation points computed once), its
   // edge functions and what the vertex problems reuse (EdgeLocal). Independent per edge: parallel,
   // results by index.
   const EdgeCollocation collocation(k);
   std::vector<EdgeLocal> local(mesh.num_edges());
-  std::vector<std::string> errors(mesh.num_edges());
+  FirstError edge_error;
 #pragma omp parallel for schedule(dynamic, 16) if (worth_threads(mesh.num_edges()))
-  for (int e = 0; e < mesh.num_edges(); ++e) {
-    // nothing may leave an OpenMP region by an exception: solve_g1_edge returns its message
-    errors[e] = solve_g1_edge(mesh, gluing, collocation, k, e, where, local[e]);
-  }
-  throw_first(errors);
+  for (int e = 0; e < mesh.num_edges(); ++e)
+    if (const std::string error = solve_g1_edge(mesh, gluing, collocation, k, e, where, local[e]); !error.empty())
+      edge_error.offer(e, error);
+  edge_error.throw_if_any();
   for (int e = 0; e < mesh.num_edges(); ++e)
     for (const std::vector<FaceCoefficient>& f : edge_functions(mesh, e, local[e])) add(f, {G1Entity::edge, e});
 
   // Vertex functions: per vertex a list of functions, built in parallel, appended in vertex order
   // (the basis does not depend on the number of threads).
   std::vector<std::vector<std::vector<FaceCoefficient>>> vertex_functions(mesh.num_vertices());
-  errors.assign(mesh.num_vertices(), {});
+  FirstError vertex_error;
 #pragma omp parallel for schedule(dynamic, 16) if (worth_threads(mesh.num_vertices()))
   for (int v = 0; v < mesh.num_vertices(); ++v) {
     if (mesh.fan(v).face.empty()) continue;
@@ -401,10 +393,10 @@ G1Basis build_g1_basis(const PatchMesh& mesh, const std::vector<EdgeGluing>& glu
       for (int e : mesh.fan(v).edge) at.push_back(&local[e]);
       vertex_functions[v] = build_vertex_functions(mesh, gluing, k, v, at, where);
     } catch (const IncompleteBasis& ex) {
-      errors[v] = ex.what();
+      vertex_error.offer(v, ex.what());
     }
   }
-  throw_first(errors);
+  vertex_error.throw_if_any();
   for (int v = 0; v < mesh.num_vertices(); ++v)
     for (size_t j = 0; j < vertex_functions[v].size(); ++j) add(vertex_functions[v][j], {G1Entity::vertex, v, j == 0});
 

@@ -6,6 +6,8 @@
 
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
+#include <climits>
+#include <mutex>
 #include <string>
 #include <utility>
 #include <vector>
@@ -16,6 +18,33 @@
 #include "spaces/g1/patch_mesh.hpp"
 
 namespace iga {
+
+/// The message of the lowest-numbered entity that failed, whatever the order the threads report
+/// in: the same IncompleteBasis whatever the number of threads (nothing may leave an OpenMP
+/// region by an exception).
+class FirstError {
+ public:
+  void offer(int index, const std::string& message) {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    if (index < index_) {
+      index_ = index;
+      message_ = message;
+    }
+  }
+  void throw_if_any() const {
+    if (index_ < INT_MAX) throw IncompleteBasis(message_);
+  }
+
+ private:
+  std::mutex mutex_;
+  int index_ = INT_MAX;
+  std::string message_;
+};
+
+/// The prefix of a construction error: the mesh and the degree.
+inline std::string where_of(const PatchMesh& mesh, int k) {
+  return mesh.name() + ", degree " + std::to_string(k) + ": ";
+}
 
 /// What one interior edge's local problem gives, kept for the vertex problems at its ends.
 /// With E = the edge's C0 + G1 rows restricted to `unknowns` (rows 0–1 along the edge minus both

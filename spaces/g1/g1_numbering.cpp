@@ -2,7 +2,6 @@
 
 #include <Eigen/SparseCore>
 #include <algorithm>
-#include <climits>
 #include <mutex>
 #include <stdexcept>
 #include <string>
@@ -14,29 +13,6 @@
 namespace iga {
 
 namespace {
-
-/// The message of the lowest-numbered entity that failed, whatever the order the threads report
-/// in (what build_g1_basis throws first).
-class FirstError {
- public:
-  void offer(int index, const std::string& message) {
-    const std::lock_guard<std::mutex> lock(mutex_);
-    if (index < index_) {
-      index_ = index;
-      message_ = message;
-    }
-  }
-  void throw_if_any() const {
-    if (index_ < INT_MAX) throw IncompleteBasis(message_);
-  }
-
- private:
-  std::mutex mutex_;
-  int index_ = INT_MAX;
-  std::string message_;
-};
-
-std::string where_of(const PatchMesh& mesh, int k) { return mesh.name() + ", degree " + std::to_string(k) + ": "; }
 
 bool has_face(const std::vector<FaceCoefficient>& function, int face) {
   return std::any_of(function.begin(), function.end(), [&](const FaceCoefficient& c) { return c.face == face; });
