@@ -7,7 +7,7 @@
 # RANKS="1 2" (default "1 2 4") chooses the rank counts: oversubscribed MUMPS runs crawl.
 # REPEAT=3 (default 1) runs each rank count that often and takes the median peak: one run's peak
 # moves by up to ±5 % with where the allocator's free blocks happen to lie.
-# HEAP=1 measures each rank's peak heap (heaptrack: what the program allocated, touched or not)
+# HEAP=1 measures each rank's peak heap (heaptrack, `apt-get install heaptrack`: what the program allocated, touched or not)
 # instead of its resident set (what the system charged: touched pages, libraries, freed pages the
 # allocator kept). The two differ by PETSc's preallocations that are never filled and by the
 # allocator's kept pages; heaptrack makes the runs 2-3 times slower.
