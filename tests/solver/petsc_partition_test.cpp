@@ -12,6 +12,21 @@
 namespace iga {
 namespace {
 
+TEST(HilbertCurve, IsTheClassicalCurve) {
+  // The 4 × 4 curve of the classical conversion (Wikipedia, "Hilbert curve", xy2d), row y = 3 on
+  // top: the orientation fixes the partition and so PETSc's row order and GAMG's aggregates.
+  const int expected[4][4] = {{5, 6, 9, 10}, {4, 7, 8, 11}, {3, 2, 13, 12}, {0, 1, 14, 15}};
+  for (unsigned y = 0; y < 4; ++y)
+    for (unsigned x = 0; x < 4; ++x) EXPECT_EQ(hilbert_index(x, y, 2), expected[3 - y][x]) << x << ", " << y;
+  // At order 20 the first cell of each quadrant in the curve's order.
+  constexpr unsigned half = 1u << 19, last = (1u << 20) - 1;
+  EXPECT_EQ(hilbert_index(0, 0, 20), 0ULL);
+  EXPECT_EQ(hilbert_index(0, half, 20), 1ULL << 38);
+  EXPECT_EQ(hilbert_index(half, half, 20), 2ULL << 38);
+  EXPECT_EQ(hilbert_index(last, half - 1, 20), 3ULL << 38);
+  EXPECT_EQ(hilbert_index(last, 0, 20), (1ULL << 40) - 1);
+}
+
 TEST(HilbertCurve, VisitsEveryCellOnceMovingToANeighbourEachStep) {
   constexpr int order = 4, n = 1 << order;
   std::vector<std::pair<int, int>> cell_at(n * n, {-1, -1});
