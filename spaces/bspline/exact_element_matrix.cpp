@@ -62,16 +62,14 @@ Row differentiate(const Row& c) {
   return d;
 }
 
-/// ∫_0^1 (Σ c_i B_i^m)(Σ d_j B_j^n) = Σ c_i d_j C(m,i) C(n,j) / ((m+n+1) C(m+n, i+j)).
-DoubleDouble integrate_product(const Row& c, const Row& d) {
-  const int m = static_cast<int>(c.size()) - 1, n = static_cast<int>(d.size()) - 1;
-  DoubleDouble s(0.0);
-  if (m < 0 || n < 0) return s;
+/// The Gram matrix of the Bernstein polynomials of degrees m and n on [0, 1]:
+/// ∫_0^1 B_i^m B_j^n = C(m,i) C(n,j) / ((m+n+1) C(m+n, i+j)).
+Table bernstein_gram(int m, int n) {
+  Table g(std::max(m + 1, 0), Row(std::max(n + 1, 0)));
   for (int i = 0; i <= m; ++i)
     for (int j = 0; j <= n; ++j)
-      s += c[i] * d[j] *
-           (DoubleDouble(binomial(m, i) * binomial(n, j)) / DoubleDouble((m + n + 1) * binomial(m + n, i + j)));
-  return s;
+      g[i][j] = DoubleDouble(binomial(m, i) * binomial(n, j)) / DoubleDouble((m + n + 1) * binomial(m + n, i + j));
+  return g;
 }
 
 }  // namespace
@@ -88,13 +86,30 @@ SpanIntegrals span_integrals(const KnotVector& knots, int span) {
       c = differentiate(c);
     }
   }
+  // ∫ (Σ_i x_i B_i^m)(Σ_j y_j B_j^n) = xᵀ G y: G y formed once per function c (the Gram matrix's
+  // divisions once per span, not once per pair of functions).
   SpanIntegrals out;
   for (int k = 0; k < 3; ++k)
     for (int l = 0; l < 3; ++l) {
       DoubleDoubleMatrix& m = out.moment[k][l];
       m.resize(p + 1, p + 1);
-      for (int a = 0; a <= p; ++a)
-        for (int c = 0; c <= p; ++c) m.set(a, c, integrate_product(derivative[k][a], derivative[l][c]));
+      const int dm = p - k, dn = p - l;  // degrees of the k-th and l-th derivatives
+      if (dm < 0 || dn < 0) {
+        for (int a = 0; a <= p; ++a)
+          for (int c = 0; c <= p; ++c) m.set(a, c, DoubleDouble(0.0));
+        continue;
+      }
+      const Table gram = bernstein_gram(dm, dn);
+      for (int c = 0; c <= p; ++c) {
+        Row gy(dm + 1, DoubleDouble(0.0));
+        for (int i = 0; i <= dm; ++i)
+          for (int j = 0; j <= dn; ++j) gy[i] += gram[i][j] * derivative[l][c][j];
+        for (int a = 0; a <= p; ++a) {
+          DoubleDouble sum(0.0);
+          for (int i = 0; i <= dm; ++i) sum += derivative[k][a][i] * gy[i];
+          m.set(a, c, sum);
+        }
+      }
     }
   return out;
 }
