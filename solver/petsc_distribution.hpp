@@ -54,8 +54,9 @@ class PetscDistribution {
 
   /// This rank's elements (numbers of `space`) and the sum over the ranks.
   WorkShare share() const;
-  /// Number the free unknowns of `c` (conditions on `space`, kept as a copy): each belongs to the
-  /// lowest rank whose own elements couple it, each rank's rows are contiguous. `components`: the
+  /// Number the free unknowns of `c` (conditions on `space`, kept as a copy): each belongs to one
+  /// of the ranks whose own elements couple it (the lowest for an even global number, the highest
+  /// for an odd one: a cut's rows split evenly), each rank's rows are contiguous. `components`: the
   /// unknowns per function (a shell's 3, in blocks as the serial assembler numbers them:
   /// component q of function i at q·N + i), for the conditions and every matrix after. Collective.
   void lay_out(const Constraints& c, const std::function<void(const std::string&)>& say, int components = 1);
