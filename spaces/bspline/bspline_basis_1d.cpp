@@ -1,29 +1,29 @@
 #include "spaces/bspline/bspline_basis_1d.hpp"
 
 #include <algorithm>
+#include <array>
 #include <stdexcept>
 
 namespace iga {
 
 namespace {
 
-/// Values of the nonzero B-splines of every degree q = 0..p at t on span mu:
-/// table[q][j] = N_{mu-q+j, q}(t), j = 0..q (triangular Cox–de Boor recursion).
-std::vector<std::vector<double>> cox_de_boor_table(const std::vector<double>& U, int p, int mu, double t) {
-  std::vector<std::vector<double>> table(p + 1);
-  table[0] = {1.0};
+/// Values of the nonzero B-splines of every degree q = 0..p at t on span mu, into `table` (row q
+/// at q(q+1)/2): table[q][j] = N_{mu-q+j, q}(t), j = 0..q (triangular Cox–de Boor recursion).
+void cox_de_boor_table(const std::vector<double>& U, int p, int mu, double t, double* table) {
+  table[0] = 1.0;
   for (int q = 1; q <= p; ++q) {
-    table[q].assign(q + 1, 0.0);
+    const double* below = table + (q - 1) * q / 2;
+    double* row = table + q * (q + 1) / 2;
     for (int j = 0; j <= q; ++j) {
       const int i = mu - q + j;
       double v = 0.0;
       // Both denominators are > 0 here: they span the nonzero interval [t_mu, t_mu+1].
-      if (j >= 1) v += (t - U[i]) / (U[i + q] - U[i]) * table[q - 1][j - 1];
-      if (j <= q - 1) v += (U[i + q + 1] - t) / (U[i + q + 1] - U[i + 1]) * table[q - 1][j];
-      table[q][j] = v;
+      if (j >= 1) v += (t - U[i]) / (U[i + q] - U[i]) * below[j - 1];
+      if (j <= q - 1) v += (U[i + q + 1] - t) / (U[i + q + 1] - U[i + 1]) * below[j];
+      row[j] = v;
     }
   }
-  return table;
 }
 
 }  // namespace
@@ -34,25 +34,37 @@ double binomial(int n, int k) {
   return c;
 }
 
-Eigen::MatrixXd bspline_derivatives(const KnotVector& knots, int span, double t, int nder) {
+void bspline_derivatives(const KnotVector& knots, int span, double t, int nder, double* out) {
   const int p = knots.degree();
   const int mu = span;
   const std::vector<double>& U = knots.knots();
   if (mu < p || mu >= knots.num_functions() || !(U[mu] < U[mu + 1]))
     throw std::invalid_argument("bspline_derivatives: not a nonzero span");
-  const auto table = cox_de_boor_table(U, p, mu, t);
-  Eigen::MatrixXd out = Eigen::MatrixXd::Zero(nder + 1, p + 1);
-  for (int j = 0; j <= p; ++j) out(0, j) = table[p][j];
+  // Scratch on the stack up to degree kStackDegree (a geometry is evaluated at every quadrature
+  // point: the allocations were half of its cost), on the heap above.
+  constexpr int kStackDegree = 15;
+  std::array<double, (kStackDegree + 1) * (kStackDegree + 2) / 2 + 2 * (kStackDegree + 1)> stack;
+  std::vector<double> heap;
+  double* table = stack.data();
+  if (p > kStackDegree) {
+    heap.resize((p + 1) * (p + 2) / 2 + 2 * (p + 1));
+    table = heap.data();
+  }
+  double* c = table + (p + 1) * (p + 2) / 2;
+  double* next = c + (p + 1);
+  cox_de_boor_table(U, p, mu, t, table);
+  const int rows = nder + 1;
+  std::fill(out, out + rows * (p + 1), 0.0);
+  const double* top = table + p * (p + 1) / 2;
+  for (int j = 0; j <= p; ++j) out[j * rows] = top[j];
 
   // d/dt sum_m c_m N_{m,q} = sum_m q (c_m - c_{m-1}) / (t_{m+q} - t_m) N_{m,q-1}; repeat k times
   // starting from N_i itself, then evaluate with the degree p-k row of the table.
-  std::vector<double> c, next;
   for (int a = 0; a <= p; ++a) {
     const int i = mu - p + a;
-    c.assign(1, 1.0);  // coefficients of N_{i..i+k, p-k}
+    c[0] = 1.0;  // coefficients of N_{i..i+k, p-k}
     for (int k = 1; k <= std::min(nder, p); ++k) {
       const int q = p - k + 1;  // degree before this differentiation
-      next.assign(k + 1, 0.0);
       for (int r = 0; r <= k; ++r) {
         const int m = i + r;
         const double cm = r < k ? c[r] : 0.0;
@@ -61,16 +73,22 @@ Eigen::MatrixXd bspline_derivatives(const KnotVector& knots, int span, double t,
         // h == 0 means N_{m,q-1} vanishes identically: drop it.
         next[r] = h > 0.0 ? q * (cm - cm1) / h : 0.0;
       }
-      c.swap(next);
+      std::copy(next, next + k + 1, c);
       const int qk = p - k;
+      const double* row = table + qk * (qk + 1) / 2;
       double v = 0.0;
       for (int r = 0; r <= k; ++r) {
         const int j = i + r - (mu - qk);  // position of N_{i+r, qk} in the table row
-        if (j >= 0 && j <= qk) v += c[r] * table[qk][j];
+        if (j >= 0 && j <= qk) v += c[r] * row[j];
       }
-      out(k, a) = v;
+      out[k + a * rows] = v;
     }
   }
+}
+
+Eigen::MatrixXd bspline_derivatives(const KnotVector& knots, int span, double t, int nder) {
+  Eigen::MatrixXd out(nder + 1, knots.degree() + 1);
+  bspline_derivatives(knots, span, t, nder, out.data());
   return out;
 }
 

@@ -5,6 +5,7 @@
 /// polynomials of the span, the matrix being computed by knot insertion.
 
 #include <Eigen/Core>
+#include <array>
 #include <vector>
 
 #include "spaces/bspline/knot_vector.hpp"
@@ -16,6 +17,34 @@ namespace iga {
 /// at knots are chosen by the span).
 /// @return (nder+1) x (p+1): entry (k, j) = d^k/dt^k N_{mu-p+j}(t); orders above p are zero.
 Eigen::MatrixXd bspline_derivatives(const KnotVector& knots, int span, double t, int nder);
+/// The same into `out`, column-major (nder+1) x (p+1), without allocating up to degree 15.
+void bspline_derivatives(const KnotVector& knots, int span, double t, int nder, double* out);
+
+/// bspline_derivatives held in a buffer of its own, on the stack up to degree 15 and order 2: the
+/// maps under every space evaluate it at each quadrature point (the Eigen matrices and tables it
+/// allocated were half of a map's evaluation). Entry (k, j) as in bspline_derivatives.
+class SpanDerivatives {
+ public:
+  SpanDerivatives(const KnotVector& knots, int span, double t, int nder) : rows_(nder + 1) {
+    const std::size_t size = static_cast<std::size_t>(rows_) * static_cast<std::size_t>(knots.degree() + 1);
+    double* out = stack_.data();
+    if (size > stack_.size()) {
+      heap_.resize(size);
+      out = heap_.data();
+    }
+    bspline_derivatives(knots, span, t, nder, out);
+    data_ = out;
+  }
+  SpanDerivatives(const SpanDerivatives&) = delete;
+  SpanDerivatives& operator=(const SpanDerivatives&) = delete;
+  double operator()(int k, int j) const { return data_[k + j * rows_]; }
+
+ private:
+  std::array<double, 3 * 16> stack_;
+  std::vector<double> heap_;
+  const double* data_ = nullptr;
+  int rows_;
+};
 
 /// The binomial coefficient C(n, k) in double (exact for polynomial degrees).
 double binomial(int n, int k);

@@ -77,8 +77,8 @@ GeometryJet PatchGeometry::evaluate(const Point2& uv, int span_u, int span_v, bo
   const int pu = knots_u_.degree(), pv = knots_v_.degree();
   const int nu = knots_u_.num_functions();
   const int nder = second ? 2 : 1;
-  const Eigen::MatrixXd Nu = bspline_derivatives(knots_u_, span_u, uv.x(), nder);
-  const Eigen::MatrixXd Nv = bspline_derivatives(knots_v_, span_v, uv.y(), nder);
+  const SpanDerivatives Nu(knots_u_, span_u, uv.x(), nder);
+  const SpanDerivatives Nv(knots_v_, span_v, uv.y(), nder);
   // Homogeneous sums A = sum w P N M and W = sum w N M with derivatives d^a/du^a d^b/dv^b.
   Point2 A[3][3];
   double W[3][3];

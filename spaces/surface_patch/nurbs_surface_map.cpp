@@ -63,8 +63,8 @@ NurbsSurfaceMap::NurbsSurfaceMap(const KnotVector& knots_u, const KnotVector& kn
 std::array<std::array<Eigen::Vector3d, 3>, 3> NurbsSurfaceMap::derivatives(const Point2& uv, int span_u,
                                                                           int span_v) const {
   const int pu = knots_u_.degree(), pv = knots_v_.degree(), nu = knots_u_.num_functions();
-  const Eigen::MatrixXd Nu = bspline_derivatives(knots_u_, span_u, uv.x(), 2);
-  const Eigen::MatrixXd Nv = bspline_derivatives(knots_v_, span_v, uv.y(), 2);
+  const SpanDerivatives Nu(knots_u_, span_u, uv.x(), 2);
+  const SpanDerivatives Nv(knots_v_, span_v, uv.y(), 2);
   // Homogeneous sums A_ab = Σ w P ∂^a N ∂^b M and W_ab = Σ w ∂^a N ∂^b M.
   Eigen::Vector3d A[3][3];
   double W[3][3];
