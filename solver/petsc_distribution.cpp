@@ -100,7 +100,7 @@ namespace {
 /// evenly: with every row of the cut on the lower rank (1 % of the rows on two ranks at 10⁶
 /// B-spline DOFs) that rank's matrix products and assembly lagged the other's by more than its
 /// extra rows (CG with Jacobi, 300 products: the other rank waited 0.6 s for it in the products,
-/// 0.15 s when shared; CG + GAMG run 0.3 s faster on two ranks).
+/// 0.15 s when shared; the CG + GAMG run's assembly 0.1 s faster on two ranks, medians of five).
 int ownership_key(PetscInt g, int rank) { return g % 2 == 0 ? rank : INT_MAX - 1 - rank; }
 }  // namespace
 
