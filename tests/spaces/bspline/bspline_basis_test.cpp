@@ -103,6 +103,38 @@ TEST(BSplineBasis, PartitionOfUnity) {
   std::printf("[ measured ] |sum N - 1| %.2e, |sum N'|, |sum N''| (relative) %.2e\n", worst, worst_deriv);
 }
 
+TEST(BSplineBasis, SpanDerivativesOnTheStackAndAboveIt) {
+  // SpanDerivatives keeps degree <= 15 with orders <= 2 on the stack and the rest on the heap: on
+  // both sides of that bound the functions sum to one, their derivatives to zero, and the entries
+  // are bspline_derivatives' (k, j).
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> unif(0.0, 1.0);
+  for (int p : {2, 15, 16, 21})
+    for (int nder : {0, 2, 3}) {
+      const KnotVector kv = KnotVector::from_breakpoints(p, p - 1, random_breakpoints(4, rng));
+      for (int s = 0; s < 20; ++s) {
+        const double t = unif(rng);
+        const int mu = kv.find_span(t);
+        const SpanDerivatives d(kv, mu, t, nder);
+        const Eigen::MatrixXd e = bspline_derivatives(kv, mu, t, nder);
+        double sum = 0.0;
+        for (int j = 0; j <= p; ++j) {
+          sum += d(0, j);
+          for (int k = 0; k <= nder; ++k) ASSERT_EQ(d(k, j), e(k, j)) << "p " << p << " (" << k << ", " << j << ")";
+        }
+        EXPECT_NEAR(sum, 1.0, 1e-13) << "p " << p;
+        for (int k = 1; k <= nder; ++k) {
+          double dk = 0.0, size = 0.0;
+          for (int j = 0; j <= p; ++j) {
+            dk += d(k, j);
+            size += std::abs(d(k, j));
+          }
+          EXPECT_LT(std::abs(dk), 1e-12 * (1.0 + size)) << "p " << p << " order " << k;
+        }
+      }
+    }
+}
+
 TEST(BSplineBasis, DerivativesMatchCentralDifferences) {
   std::mt19937 rng(2);
   std::uniform_real_distribution<double> unif(0.05, 0.95);
