@@ -178,5 +178,4 @@ void split_dependent_traces(const SparseMatrix& M, const Eigen::VectorXd& r, con
   }
 }
 
-
 }  // namespace iga

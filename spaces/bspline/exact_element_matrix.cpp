@@ -93,15 +93,12 @@ SpanIntegrals span_integrals(const KnotVector& knots, int span) {
     for (int l = 0; l < 3; ++l) {
       DoubleDoubleMatrix& m = out.moment[k][l];
       m.resize(p + 1, p + 1);
-      const int dm = p - k, dn = p - l;  // degrees of the k-th and l-th derivatives
-      if (dm < 0 || dn < 0) {
-        for (int a = 0; a <= p; ++a)
-          for (int c = 0; c <= p; ++c) m.set(a, c, DoubleDouble(0.0));
-        continue;
-      }
+      // Degrees of the k-th and l-th derivatives; below 0 (k or l above p) the loops are empty and
+      // the moments zero.
+      const int dm = p - k, dn = p - l;
       const Table gram = bernstein_gram(dm, dn);
       for (int c = 0; c <= p; ++c) {
-        Row gy(dm + 1, DoubleDouble(0.0));
+        Row gy(std::max(dm + 1, 0), DoubleDouble(0.0));
         for (int i = 0; i <= dm; ++i)
           for (int j = 0; j <= dn; ++j) gy[i] += gram[i][j] * derivative[l][c][j];
         for (int a = 0; a <= p; ++a) {
