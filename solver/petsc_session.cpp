@@ -6,6 +6,7 @@
 #include <cstdlib>
 #include <exception>
 #include <iostream>
+#include <string_view>
 #include <vector>
 
 #include "solver/petsc_runtime.hpp"
@@ -57,6 +58,13 @@ std::pair<std::vector<std::string>, std::vector<std::string>> split_petsc_argume
   return {own, petsc};
 }
 
+std::string messaging_layers_to_skip(const char* world_size, const char* local_size, const char* chosen_pml,
+                                     const char* chosen_mtl) {
+  if (!world_size || !local_size || std::string_view(world_size) != local_size) return {};
+  if (chosen_pml || chosen_mtl) return {};
+  return "^cm";
+}
+
 namespace {
 /// The PETSc part of the command line until the runtime is loaded (it keeps its own copy).
 std::vector<std::string> pending_words{"iga-run"};
@@ -94,6 +102,11 @@ PetscSession::PetscSession(int& argc, char** argv) {
   // (ensure_petsc_initialised): a run with CHOLMOD never loads their libraries (start-up) nor
   // touches MPI (no session files in TMPDIR).
   if (launched_by_mpi()) {
+    // Before MPI_Init, which reads it; every rank decides alike from its launch environment.
+    const std::string pml = messaging_layers_to_skip(std::getenv("OMPI_COMM_WORLD_SIZE"),
+                                                     std::getenv("OMPI_COMM_WORLD_LOCAL_SIZE"),
+                                                     std::getenv("OMPI_MCA_pml"), std::getenv("OMPI_MCA_mtl"));
+    if (!pml.empty()) setenv("OMPI_MCA_pml", pml.c_str(), 0);
     try {
       runtime().ensure_initialised();
     } catch (const std::exception& e) {
