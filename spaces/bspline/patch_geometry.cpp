@@ -47,6 +47,8 @@ PatchGeometry PatchGeometry::rectangle(const Point2& min, const Point2& max) {
                   {},
                   "rectangle [" + format_number(min.x()) + "," + format_number(max.x()) + "]x[" + format_number(min.y()) + "," + format_number(max.y()) + "]");
   g.affine_ = true;
+  g.origin_ = min;
+  g.linear_ = (max - min).asDiagonal();
   return g;
 }
 
@@ -74,6 +76,12 @@ GeometryJet PatchGeometry::evaluate(const Point2& uv) const {
 }
 
 GeometryJet PatchGeometry::evaluate(const Point2& uv, int span_u, int span_v, bool second) const {
+  if (affine_) {
+    GeometryJet g;
+    g.x = origin_ + linear_ * uv;
+    g.jacobian = linear_;
+    return g;
+  }
   const int pu = knots_u_.degree(), pv = knots_v_.degree();
   const int nu = knots_u_.num_functions();
   const int nder = second ? 2 : 1;

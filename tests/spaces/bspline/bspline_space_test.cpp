@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstdio>
 #include <functional>
+#include <limits>
 #include <map>
 #include <numbers>
 #include <numeric>
@@ -237,6 +238,33 @@ TEST(BSplineSpace, GeometryJetMatchesFiniteDifferences) {
     }
   EXPECT_LT(worst_j, 1e-8);
   EXPECT_LT(worst_h, 1e-7);
+}
+
+TEST(BSplineSpace, RectangleMapIsItsBilinearPatch) {
+  // The rectangle is evaluated as F = min + diag(max - min) uv, not by the spline sums of its
+  // bilinear patch: the same map to round-off, with the Jacobian's zeros and the Hessians exact
+  // (the sums leave 2e-16 in ∂x/∂v).
+  const Point2 lo(-1.0, 0.5), hi(2.0, 1.75);
+  const PatchGeometry fast = PatchGeometry::rectangle(lo, hi);
+  const KnotVector linear(1, {0.0, 0.0, 1.0, 1.0});
+  const PatchGeometry sums(linear, linear, {lo, Point2(hi.x(), lo.y()), Point2(lo.x(), hi.y()), hi});
+  ASSERT_TRUE(fast.is_affine());
+  ASSERT_FALSE(sums.is_affine());
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  for (int k = 0; k < 200; ++k) {
+    const Point2 uv(k == 0 ? 0.0 : k == 1 ? 1.0 : unit(rng), k == 0 ? 0.0 : k == 1 ? 1.0 : unit(rng));
+    const GeometryJet a = fast.evaluate(uv), b = sums.evaluate(uv);
+    EXPECT_LT((a.x - b.x).norm(), 4 * std::numeric_limits<double>::epsilon() * hi.norm()) << uv.transpose();
+    const double round_off = 4 * std::numeric_limits<double>::epsilon() * (hi - lo).norm();
+    EXPECT_LT((a.jacobian - b.jacobian).norm(), round_off) << uv.transpose();
+    EXPECT_LT(b.hessian_x.norm() + b.hessian_y.norm(), round_off) << uv.transpose();
+    EXPECT_EQ(a.jacobian, Eigen::Matrix2d((hi - lo).asDiagonal()));
+    EXPECT_EQ(a.hessian_x, Eigen::Matrix2d::Zero());
+    EXPECT_EQ(a.hessian_y, Eigen::Matrix2d::Zero());
+  }
+  EXPECT_EQ(fast.evaluate(Point2(0.0, 0.0)).x, lo);
+  EXPECT_EQ(fast.evaluate(Point2(1.0, 1.0)).x, hi);
 }
 
 TEST(BSplineSpace, PhysicalDerivativesOnAnnulusMatchFiniteDifferences) {
