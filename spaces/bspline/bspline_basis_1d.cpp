@@ -40,13 +40,11 @@ void bspline_derivatives(const KnotVector& knots, int span, double t, int nder, 
   const std::vector<double>& U = knots.knots();
   if (mu < p || mu >= knots.num_functions() || !(U[mu] < U[mu + 1]))
     throw std::invalid_argument("bspline_derivatives: not a nonzero span");
-  // Scratch on the stack up to degree kStackDegree (a geometry is evaluated at every quadrature
-  // point: the allocations were half of its cost), on the heap above.
-  constexpr int kStackDegree = 15;
-  std::array<double, (kStackDegree + 1) * (kStackDegree + 2) / 2 + 2 * (kStackDegree + 1)> stack;
+  // The Cox–de Boor table and two coefficient rows: on the stack up to kSpanStackDegree.
+  std::array<double, (kSpanStackDegree + 1) * (kSpanStackDegree + 2) / 2 + 2 * (kSpanStackDegree + 1)> stack;
   std::vector<double> heap;
   double* table = stack.data();
-  if (p > kStackDegree) {
+  if (p > kSpanStackDegree) {
     heap.resize((p + 1) * (p + 2) / 2 + 2 * (p + 1));
     table = heap.data();
   }

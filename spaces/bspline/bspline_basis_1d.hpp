@@ -17,10 +17,14 @@ namespace iga {
 /// at knots are chosen by the span).
 /// @return (nder+1) x (p+1): entry (k, j) = d^k/dt^k N_{mu-p+j}(t); orders above p are zero.
 Eigen::MatrixXd bspline_derivatives(const KnotVector& knots, int span, double t, int nder);
-/// The same into `out`, column-major (nder+1) x (p+1), without allocating up to degree 15.
+/// Up to this degree bspline_derivatives and SpanDerivatives keep their scratch on the stack (a
+/// geometry is evaluated at every quadrature point: heap scratch was half of its cost).
+inline constexpr int kSpanStackDegree = 15;
+
+/// The same into `out`, column-major (nder+1) x (p+1), without allocating up to kSpanStackDegree.
 void bspline_derivatives(const KnotVector& knots, int span, double t, int nder, double* out);
 
-/// bspline_derivatives held in a buffer of its own, on the stack up to degree 15 and order 2: the
+/// bspline_derivatives held in a buffer of its own, on the stack up to kSpanStackDegree and order 2: the
 /// maps under every space evaluate it at each quadrature point (the Eigen matrices and tables it
 /// allocated were half of a map's evaluation). Entry (k, j) as in bspline_derivatives.
 class SpanDerivatives {
@@ -40,7 +44,7 @@ class SpanDerivatives {
   double operator()(int k, int j) const { return data_[k + j * rows_]; }
 
  private:
-  std::array<double, 3 * 16> stack_;
+  std::array<double, 3 * (kSpanStackDegree + 1)> stack_;
   std::vector<double> heap_;
   const double* data_ = nullptr;
   int rows_;
