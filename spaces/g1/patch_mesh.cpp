@@ -27,14 +27,25 @@ std::string patch_name(const std::string& mesh, int f) {
 
 PatchMesh::PatchMesh(std::vector<Point2> vertices, std::vector<std::vector<int>> faces, std::string name,
                      BoundaryGroups groups)
-    : vertices_(std::move(vertices)), faces_(std::move(faces)), name_(std::move(name)), groups_(std::move(groups)) {
-  if (faces_.empty()) throw InputError(name_ + ": a multipatch mesh needs at least one patch");
-  for (int f = 0; f < num_faces(); ++f) {
-    const auto& q = faces_[f];
-    const int n = num_corners(f);
+    : vertices_(std::move(vertices)), name_(std::move(name)), groups_(std::move(groups)) {
+  if (faces.empty()) throw InputError(name_ + ": a multipatch mesh needs at least one patch");
+  corner_start_.reserve(faces.size() + 1);
+  corner_start_.push_back(0);
+  for (std::size_t f = 0; f < faces.size(); ++f) {
+    const int n = static_cast<int>(faces[f].size());
     if (n != 3 && n != 4)
-      throw InputError(patch_name(name_, f) + " has " + std::to_string(n) +
+      throw InputError(patch_name(name_, static_cast<int>(f)) + " has " + std::to_string(n) +
                        " corners (patches are triangles or quadrilaterals)");
+    corner_start_.push_back(corner_start_.back() + n);
+  }
+  corners_.reserve(corner_start_.back());
+  for (auto& q : faces) {
+    corners_.insert(corners_.end(), q.begin(), q.end());
+    std::vector<int>().swap(q);
+  }
+  for (int f = 0; f < num_faces(); ++f) {
+    const auto q = face(f);
+    const int n = num_corners(f);
     for (int c = 0; c < n; ++c) {
       if (q[c] < 0 || q[c] >= num_vertices())
         throw InputError(patch_name(name_, f) + " refers to vertex " + std::to_string(q[c]) + " of " +
@@ -66,7 +77,7 @@ PatchMesh::PatchMesh(std::vector<Point2> vertices, std::vector<std::vector<int>>
 int PatchMesh::find_edge(int a, int b) const {
   // Among the edges at a (its fan): no table of all edges kept for this.
   if (a < 0 || a >= num_vertices()) return -1;
-  for (int e : fans_[a].edge)
+  for (int e : fan(a).edge)
     if ((edges_[e].x == a && edges_[e].y == b) || (edges_[e].x == b && edges_[e].y == a)) return e;
   return -1;
 }
@@ -85,9 +96,19 @@ void PatchMesh::check_groups() const {
 }
 
 bool PatchMesh::has_triangles() const {
-  for (const auto& f : faces_)
-    if (f.size() == 3) return true;
+  for (int f = 0; f < num_faces(); ++f)
+    if (num_corners(f) == 3) return true;
   return false;
+}
+
+VertexFan PatchMesh::fan(int v) const {
+  VertexFan fan;
+  const int first = fan_start_[v], count = fan_start_[v + 1] - first;
+  fan.face = {fan_faces_.data() + first, static_cast<std::size_t>(count)};
+  fan.corner = {fan_corners_.data() + first, static_cast<std::size_t>(count)};
+  fan.edge = {fan_edges_.data() + fan_edge_start_[v], fan_edges_.data() + fan_edge_start_[v + 1]};
+  fan.boundary = fan_boundary_[v] != 0;
+  return fan;
 }
 
 void PatchMesh::build_topology() {
@@ -95,11 +116,10 @@ void PatchMesh::build_topology() {
   std::map<std::pair<int, int>, std::vector<FaceEdge>> uses;
   for (int f = 0; f < num_faces(); ++f)
     for (int e = 0, n = num_corners(f); e < n; ++e) {
-      const int a = faces_[f][e], b = faces_[f][(e + 1) % n];
+      const int a = face(f)[e], b = face(f)[(e + 1) % n];
       uses[{std::min(a, b), std::max(a, b)}].push_back({f, e});
     }
-  face_edges_.resize(num_faces());
-  for (int f = 0; f < num_faces(); ++f) face_edges_[f].assign(num_corners(f), -1);
+  face_edges_.assign(corners_.size(), -1);
   for (const auto& [key, list] : uses) {
     if (list.size() > 2) {
       std::ostringstream s;
@@ -110,69 +130,89 @@ void PatchMesh::build_topology() {
     }
     MeshEdge edge;
     edge.first = list[0];
-    edge.x = faces_[list[0].face][list[0].local_edge];
-    edge.y = faces_[list[0].face][(list[0].local_edge + 1) % num_corners(list[0].face)];
+    edge.x = face(list[0].face)[list[0].local_edge];
+    edge.y = face(list[0].face)[(list[0].local_edge + 1) % num_corners(list[0].face)];
     if (list.size() == 2) {
       edge.second = list[1];
-      const int x2 = faces_[list[1].face][list[1].local_edge];
+      const int x2 = face(list[1].face)[list[1].local_edge];
       if (x2 == edge.x)
         throw InputError(patch_name(name_, list[1].face) + " and patch " + std::to_string(list[0].face) +
                          " traverse their shared edge in the same direction (inconsistent orientation)");
     }
     const int id = num_edges();
     edges_.push_back(edge);
-    for (const FaceEdge& fe : list) face_edges_[fe.face][fe.local_edge] = id;
+    for (const FaceEdge& fe : list) face_edges_[corner_start_[fe.face] + fe.local_edge] = id;
   }
+  edges_.shrink_to_fit();
 }
 
 void PatchMesh::build_fans() {
   // Faces at each vertex, then walk counterclockwise: from face i at corner c the next face is the
   // neighbour across local edge c-1 (the edge from the vertex to corner c-1).
-  std::vector<std::vector<std::pair<int, int>>> at(num_vertices());
-  for (int f = 0; f < num_faces(); ++f)
-    for (int c = 0; c < num_corners(f); ++c) at[faces_[f][c]].push_back({f, c});
-  fans_.assign(num_vertices(), VertexFan{});
+  std::vector<int> at_start(num_vertices() + 1, 0);
+  for (int q : corners_) ++at_start[q + 1];
+  for (int v = 0; v < num_vertices(); ++v) at_start[v + 1] += at_start[v];
+  std::vector<std::pair<int, int>> at(corners_.size());  // (face, corner) by vertex
+  {
+    std::vector<int> next(at_start.begin(), at_start.end() - 1);
+    for (int f = 0; f < num_faces(); ++f)
+      for (int c = 0; c < num_corners(f); ++c) at[next[face(f)[c]]++] = {f, c};
+  }
   auto other_side = [&](int edge_id, int face) -> FaceEdge {
     const MeshEdge& e = edges_[edge_id];
     if (e.boundary()) return {};
     return e.first.face == face ? e.second : e.first;
   };
+  fan_start_.assign(1, 0);
+  fan_edge_start_.assign(1, 0);
+  fan_start_.reserve(num_vertices() + 1);
+  fan_edge_start_.reserve(num_vertices() + 1);
+  fan_faces_.reserve(corners_.size());
+  fan_corners_.reserve(corners_.size());
+  fan_edges_.reserve(corners_.size() + num_vertices());
+  fan_boundary_.assign(num_vertices(), 0);
   for (int v = 0; v < num_vertices(); ++v) {
-    if (at[v].empty()) continue;
-    // Start at a face whose u-axis edge (local edge c) is a boundary edge, if any.
-    std::pair<int, int> start = at[v][0];
-    bool boundary = false;
-    for (const auto& [f, c] : at[v])
-      if (edges_[face_edges_[f][c]].boundary()) {
-        start = {f, c};
-        boundary = true;
+    const std::span<const std::pair<int, int>> faces_at(at.data() + at_start[v], at.data() + at_start[v + 1]);
+    if (!faces_at.empty()) {
+      // Start at a face whose u-axis edge (local edge c) is a boundary edge, if any.
+      std::pair<int, int> start = faces_at[0];
+      bool boundary = false;
+      for (const auto& [f, c] : faces_at)
+        if (edges_[face_edge(f, c)].boundary()) {
+          start = {f, c};
+          boundary = true;
+        }
+      fan_boundary_[v] = boundary;
+      auto [f, c] = start;
+      std::size_t count = 0;
+      for (size_t step = 0; step <= faces_at.size(); ++step) {
+        fan_faces_.push_back(f);
+        fan_corners_.push_back(c);
+        fan_edges_.push_back(face_edge(f, c));
+        ++count;
+        const int next_edge = face_edge(f, (c + num_corners(f) - 1) % num_corners(f));
+        const FaceEdge n = other_side(next_edge, f);
+        if (n.face < 0) {
+          fan_edges_.push_back(next_edge);
+          break;
+        }
+        // In the neighbour the shared edge runs from corner(c-1) to the vertex, i.e. it starts at v.
+        f = n.face;
+        c = n.local_edge;
+        if (f == start.first && c == start.second) break;
       }
-    VertexFan& fan = fans_[v];
-    fan.boundary = boundary;
-    auto [f, c] = start;
-    for (size_t step = 0; step <= at[v].size(); ++step) {
-      fan.face.push_back(f);
-      fan.corner.push_back(c);
-      fan.edge.push_back(face_edges_[f][c]);
-      const int next_edge = face_edges_[f][(c + num_corners(f) - 1) % num_corners(f)];
-      const FaceEdge n = other_side(next_edge, f);
-      if (n.face < 0) {
-        fan.edge.push_back(next_edge);
-        break;
-      }
-      // In the neighbour the shared edge runs from corner(c-1) to the vertex, i.e. it starts at v.
-      f = n.face;
-      c = n.local_edge;
-      if (f == start.first && c == start.second) break;
+      if (count != faces_at.size())
+        throw InputError(name_ + ": the patches at vertex " + std::to_string(v) +
+                         " do not form a single fan (non-manifold vertex), e.g. patch " +
+                         std::to_string(faces_at[0].first));
     }
-    if (fan.face.size() != at[v].size())
-      throw InputError(name_ + ": the patches at vertex " + std::to_string(v) +
-                       " do not form a single fan (non-manifold vertex), e.g. patch " + std::to_string(at[v][0].first));
+    fan_start_.push_back(static_cast<int>(fan_faces_.size()));
+    fan_edge_start_.push_back(static_cast<int>(fan_edges_.size()));
   }
 }
 
 GeometryJet PatchMesh::map(int f, const Point2& uv) const {
-  const auto& q = faces_[f];
+  const auto q = face(f);
   const double u = uv.x(), v = uv.y();
   GeometryJet g;
   if (q.size() == 3) {
@@ -198,12 +238,12 @@ double PatchMesh::diameter(int f) const {
   double h = 0.0;
   const int n = num_corners(f);
   for (int a = 0; a < n; ++a)
-    for (int b = a + 1; b < n; ++b) h = std::max(h, (vertices_[faces_[f][a]] - vertices_[faces_[f][b]]).norm());
+    for (int b = a + 1; b < n; ++b) h = std::max(h, (vertices_[face(f)[a]] - vertices_[face(f)[b]]).norm());
   return h;
 }
 
 bool PatchMesh::is_affine(int f) const {
-  const auto& q = faces_[f];
+  const auto q = face(f);
   if (q.size() == 3) return true;
   const Point2 twist = vertices_[q[0]] - vertices_[q[1]] + vertices_[q[2]] - vertices_[q[3]];
   return twist.norm() <= 1e-14 * diameter(f);
@@ -217,12 +257,12 @@ PatchMesh PatchMesh::refined() const {
     v.push_back(0.5 * (vertices_[edges_[e].x] + vertices_[edges_[e].y]));
   }
   std::vector<std::vector<int>> faces;
-  faces.reserve(4 * faces_.size());
+  faces.reserve(4 * num_faces());
   for (int f = 0; f < num_faces(); ++f) {
-    const auto& q = faces_[f];
+    const auto q = face(f);
     const int n = num_corners(f);
     std::vector<int> m(n);
-    for (int e = 0; e < n; ++e) m[e] = mid[face_edges_[f][e]];
+    for (int e = 0; e < n; ++e) m[e] = mid[face_edge(f, e)];
     if (n == 3) {
       // Corner children keep corner c; the middle triangle is the medial one (counterclockwise:
       // it is the parent turned by 180 degrees).

@@ -22,7 +22,7 @@ PatchMesh g14_domain(const std::string& name) {
     std::vector<Point2> vertices;
     for (int v = 0; v < split.num_vertices(); ++v) vertices.push_back(split.vertex(v));
     std::vector<std::vector<int>> faces;
-    for (int f = 0; f < split.num_faces(); ++f) faces.push_back(split.face(f));
+    for (int f = 0; f < split.num_faces(); ++f) faces.emplace_back(split.face(f).begin(), split.face(f).end());
     return PatchMesh(std::move(vertices), std::move(faces), name);
   }
   if (name == "fan3" || name == "fan5" || name == "fan6" || name == "fan3+" || name == "fan5+") {

@@ -97,6 +97,39 @@ TEST(G1Mesh, RefinementSplitsEachPatchIntoFourWithTheSameGeometry) {
   EXPECT_NEAR(total_area(r.refined()), 1.0, 1e-13);
 }
 
+TEST(G1Mesh, FansWalkTheirFacesAndEdgesCounterclockwise) {
+  // The fans are views into flat arrays: each names, in order, faces that do have the vertex at
+  // the named corner, the edge along that corner's u-axis, the next face across the previous local
+  // edge, and one more edge when the fan is open; every corner of every face is in exactly one fan.
+  for (const char* name : {"3p_square", "5p_pentagon", "lshape_8p", "2q2t_square", "4t_star"}) {
+    for (const PatchMesh& m : {multipatch_domain(name), multipatch_domain(name).refined().refined()}) {
+      int corners = 0, seen = 0;
+      for (int f = 0; f < m.num_faces(); ++f) corners += static_cast<int>(m.face(f).size());
+      for (int v = 0; v < m.num_vertices(); ++v) {
+        const VertexFan fan = m.fan(v);
+        const int n = static_cast<int>(fan.face.size());
+        ASSERT_EQ(fan.corner.size(), fan.face.size());
+        ASSERT_EQ(fan.valence(), n + (fan.boundary ? 1 : 0)) << name << " vertex " << v;
+        seen += n;
+        for (int i = 0; i < n; ++i) {
+          const int f = fan.face[i], c = fan.corner[i], corners_f = m.num_corners(f);
+          EXPECT_EQ(m.face(f)[c], v);
+          EXPECT_EQ(fan.edge[i], m.face_edge(f, c));
+          const int previous = m.face_edge(f, (c + corners_f - 1) % corners_f);
+          if (i + 1 < n) EXPECT_EQ(fan.edge[i + 1], previous) << name << " vertex " << v;
+          else EXPECT_EQ(fan.boundary ? fan.edge[n] : fan.edge[0], previous) << name << " vertex " << v;
+        }
+        if (fan.boundary) {
+          EXPECT_TRUE(m.edge(fan.edge.front()).boundary());
+          EXPECT_TRUE(m.edge(fan.edge.back()).boundary());
+        }
+        for (int e : fan.edge) EXPECT_EQ(m.find_edge(m.edge(e).x, m.edge(e).y), e);
+      }
+      EXPECT_EQ(seen, corners) << name;
+    }
+  }
+}
+
 TEST(G1Mesh, RejectsInvalidMeshesNamingThePatch) {
   const std::vector<Point2> v{{0, 0}, {1, 0}, {1, 1}, {0, 1}, {2, 0}, {2, 1}};
   // Clockwise patch.
