@@ -205,12 +205,13 @@ PetscDistribution::Rows PetscDistribution::couplings() const {
   start.assign(n + 1, 0);
   for (int k = 0; k < n; ++k) rows.for_each_coupling(k, [&](int) { ++start[k + 1]; });
   for (int k = 0; k < n; ++k) start[k + 1] += start[k];
-  // Blocks of about 2^19 entries (2 MB of columns, 4 MB of values): a released block's memory is
-  // taken by the next one (once PETSc is loaded glibc maps no block of its own and returns nothing:
-  // docs/parallel.md), so what is alive at once is the few blocks the element loop is between.
-  // Blocks of 2^23 entries (100 MB) had been two or three on every rank whatever the rank count:
-  // at 10⁶ cubic B-spline DOFs 202 MB of a rank's 710 MB heap peak on two ranks, 147 of 410 on four.
-  constexpr long long block_entries = 1LL << 19;
+  // Blocks of about 2^21 entries (8 MB of columns, 16 MB of values): a released block's memory is
+  // taken by the next one, so what is alive at once is the few blocks the element loop is between.
+  // Blocks of 2^23 entries (100 MB) had been two or three alive on every rank whatever the rank
+  // count (a 4-split run at 329 928 DOFs: 0.863 / 0.473 GB per rank on two / four ranks, now
+  // 0.772 / 0.439). Much smaller blocks (2^19) leave the heap in holes too small for GAMG's
+  // arrays: 0.5 GB more on one rank of the 10⁷-DOF run.
+  constexpr long long block_entries = 1LL << 21;
   rows.rows_per_block = static_cast<int>(std::clamp<long long>(
       block_entries * n / std::max(1, start[n]), 1, std::max(1, n)));
   const int blocks = static_cast<int>((static_cast<long long>(n) + rows.rows_per_block - 1) / rows.rows_per_block);
