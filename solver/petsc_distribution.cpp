@@ -205,13 +205,13 @@ PetscDistribution::Rows PetscDistribution::couplings() const {
   start.assign(n + 1, 0);
   for (int k = 0; k < n; ++k) rows.for_each_coupling(k, [&](int) { ++start[k + 1]; });
   for (int k = 0; k < n; ++k) start[k + 1] += start[k];
-  // Blocks of about 2^21 entries (8 MB of columns, 16 MB of values): a released block's memory is
-  // taken by the next one, so what is alive at once is the few blocks the element loop is between.
-  // Blocks of 2^23 entries (100 MB) had been two or three alive on every rank whatever the rank
-  // count (a 4-split run at 329 928 DOFs: 0.863 / 0.473 GB per rank on two / four ranks, now
-  // 0.772 / 0.439). Much smaller blocks (2^19) leave the heap in holes too small for GAMG's
-  // arrays: 0.5 GB more on one rank of the 10⁷-DOF run.
-  constexpr long long block_entries = 1LL << 21;
+  // Blocks of about 2^23 entries (32 MB of columns, 64 MB of values). Two or three of them are
+  // alive at once on every rank whatever the rank count (at 10⁶ cubic B-spline DOFs 202 MB of a
+  // rank's 710 MB assembly heap on two ranks, 147 of 410 MB on four), yet smaller ones cost more
+  // than they save: their freed pages are too scattered for GAMG's set-up to reuse, which then
+  // faults in fresh pages (the solve 4–11 % slower on two ranks with 2^21; with 2^19 also 0.5 GB
+  // more on one rank of the 10⁷-DOF run). docs/parallel.md has the numbers.
+  constexpr long long block_entries = 1LL << 23;
   rows.rows_per_block = static_cast<int>(std::clamp<long long>(
       block_entries * n / std::max(1, start[n]), 1, std::max(1, n)));
   const int blocks = static_cast<int>((static_cast<long long>(n) + rows.rows_per_block - 1) / rows.rows_per_block);
