@@ -15,16 +15,18 @@
 namespace iga {
 
 namespace {
-/// Elements computed in parallel before being handed on serially: 64 per thread keeps each thread
-/// busy for eight of the loop's chunks between barriers. Sized by the threads, not fixed: one rank
-/// of an MPI run has one thread, and 512 stored quintic G1 element matrices (10.6 MB in
-/// double-double) were a fifth of what every rank of a 788 742-DOF run held whatever the rank count.
+/// Elements computed before being handed on serially. With a thread team, 512: each batch ends in
+/// barriers at which the threads idle while one hands the batch on, and smaller batches made those
+/// waits cost (128 for two threads: the 10⁶ cubic B-spline assembly 6.0 → 6.9 s). With one thread
+/// (every rank of an MPI run on a full node) there is no team to wait for, and the stored element
+/// matrices are memory every rank holds whatever the rank count: 512 quintic G1 matrices in
+/// double-double are 10.6 MB, the 4-split's macro-elements far more, so 64.
 int batch_size(int elements) {
   int threads = 1;
 #ifdef _OPENMP
   if (worth_threads(elements)) threads = omp_get_max_threads();
 #endif
-  return 64 * std::max(1, threads);
+  return threads > 1 ? 512 : 64;
 }
 }  // namespace
 
