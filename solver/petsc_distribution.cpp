@@ -208,9 +208,9 @@ PetscDistribution::Rows PetscDistribution::couplings() const {
   // Blocks of about 2^23 entries (32 MB of columns, 64 MB of values). Two or three of them are
   // alive at once on every rank whatever the rank count (at 10⁶ cubic B-spline DOFs 202 MB of a
   // rank's 710 MB assembly heap on two ranks, 147 of 410 MB on four), yet smaller ones cost more
-  // than they save: their freed pages are too scattered for GAMG's set-up to reuse, which then
-  // faults in fresh pages (the solve 4–11 % slower on two ranks with 2^21; with 2^19 also 0.5 GB
-  // more on one rank of the 10⁷-DOF run). docs/parallel.md has the numbers.
+  // than they save where GAMG's set-up is the peak: it then runs 4–11 % slower on two ranks (2^21;
+  // most likely its arrays no longer land on the freed, already resident pages), and with 2^19 one
+  // rank of the 10⁷-DOF run peaked 0.5 GB higher. docs/parallel.md has the numbers.
   constexpr long long block_entries = 1LL << 23;
   rows.rows_per_block = static_cast<int>(std::clamp<long long>(
       block_entries * n / std::max(1, start[n]), 1, std::max(1, n)));
