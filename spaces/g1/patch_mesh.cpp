@@ -107,7 +107,7 @@ VertexFan PatchMesh::fan(int v) const {
   fan.face = {fan_faces_.data() + first, static_cast<std::size_t>(count)};
   fan.corner = {fan_corners_.data() + first, static_cast<std::size_t>(count)};
   fan.edge = {fan_edges_.data() + fan_edge_start_[v], fan_edges_.data() + fan_edge_start_[v + 1]};
-  fan.boundary = fan_boundary_[v] != 0;
+  fan.boundary = fan.edge.size() == fan.face.size() + 1;
   return fan;
 }
 
@@ -170,19 +170,14 @@ void PatchMesh::build_fans() {
   fan_faces_.reserve(corners_.size());
   fan_corners_.reserve(corners_.size());
   fan_edges_.reserve(corners_.size() + num_vertices());
-  fan_boundary_.assign(num_vertices(), 0);
   for (int v = 0; v < num_vertices(); ++v) {
     const std::span<const std::pair<int, int>> faces_at(at.data() + at_start[v], at.data() + at_start[v + 1]);
     if (!faces_at.empty()) {
-      // Start at a face whose u-axis edge (local edge c) is a boundary edge, if any.
+      // Start at a face whose u-axis edge (local edge c) is a boundary edge, if any: an open fan
+      // then ends on the boundary with one edge more than faces (fan() reads that as `boundary`).
       std::pair<int, int> start = faces_at[0];
-      bool boundary = false;
       for (const auto& [f, c] : faces_at)
-        if (edges_[face_edge(f, c)].boundary()) {
-          start = {f, c};
-          boundary = true;
-        }
-      fan_boundary_[v] = boundary;
+        if (edges_[face_edge(f, c)].boundary()) start = {f, c};
       auto [f, c] = start;
       std::size_t count = 0;
       for (size_t step = 0; step <= faces_at.size(); ++step) {

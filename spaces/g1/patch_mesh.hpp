@@ -105,9 +105,10 @@ class PatchMesh {
   std::vector<int> face_edges_;  ///< aligned with corners_: the mesh edge of each local edge
   std::vector<int> fan_start_;   ///< vertex v: fan_faces_, fan_corners_ [fan_start_[v] .. fan_start_[v + 1])
   std::vector<int> fan_faces_, fan_corners_;
-  std::vector<int> fan_edge_start_;  ///< vertex v's edges: fan_edges_[fan_edge_start_[v] .. fan_edge_start_[v + 1])
+  /// vertex v's edges: fan_edges_[fan_edge_start_[v] .. fan_edge_start_[v + 1]), one more than its
+  /// faces exactly when its fan is open (a boundary vertex)
+  std::vector<int> fan_edge_start_;
   std::vector<int> fan_edges_;
-  std::vector<char> fan_boundary_;
   BoundaryGroups groups_;
 };
 
