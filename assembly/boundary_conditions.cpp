@@ -37,16 +37,20 @@ void refine_projection(const Eigen::SimplicialLDLT<SparseMatrix>& ldlt, const st
 
 }  // namespace
 
+Constraints all_free(int n) {
+  Constraints c;
+  c.values = Eigen::VectorXd::Zero(n);
+  c.free.resize(n);
+  for (int i = 0; i < n; ++i) c.free[i] = i;
+  return c;
+}
+
 Constraints impose_essential(const Space& space, const EssentialBoundary& boundary, const BoundaryField& g,
                              const BoundaryField& g_n, int quad_degree) {
   const int dim = space.dimension();
+  if (boundary.empty()) return all_free(dim);
   Constraints c;
   c.values = Eigen::VectorXd::Zero(dim);
-  if (boundary.empty()) {
-    c.free.resize(dim);
-    for (int i = 0; i < dim; ++i) c.free[i] = i;
-    return c;
-  }
   // Merge the two edge lists: an edge can carry both kinds of data.
   std::map<std::pair<int, int>, EdgeKind> edges;
   for (const BoundaryEdge& e : boundary.value_edges) edges[{e.element, e.local_edge}].value = true;

@@ -48,6 +48,9 @@ struct Constraints {
   std::vector<Eigen::Triplet<double>> basis_change;
 };
 
+/// No function constrained: every index of a space of dimension `n` free, the values zero.
+Constraints all_free(int n);
+
 /// Find the constrained functions and their values by the boundary projection above.
 /// `g` gives u on value edges, `g_n` gives ∂u/∂n on normal edges (may be empty when there are none).
 Constraints impose_essential(const Space& space, const EssentialBoundary& boundary, const BoundaryField& g,

@@ -1,11 +1,23 @@
 #include "solver/boundary_edge_kinds.hpp"
 
+#include <algorithm>
 #include <map>
 #include <utility>
 
 #include "config/errors.hpp"
 
 namespace iga {
+
+void check_boundary_part(const Space& space, const std::string& name, const std::string& where,
+                         const std::string& of) {
+  const std::vector<std::string> names = space.boundary_names();
+  if (name == "all" || std::find(names.begin(), names.end(), name) != names.end()) return;
+  std::string list = "all";
+  for (const std::string& n : names) list += ", " + n;
+  const std::string near = nearest_word(name, names);
+  throw InputError(where + ": unknown boundary part '" + name + "' of " + of + " (parts: " + list + ")" +
+                   (near.empty() ? "" : " (did you mean '" + near + "'?)"));
+}
 
 BoundarySplit split_boundary(const Space& space, const ProblemSpec& problem) {
   // Every boundary edge once, ordered by (element, local edge), with the kind of the last part naming it.

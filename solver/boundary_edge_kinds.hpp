@@ -3,6 +3,7 @@
 /// Which boundary condition holds on each boundary edge of a space: the parts of the problem in
 /// config order, "all" first, later (named) parts overriding earlier ones.
 
+#include <string>
 #include <vector>
 
 #include "assembly/boundary_conditions.hpp"
@@ -18,6 +19,12 @@ struct BoundarySplit {
   EssentialBoundary essential;
   std::vector<BoundaryEdge> neumann, simply_supported;
 };
+
+/// An InputError at `where` unless `name` is one of the space's boundary parts ("all" always is),
+/// naming the parts there are and the nearest one; `of` ends "unknown boundary part 'x' of …"
+/// ("this g1 domain").
+void check_boundary_part(const Space& space, const std::string& name, const std::string& where,
+                         const std::string& of);
 
 /// The split above; InputError for a pure Neumann problem (no unique solution).
 BoundarySplit split_boundary(const Space& space, const ProblemSpec& problem);

@@ -13,6 +13,17 @@ int assembly_quadrature_degree(const Space& space) {
   return 2 * space.degree() + (space.affine_elements() ? 0 : 3);
 }
 
+std::vector<BoundaryEdge> edges_of_share(const std::vector<BoundaryEdge>& edges, const WorkShare& share,
+                                         int num_elements) {
+  if (!share.elements) return edges;
+  std::vector<char> mine(num_elements, 0);
+  for (int e : *share.elements) mine[e] = 1;
+  std::vector<BoundaryEdge> out;
+  for (const BoundaryEdge& be : edges)
+    if (mine[be.element]) out.push_back(be);
+  return out;
+}
+
 bool Formulation::works_on_parts() const { return !dynamic_cast<const LiftedSpace*>(&space_); }
 
 Formulation::Formulation(const Space& space, const ProblemSpec& problem)

@@ -39,6 +39,11 @@ struct WorkShare {
   double first(double value) const { return first_known ? first_known(value) : value; }
 };
 
+/// The edges of `edges` on the share's elements, in their order (all of them when the share is the
+/// whole space); `num_elements`: the space's.
+std::vector<BoundaryEdge> edges_of_share(const std::vector<BoundaryEdge>& edges, const WorkShare& share,
+                                         int num_elements);
+
 class Formulation {
  public:
   Formulation(const Space& space, const ProblemSpec& problem);

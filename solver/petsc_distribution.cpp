@@ -299,23 +299,24 @@ void PetscDistribution::set_rows(Mat A, Rows& rows, int from_block, int to_block
   std::vector<std::pair<PetscInt, double>> in, out;
   std::vector<PetscInt> cols;
   std::vector<double> vals;
-  const auto put = [&](Mat block, PetscInt row, std::vector<std::pair<PetscInt, double>>& entries) {
+  const auto put = [&](Mat block, PetscInt row, std::vector<std::pair<PetscInt, double>>& entries, InsertMode mode) {
     if (entries.empty()) return;
     if (!std::is_sorted(entries.begin(), entries.end())) std::sort(entries.begin(), entries.end());
     cols.resize(entries.size());
     vals.resize(entries.size());
     for (std::size_t i = 0; i < entries.size(); ++i) std::tie(cols[i], vals[i]) = entries[i];
-    petsc_check(MatSetValues(block, 1, &row, static_cast<PetscInt>(cols.size()), cols.data(), vals.data(), INSERT_VALUES),
+    petsc_check(MatSetValues(block, 1, &row, static_cast<PetscInt>(cols.size()), cols.data(), vals.data(), mode),
                 "MatSetValues");
+  };
+  const auto release = [&rows](int block) {  // a block already in PETSc
+    std::vector<int>().swap(rows.columns[block]);
+    std::vector<double>().swap(rows.values[block]);
   };
   const int n = static_cast<int>(row_.size());
   for (int b = from_block; b < to_block; ++b) rows.fill(b);  // (a block no element touched: its rows are empty)
   const int end = static_cast<int>(std::min<long long>(n, static_cast<long long>(to_block) * rows.rows_per_block));
   for (int k = from_block * rows.rows_per_block; k < end; ++k) {
-    if (k % rows.rows_per_block == 0 && k / rows.rows_per_block > from_block) {  // the previous block is in PETSc
-      std::vector<int>().swap(rows.columns[k / rows.rows_per_block - 1]);
-      std::vector<double>().swap(rows.values[k / rows.rows_per_block - 1]);
-    }
+    if (k % rows.rows_per_block == 0 && k / rows.rows_per_block > from_block) release(k / rows.rows_per_block - 1);
     const int count = rows.count(k);
     if (count == 0) continue;
     const int* columns = rows.columns_of(k);
@@ -325,12 +326,7 @@ void PetscDistribution::set_rows(Mat A, Rows& rows, int from_block, int to_block
     out.clear();
     if (row < first || row >= last) {  // another rank's row: all columns, global, added at its owner
       for (int p = 0; p < count; ++p) in.emplace_back(row_[columns[p]], values[p]);
-      std::sort(in.begin(), in.end());
-      cols.resize(in.size());
-      vals.resize(in.size());
-      for (std::size_t i = 0; i < in.size(); ++i) std::tie(cols[i], vals[i]) = in[i];
-      petsc_check(MatSetValues(A, 1, &row, static_cast<PetscInt>(cols.size()), cols.data(), vals.data(), ADD_VALUES),
-                  "MatSetValues");
+      put(A, row, in, ADD_VALUES);
       continue;
     }
     for (int p = 0; p < count; ++p) {
@@ -339,13 +335,10 @@ void PetscDistribution::set_rows(Mat A, Rows& rows, int from_block, int to_block
       else out.emplace_back(column, values[p]);
     }
     const PetscInt local = distributed ? row - first : row;
-    put(inner, local, in);
-    put(outer, local, out);
+    put(inner, local, in, INSERT_VALUES);
+    put(outer, local, out, INSERT_VALUES);
   }
-  if (to_block > from_block) {
-    std::vector<int>().swap(rows.columns[to_block - 1]);
-    std::vector<double>().swap(rows.values[to_block - 1]);
-  }
+  if (to_block > from_block) release(to_block - 1);
   for (Mat block : {inner, outer})
     if (block) petsc_check(MatSetOption(block, MAT_SORTED_FULL, PETSC_FALSE), "MatSetOption");
 }

@@ -75,8 +75,6 @@ class PetscDistribution {
 
   const Space& space() const { return space_; }
   const Constraints& constraints() const { return constraints_; }
-  /// Free unknown k (position in constraints().free) → its row.
-  const std::vector<PetscInt>& row_of_unknown() const { return row_; }
   PetscInt owned_rows() const { return owned_rows_; }
   PetscInt rows() const { return rows_; }
   /// The whole space's number of functions (the part's are numbered within it), without the

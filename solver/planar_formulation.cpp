@@ -10,29 +10,11 @@ namespace {
 BoundaryField boundary_field(const SymbolicFunction& f) {
   return [f](const Point2& x, const Point2&) { return f(x); };
 }
-
-/// The edges of `edges` on the share's elements.
-std::vector<BoundaryEdge> edges_of(const std::vector<BoundaryEdge>& edges, const WorkShare& share, int elements) {
-  if (!share.elements) return edges;
-  std::vector<char> mine(elements, 0);
-  for (int e : *share.elements) mine[e] = 1;
-  std::vector<BoundaryEdge> out;
-  for (const BoundaryEdge& be : edges)
-    if (mine[be.element]) out.push_back(be);
-  return out;
-}
 }  // namespace
 
 void PlanarFormulation::check() const {
-  const std::vector<std::string> names = space().boundary_names();
-  for (const BoundaryPart& part : problem().boundary) {
-    if (part.name == "all" || std::find(names.begin(), names.end(), part.name) != names.end()) continue;
-    std::string list = "all";
-    for (const auto& n : names) list += ", " + n;
-    const std::string near = nearest_word(part.name, names);
-    throw InputError(part.where + ": unknown boundary part '" + part.name + "' of this " + space().type() +
-                     " domain (parts: " + list + ")" + (near.empty() ? "" : " (did you mean '" + near + "'?)"));
-  }
+  for (const BoundaryPart& part : problem().boundary)
+    check_boundary_part(space(), part.name, part.where, "this " + space().type() + " domain");
 }
 
 const BoundarySplit& PlanarFormulation::boundary() const {
@@ -50,8 +32,8 @@ Eigen::VectorXd PlanarFormulation::load(const WorkShare& share) const {
   // Natural conditions: Neumann flux ∫ g_N v, and for simply supported plates ∫ Δu ∂v/∂n
   // (from ∫ Δ²u v = ∫ Δu Δv − ∫_Γ Δu ∂v/∂n when v = 0 on Γ).
   const int ne = space().num_elements();
-  const std::vector<BoundaryEdge> neumann = edges_of(boundary().neumann, share, ne);
-  const std::vector<BoundaryEdge> supported = edges_of(boundary().simply_supported, share, ne);
+  const std::vector<BoundaryEdge> neumann = edges_of_share(boundary().neumann, share, ne);
+  const std::vector<BoundaryEdge> supported = edges_of_share(boundary().simply_supported, share, ne);
   if (!neumann.empty()) b += edge_load(space(), neumann, problem().normal_derivative_field(), false, qa);
   if (!supported.empty()) b += edge_load(space(), supported, boundary_field(problem().laplacian), true, qa);
   return b;

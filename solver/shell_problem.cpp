@@ -5,9 +5,10 @@
 #include <memory>
 
 #include "assembly/shell_rotation.hpp"
-#include "assembly/surface_dirichlet.hpp"
+#include "assembly/surface_essential.hpp"
 #include "assembly/surface_load.hpp"
 #include "config/errors.hpp"
+#include "solver/boundary_edge_kinds.hpp"
 #include "config/config_node.hpp"
 #include "solver/surface_problem.hpp"
 #include "spaces/surface_point_location.hpp"
@@ -33,15 +34,7 @@ void ShellFormulation::check() const {
   const ProblemSpec& p = problem();
   if (space().ambient_dimension() != 3)
     throw InputError(p.source_where + ": kirchhoff_love_shell needs a space on a surface in 3D");
-  const std::vector<std::string> names = space().boundary_names();
-  for (const ShellSupport& s : p.shell->supports) {
-    if (s.part == "all" || std::find(names.begin(), names.end(), s.part) != names.end()) continue;
-    std::string list = "all";
-    for (const auto& n : names) list += ", " + n;
-    const std::string near = nearest_word(s.part, names);
-    throw InputError(s.where + ": unknown boundary part '" + s.part + "' of this surface (parts: " + list + ")" +
-                     (near.empty() ? "" : " (did you mean '" + near + "'?)"));
-  }
+  for (const ShellSupport& s : p.shell->supports) check_boundary_part(space(), s.part, s.where, "this surface");
   for (const ShellSupport& s : p.shell->supports)
     if (space().boundary_edges(s.part).empty())
       throw InputError(s.where + ": this surface is closed: it has no boundary edges to hold");
@@ -175,16 +168,20 @@ void ShellFormulation::finish(Eigen::VectorXd& coefficients, const WorkShare&) c
   remove_rigid_motions(basis_, coefficients);
 }
 
-std::vector<BoundaryEdge> ShellFormulation::rotation_edges() const {
+std::vector<BoundaryEdge> ShellFormulation::support_edges(const std::function<bool(const ShellSupport&)>& holds) const {
   std::vector<BoundaryEdge> edges;
   for (const ShellSupport& s : problem().shell->supports)
-    if (s.rotation_held)
+    if (holds(s))
       for (const BoundaryEdge& e : space().boundary_edges(s.part))
         if (std::none_of(edges.begin(), edges.end(), [&](const BoundaryEdge& f) {
               return f.element == e.element && f.local_edge == e.local_edge;
             }))
           edges.push_back(e);
   return edges;
+}
+
+std::vector<BoundaryEdge> ShellFormulation::rotation_edges() const {
+  return support_edges([](const ShellSupport& s) { return s.rotation_held; });
 }
 
 SplitMatrix ShellFormulation::matrix(const std::vector<FormTerm>& terms) const {
@@ -222,22 +219,13 @@ Constraints ShellFormulation::constraints() const {
   Constraints all;
   all.values = Eigen::VectorXd::Zero(3 * n);
   for (int c = 0; c < 3; ++c) {
-    // The edges of every part that holds component c (a part listed twice adds its edges once).
-    std::vector<BoundaryEdge> edges;
-    for (const ShellSupport& s : shell.supports)
-      if (s.fixed[c])
-        for (const BoundaryEdge& e : space().boundary_edges(s.part))
-          if (std::none_of(edges.begin(), edges.end(), [&](const BoundaryEdge& f) {
-                return f.element == e.element && f.local_edge == e.local_edge;
-              }))
-            edges.push_back(e);
+    const std::vector<BoundaryEdge> edges = support_edges([c](const ShellSupport& s) { return s.fixed[c]; });
     Constraints one;
     if (edges.empty()) {
-      one.values = Eigen::VectorXd::Zero(n);
-      for (int i = 0; i < n; ++i) one.free.push_back(i);
+      one = all_free(n);
     } else {
       const SurfaceField g = shell.exact ? surface_field((*shell.exact)[c]) : SurfaceField([](const Eigen::Vector3d&) { return 0.0; });
-      one = surface_dirichlet_constraints(space(), edges, g, quadrature_degree());
+      one = surface_essential_constraints(space(), edges, g, {}, quadrature_degree());
     }
     append_component(all, one, c, n);
   }

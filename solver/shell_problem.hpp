@@ -6,7 +6,7 @@
 /// calculus with the surface's normal and covariant Hessians, so any C1 surface space of the
 /// project carries it), load ∫ f·v per unit area, supports that hold any subset of the
 /// displacement components on named boundary parts (each a boundary L2 projection of that
-/// component, surface_dirichlet.hpp; zero, or the exact displacement's component when one is
+/// component, surface_essential.hpp; zero, or the exact displacement's component when one is
 /// given). Errors: L2, H1 (surface gradient) and H2 (covariant Hessian) of the displacement vector,
 /// sqrt of the sums of the components' squares.
 ///
@@ -21,6 +21,7 @@
 /// one coefficient pinned per free motion, the M-orthogonal projection onto them subtracted after
 /// the solve. The loads must not work on them (resultant force and moment), else an InputError.
 
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -64,7 +65,10 @@ class ShellFormulation final : public Formulation {
   const std::vector<int>& pinned() const { return pinned_; }
 
  private:
-  /// The boundary edges of the parts that hold the rotation (each once).
+  /// The boundary edges of the supports for which `holds` is true, each once, in the supports'
+  /// order (a part listed twice adds its edges once).
+  std::vector<BoundaryEdge> support_edges(const std::function<bool(const ShellSupport&)>& holds) const;
+  /// Those of the supports that hold the rotation.
   std::vector<BoundaryEdge> rotation_edges() const;
   /// η = 10 (p + 1)² of the Nitsche terms: above the inverse-inequality constant (docs/shells.md
   /// measures its effect).

@@ -85,29 +85,22 @@ std::vector<double> evaluate_functionals(const std::vector<FunctionalSpec>& func
   FunctionValues uh;
   const int n = space.dimension();
   for (const FunctionalSpec& f : functionals) {
-    if (f.kind == FunctionalSpec::Kind::surface_point) {
-      const auto at = locate_on_surface(space, f.point3, *evaluator, surface_point_tolerance(f.point3));
+    if (f.kind == FunctionalSpec::Kind::surface_point || f.kind == FunctionalSpec::Kind::point) {
+      const bool on_surface = f.kind == FunctionalSpec::Kind::surface_point;
+      const auto at = on_surface ? locate_on_surface(space, f.point3, *evaluator, surface_point_tolerance(f.point3))
+                                 : locator->locate(f.point, *evaluator);
       double value = std::numeric_limits<double>::quiet_NaN();
       if (at) {
         const auto rule = one_point(at->reference);
-        const bool vector = coefficients.size() > n;
+        const bool vector = coefficients.size() > n;  // a shell's displacement: the component's block
         const Eigen::VectorXd c = vector ? Eigen::VectorXd(coefficients.segment(f.component * n, n)) : coefficients;
         evaluator->evaluate_function(at->element, *rule, c, update_values, geometry, uh);
         value = uh.value(0);
       }
       value = share.first(value);
-      if (std::isnan(value)) throw std::runtime_error("functional '" + f.name + "': point not found on this level's surface");
-      values.push_back(value);
-    } else if (f.kind == FunctionalSpec::Kind::point) {
-      const auto at = locator->locate(f.point, *evaluator);
-      double value = std::numeric_limits<double>::quiet_NaN();
-      if (at) {
-        const auto rule = one_point(at->reference);
-        evaluator->evaluate_function(at->element, *rule, coefficients, update_values, geometry, uh);
-        value = uh.value(0);
-      }
-      value = share.first(value);
-      if (std::isnan(value)) throw std::runtime_error("functional '" + f.name + "': point not found on this level's mesh");
+      if (std::isnan(value))
+        throw std::runtime_error("functional '" + f.name + "': point not found on this level's " +
+                                 (on_surface ? "surface" : "mesh"));
       values.push_back(value);
     } else {
       double sum = 0;

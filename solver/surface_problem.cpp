@@ -11,10 +11,10 @@
 #include "assembly/interior_penalty.hpp"
 #include "assembly/surface_calculus.hpp"
 #include "assembly/surface_conormal_load.hpp"
-#include "assembly/surface_dirichlet.hpp"
 #include "assembly/surface_essential.hpp"
 #include "assembly/surface_load.hpp"
 #include "config/errors.hpp"
+#include "solver/boundary_edge_kinds.hpp"
 #include "spaces/lifted_space.hpp"
 
 namespace iga {
@@ -38,28 +38,11 @@ SurfaceSource surface_laplacian(const SymbolicFunction& u) {
   };
 }
 
-/// The edges whose element is in the share (all of them when the share is the whole space).
-std::vector<BoundaryEdge> edges_of_share(const std::vector<BoundaryEdge>& edges, const WorkShare& share) {
-  if (!share.elements) return edges;
-  const std::set<int> mine(share.elements->begin(), share.elements->end());
-  std::vector<BoundaryEdge> out;
-  for (const BoundaryEdge& e : edges)
-    if (mine.count(e.element)) out.push_back(e);
-  return out;
-}
-
 /// Every named part is one of the space's ("all" always is); else an InputError at the part's key
 /// naming the parts there are and the nearest one.
 void check_part_names(const Space& space, const std::vector<BoundaryPart>& parts) {
-  const std::vector<std::string> names = space.boundary_names();
-  for (const BoundaryPart& part : parts) {
-    if (part.name == "all" || std::find(names.begin(), names.end(), part.name) != names.end()) continue;
-    std::string list = "all";
-    for (const std::string& n : names) list += ", " + n;
-    const std::string near = nearest_word(part.name, names);
-    throw InputError(part.where + ": unknown boundary part '" + part.name + "' of this " + space.type() +
-                     " surface (parts: " + list + ")" + (near.empty() ? "" : " (did you mean '" + near + "'?)"));
-  }
+  for (const BoundaryPart& part : parts)
+    check_boundary_part(space, part.name, part.where, "this " + space.type() + " surface");
 }
 
 /// "FILE:LINE:COL: problem.boundary.left" → "FILE:LINE:COL: problem.boundary": messages about the
@@ -120,16 +103,10 @@ SurfaceSource surface_source(const ProblemSpec& problem) {
     return [f](const Eigen::Vector3d& x, const Eigen::Vector3d&, double) { return f.at(x); };
   }
   const SymbolicFunction u = *problem.surface_exact;
-  const SymbolicFunction ux = u.diff_x(), uy = u.diff_y(), uz = u.diff_z();
-  const SymbolicFunction uxx = ux.diff_x(), uxy = ux.diff_y(), uxz = ux.diff_z(), uyy = uy.diff_y(),
-                         uyz = uy.diff_z(), uzz = uz.diff_z();
+  const SurfaceSource laplace_beltrami = surface_laplacian(u);
   const double c = problem.reaction;
   return [=](const Eigen::Vector3d& x, const Eigen::Vector3d& n, double H) {
-    const Eigen::Vector3d g(ux.at(x), uy.at(x), uz.at(x));
-    Eigen::Matrix3d D;
-    D << uxx.at(x), uxy.at(x), uxz.at(x), uxy.at(x), uyy.at(x), uyz.at(x), uxz.at(x), uyz.at(x), uzz.at(x);
-    const double laplace_beltrami = D.trace() - n.dot(D * n) - H * g.dot(n);
-    return -laplace_beltrami + c * u.at(x);
+    return -laplace_beltrami(x, n, H) + c * u.at(x);
   };
 }
 
@@ -151,18 +128,11 @@ Eigen::VectorXd SurfaceFormulation::load(const WorkShare& share) const {
 }
 
 Constraints SurfaceFormulation::constraints() const {
-  const int n = space().dimension();
-  if (open()) {
-    const SymbolicFunction g = *problem().surface_dirichlet;
-    return surface_dirichlet_constraints(
-        space(), space().boundary_edges("all"), [g](const Eigen::Vector3d& x) { return g.at(x); },
-        quadrature_degree());
-  }
+  if (open())
+    return surface_essential_constraints(space(), space().boundary_edges("all"),
+                                         surface_field(*problem().surface_dirichlet), {}, quadrature_degree());
   if (pure()) return kernel_.pinned(space());
-  Constraints c;
-  c.values = Eigen::VectorXd::Zero(n);
-  for (int i = 0; i < n; ++i) c.free.push_back(i);
-  return c;
+  return all_free(space().dimension());
 }
 
 void SurfaceFormulation::finish(Eigen::VectorXd& coefficients, const WorkShare& share) const {
@@ -218,14 +188,11 @@ void SurfaceBiharmonicFormulation::check() const {
 Eigen::VectorXd SurfaceBiharmonicFormulation::load(const WorkShare& share) const {
   const ProblemSpec& p = problem();
   if (p.surface_source || !p.surface_exact) {
-    const SymbolicFunction f = p.surface_source.value_or(SymbolicFunction::constant(0.0));
-    Eigen::VectorXd b = surface_load(
-        space(), [f](const Eigen::Vector3d& x, const Eigen::Vector3d&, double) { return f.at(x); },
-        quadrature_degree(), share.elements);
+    Eigen::VectorXd b = surface_load(space(), surface_source(p), quadrature_degree(), share.elements);
     // Simply supported parts: Δ_Γu = g is natural, ∫ g ∂_ν v ds on the load side, over their
     // edges of this share's elements (each rank its own, as the element part).
     if (p.surface_exact && !space().boundary_edges("all").empty()) {
-      const std::vector<BoundaryEdge> supported = edges_of_share(parts().simply_supported, share);
+      const std::vector<BoundaryEdge> supported = edges_of_share(parts().simply_supported, share, space().num_elements());
       if (!supported.empty())
         b += surface_conormal_load(space(), supported, surface_laplacian(*p.surface_exact), quadrature_degree());
     }
@@ -323,15 +290,10 @@ Constraints SurfaceBiharmonicFormulation::constraints() const {
       conormal = [ux, uy, uz](const Eigen::Vector3d& x, const Eigen::Vector3d& nu) {
         return ux.at(x) * nu(0) + uy.at(x) * nu(1) + uz.at(x) * nu(2);
       };
-    return surface_essential_constraints(
-        space(), boundary.essential, [u](const Eigen::Vector3d& x) { return u.at(x); }, conormal, quadrature_degree());
+    return surface_essential_constraints(space(), boundary.essential, surface_field(u), conormal, quadrature_degree());
   }
   if (pure()) return kernel_.pinned(space());
-  // Closed surface, c > 0: no essential condition.
-  Constraints c;
-  c.values = Eigen::VectorXd::Zero(space().dimension());
-  for (int i = 0; i < space().dimension(); ++i) c.free.push_back(i);
-  return c;
+  return all_free(space().dimension());  // closed surface, c > 0: no essential condition
 }
 
 void SurfaceBiharmonicFormulation::finish(Eigen::VectorXd& coefficients, const WorkShare& share) const {

@@ -2,7 +2,7 @@
 /// @file
 /// The Laplace–Beltrami problem −Δ_Γu + c u = f (c = `reaction`, default 1) on a surface Γ in 3D,
 /// solved on a space with ambient_dimension() == 3: closed surfaces, or open ones with u = g on
-/// the whole boundary curve (a boundary L2 projection, assembly/surface_dirichlet.hpp). With an exact solution u given in x, y, z, the source is computed at
+/// the whole boundary curve (a boundary L2 projection, assembly/surface_essential.hpp). With an exact solution u given in x, y, z, the source is computed at
 /// every quadrature point from the surface's own unit normal n and mean curvature H = div_Γ n:
 ///   Δ_Γu = Δu − nᵀ(∇²u)n − H ∂_n u,
 /// so the surface is the exact geometry of the problem (no geometric error). With c = 0 the solution
@@ -28,7 +28,7 @@ SurfaceExactSolution surface_exact_solution(const SymbolicFunction& u, bool with
 
 /// The Laplace–Beltrami problem as a Formulation: matrix laplace + c mass (ProblemSpec::terms,
 /// summed in double: conditioned like h⁻², far from the plates' need), the load from
-/// surface_source, Dirichlet data on open surfaces (surface_dirichlet.hpp). Without reaction on a
+/// surface_source, Dirichlet data on open surfaces (surface_essential.hpp). Without reaction on a
 /// closed surface, constants (Σ N_i = 1) span the kernel: the load is made orthogonal to them
 /// (ConstantKernel: the load orthogonal to them, coefficient 0 pinned, the solution shifted to
 /// zero mean or to the exact solution's mean).

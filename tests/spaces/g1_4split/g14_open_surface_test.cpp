@@ -8,7 +8,7 @@
 #include <Eigen/Dense>
 #include <cmath>
 
-#include "assembly/surface_dirichlet.hpp"
+#include "assembly/surface_essential.hpp"
 #include "config/errors.hpp"
 #include "solver/solve_problem.hpp"
 #include "spaces/g1_4split/g1_4split_surface_space.hpp"
@@ -108,7 +108,7 @@ TEST(G14OpenSurface, DirichletDataWithDependentTracesAreMatchedExactly) {
                                                 "open_cube", 5));
   const auto g = [](const Eigen::Vector3d& x) { return x(0) + 2 * x(1) - x(2) + 0.5; };
   const std::vector<BoundaryEdge> edges = s->boundary_edges("all");
-  const Constraints c = surface_dirichlet_constraints(*s, edges, g, 12);
+  const Constraints c = surface_essential_constraints(*s, edges, g, {}, 12);
   EXPECT_FALSE(c.basis_change.empty());  // the dependent path was taken
   const auto evaluator = s->make_evaluator();
   PointValues v;
