@@ -4,6 +4,9 @@
 # process itself, the replicated parts of the space), D what the ranks share. Not a test: numbers
 # for docs/parallel.md. Usage:
 #   benchmarks/memory_per_rank.sh BUILD_DIR CONFIG [LEVELS] [PETSc options...]
+# LEVELS may list several ("7 8"): each is run at every rank count, and a fit over all the points
+# of M = a + c·N + d·N/np separates what a process holds whatever the mesh (a) from what every
+# rank holds per DOF (c) — a per-size fit books the process's constant part as bytes per DOF.
 # RANKS="1 2" (default "1 2 4") chooses the rank counts: oversubscribed MUMPS runs crawl.
 # REPEAT=3 (default 1) runs each rank count that often and takes the median peak: one run's peak
 # moves by up to ±5 % with where the allocator's free blocks happen to lie.
@@ -60,32 +63,62 @@ peak_of() {
 }
 HEAP_OUT="$work/tiny.heap" "${run[@]}" "$build/iga-run" "$work/tiny.yaml" --quiet -o "$work/tiny" > /dev/null 2> "$work/tiny.err"
 base=$(peak_of "$work/tiny")
-declare -A peak
+declare -A peak dofs
 ranks=(${RANKS:-1 2 4})
-for np in "${ranks[@]}"; do
-  runs=()
-  for r in $(seq "${REPEAT:-1}"); do
-    HEAP_OUT="$work/run$np.heap" mpirun --allow-run-as-root --oversubscribe -x HEAP_OUT -np "$np" "${run[@]}" \
-      "$build/iga-run" "$work/run.yaml" --levels "$levels" --quiet -o "$work/out$np" "$@" > /dev/null 2> "$work/run$np.err"
-    runs+=("$(peak_of "$work/run$np")")
+for level in $levels; do
+  for np in "${ranks[@]}"; do
+    runs=()
+    for r in $(seq "${REPEAT:-1}"); do
+      HEAP_OUT="$work/run$np.heap" mpirun --allow-run-as-root --oversubscribe -x HEAP_OUT -np "$np" "${run[@]}" \
+        "$build/iga-run" "$work/run.yaml" --levels "$level" --quiet -o "$work/out$np" "$@" > /dev/null 2> "$work/run$np.err"
+      runs+=("$(peak_of "$work/run$np")")
+    done
+    peak[$level,$np]=$(printf '%s\n' "${runs[@]}" | sort -n | awk '{ v[NR] = $1 } END { print v[int((NR + 1) / 2)] }')
+    echo "levels=$level np=$np peaks per run (largest rank): ${runs[*]}" >&2
   done
-  peak[$np]=$(printf '%s\n' "${runs[@]}" | sort -n | awk '{ v[NR] = $1 } END { print v[int((NR + 1) / 2)] }')
-  echo "np=$np peaks per run (largest rank): ${runs[*]}" >&2
+  dofs[$level]=$(tail -1 "$work/out${ranks[0]}/convergence.csv" | cut -d, -f3)
 done
-dofs=$(tail -1 "$work/out${ranks[0]}/convergence.csv" | cut -d, -f3)
 points=""
-for np in "${ranks[@]}"; do points+=" $np:${peak[$np]}"; done
-python3 - "$dofs" "$base" "${HEAP:-0}" $points <<'PY'
+for level in $levels; do
+  for np in "${ranks[@]}"; do points+=" ${dofs[$level]}:$np:${peak[$level,$np]}"; done
+done
+python3 - "$base" "${HEAP:-0}" $points <<'PY'
 import sys
-dofs, base, heap = int(sys.argv[1]), float(sys.argv[2]), sys.argv[3] == "1"
-pairs = [(int(a), float(b)) for a, b in (p.split(":") for p in sys.argv[4:])]
-# Least squares over the points of M = R + D/np (x = 1/np).
-xs, ys = [1 / n for n, _ in pairs], [m for _, m in pairs]
-xm, ym = sum(xs) / len(xs), sum(ys) / len(ys)
-D = sum((x - xm) * (y - ym) for x, y in zip(xs, ys)) / sum((x - xm) ** 2 for x in xs)
-R = ym - D * xm
-peaks = ", ".join(f"np={n} {m/1e9:.3f} GB" for n, m in pairs)
-print(f"dofs {dofs}: {'heap' if heap else 'resident'} peak per rank {peaks}; "
-      f"fit R = {R/1e6:.0f} MB, of which the process alone {base/1e6:.0f} MB: replicated "
-      f"{(R-base)/1e6:.0f} MB ({(R-base)/dofs:.0f} B/DOF); shared D = {D/1e9:.3f} GB ({D/dofs:.0f} B/DOF)")
+
+
+def lstsq(rows, ys):
+    """Least squares by the normal equations, columns scaled to 1 (a few unknowns)."""
+    k = len(rows[0])
+    scale = [max(abs(r[j]) for r in rows) or 1.0 for j in range(k)]
+    A = [[r[j] / scale[j] for j in range(k)] for r in rows]
+    N = [[sum(a[i] * a[j] for a in A) for j in range(k)] + [sum(a[i] * y for a, y in zip(A, ys))] for i in range(k)]
+    for i in range(k):  # Gauss-Jordan with partial pivoting
+        p = max(range(i, k), key=lambda r: abs(N[r][i]))
+        N[i], N[p] = N[p], N[i]
+        for r in range(k):
+            if r != i:
+                f = N[r][i] / N[i][i]
+                N[r] = [x - f * y for x, y in zip(N[r], N[i])]
+    return [N[i][k] / N[i][i] / scale[i] for i in range(k)]
+
+
+base, heap = float(sys.argv[1]), sys.argv[2] == "1"
+points = [(int(a), int(b), float(c)) for a, b, c in (p.split(":") for p in sys.argv[3:])]
+kind = "heap" if heap else "resident"
+# Per size, least squares over the rank counts of M = R + D/np.
+for dofs in sorted({d for d, _, _ in points}):
+    pairs = [(n, m) for d, n, m in points if d == dofs]
+    R, D = lstsq([[1.0, 1.0 / n] for n, _ in pairs], [m for _, m in pairs])
+    peaks = ", ".join(f"np={n} {m/1e9:.3f} GB" for n, m in pairs)
+    print(f"dofs {dofs}: {kind} peak per rank {peaks}; "
+          f"fit R = {R/1e6:.0f} MB, of which the process alone {base/1e6:.0f} MB: replicated "
+          f"{(R-base)/1e6:.0f} MB ({(R-base)/dofs:.0f} B/DOF); shared D = {D/1e9:.3f} GB ({D/dofs:.0f} B/DOF)")
+# Over several sizes, M = a + c N + d N/np: a is what a process holds whatever the mesh (libraries,
+# MPI's buffers, tables independent of the mesh), c what every rank holds per DOF of the whole
+# problem (the replicated part proper), d what the ranks share per DOF.
+if len({d for d, _, _ in points}) > 1:
+    a, c, d = lstsq([[1.0, N, N / n] for N, n, _ in points], [m for _, _, m in points])
+    worst = max(abs(m - (a + c * N + d * N / n)) for N, n, m in points)
+    print(f"over the sizes: M = a + c N + d N/np with a = {a/1e6:.0f} MB per process, "
+          f"c = {c:.0f} B/DOF replicated, d = {d:.0f} B/DOF divided (largest misfit {worst/1e6:.0f} MB)")
 PY
