@@ -129,14 +129,21 @@ refinement: {levels: 4}
     EXPECT_LT(last_rate(laplacian, index), 10.0 + 1.0) << "index " << index;
   }
   EXPECT_NEAR(last_rate(laplacian, 6), 10.0, 0.3);
-  // The simply supported plate, 2(p − 1) = 8: from level 3 to 4 (3222 to 12582 DOFs) measured
-  // 7.84, 8.10, 8.27, 8.28, 8.26 for λ₂ … λ₆ (λ₁ reaches the plates' round-off floor, 1.4e-12).
+  // The simply supported plate, 2(p − 1) = 8, approached from above as well: from level 2 to 3
+  // (846 to 3222 DOFs) measured 8.58, 8.57, 8.61, 8.53, 8.50 for λ₂ … λ₆, their errors 2e-10 to
+  // 8e-9 (λ₁'s, 5e-12, is at the plates' round-off floor). Not a level further: there λ₂'s error
+  // is itself at the floor (1.0e-12 on one machine, 3.9e-13 on another — rates 7.84 and 9.57 from
+  // the same code), so its rate measures the machine's rounding, not the space.
   const std::vector<EigenRow> plate = study_rows(plate_on_the_square, R"yaml(
 domain: {type: multipatch, name: 3p_square}
 space: {type: g1, degree: 5}
-refinement: {levels: 5}
+refinement: {levels: 4}
 )yaml");
-  expect_last_rates(plate, {2, 3, 4, 5, 6}, 8.0, 0.3);
+  for (int index = 2; index <= 6; ++index) {
+    EXPECT_GT(last_rate(plate, index), 8.0 - 0.3) << "index " << index;
+    EXPECT_LT(last_rate(plate, index), 8.0 + 1.0) << "index " << index;
+    EXPECT_GT(plate[plate.size() - 7 + index].relative_error.value(), 1e-10) << "index " << index;  // above the floor
+  }
 }
 
 TEST(EigenRates, FourSplitG1ReachesTwoPAndTwoPMinusTwo) {
