@@ -105,9 +105,12 @@ def lstsq(rows, ys):
 base, heap = float(sys.argv[1]), sys.argv[2] == "1"
 points = [(int(a), int(b), float(c)) for a, b, c in (p.split(":") for p in sys.argv[3:])]
 kind = "heap" if heap else "resident"
-# Per size, least squares over the rank counts of M = R + D/np.
+# Per size, least squares over the rank counts of M = R + D/np (one rank count: the peaks only).
 for dofs in sorted({d for d, _, _ in points}):
     pairs = [(n, m) for d, n, m in points if d == dofs]
+    if len(pairs) < 2:
+        print(f"dofs {dofs}: {kind} peak per rank " + ", ".join(f"np={n} {m/1e9:.3f} GB" for n, m in pairs))
+        continue
     R, D = lstsq([[1.0, 1.0 / n] for n, _ in pairs], [m for _, m in pairs])
     peaks = ", ".join(f"np={n} {m/1e9:.3f} GB" for n, m in pairs)
     print(f"dofs {dofs}: {kind} peak per rank {peaks}; "
@@ -116,7 +119,7 @@ for dofs in sorted({d for d, _, _ in points}):
 # Over several sizes, M = a + c N + d N/np: a is what a process holds whatever the mesh (libraries,
 # MPI's buffers, tables independent of the mesh), c what every rank holds per DOF of the whole
 # problem (the replicated part proper), d what the ranks share per DOF.
-if len({d for d, _, _ in points}) > 1:
+if len({d for d, _, _ in points}) > 1 and len({n for _, n, _ in points}) > 1:
     a, c, d = lstsq([[1.0, N, N / n] for N, n, _ in points], [m for _, _, m in points])
     worst = max(abs(m - (a + c * N + d * N / n)) for N, n, m in points)
     print(f"over the sizes: M = a + c N + d N/np with a = {a/1e6:.0f} MB per process, "
