@@ -7,9 +7,9 @@
 #include "assembly/shell_rotation.hpp"
 #include "assembly/surface_essential.hpp"
 #include "assembly/surface_load.hpp"
+#include "config/config_node.hpp"
 #include "config/errors.hpp"
 #include "solver/boundary_edge_kinds.hpp"
-#include "config/config_node.hpp"
 #include "solver/surface_problem.hpp"
 #include "spaces/surface_point_location.hpp"
 
