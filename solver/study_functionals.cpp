@@ -92,9 +92,10 @@ std::vector<double> evaluate_functionals(const std::vector<FunctionalSpec>& func
       double value = std::numeric_limits<double>::quiet_NaN();
       if (at) {
         const auto rule = one_point(at->reference);
-        const bool vector = coefficients.size() > n;  // a shell's displacement: the component's block
-        const Eigen::VectorXd c = vector ? Eigen::VectorXd(coefficients.segment(f.component * n, n)) : coefficients;
-        evaluator->evaluate_function(at->element, *rule, c, update_values, geometry, uh);
+        // A shell's displacement: the component's block (copied only then).
+        const bool vector = coefficients.size() > n;
+        const Eigen::VectorXd block = vector ? Eigen::VectorXd(coefficients.segment(f.component * n, n)) : Eigen::VectorXd();
+        evaluator->evaluate_function(at->element, *rule, vector ? block : coefficients, update_values, geometry, uh);
         value = uh.value(0);
       }
       value = share.first(value);
