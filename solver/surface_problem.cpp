@@ -38,13 +38,6 @@ SurfaceSource surface_laplacian(const SymbolicFunction& u) {
   };
 }
 
-/// Every named part is one of the space's ("all" always is); else an InputError at the part's key
-/// naming the parts there are and the nearest one.
-void check_part_names(const Space& space, const std::vector<BoundaryPart>& parts) {
-  for (const BoundaryPart& part : parts)
-    check_boundary_part(space, part.name, part.where, "this " + space.type() + " surface");
-}
-
 /// "FILE:LINE:COL: problem.boundary.left" → "FILE:LINE:COL: problem.boundary": messages about the
 /// parts together.
 std::string parent_key(const std::string& where) {
@@ -159,7 +152,8 @@ void SurfaceBiharmonicFormulation::check() const {
   const bool open = !space().boundary_edges("all").empty();
   if (!open && !p.boundary.empty())
     throw InputError(p.boundary.front().where + ": this surface is closed: it has no boundary for clamped or simply supported data");
-  check_part_names(space(), p.boundary);
+  for (const BoundaryPart& part : p.boundary)
+    check_boundary_part(space(), part.name, part.where, "this " + space().type() + " surface");
   bool clamped = p.boundary.empty();  // a lift without problem.boundary is clamped
   for (const BoundaryPart& part : p.boundary) clamped = clamped || part.kind == BoundaryKind::clamped;
   if (space().continuity() < 1) {  // the C0 interior penalty form
