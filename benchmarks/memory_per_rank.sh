@@ -18,6 +18,12 @@
 # more than one rank (GAMG's aggregate graph, the off-diagonal blocks), of a size proportional to
 # the rank's rows — divided, not replicated, but absent at np = 1, so a fit through np = 1 books
 # them as replicated.
+# A rank's part is more than N/np unknowns: the rows it owns and a layer of ghosts (and the
+# boundary band), a layer that grows like the cut, not like N/np — the fits above book it as
+# replicated. Where the run names its part (PETSc on several ranks: "unknowns of this rank's part:
+# U, rows it owns: R"), a last fit takes rank 0's peak against rank 0's part over three sizes or
+# more, M0 = a + c·N + d·R0 + g·(U0 − R0): c is then what a rank holds per DOF beyond its rows and
+# its ghosts.
 # The config runs as given except solver.type (petsc), output (no VTK, no plot) and limits.
 set -euo pipefail
 build=${1:?build directory}
@@ -45,42 +51,61 @@ YAML
 heap_peak() { heaptrack_print -f "$1" --print-peaks 0 --print-allocators 0 --print-temporary 0 --print-leaks 0 2> /dev/null |
   awk '/^peak heap memory consumption:/ { v = $5; u = substr(v, length(v)); v = substr(v, 1, length(v) - 1);
        f = (u == "K") ? 1e3 : (u == "M") ? 1e6 : (u == "G") ? 1e9 : 1; if (u ~ /[0-9]/) { v = $5; f = 1 } printf "%.0f\n", v * f }'; }
-cat > "$work/traced" <<'SH'
+# Each rank measured into a file of its own: $PEAK_OUT.<rank>.
+cat > "$work/measured" <<'SH'
 #!/usr/bin/env bash
-exec heaptrack -o "$HEAP_OUT.${OMPI_COMM_WORLD_RANK:-0}" "$@" > /dev/null
+rank=${OMPI_COMM_WORLD_RANK:-0}
+[[ ${HEAP:-0} == 1 ]] && exec heaptrack -o "$PEAK_OUT.$rank" "$@" > /dev/null
+exec /usr/bin/time -f %M -o "$PEAK_OUT.$rank" "$@"
 SH
-chmod +x "$work/traced"
-run=(/usr/bin/time -v)
-[[ ${HEAP:-0} == 1 ]] && run=("$work/traced")
-# Peak of the rank that peaks highest, in bytes, of a run whose output went to $1.err / $1.heap.*.
-peak_of() {
-  if [[ ${HEAP:-0} == 1 ]]; then
-    for f in "$1".heap.*; do heap_peak "$f"; done | sort -n | tail -1
-    rm -f "$1".heap.*
-  else
-    grep "Maximum resident" "$1.err" | awk '{ if ($6 > m) m = $6 } END { print m * 1024 }'
-  fi
+chmod +x "$work/measured"
+# One rank's peak in bytes, from its file.
+rank_peak() {
+  if [[ ${HEAP:-0} == 1 ]]; then heap_peak "$1"; else echo $(($(cat "$1") * 1024)); fi
 }
-HEAP_OUT="$work/tiny.heap" "${run[@]}" "$build/iga-run" "$work/tiny.yaml" --quiet -o "$work/tiny" > /dev/null 2> "$work/tiny.err"
-base=$(peak_of "$work/tiny")
-declare -A peak dofs
+# "LARGEST RANK0": the peak of the rank that peaks highest and rank 0's, in bytes, of a run
+# measured into $1.*.
+peaks_of() {
+  local f largest=0 p
+  for f in "$1".*; do
+    p=$(rank_peak "$f")
+    ((p > largest)) && largest=$p
+  done
+  echo "$largest $(rank_peak "$(ls "$1".0*)")"
+  rm -f "$1".*
+}
+export HEAP
+PEAK_OUT="$work/tiny.peak" "$work/measured" "$build/iga-run" "$work/tiny.yaml" --quiet -o "$work/tiny" > /dev/null 2> "$work/tiny.err"
+read -r base _ < <(peaks_of "$work/tiny.peak")
+median() { printf '%s\n' "$@" | sort -n | awk '{ v[NR] = $1 } END { print v[int((NR + 1) / 2)] }'; }
+declare -A peak peak0 part rows dofs
 ranks=(${RANKS:-1 2 4})
 for level in $levels; do
   for np in "${ranks[@]}"; do
-    runs=()
+    runs=() runs0=()
     for r in $(seq "${REPEAT:-1}"); do
-      HEAP_OUT="$work/run$np.heap" mpirun --allow-run-as-root --oversubscribe -x HEAP_OUT -np "$np" "${run[@]}" \
-        "$build/iga-run" "$work/run.yaml" --levels "$level" --quiet -o "$work/out$np" "$@" > /dev/null 2> "$work/run$np.err"
-      runs+=("$(peak_of "$work/run$np")")
+      # Not --quiet: rank 0 names the size of its part on standard error.
+      PEAK_OUT="$work/run$np.peak" mpirun --allow-run-as-root --oversubscribe -x PEAK_OUT -np "$np" "$work/measured" \
+        "$build/iga-run" "$work/run.yaml" --levels "$level" -o "$work/out$np" "$@" > /dev/null 2> "$work/run$np.err"
+      read -r largest first < <(peaks_of "$work/run$np.peak")
+      runs+=("$largest") runs0+=("$first")
     done
-    peak[$level,$np]=$(printf '%s\n' "${runs[@]}" | sort -n | awk '{ v[NR] = $1 } END { print v[int((NR + 1) / 2)] }')
-    echo "levels=$level np=$np peaks per run (largest rank): ${runs[*]}" >&2
+    peak[$level,$np]=$(median "${runs[@]}")
+    peak0[$level,$np]=$(median "${runs0[@]}")
+    # The finest level's line: "unknowns of this rank's part: 408956, rows it owns: 392695 of ...".
+    line=$(grep -o "unknowns of this rank's part: [0-9]*, rows it owns: [0-9]*" "$work/run$np.err" | tail -1 || true)
+    part[$level,$np]=$(sed -n 's/.*part: \([0-9]*\),.*/\1/p' <<< "$line")
+    rows[$level,$np]=$(sed -n 's/.*owns: \([0-9]*\)$/\1/p' <<< "$line")
+    echo "levels=$level np=$np peaks per run (largest rank): ${runs[*]}; rank 0: ${runs0[*]}," \
+         "its part ${part[$level,$np]:-not named} unknowns, ${rows[$level,$np]:-?} rows" >&2
   done
   dofs[$level]=$(tail -1 "$work/out${ranks[0]}/convergence.csv" | cut -d, -f3)
 done
 points=""
 for level in $levels; do
-  for np in "${ranks[@]}"; do points+=" ${dofs[$level]}:$np:${peak[$level,$np]}"; done
+  for np in "${ranks[@]}"; do
+    points+=" ${dofs[$level]}:$np:${peak[$level,$np]}:${part[$level,$np]:-0}:${rows[$level,$np]:-0}:${peak0[$level,$np]}"
+  done
 done
 python3 - "$base" "${HEAP:-0}" $points <<'PY'
 import sys
@@ -103,7 +128,10 @@ def lstsq(rows, ys):
 
 
 base, heap = float(sys.argv[1]), sys.argv[2] == "1"
-points = [(int(a), int(b), float(c)) for a, b, c in (p.split(":") for p in sys.argv[3:])]
+rows = [p.split(":") for p in sys.argv[3:]]
+points = [(int(r[0]), int(r[1]), float(r[2])) for r in rows]
+# Rank 0: (DOFs, its part's unknowns, the rows it owns, its peak); 0 where the run did not name them.
+firsts = [(int(r[0]), int(r[3]), int(r[4]), float(r[5])) for r in rows]
 kind = "heap" if heap else "resident"
 # Per size, least squares over the rank counts of M = R + D/np (one rank count: the peaks only).
 for dofs in sorted({d for d, _, _ in points}):
@@ -124,4 +152,13 @@ if len({d for d, _, _ in points}) > 1 and len({n for _, n, _ in points}) > 1:
     worst = max(abs(m - (a + c * N + d * N / n)) for N, n, m in points)
     print(f"over the sizes: M = a + c N + d N/np with a = {a/1e6:.0f} MB per process, "
           f"c = {c:.0f} B/DOF replicated, d = {d:.0f} B/DOF divided (largest misfit {worst/1e6:.0f} MB)")
+# Rank 0 against its own part: M0 = a + c N + d R0 + g G0, G0 = U0 - R0 its ghosts (and band).
+if all(u > 0 for _, u, _, _ in firsts) and len({d for d, _, _, _ in firsts}) > 2:
+    A = [[1.0, N, R, U - R] for N, U, R, _ in firsts]
+    a, c, d, g = lstsq(A, [m for _, _, _, m in firsts])
+    worst = max(abs(m - (a + c * N + d * R + g * (U - R))) for N, U, R, m in firsts)
+    parts = ", ".join(f"{R}+{U - R}" for N, U, R, _ in firsts)
+    print(f"rank 0 against its part (rows + ghosts: {parts}): M0 = a + c N + d R0 + g G0 with "
+          f"a = {a/1e6:.0f} MB, c = {c:.0f} B/DOF replicated, d = {d:.0f} B per row, g = {g:.0f} B per ghost "
+          f"(largest misfit {worst/1e6:.0f} MB)")
 PY
