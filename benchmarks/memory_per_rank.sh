@@ -153,11 +153,15 @@ if len({d for d, _, _ in points}) > 1 and len({n for _, n, _ in points}) > 1:
     print(f"over the sizes: M = a + c N + d N/np with a = {a/1e6:.0f} MB per process, "
           f"c = {c:.0f} B/DOF replicated, d = {d:.0f} B/DOF divided (largest misfit {worst/1e6:.0f} MB)")
 # Rank 0 against its own part: M0 = a + c N + d R0 + g G0, G0 = U0 - R0 its ghosts (and band).
-if all(u > 0 for _, u, _, _ in firsts) and len({d for d, _, _, _ in firsts}) > 2:
-    A = [[1.0, N, R, U - R] for N, U, R, _ in firsts]
-    a, c, d, g = lstsq(A, [m for _, _, _, m in firsts])
-    worst = max(abs(m - (a + c * N + d * R + g * (U - R))) for N, U, R, m in firsts)
-    parts = ", ".join(f"{R}+{U - R}" for N, U, R, _ in firsts)
+# Only the runs that name their part (one rank names none: its part is the whole); four unknowns
+# want three sizes at two rank counts or more, so that the fit has points to spare.
+named = [(N, U, R, m) for (N, U, R, m), (_, n, _) in zip(firsts, points) if U > 0 and R > 0]
+counts = {n for (_, U, R, _), (_, n, _) in zip(firsts, points) if U > 0 and R > 0}
+if len({N for N, _, _, _ in named}) > 2 and len(counts) > 1:
+    A = [[1.0, N, R, U - R] for N, U, R, _ in named]
+    a, c, d, g = lstsq(A, [m for _, _, _, m in named])
+    worst = max(abs(m - (a + c * N + d * R + g * (U - R))) for N, U, R, m in named)
+    parts = ", ".join(f"{R}+{U - R}" for N, U, R, _ in named)
     print(f"rank 0 against its part (rows + ghosts: {parts}): M0 = a + c N + d R0 + g G0 with "
           f"a = {a/1e6:.0f} MB, c = {c:.0f} B/DOF replicated, d = {d:.0f} B per row, g = {g:.0f} B per ghost "
           f"(largest misfit {worst/1e6:.0f} MB)")
