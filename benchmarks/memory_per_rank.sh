@@ -22,7 +22,7 @@
 # boundary band), a layer that grows like the cut, not like N/np — the fits above book it as
 # replicated. Where the run names its part (PETSc on several ranks: "unknowns of this rank's part:
 # U, rows it owns: R"), a last fit takes rank 0's peak against rank 0's part over three sizes or
-# more, M0 = a + c·N + d·R0 + g·(U0 − R0): c is then what a rank holds per DOF beyond its rows and
+# more at two rank counts or more, M0 = a + c·N + d·R0 + g·(U0 − R0): c is then what a rank holds per DOF beyond its rows and
 # its ghosts.
 # The config runs as given except solver.type (petsc), output (no VTK, no plot) and limits.
 set -euo pipefail
@@ -66,12 +66,12 @@ rank_peak() {
 # "LARGEST RANK0": the peak of the rank that peaks highest and rank 0's, in bytes, of a run
 # measured into $1.*.
 peaks_of() {
-  local f largest=0 p
+  local f largest=0 p first=("$1".0*)  # rank 0's file: .0, or .0.zst from heaptrack
   for f in "$1".*; do
     p=$(rank_peak "$f")
     ((p > largest)) && largest=$p
   done
-  echo "$largest $(rank_peak "$(ls "$1".0*)")"
+  echo "$largest $(rank_peak "${first[0]}")"
   rm -f "$1".*
 }
 export HEAP
