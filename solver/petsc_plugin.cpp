@@ -13,7 +13,6 @@
 #include "solver/petsc_backend.hpp"
 #include "solver/petsc_runtime.hpp"
 #include "solver/petsc_session.hpp"
-#include "solver/slepc_eigen_backend.hpp"
 
 // Defined where the implementation is linked in; null in iga-run, which opens the plugin instead.
 extern "C" iga::PetscRuntime* iga_petsc_runtime() __attribute__((weak));
@@ -83,18 +82,9 @@ bool slepc_available() {
 
 std::unique_ptr<LinearBackend> make_petsc_backend(const Space& space, const PetscSettings& settings,
                                                   const ProgressSink& progress) {
-#ifndef IGA_WITH_PETSC
-  throw InputError("solver.type: petsc: this iga-run was built without PETSc");
-#endif
+  // Without PETSc, petsc_runtime(true) throws the InputError that says so.
   ensure_petsc_initialised();
   return petsc_runtime(true)->make_linear_backend(space, settings, progress);
-}
-
-std::unique_ptr<EigenBackend> make_slepc_eigen_backend(const Space& space, const ProgressSink& progress) {
-  if (!slepc_available())
-    throw InputError("solver.type: petsc with problem.eigen: this iga-run was built without SLEPc");
-  ensure_petsc_initialised();
-  return petsc_runtime(true)->make_eigen_backend(space, progress);
 }
 
 }  // namespace iga

@@ -50,6 +50,9 @@ class PetscRuntime {
 PetscRuntime& petsc_runtime_implementation();
 std::unique_ptr<LinearBackend> make_distributed_backend(const Space& space, const PetscSettings& settings,
                                                         const ProgressSink& progress);
+/// Collective over the ranks, PETSc running; initialises SLEPc when nothing did. The solver keys of `solver:` are not
+/// used (the factorization is CHOLMOD's or MUMPS's Cholesky); PETSc options of the command line
+/// (-eps_*, -st_*) are. `progress` is called on every rank.
 std::unique_ptr<EigenBackend> make_slepc_backend(const Space& space, const ProgressSink& progress);
 
 /// The runtime when it is built in or was loaded; nullptr otherwise. With `load`, opens the plugin

@@ -39,5 +39,7 @@ void parse_solver_settings(const ConfigNode& node, Pde pde, SolverKind& kind, Pe
 
 /// True when this program was built with PETSc (IGA_WITH_PETSC).
 bool petsc_available();
+/// True when this program was built with SLEPc (IGA_WITH_SLEPC, which needs PETSc).
+bool slepc_available();
 
 }  // namespace iga

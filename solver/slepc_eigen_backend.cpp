@@ -1,4 +1,9 @@
-// The SLEPc eigen backend of the PETSc plugin (slepc_eigen_backend.hpp says what it does).
+// The SLEPc eigen backend of the PETSc plugin, the eigen backend of a `solver.type: petsc` study:
+// K and M assembled on the PETSc backend's distributed layout (petsc_distribution.hpp) and the
+// smallest eigenpairs of K x = λ M x by SLEPc's EPS (generalized Hermitian, Krylov–Schur with
+// shift-and-invert, one Cholesky factor of K − σM — CHOLMOD's on one rank, MUMPS's across ranks —
+// σ and the number of pairs as in the serial path: eigen_solver.hpp). Every rank ends with the
+// whole eigenvectors.
 #include "config/errors.hpp"
 #include "solver/petsc_runtime.hpp"
 

@@ -6,8 +6,8 @@
 #include "config/progress.hpp"
 #include "solver/eigen_pipeline.hpp"
 #include "solver/petsc_backend.hpp"
+#include "solver/petsc_runtime.hpp"
 #include "solver/petsc_session.hpp"
-#include "solver/slepc_eigen_backend.hpp"
 #include "solver/shell_problem.hpp"
 #include "solver/surface_problem.hpp"
 
@@ -58,8 +58,14 @@ DiscreteSolution solve_problem(const Space& space, const ProblemSpec& problem, S
   };
   if (problem.eigen) {
     std::unique_ptr<EigenBackend> backend;
-    if (solver == SolverKind::petsc) backend = make_slepc_eigen_backend(space, say);
-    else backend = std::make_unique<SerialEigenBackend>();
+    if (solver == SolverKind::petsc) {
+      if (!slepc_available())
+        throw InputError("solver.type: petsc with problem.eigen: this iga-run was built without SLEPc");
+      ensure_petsc_initialised();
+      backend = petsc_runtime(true)->make_eigen_backend(space, say);
+    } else {
+      backend = std::make_unique<SerialEigenBackend>();
+    }
     EigenSolution e = solve_eigen_pipeline(*f, *backend, solver == SolverKind::petsc ? say : progress);
     DiscreteSolution out;
     out.result = e.result;

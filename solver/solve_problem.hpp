@@ -54,7 +54,7 @@ LinearSystem assemble_linear_system(const Space& space, const ProblemSpec& probl
 
 /// `progress`, when given, is told when each phase starts (assemble, factorize and solve, errors).
 /// With problem.eigen, the eigenproblem instead (eigen_pipeline.hpp): eigenvalues and modes, by
-/// Spectra serially and by SLEPc with SolverKind::petsc (slepc_eigen_backend.hpp).
+/// Spectra serially and by SLEPc with SolverKind::petsc (slepc_eigen_backend.cpp).
 /// SolverKind::petsc solves with PETSc as `petsc` says (make_petsc_backend; collective over the ranks).
 DiscreteSolution solve_problem(const Space& space, const ProblemSpec& problem, SolverKind solver,
                                const ProgressSink& progress = {}, const PetscSettings& petsc = {});

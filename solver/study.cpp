@@ -17,7 +17,7 @@
 #include "config/progress.hpp"
 #include "solver/petsc_session.hpp"
 #include "solver/rank_part.hpp"
-#include "solver/slepc_eigen_backend.hpp"
+#include "solver/petsc_settings.hpp"
 #include "solver/solve_problem.hpp"
 #include "spaces/lifted_space.hpp"
 #include "spaces/space_factory.hpp"

@@ -26,7 +26,7 @@
 #include <vector>
 
 #include "solver/petsc_settings.hpp"
-#include "solver/slepc_eigen_backend.hpp"
+#include "solver/petsc_settings.hpp"
 #include "tests/support/scratch_files.hpp"
 
 namespace fs = std::filesystem;

@@ -23,7 +23,7 @@
 
 #include "solver/petsc_session.hpp"
 #include "solver/petsc_settings.hpp"
-#include "solver/slepc_eigen_backend.hpp"
+#include "solver/petsc_settings.hpp"
 #include "solver/solve_problem.hpp"
 #include "tests/support/rerun_under_mpirun.hpp"
 #include "tests/support/test_support.hpp"
