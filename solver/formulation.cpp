@@ -2,6 +2,7 @@
 
 #include <stdexcept>
 
+#include "solver/petsc_session.hpp"
 #include "spaces/lifted_space.hpp"
 
 namespace iga {
@@ -12,6 +13,10 @@ int assembly_quadrature_degree(const Space& space) {
   // 342 pieces it is 16 points instead of 19); non-affine maps get three more.
   return 2 * space.degree() + (space.affine_elements() ? 0 : 3);
 }
+
+double WorkShare::sum(double part) const { return over_ranks ? sum_over_ranks(part) : part; }
+double WorkShare::max(double part) const { return over_ranks ? max_over_ranks(part) : part; }
+double WorkShare::first(double value) const { return over_ranks ? first_known_over_ranks(value) : value; }
 
 std::vector<BoundaryEdge> edges_of_share(const std::vector<BoundaryEdge>& edges, const WorkShare& share,
                                          int num_elements) {

@@ -30,13 +30,14 @@ int assembly_quadrature_degree(const Space& space);
 /// MPI ranks; the value itself when serial). Loads, errors and the sums below add up over the shares.
 struct WorkShare {
   const std::vector<int>* elements = nullptr;
-  std::function<double(double)> total;  ///< collective; empty: the value itself
-  /// Collective, for processes that hold parts of a space (rank_part.hpp): the largest of the
-  /// values, and the value of the lowest process that has one (not NaN). Empty: the value itself.
-  std::function<double(double)> largest, first_known;
-  double sum(double part) const { return total ? total(part) : part; }
-  double max(double part) const { return largest ? largest(part) : part; }
-  double first(double value) const { return first_known ? first_known(value) : value; }
+  /// The shares are the MPI ranks' (petsc_session.hpp): sum, max and first are collective. Else
+  /// each returns the value itself.
+  bool over_ranks = false;
+  double sum(double part) const;
+  /// For processes that hold parts of a space (rank_part.hpp): the largest of the values, and the
+  /// value of the lowest process that has one (not NaN).
+  double max(double part) const;
+  double first(double value) const;
 };
 
 /// The edges of `edges` on the share's elements, in their order (all of them when the share is the

@@ -76,7 +76,7 @@ PetscDistribution::PetscDistribution(const Space& space, const std::function<voi
 
 PetscDistribution::~PetscDistribution() { PetscSFDestroy(&rows_sf_); }
 
-WorkShare PetscDistribution::share() const { return rank_share(&mine_); }
+WorkShare PetscDistribution::share() const { return {&mine_, true}; }
 
 void PetscDistribution::element_unknowns(int element, std::vector<int>& dofs, std::vector<int>& unknowns,
                                          Eigen::MatrixXd* T_e) const {

@@ -73,9 +73,7 @@ class PetscDistribution {
   /// `space`, in double-double), rounded once. Collective.
   std::vector<double> sum_to_owners(const std::vector<DoubleDouble>& contributions) const;
 
-  const Space& space() const { return space_; }
   const Constraints& constraints() const { return constraints_; }
-  PetscInt owned_rows() const { return owned_rows_; }
   PetscInt rows() const { return rows_; }
   /// The whole space's number of functions (the part's are numbered within it), without the
   /// components.
@@ -85,7 +83,6 @@ class PetscDistribution {
   /// preallocation: an upper bound on rows at the cut).
   long long off_rank_couplings() const { return off_rank_couplings_; }
   long long all_couplings() const { return all_couplings_; }
-  int rank() const { return rank_; }
   int ranks() const { return ranks_; }
 
  private:

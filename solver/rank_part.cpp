@@ -26,14 +26,12 @@ void release_freed_memory() {
 #endif
 }
 
-}  // namespace
-
+/// The rank of each element: the Hilbert-curve partition of the element centres.
 std::vector<int> element_ranks(const Space& space, int ranks) {
   if (ranks <= 1) return std::vector<int>(space.num_elements(), 0);  // no centres to compute
   return partition_elements(element_centres(space), ranks);
 }
 
-namespace {
 /// element_ranks, computed by the ranks of this run together (collective): each the centres and
 /// curve positions of a block of the elements, all positions then gathered (8 bytes per element),
 /// instead of every rank visiting every element (0.3 s of 10⁶ B-spline elements on each rank).
@@ -90,15 +88,6 @@ std::shared_ptr<const SpacePart> rank_part(const std::shared_ptr<const Space>& w
   auto part = std::make_shared<SpacePart>(std::move(built), std::move(elements), own);
   release_freed_memory();
   return part;
-}
-
-WorkShare rank_share(const std::vector<int>* elements) {
-  WorkShare s;
-  s.elements = elements;
-  s.total = sum_over_ranks;
-  s.largest = max_over_ranks;
-  s.first_known = first_known_over_ranks;
-  return s;
 }
 
 }  // namespace iga

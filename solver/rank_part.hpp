@@ -19,8 +19,6 @@
 
 namespace iga {
 
-/// The rank of each element: the Hilbert-curve partition of the element centres.
-std::vector<int> element_ranks(const Space& space, int ranks);
 /// The elements of `rank` of `ranks` (increasing): where a rank assembles on the whole space.
 std::vector<int> rank_elements(const Space& space, int rank, int ranks);
 
@@ -29,9 +27,5 @@ std::vector<int> rank_elements(const Space& space, int rank, int ranks);
 /// heavy per-element data of the mesh-based spaces is not replicated on every rank; its geometry,
 /// numbering and edges (what the partition and the mesh outlines read) are the skeleton's.
 std::shared_ptr<const SpacePart> rank_part(const std::shared_ptr<const Space>& whole, int rank, int ranks);
-
-/// The share of a process that works on `elements` (kept by the caller) with the sums, maxima and
-/// first known values taken over the MPI ranks (petsc_session.hpp).
-WorkShare rank_share(const std::vector<int>* elements);
 
 }  // namespace iga

@@ -332,7 +332,7 @@ StudyResult run_study(const StudySettings& settings, const ProgressSink& progres
     }
     const double t_built = t_space + (part || extent == SpaceExtent::skeleton ? t_part.seconds() : 0.0);
     const Space& work = part ? static_cast<const Space&>(*part) : *space;
-    const WorkShare share = part ? rank_share(&own) : WorkShare{};
+    const WorkShare share = part ? WorkShare{&own, true} : WorkShare{};
     // Quadrature points miss poles on mesh lines; new vertices and edges come with every level.
     // On parts each rank checks its own (and an error on one reaches all).
     if (part) on_every_rank([&] { check_data_finite(work, settings.problem); });

@@ -37,7 +37,7 @@ void expect_parts_add_up(const char* yaml, int level, bool smaller) {
     for (int e : own) owned.insert(part->elements()[e]);
     if (smaller) EXPECT_LT(part->dimension(), whole->dimension());
     const auto fp = make_formulation(*part, problem);
-    const Eigen::VectorXd b = fp->load(WorkShare{&own, {}, {}, {}});
+    const Eigen::VectorXd b = fp->load(WorkShare{&own});
     for (int i = 0; i < part->dimension(); ++i) summed(part->global_dofs()[i]) += b(i);
     // The conditions: the same functions constrained, to the same values, the same basis change.
     const Constraints cp = fp->constraints();
