@@ -44,14 +44,19 @@ Eigen::VectorXd SerialEigenBackend::spectrum(EigenReport& report) {
   return all_eigenpairs(K_free_, M_free_, report).values;
 }
 
-EigenSolution solve_eigen_pipeline(const Formulation& f, EigenBackend& backend, const ProgressSink& progress) {
+DiscreteSolution solve_eigen_pipeline(const Formulation& f, EigenBackend& backend, const ProgressSink& progress) {
   if (!f.problem().eigen) throw std::logic_error("solve_eigen_pipeline: the problem has no eigen block");
-  EigenSolution out;
+  DiscreteSolution out;
   LevelResult& r = out.result;
   assemble_level(f, backend, r, progress);
   Stopwatch clock;
-  out.modes = backend.eigensolve(f.problem().eigen->count, out.report, progress);
+  EigenReport report;
+  EigenPairs modes = backend.eigensolve(f.problem().eigen->count, report, progress);
   r.t_solve = clock.seconds();
+  out.solve = {report.method, report.t_factorize, report.t_solve, report.max_residual, 0};
+  out.eigenvalues = modes.values;
+  out.modes = std::move(modes.vectors);
+  out.coefficients = out.modes.col(0);
   if (f.problem().eigen->spectrum && r.free_dofs <= max_spectrum_unknowns) {
     if (progress) progress("the whole spectrum (dense, " + std::to_string(r.free_dofs) + " unknowns)");
     EigenReport dense;

@@ -37,16 +37,11 @@ class SerialEigenBackend final : public EigenBackend {
   SparseMatrix K_free_, M_free_;
 };
 
-/// What an eigen solve produced: the pairs (whole coefficient vectors) and the level's numbers.
-struct EigenSolution {
-  EigenPairs modes;
-  /// eigen.spectrum, at most max_spectrum_unknowns free unknowns: every eigenvalue, ascending.
-  Eigen::VectorXd spectrum;
-  LevelResult result;  ///< h, dofs, free_dofs, t_assemble, t_solve (errors: none)
-  EigenReport report;
-};
-
-/// Assemble and solve for the problem's eigen.count smallest eigenpairs.
-EigenSolution solve_eigen_pipeline(const Formulation& f, EigenBackend& backend, const ProgressSink& progress = {});
+/// Assemble and solve for the problem's eigen.count smallest eigenpairs: eigenvalues, modes (whole
+/// coefficient vectors), the first mode as coefficients, the result's h, dofs, free_dofs,
+/// t_assemble, t_solve (errors: none), and the eigensolve's method, times and largest residual as
+/// the solve report. With eigen.spectrum, at most max_spectrum_unknowns free unknowns: every
+/// eigenvalue, ascending.
+DiscreteSolution solve_eigen_pipeline(const Formulation& f, EigenBackend& backend, const ProgressSink& progress = {});
 
 }  // namespace iga

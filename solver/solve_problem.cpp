@@ -66,15 +66,7 @@ DiscreteSolution solve_problem(const Space& space, const ProblemSpec& problem, S
     } else {
       backend = std::make_unique<SerialEigenBackend>();
     }
-    EigenSolution e = solve_eigen_pipeline(*f, *backend, solver == SolverKind::petsc ? say : progress);
-    DiscreteSolution out;
-    out.result = e.result;
-    out.solve = {e.report.method, e.report.t_factorize, e.report.t_solve, e.report.max_residual, 0};
-    out.eigenvalues = e.modes.values;
-    out.spectrum = std::move(e.spectrum);
-    out.modes = std::move(e.modes.vectors);
-    out.coefficients = out.modes.col(0);
-    return out;
+    return solve_eigen_pipeline(*f, *backend, solver == SolverKind::petsc ? say : progress);
   }
   if (solver != SolverKind::petsc) {
     SerialBackend backend(solver);
