@@ -143,7 +143,11 @@ Formulation::Messages SurfaceFormulation::messages() const {
           problem().data_where + ": the exact solution or its gradient is not finite somewhere on the surface"};
 }
 
+namespace {
+/// η of the C0 interior penalty for degree p (docs/surface-biharmonic.md: large enough that the
+/// discrete form stays coercive; the inverse inequality constant grows like p²).
 double c0ip_penalty(int degree) { return 4.0 * degree * degree; }
+}  // namespace
 
 void SurfaceBiharmonicFormulation::check() const {
   const ProblemSpec& p = problem();
@@ -259,10 +263,14 @@ Constraints SurfaceBiharmonicFormulation::constraints() const {
   // functions, numbering and boundary edges): û = u(X(x, y)) and ∂_n û = (J_Xᵀ ∇u) · n with n the
   // planar outward normal. Δ_Γu on simply supported edges is natural.
   const Parts boundary = space().boundary_edges("all").empty() ? Parts{} : parts();
+  if (boundary.essential.empty()) {
+    if (pure()) return kernel_.pinned(space());
+    return all_free(space().dimension());  // closed surface, c > 0: no essential condition
+  }
   const bool clamped = !boundary.essential.normal_edges.empty();
-  if (const auto* lifted = dynamic_cast<const LiftedSpace*>(&space()); lifted && !boundary.essential.empty()) {
-    const SymbolicFunction u = *problem().surface_exact;
-    const SymbolicFunction ux = u.diff_x(), uy = u.diff_y(), uz = u.diff_z();
+  const SymbolicFunction u = *problem().surface_exact;
+  const SymbolicFunction ux = u.diff_x(), uy = u.diff_y(), uz = u.diff_z();
+  if (const auto* lifted = dynamic_cast<const LiftedSpace*>(&space())) {
     const BoundaryField value = [lifted, u](const Point2& x, const Point2&) { return u.at(lifted->lift(x)); };
     BoundaryField normal;
     if (clamped)
@@ -276,18 +284,12 @@ Constraints SurfaceBiharmonicFormulation::constraints() const {
   // Any other open surface: through the surface's own conormal ν, u = u_exact and on clamped
   // edges ∂_ν u = ∇u_exact · ν (ν tangent to Γ, so the ambient gradient gives the surface one's
   // component).
-  if (!boundary.essential.empty()) {
-    const SymbolicFunction u = *problem().surface_exact;
-    const SymbolicFunction ux = u.diff_x(), uy = u.diff_y(), uz = u.diff_z();
-    SurfaceConormalField conormal;
-    if (clamped)
-      conormal = [ux, uy, uz](const Eigen::Vector3d& x, const Eigen::Vector3d& nu) {
-        return ux.at(x) * nu(0) + uy.at(x) * nu(1) + uz.at(x) * nu(2);
-      };
-    return surface_essential_constraints(space(), boundary.essential, surface_field(u), conormal, quadrature_degree());
-  }
-  if (pure()) return kernel_.pinned(space());
-  return all_free(space().dimension());  // closed surface, c > 0: no essential condition
+  SurfaceConormalField conormal;
+  if (clamped)
+    conormal = [ux, uy, uz](const Eigen::Vector3d& x, const Eigen::Vector3d& nu) {
+      return ux.at(x) * nu(0) + uy.at(x) * nu(1) + uz.at(x) * nu(2);
+    };
+  return surface_essential_constraints(space(), boundary.essential, surface_field(u), conormal, quadrature_degree());
 }
 
 void SurfaceBiharmonicFormulation::finish(Eigen::VectorXd& coefficients, const WorkShare& share) const {

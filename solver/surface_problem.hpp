@@ -51,10 +51,6 @@ class SurfaceFormulation final : public Formulation {
   mutable ConstantKernel kernel_;  ///< pure problems: set by load, used by finish
 };
 
-/// η of the C0 interior penalty for degree p (docs/surface-biharmonic.md: large enough that the
-/// discrete form stays coercive; the inverse inequality constant grows like p²).
-double c0ip_penalty(int degree);
-
 /// The surface biharmonic problem Δ_Γ²u + c u = f (c = `reaction`, default 1; with c = 0 on a
 /// closed surface u is fixed up to a constant as for Laplace–Beltrami: ConstantKernel) on a closed surface, or on an open one whose boundary parts are clamped (u and the
 /// conormal derivative ∂_ν u from the exact solution: surface_essential.hpp; lifted graph surfaces
