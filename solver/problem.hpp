@@ -84,10 +84,4 @@ ProblemSpec manufactured_problem(Pde pde, const SymbolicFunction& u, std::vector
 /// Parse and validate the `problem:` section (keys pde, exact, source, boundary, data, form, eigen).
 ProblemSpec parse_problem(const ConfigNode& node);
 
-/// `problem:` with `pde: laplace_beltrami` or `surface_biharmonic` (keys pde, exact, source, reaction,
-/// eigen; expressions in x, y, z; boundary {all: dirichlet} and boundary_value for laplace_beltrami,
-/// boundary {all: clamped} with data from exact for surface_biharmonic). With
-/// both exact and source, the source is used as given and exact measures the errors.
-ProblemSpec parse_surface_problem(const ConfigNode& node);
-
 }  // namespace iga
