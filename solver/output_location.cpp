@@ -19,8 +19,12 @@ namespace {
 /// ".NAME.incoming-PID-RANDOM" (output/staged_directory.cpp), at most this many bytes more.
 constexpr std::size_t sibling_room = 32;
 
-}  // namespace
-
+/// Throw InputError "<place>: output directory '<path>' ..." when `path` cannot work whatever the
+/// folders hold: longer than max_output_path_bytes as an absolute path, a name longer than
+/// max_output_name_bytes (the last one shorter still: the results move in under a longer name),
+/// or a symbolic link on its existing part whose target does not exist (or a loop of links).
+/// Part of check_output_directory and check_config_output_directory, and checked before their
+/// other reasons, which such a path would only confuse.
 void check_output_path_form(const std::string& path, const std::string& place) {
   const auto fail = [&](const std::string& why) {
     throw InputError(place + ": output directory '" + (path.size() > 80 ? path.substr(0, 80) + "..." : path) + "' " +
@@ -60,6 +64,8 @@ void check_output_path_form(const std::string& path, const std::string& place) {
     }
   }
 }
+
+}  // namespace
 
 bool replaceable_output_directory(const std::string& path) {
   std::error_code ec;

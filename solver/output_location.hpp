@@ -16,14 +16,6 @@ inline constexpr std::size_t max_output_path_bytes = 2048;
 /// Longest name of one folder on the way (NAME_MAX of Linux file systems).
 inline constexpr std::size_t max_output_name_bytes = 255;
 
-/// Throw InputError "<place>: output directory '<path>' ..." when `path` cannot work whatever the
-/// folders hold: longer than max_output_path_bytes as an absolute path, a name longer than
-/// max_output_name_bytes (the last one shorter still: the results move in under a longer name),
-/// or a symbolic link on its existing part whose target does not exist (or a loop of links).
-/// Part of check_output_directory and check_config_output_directory, and checked before their
-/// other reasons, which such a path would only confuse.
-void check_output_path_form(const std::string& path, const std::string& place);
-
 /// Throw InputError "<place>: output directory '<path>' ..." unless `path` can become a results
 /// directory: it is a directory or does not exist, and its nearest existing ancestor is a directory
 /// in which a (probe) directory can be created, and what is there may be replaced

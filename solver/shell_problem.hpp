@@ -57,14 +57,14 @@ class ShellFormulation final : public Formulation {
 
   /// The rigid motions the supports leave free (computed once).
   const RigidMotions& free_motions() const;
-  /// The oriented normal's sign per element (computed once; InputError at problem.pressure when the
-  /// surface has no consistent or no decidable outward normal).
-  const SurfaceOrientation& orientation() const;
   /// Their discrete representation and the pinned coefficients (set by constraints()).
   const RigidMotionBasis& rigid_motion_basis() const { return basis_; }
   const std::vector<int>& pinned() const { return pinned_; }
 
  private:
+  /// The oriented normal's sign per element (computed once; InputError at problem.pressure when the
+  /// surface has no consistent or no decidable outward normal).
+  const SurfaceOrientation& orientation() const;
   /// The boundary edges of the supports for which `holds` is true, each once, in the supports'
   /// order (a part listed twice adds its edges once).
   std::vector<BoundaryEdge> support_edges(const std::function<bool(const ShellSupport&)>& holds) const;
