@@ -195,16 +195,13 @@ SplitMatrix ShellFormulation::matrix(const std::vector<FormTerm>& terms) const {
 
 void ShellFormulation::for_each_extra_element_matrix(const std::vector<int>& elements,
                                                      const ElementMatrixSink& sink) const {
-  const std::vector<BoundaryEdge> edges = rotation_edges();
+  const std::vector<BoundaryEdge> edges = edges_of_share(rotation_edges(), {&elements}, space().num_elements());
   if (edges.empty()) return;
-  std::vector<char> mine(space().num_elements(), 0);
-  for (int e : elements) mine[e] = 1;
   const std::unique_ptr<Space::Evaluator> evaluator = space().make_evaluator();
   Eigen::MatrixXd local;
   std::vector<int> dofs;
   DoubleDoubleMatrix K;
   for (const BoundaryEdge& e : edges) {
-    if (!mine[e.element]) continue;
     shell_rotation_edge_matrix(space(), e, problem().shell->material, nitsche_penalty(), quadrature_degree(),
                                *evaluator, local, dofs);
     K.hi = local;  // summed in double, as the serial matrix() sums them

@@ -202,14 +202,10 @@ EigenPairs SlepcEigenBackend::eigensolve(int count, EigenReport& report, const P
 Eigen::VectorXd SlepcEigenBackend::spectrum(EigenReport& report) {
   // Whole spectra are for a few thousand unknowns: every rank assembles the whole pencil and runs
   // the serial dense solver (the same numbers on every rank).
-  SparseMatrix K_free, M_free;
-  Eigen::VectorXd unused;
+  SerialEigenBackend serial;
   const Eigen::VectorXd zero = Eigen::VectorXd::Zero(f_->space().dimension());
-  on_every_rank([&] {
-    reduce_system(f_->matrix(f_->terms()), zero, constraints_, K_free, unused);
-    reduce_system(f_->matrix({mass_integrator()}), zero, constraints_, M_free, unused);
-  });
-  return all_eigenpairs(K_free, M_free, report).values;
+  on_every_rank([&] { serial.assemble(*f_, constraints_, zero, {}); });
+  return serial.spectrum(report);
 }
 
 }  // namespace
