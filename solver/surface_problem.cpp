@@ -128,12 +128,13 @@ Constraints SurfaceFormulation::constraints() const {
   return all_free(space().dimension());
 }
 
-void SurfaceFormulation::finish(Eigen::VectorXd& coefficients, const WorkShare& share) const {
+void ScalarSurfaceFormulation::finish(Eigen::VectorXd& coefficients, const WorkShare& share) const {
   if (pure()) kernel_.finish(coefficients, space(), problem().surface_exact, share);
 }
 
-ErrorNorms SurfaceFormulation::errors(const Eigen::VectorXd& coefficients, const WorkShare& share) const {
-  return surface_error_norms(space(), coefficients, surface_exact_solution(problem(), false),
+ErrorNorms ScalarSurfaceFormulation::errors(const Eigen::VectorXd& coefficients, const WorkShare& share) const {
+  const bool with_hessian = problem().pde == Pde::surface_biharmonic;
+  return surface_error_norms(space(), coefficients, surface_exact_solution(problem(), with_hessian),
                              space().error_quadrature_degree(), share.elements);
 }
 
@@ -189,7 +190,7 @@ Eigen::VectorXd SurfaceBiharmonicFormulation::load(const WorkShare& share) const
     Eigen::VectorXd b = surface_load(space(), surface_source(p), quadrature_degree(), share.elements);
     // Simply supported parts: Δ_Γu = g is natural, ∫ g ∂_ν v ds on the load side, over their
     // edges of this share's elements (each rank its own, as the element part).
-    if (p.surface_exact && !space().boundary_edges("all").empty()) {
+    if (p.surface_exact && open()) {
       const std::vector<BoundaryEdge> supported = edges_of_share(parts().simply_supported, share, space().num_elements());
       if (!supported.empty())
         b += surface_conormal_load(space(), supported, surface_laplacian(*p.surface_exact), quadrature_degree());
@@ -262,7 +263,7 @@ Constraints SurfaceBiharmonicFormulation::constraints() const {
   // solution, imposed as the planar space's clamped / simply supported conditions on u ∘ X (same
   // functions, numbering and boundary edges): û = u(X(x, y)) and ∂_n û = (J_Xᵀ ∇u) · n with n the
   // planar outward normal. Δ_Γu on simply supported edges is natural.
-  const Parts boundary = space().boundary_edges("all").empty() ? Parts{} : parts();
+  const Parts boundary = open() ? parts() : Parts{};
   if (boundary.essential.empty()) {
     if (pure()) return kernel_.pinned(space());
     return all_free(space().dimension());  // closed surface, c > 0: no essential condition
@@ -292,14 +293,6 @@ Constraints SurfaceBiharmonicFormulation::constraints() const {
   return surface_essential_constraints(space(), boundary.essential, surface_field(u), conormal, quadrature_degree());
 }
 
-void SurfaceBiharmonicFormulation::finish(Eigen::VectorXd& coefficients, const WorkShare& share) const {
-  if (pure()) kernel_.finish(coefficients, space(), problem().surface_exact, share);
-}
-
-ErrorNorms SurfaceBiharmonicFormulation::errors(const Eigen::VectorXd& coefficients, const WorkShare& share) const {
-  return surface_error_norms(space(), coefficients, surface_exact_solution(problem(), true),
-                             space().error_quadrature_degree(), share.elements);
-}
 
 Formulation::Messages SurfaceBiharmonicFormulation::messages() const {
   return {problem().source_where + ": the load is not finite at some point of the surface",

@@ -26,29 +26,40 @@ SurfaceField surface_field(const SymbolicFunction& f);
 /// `with_hessian` (the surface H2 seminorm of fourth-order problems; a shell's components too).
 SurfaceExactSolution surface_exact_solution(const SymbolicFunction& u, bool with_hessian);
 
+/// What the two scalar surface problems share: closed surfaces or open ones, on a closed one the
+/// constants as the kernel of a problem without reaction (ConstantKernel), and the errors against
+/// u given in x, y, z (the surface H2 seminorm too for surface_biharmonic).
+class ScalarSurfaceFormulation : public Formulation {
+ public:
+  using Formulation::Formulation;
+  void finish(Eigen::VectorXd& coefficients, const WorkShare& share) const override;
+  ErrorNorms errors(const Eigen::VectorXd& coefficients, const WorkShare& share) const override;
+
+ protected:
+  bool open() const { return !space().boundary_edges("all").empty(); }
+  /// −Δ_Γu = f or Δ_Γ²u = f on a closed surface: u fixed up to a constant (pinned in the solve,
+  /// shifted to its mean after). Not for eigenproblems, where the constants are the eigenfunctions
+  /// of λ = 0.
+  bool pure() const { return problem().reaction == 0 && !open() && !problem().eigen; }
+  mutable ConstantKernel kernel_;  ///< pure problems: set by load, used by finish
+
+ private:
+  bool works_on_parts() const override { return Formulation::works_on_parts() && !pure(); }
+};
+
 /// The Laplace–Beltrami problem as a Formulation: matrix laplace + c mass (ProblemSpec::terms,
 /// summed in double: conditioned like h⁻², far from the plates' need), the load from
 /// surface_source, Dirichlet data on open surfaces (surface_essential.hpp). Without reaction on a
 /// closed surface, constants (Σ N_i = 1) span the kernel: the load is made orthogonal to them
 /// (ConstantKernel: the load orthogonal to them, coefficient 0 pinned, the solution shifted to
 /// zero mean or to the exact solution's mean).
-class SurfaceFormulation final : public Formulation {
+class SurfaceFormulation final : public ScalarSurfaceFormulation {
  public:
-  using Formulation::Formulation;
+  using ScalarSurfaceFormulation::ScalarSurfaceFormulation;
   void check() const override;
   Eigen::VectorXd load(const WorkShare& share) const override;
   Constraints constraints() const override;
-  void finish(Eigen::VectorXd& coefficients, const WorkShare& share) const override;
-  ErrorNorms errors(const Eigen::VectorXd& coefficients, const WorkShare& share) const override;
   Messages messages() const override;
-
- private:
-  bool open() const { return !space().boundary_edges("all").empty(); }
-  /// −Δ_Γu = f on a closed surface: u fixed up to a constant (pinned in the solve, shifted to its
-  /// mean after). Not for eigenproblems, where the constants are the eigenfunctions of λ = 0.
-  bool pure() const { return problem().reaction == 0 && !open() && !problem().eigen; }
-  bool works_on_parts() const override { return Formulation::works_on_parts() && !pure(); }
-  mutable ConstantKernel kernel_;  ///< pure problems: set by load, used by finish
 };
 
 /// The surface biharmonic problem Δ_Γ²u + c u = f (c = `reaction`, default 1; with c = 0 on a
@@ -71,21 +82,16 @@ class SurfaceFormulation final : public Formulation {
 /// load a_h(u, ·) gains the edge term −∫ {Δ_Γu}[∂_ν v]. The study takes it with the serial solvers
 /// only, on graph surfaces and on closed RSD surfaces of Π1 patches (solver/study.cpp refuses Π0:
 /// its parametrisation spoils the H2 approximation, docs/surface-biharmonic.md).
-class SurfaceBiharmonicFormulation final : public Formulation {
+class SurfaceBiharmonicFormulation final : public ScalarSurfaceFormulation {
  public:
-  using Formulation::Formulation;
+  using ScalarSurfaceFormulation::ScalarSurfaceFormulation;
   void check() const override;
   Eigen::VectorXd load(const WorkShare& share) const override;
   SplitMatrix matrix(const std::vector<FormTerm>& terms) const override;
   Constraints constraints() const override;
-  void finish(Eigen::VectorXd& coefficients, const WorkShare& share) const override;
-  ErrorNorms errors(const Eigen::VectorXd& coefficients, const WorkShare& share) const override;
   Messages messages() const override;
 
  private:
-  /// Δ_Γ²u = f on a closed surface: the constants are the kernel (ConstantKernel).
-  bool pure() const { return problem().reaction == 0 && space().boundary_edges("all").empty() && !problem().eigen; }
-  bool works_on_parts() const override { return Formulation::works_on_parts() && !pure(); }
   /// The boundary edges by condition, each list in the order of the space's "all": u on every
   /// edge (essential.value_edges), ∂_ν u on the clamped ones (essential.normal_edges), Δ_Γu natural
   /// on the simply supported ones. Parts in config order, "all" first, named parts overriding it;
@@ -95,7 +101,6 @@ class SurfaceBiharmonicFormulation final : public Formulation {
     std::vector<BoundaryEdge> simply_supported;
   };
   Parts parts() const;
-  mutable ConstantKernel kernel_;  ///< pure problems: set by load, used by finish
 };
 
 }  // namespace iga
