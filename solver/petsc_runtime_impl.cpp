@@ -60,6 +60,8 @@ void finalize_petsc() {
   PetscFinalize();
 }
 
+// Past ensure_initialised, every method is reached only while PETSc runs: petsc_session.cpp asks
+// up() before each call (running()), and a PetscSession ends the session only then.
 class Runtime final : public PetscRuntime {
  public:
   void set_arguments(std::vector<std::string> words, bool session) override {
@@ -93,27 +95,23 @@ class Runtime final : public PetscRuntime {
   bool up() const override { return petsc_up(); }
 
   void end_session() override {
-    if (!petsc_up()) return;
     report_unused_options(rank());
     finalize_petsc();
   }
 
   int rank() const override {
-    if (!petsc_up()) return 0;
     PetscMPIInt rank = 0;
     MPI_Comm_rank(PETSC_COMM_WORLD, &rank);
     return rank;
   }
 
   int size() const override {
-    if (!petsc_up()) return 1;
     PetscMPIInt size = 1;
     MPI_Comm_size(PETSC_COMM_WORLD, &size);
     return size;
   }
 
   int ranks_on_this_node() const override {
-    if (!petsc_up()) return 1;
     MPI_Comm node = MPI_COMM_NULL;
     MPI_Comm_split_type(PETSC_COMM_WORLD, MPI_COMM_TYPE_SHARED, 0, MPI_INFO_NULL, &node);
     int size = 1;
@@ -126,7 +124,6 @@ class Runtime final : public PetscRuntime {
   double max(double value) const override { return reduce(value, MPI_MAX); }
 
   double first_known(double value) const override {
-    if (!petsc_up()) return value;
     int from = std::isnan(value) ? INT_MAX : rank();
     MPI_Allreduce(MPI_IN_PLACE, &from, 1, MPI_INT, MPI_MIN, PETSC_COMM_WORLD);
     if (from == INT_MAX) return value;  // no rank has one: NaN everywhere
@@ -135,7 +132,6 @@ class Runtime final : public PetscRuntime {
   }
 
   std::vector<double> gather(const std::vector<double>& mine) const override {
-    if (!petsc_up()) return mine;
     const int ranks = size();
     const int count = static_cast<int>(mine.size());
     std::vector<int> counts(ranks), offsets(ranks + 1, 0);
@@ -148,7 +144,6 @@ class Runtime final : public PetscRuntime {
   }
 
   void on_every_rank(const std::function<void()>& work) const override {
-    if (!petsc_up()) return work();
     int code = 0;  // 0 ok, 1 numerical, 2 input, 3 other
     std::string message;
     try {
@@ -176,7 +171,6 @@ class Runtime final : public PetscRuntime {
   }
 
   std::string broadcast_from_root(const std::string& text) const override {
-    if (!petsc_up()) return text;
     std::string out = text;
     int n = static_cast<int>(out.size());
     MPI_Bcast(&n, 1, MPI_INT, 0, PETSC_COMM_WORLD);
@@ -207,7 +201,6 @@ class Runtime final : public PetscRuntime {
 
  private:
   static double reduce(double value, MPI_Op op) {
-    if (!petsc_up()) return value;
     MPI_Allreduce(MPI_IN_PLACE, &value, 1, MPI_DOUBLE, op, PETSC_COMM_WORLD);
     return value;
   }
