@@ -15,7 +15,12 @@ bool finite(const ErrorNorms& e) {
 }
 }  // namespace
 
-Constraints assemble_step(const Formulation& f, LinearBackend& backend, const ProgressSink& progress) {
+Constraints assemble_level(const Formulation& f, LinearBackend& backend, LevelResult& r, const ProgressSink& progress) {
+  const Space& space = f.space();
+  r.h = space.mesh_size();
+  r.dofs = f.unknowns();
+  r.elements = space.num_elements();
+  Stopwatch clock;
   const WorkShare share = backend.share();
   // Ticks: one per element of the matrix loop and of the load loop (whole assemblies only).
   const std::int64_t ticks = share.elements ? 0 : 2 * static_cast<std::int64_t>(f.space().num_elements());
@@ -36,16 +41,7 @@ Constraints assemble_step(const Formulation& f, LinearBackend& backend, const Pr
       for (const std::string& note : f.notes()) progress(note);
   });
   backend.assemble(f, c, b, progress);
-  return c;
-}
-
-Constraints assemble_level(const Formulation& f, LinearBackend& backend, LevelResult& r, const ProgressSink& progress) {
-  const Space& space = f.space();
-  r.h = space.mesh_size();
-  r.dofs = f.unknowns();
-  r.elements = space.num_elements();
-  Stopwatch clock;
-  Constraints c = assemble_step(f, backend, progress);
+  phase.reset();  // the phase (its progress line) ends with the assembly, inside t_assemble
   r.t_assemble = clock.seconds();
   r.notes = f.notes();
   r.free_dofs = static_cast<int>(c.free.size());

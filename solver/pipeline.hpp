@@ -60,12 +60,9 @@ struct DiscreteSolution {
   Eigen::VectorXd spectrum;  ///< eigen.spectrum: every eigenvalue (small problems; else empty)
 };
 
-/// The assemble step alone: load, essential conditions (checked finite, InputError naming the
-/// datum) and the backend's assembly. Returns the conditions.
-Constraints assemble_step(const Formulation& f, LinearBackend& backend, const ProgressSink& progress = {});
-
-/// The assemble step of a level: fills `r`'s h, DOFs, elements, free unknowns and t_assemble (the
-/// linear and the eigen pipelines start the same way). Returns the conditions.
+/// The assemble step of a level: load, essential conditions (checked finite, InputError naming the
+/// datum) and the backend's assembly; fills `r`'s h, DOFs, elements, free unknowns and t_assemble
+/// (the linear and the eigen pipelines start the same way). Returns the conditions.
 Constraints assemble_level(const Formulation& f, LinearBackend& backend, LevelResult& r,
                            const ProgressSink& progress = {});
 

@@ -41,7 +41,8 @@ std::unique_ptr<Formulation> make_formulation(const Space& space, const ProblemS
 LinearSystem assemble_linear_system(const Space& space, const ProblemSpec& problem, const ProgressSink& progress) {
   const PlanarFormulation f(space, problem);
   SerialBackend backend(SolverKind::cholmod);
-  assemble_step(f, backend, progress);
+  LevelResult unused;
+  assemble_level(f, backend, unused, progress);
   return backend.system();
 }
 
