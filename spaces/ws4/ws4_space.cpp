@@ -13,7 +13,7 @@
 #include "spaces/ws4/ws4_evaluator.hpp"
 #include "spaces/ws4/ws4_hermite_transform.hpp"
 #include "spaces/ws4/ws4_reference_matrices.hpp"
-#include "spaces/ws4/ws4_sample_cell.hpp"
+#include "spaces/ws4/ws4_split.hpp"
 
 namespace iga::ws4 {
 
@@ -124,7 +124,10 @@ Ws4Space::Ws4Space(Triangulation triangulation, std::string description, SpaceEx
   for (std::size_t part = 0; part < mesh_->part_names().size(); ++part)
     facts.boundary_parts.emplace_back(mesh_->part_names()[part], part_edges(static_cast<int>(part)));
   facts.all_boundary_edges = part_edges(-1);
-  facts.pieces = split_sample_cell(0);  // the 342 fan triangles over the 178 split vertices
+  // The 342 fan triangles over the 178 split vertices: Space::sample_cell subdivides them.
+  const Ws4Split& split = Ws4Split::reference();
+  for (int v = 0; v < static_cast<int>(split.vertices().size()); ++v) facts.pieces.points.push_back(split.vertex_point(v));
+  for (const auto& t : split.fan_triangles()) facts.pieces.cells.push_back({t[0], t[1], t[2]});
   facts.pieces_across = 8;
   set_facts(std::move(facts));
 }
