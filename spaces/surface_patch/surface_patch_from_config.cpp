@@ -1,6 +1,5 @@
 #include "spaces/surface_patch/surface_patch_from_config.hpp"
 
-#include <cctype>
 #include <stdexcept>
 
 #include "config/errors.hpp"
@@ -18,21 +17,9 @@ double number(const ConfigNode& domain, const std::string& key, double fallback)
   return n ? n->as_double() : fallback;
 }
 
-/// A shape's InputError names the domain block; the key at fault is in the message.
-template <class Make>
-std::shared_ptr<const NurbsSurfaceMap> shape(const ConfigNode& domain, Make&& make) {
-  try {
-    return make();
-  } catch (const InputError& e) {
-    domain.fail(e.what());
-  }
-}
-
 std::shared_ptr<const NurbsSurfaceMap> read_file(const ConfigNode& domain) {
   const MeshFileRequest request = mesh_file_request(domain);
-  std::string extension = request.path.extension().string();
-  for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  if (extension != ".xml")
+  if (request.extension != ".xml")
     domain["file"].fail("a surface patch is read from a G+Smo .xml file (got '" + request.path.filename().string() + "')");
   std::array<bool, 2> periodic{false, false};
   if (const auto pn = domain.find("periodic")) {
@@ -48,17 +35,13 @@ std::shared_ptr<const NurbsSurfaceMap> read_file(const ConfigNode& domain) {
     std::vector<Eigen::Vector3d> points;
     for (std::size_t i = 0; i < p.control_points.size(); ++i)
       points.emplace_back(p.control_points[i].x(), p.control_points[i].y(), p.z[i]);
-    try {
+    return build_from_gismo_patch(path, p, [&] {
       return std::make_shared<const NurbsSurfaceMap>(
           KnotVector(p.degree[0], p.knots[0]), KnotVector(p.degree[1], p.knots[1]), std::move(points), p.weights,
           periodic,
           std::string(p.weights.empty() ? "B-spline" : "NURBS") + " surface patch from " +
               request.path.filename().string());
-    } catch (const std::invalid_argument& e) {
-      throw InputError(path + ": " + p.describe() + ": " + e.what());
-    } catch (const InputError& e) {
-      throw InputError(path + ": " + p.describe() + ": " + e.what());
-    }
+    });
   });
 }
 
@@ -73,17 +56,17 @@ std::shared_ptr<const NurbsSurfaceMap> make_map(const ConfigNode& domain) {
     domain.check_keys({"type", "shape", "radius", "length", "half_angle"});
     const double r = number(domain, "radius", 1.0), l = number(domain, "length", 2.0),
                  a = number(domain, "half_angle", 180.0);
-    return shape(domain, [&] { return nurbs_cylinder(r, l, a); });
+    return domain.guard([&] { return nurbs_cylinder(r, l, a); });
   }
   if (s == "torus") {
     domain.check_keys({"type", "shape", "major_radius", "minor_radius"});
     const double R = number(domain, "major_radius", 2.0), r = number(domain, "minor_radius", 1.0);
-    return shape(domain, [&] { return nurbs_torus(R, r); });
+    return domain.guard([&] { return nurbs_torus(R, r); });
   }
   domain.check_keys({"type", "shape", "radius", "hole", "sweep"});
   const double r = number(domain, "radius", 1.0), hole = number(domain, "hole", 18.0),
                sweep = number(domain, "sweep", 360.0);
-  return shape(domain, [&] { return nurbs_sphere_zone(r, hole, sweep); });
+  return domain.guard([&] { return nurbs_sphere_zone(r, hole, sweep); });
 }
 
 }  // namespace
