@@ -90,8 +90,7 @@ std::vector<double> subdivide(const KnotVector& geometry, int per_span) {
   return bp;
 }
 
-}  // namespace
-
+/// The geometry of a rectangle, quarter_annulus or patch domain, validated (det J > 0).
 std::shared_ptr<const PatchGeometry> make_patch_geometry(const ConfigNode& domain) {
   const std::string type = domain["type"].as_choice({"rectangle", "quarter_annulus", "patch", "mesh_file"});
   std::shared_ptr<const PatchGeometry> g;
@@ -119,6 +118,19 @@ std::shared_ptr<const PatchGeometry> make_patch_geometry(const ConfigNode& domai
   return g;
 }
 
+}  // namespace
+
+int read_regularity(const ConfigNode& space, int p) {
+  int r = p - 1;
+  if (auto rn = space.find("regularity")) {
+    r = rn->as_int();
+    if (r < 0 || r > p - 1)
+      rn->fail("regularity must be between 0 and degree-1 = " + std::to_string(p - 1) + " (got " +
+               std::to_string(r) + ")");
+  }
+  return r;
+}
+
 SpacePtr make_bspline_space(const ConfigNode& domain, const ConfigNode& space, int level) {
   // B-splines on a NURBS patch in 3D are a surface space of their own (spaces/surface_patch/).
   if (domain["type"].as_choice({"rectangle", "quarter_annulus", "patch", "mesh_file", "surface_patch"}) ==
@@ -129,13 +141,7 @@ SpacePtr make_bspline_space(const ConfigNode& domain, const ConfigNode& space, i
   const ConfigNode dn = space["degree"];
   const int p = dn.as_int();
   if (p < 1) dn.fail("B-splines need degree >= 1 (got " + std::to_string(p) + ")");
-  int r = p - 1;
-  if (auto rn = space.find("regularity")) {
-    r = rn->as_int();
-    if (r < 0 || r > p - 1)
-      rn->fail("regularity must be between 0 and degree-1 = " + std::to_string(p - 1) + " (got " +
-               std::to_string(r) + ")");
-  }
+  const int r = read_regularity(space, p);
   std::vector<int> elements{2, 2};
   const auto en = space.find("elements");
   if (en) {

@@ -281,7 +281,6 @@ TensorBSplineSpace::TensorBSplineSpace(std::shared_ptr<const PatchGeometry> geom
     geometry_span_u_.push_back(geometry_->knots_u().find_span(0.5 * (knots_u_[mu] + knots_u_[mu + 1])));
   for (int mu : knots_v_.spans())
     geometry_span_v_.push_back(geometry_->knots_v().find_span(0.5 * (knots_v_[mu] + knots_v_[mu + 1])));
-  mesh_size_ = compute_mesh_size();
   set_facts(make_facts());
 }
 
@@ -401,7 +400,7 @@ SpaceFacts TensorBSplineSpace::make_facts() const {
   f.dimension = n_u_ * n_v_;
   f.num_elements = num_elements_u() * num_elements_v();
   f.cell_shapes = {CellShape::quadrilateral};
-  f.mesh_size = mesh_size_;
+  f.mesh_size = compute_mesh_size();
   f.degree = std::max(pu, pv);
   f.continuity = regularity();
   for (const KnotVector* kv : {&geometry_->knots_u(), &geometry_->knots_v()}) {

@@ -5,6 +5,7 @@
 #include "config/errors.hpp"
 #include "mesh/gismo_xml.hpp"
 #include "mesh/mesh_file_from_config.hpp"
+#include "spaces/bspline/bspline_from_config.hpp"
 #include "spaces/surface_patch/surface_patch_shapes.hpp"
 #include "spaces/surface_patch/surface_patch_space.hpp"
 
@@ -76,12 +77,7 @@ SpacePtr make_surface_patch_bspline_space(const ConfigNode& domain, const Config
   const ConfigNode dn = space["degree"];
   const int p = dn.as_int();
   if (p < 1 || p > 12) dn.fail("degree must be in 1..12 (got " + std::to_string(p) + ")");
-  int r = p - 1;
-  if (auto rn = space.find("regularity")) {
-    r = rn->as_int();
-    if (r < 0 || r > p - 1)
-      rn->fail("regularity must be between 0 and degree-1 = " + std::to_string(p - 1) + " (got " + std::to_string(r) + ")");
-  }
+  const int r = read_regularity(space, p);
   if (level < 0 || level > 12) space.fail("refinement level must be in 0..12 (got " + std::to_string(level) + ")");
   const std::shared_ptr<const NurbsSurfaceMap> map = make_map(domain);
   std::array<int, 2> elements{map->knots(0).num_spans(), map->knots(1).num_spans()};

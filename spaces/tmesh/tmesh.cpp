@@ -128,8 +128,7 @@ std::vector<std::complex<double>> roots(const SectionSpec& s) {
   return r;
 }
 
-}  // namespace
-
+/// d_e of the notes: dim of the intersection of the section spaces (root multisets) minus (n-1).
 int common_nonpolynomial_dimension(const std::vector<SectionSpec>& spaces) {
   std::vector<std::complex<double>> common = roots(spaces.front());
   for (size_t k = 1; k < spaces.size(); ++k) {
@@ -145,6 +144,8 @@ int common_nonpolynomial_dimension(const std::vector<SectionSpec>& spaces) {
   }
   return static_cast<int>(common.size()) - (spaces.front().n - 1);
 }
+
+}  // namespace
 
 TMesh::TMesh(std::vector<TCell> cells, std::vector<SectionSpec> sections, Eigen::Vector2d origin, Eigen::Vector2d unit)
     : cells_(std::move(cells)), sections_(std::move(sections)), origin_(origin), unit_(unit) {

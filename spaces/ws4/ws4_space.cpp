@@ -92,7 +92,6 @@ Ws4Space::Ws4Space(Triangulation triangulation, std::string description, SpaceEx
       const auto& e = mesh.edge(mesh.triangle_edge(t, k));
       mesh_size_ = std::max(mesh_size_, (mesh.vertices()[e[0]] - mesh.vertices()[e[1]]).norm());
     }
-  h_ = mesh_size_;
   compute_vertex_frames();
   std::vector<int> elements;
   if (extent == SpaceExtent::whole) {
@@ -136,7 +135,6 @@ Ws4Space::Ws4Space(const Ws4Space& skeleton, const std::vector<int>& elements)
     : mesh_(skeleton.mesh_),
       description_(skeleton.description_),
       mesh_size_(skeleton.mesh_size_),
-      h_(skeleton.h_),
       vertex_frame_(skeleton.vertex_frame_) {
   check_element_set(elements, mesh_->num_triangles(), "Ws4Space::build_on");
   build_extractions(elements);
@@ -231,9 +229,9 @@ ElementDofGeometry Ws4Space::dof_geometry(int element) const {
   for (int a = 0; a < 3; ++a) {
     g.corner[a] = mesh_->vertices()[tri[a]];
     g.frame[a] = (*vertex_frame_)[tri[a]];
-    g.vertex_scale[a] = h_;
+    g.vertex_scale[a] = mesh_size_;
     g.edge_reversed[a] = mesh_->edge(mesh_->triangle_edge(element, a))[0] != tri[a];
-    g.edge_scale[a] = h_;
+    g.edge_scale[a] = mesh_size_;
   }
   return g;
 }
@@ -247,7 +245,7 @@ Eigen::MatrixXd Ws4Space::element_functionals(int element) const {
   int m = 0;
   auto put = [&](const Point2& xi, const std::vector<Point2>& dirs) {
     basis.directional_derivatives(xi, dirs, row);
-    const double scale = std::pow(h_, static_cast<int>(dirs.size()));
+    const double scale = std::pow(mesh_size_, static_cast<int>(dirs.size()));
     for (int i = 0; i < Ws4Basis::size; ++i) g(m, i) = scale * row[i];
     ++m;
   };
@@ -282,7 +280,7 @@ Eigen::VectorXd Ws4Space::interpolate(const Jet3& f) const {
     for (int k = 0; k < dofs_per_vertex; ++k) {
       std::vector<Point2> dirs(vertex_dx[k], Point2((*vertex_frame_)[v].col(0)));
       dirs.insert(dirs.end(), vertex_dy[k], Point2((*vertex_frame_)[v].col(1)));
-      u(dofs_per_vertex * v + k) = std::pow(h_, vertex_dx[k] + vertex_dy[k]) * directional_from_jet(d, dirs);
+      u(dofs_per_vertex * v + k) = std::pow(mesh_size_, vertex_dx[k] + vertex_dy[k]) * directional_from_jet(d, dirs);
     }
   }
   const int edge0 = dofs_per_vertex * mesh_->num_vertices();
@@ -298,7 +296,7 @@ Eigen::VectorXd Ws4Space::interpolate(const Jet3& f) const {
         case 2: dn = nx * nx * d[3] + 2 * nx * ny * d[4] + ny * ny * d[5]; break;
         default: dn = nx * nx * nx * d[6] + 3 * nx * nx * ny * d[7] + 3 * nx * ny * ny * d[8] + ny * ny * ny * d[9];
       }
-      u(edge0 + dofs_per_edge * e + k) = std::pow(h_, edge_order[k]) * dn;
+      u(edge0 + dofs_per_edge * e + k) = std::pow(mesh_size_, edge_order[k]) * dn;
     }
   }
   const int tri0 = edge0 + dofs_per_edge * mesh_->num_edges();

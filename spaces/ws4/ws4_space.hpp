@@ -119,7 +119,7 @@ class Ws4Space final : public Space, public FastEvaluator, public BuildsOnElemen
 
   std::shared_ptr<const Triangulation> mesh_;
   std::string description_;
-  double mesh_size_ = 0.0, h_ = 1.0;
+  double mesh_size_ = 0.0;  ///< longest edge; also the h that scales the derivative DOFs
   ShapeClasses classes_;
   std::vector<Eigen::MatrixXd> class_extraction_;
   std::unique_ptr<const ClosedForms> closed_forms_;
