@@ -12,10 +12,12 @@
 
 #include <array>
 #include <cstddef>
+#include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "config/errors.hpp"
 #include "mesh/planar_mesh.hpp"
 
 namespace iga {
@@ -82,5 +84,18 @@ PlanarMesh bilinear_patch_mesh(const GismoMultiPatch& multipatch);
 
 /// The one patch of a single-patch file (refuses several patches and interfaces, naming `space`).
 const GismoPatch& single_gismo_patch(const GismoMultiPatch& multipatch, const std::string& space);
+
+/// Runs `build` (a map made from `patch` of the file `path`); an std::invalid_argument or
+/// InputError it throws is rethrown as InputError "path: <patch.describe()>: message".
+template <class Build>
+auto build_from_gismo_patch(const std::string& path, const GismoPatch& patch, Build&& build) {
+  try {
+    return build();
+  } catch (const std::invalid_argument& e) {
+    throw InputError(path + ": " + patch.describe() + ": " + e.what());
+  } catch (const InputError& e) {
+    throw InputError(path + ": " + patch.describe() + ": " + e.what());
+  }
+}
 
 }  // namespace iga

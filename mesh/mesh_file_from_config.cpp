@@ -19,11 +19,11 @@ MeshFileRequest mesh_file_request(const ConfigNode& domain) {
   const ConfigNode file = domain["file"];
   request.path = resolve_config_file(file);
   request.options.config_folder = config_folder(file).string();
-  std::string extension = request.path.extension().string();
-  for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  request.extension = request.path.extension().string();
+  for (char& c : request.extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
   // Named at the config key here; read_mesh_file would refuse them too, but at the file.
   for (const char* key : {"mesh_size", "recombine"})
-    if (const auto n = domain.find(key); n && extension != ".geo")
+    if (const auto n = domain.find(key); n && request.extension != ".geo")
       n->fail(std::string(key) + " applies to .geo files only (a mesh file is used as it is)");
   if (const auto n = domain.find("mesh_size")) {
     request.options.mesh_size = n->as_double();

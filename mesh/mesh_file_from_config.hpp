@@ -5,6 +5,7 @@
 /// keys its space allows (e.g. no `recombine` for triangle-only spaces).
 
 #include <filesystem>
+#include <string>
 
 #include "config/config_node.hpp"
 #include "mesh/read_mesh_file.hpp"
@@ -13,6 +14,7 @@ namespace iga {
 
 struct MeshFileRequest {
   std::filesystem::path path;  ///< resolve_config_file of `file`: inside the config file's folder
+  std::string extension;       ///< path's extension in lower case (".geo", ".xml", ...)
   MeshFileOptions options;
 };
 

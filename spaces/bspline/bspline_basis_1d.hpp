@@ -50,6 +50,52 @@ class SpanDerivatives {
   int rows_;
 };
 
+/// The derivatives d[a][b] = ∂^a_u ∂^b_v x, a + b ≤ nder (1 or 2; the others zero), at (u, v) of the
+/// tensor-product map x = A / W from the pieces of spans (span_u, span_v): A = Σ w P N M and
+/// W = Σ w N M, control points numbered i + j n_u, `weights` empty (all 1) or one per point. Without
+/// `quotient` the homogeneous sums A themselves are returned (a map whose weights are all 1).
+template <class Point>
+std::array<std::array<Point, 3>, 3> tensor_map_derivatives(const KnotVector& knots_u, const KnotVector& knots_v,
+                                                           double u, double v, int span_u, int span_v, int nder,
+                                                           const std::vector<Point>& points,
+                                                           const std::vector<double>& weights, bool quotient) {
+  const int pu = knots_u.degree(), pv = knots_v.degree(), nu = knots_u.num_functions();
+  const SpanDerivatives Nu(knots_u, span_u, u, nder);
+  const SpanDerivatives Nv(knots_v, span_v, v, nder);
+  // Homogeneous sums A_ab = Σ w P ∂^a N ∂^b M and W_ab = Σ w ∂^a N ∂^b M.
+  std::array<std::array<Point, 3>, 3> A;
+  double W[3][3];
+  for (int a = 0; a < 3; ++a)
+    for (int b = 0; b < 3; ++b) {
+      A[a][b].setZero();
+      W[a][b] = 0.0;
+    }
+  for (int jb = 0; jb <= pv; ++jb)
+    for (int ia = 0; ia <= pu; ++ia) {
+      const int idx = (span_u - pu + ia) + (span_v - pv + jb) * nu;
+      const double w = weights.empty() ? 1.0 : weights[idx];
+      const Point wp = w * points[idx];
+      for (int a = 0; a <= nder; ++a)
+        for (int b = 0; a + b <= nder; ++b) {
+          const double s = Nu(a, ia) * Nv(b, jb);
+          A[a][b] += s * wp;
+          W[a][b] += s * w;
+        }
+    }
+  if (!quotient) return A;
+  // x = A / W: x_k = (A_k − W_k x) / W, x_kl = (A_kl − W_kl x − W_k x_l − W_l x_k) / W.
+  std::array<std::array<Point, 3>, 3> d = A;
+  const double w0 = W[0][0];
+  d[0][0] = A[0][0] / w0;
+  d[1][0] = (A[1][0] - W[1][0] * d[0][0]) / w0;
+  d[0][1] = (A[0][1] - W[0][1] * d[0][0]) / w0;
+  if (nder < 2) return d;
+  d[2][0] = (A[2][0] - W[2][0] * d[0][0] - 2.0 * W[1][0] * d[1][0]) / w0;
+  d[1][1] = (A[1][1] - W[1][1] * d[0][0] - W[1][0] * d[0][1] - W[0][1] * d[1][0]) / w0;
+  d[0][2] = (A[0][2] - W[0][2] * d[0][0] - 2.0 * W[0][1] * d[0][1]) / w0;
+  return d;
+}
+
 /// The binomial coefficient C(n, k) in double (exact for polynomial degrees).
 double binomial(int n, int k);
 

@@ -52,38 +52,30 @@ PatchGeometry read_patch(const ConfigNode& domain) {
     for (size_t i = 0; i < w.size(); ++i)
       if (!(w[i] > 0.0)) wn->fail("weights must be positive (weight " + std::to_string(i) + " is " + format_number(w[i]) + ")");
   }
-  try {
+  return domain.guard([&] {
     return PatchGeometry(ku, kv, std::move(cp), std::move(w),
                          std::string(w.empty() ? "B-spline" : "NURBS") + " patch " + std::to_string(ku.num_spans()) +
                              "x" + std::to_string(kv.num_spans()) + " spans");
-  } catch (const InputError& e) {
-    domain.fail(e.what());
-  }
+  });
 }
 
 /// `domain: {type: mesh_file, file: patch.xml}`: the one patch of a G+Smo XML file.
 PatchGeometry read_patch_file(const ConfigNode& domain) {
   domain.check_keys({"type", "file"});
   const MeshFileRequest request = mesh_file_request(domain);
-  std::string extension = request.path.extension().string();
-  for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  if (extension != ".xml")
+  if (request.extension != ".xml")
     domain["file"].fail("the bspline space reads one patch from a G+Smo .xml file (got '" + request.path.filename().string() +
                         "'; meshes of triangles or quadrilaterals: space ws4, g1, g1_4split)");
   return domain["file"].guard([&] {
     const std::string path = request.path.string();
     const GismoMultiPatch file = read_gismo_xml(path);
     const GismoPatch& p = single_gismo_patch(file, "bspline");
-    try {
+    return build_from_gismo_patch(path, p, [&] {
       return PatchGeometry(KnotVector(p.degree[0], p.knots[0]), KnotVector(p.degree[1], p.knots[1]), p.control_points,
                            p.weights,
                            std::string(p.weights.empty() ? "B-spline" : "NURBS") + " patch from " +
                                request.path.filename().string());
-    } catch (const std::invalid_argument& e) {
-      throw InputError(path + ": " + p.describe() + ": " + e.what());
-    } catch (const InputError& e) {
-      throw InputError(path + ": " + p.describe() + ": " + e.what());
-    }
+    });
   });
 }
 
@@ -98,8 +90,7 @@ std::vector<double> subdivide(const KnotVector& geometry, int per_span) {
   return bp;
 }
 
-}  // namespace
-
+/// The geometry of a rectangle, quarter_annulus or patch domain, validated (det J > 0).
 std::shared_ptr<const PatchGeometry> make_patch_geometry(const ConfigNode& domain) {
   const std::string type = domain["type"].as_choice({"rectangle", "quarter_annulus", "patch", "mesh_file"});
   std::shared_ptr<const PatchGeometry> g;
@@ -127,6 +118,19 @@ std::shared_ptr<const PatchGeometry> make_patch_geometry(const ConfigNode& domai
   return g;
 }
 
+}  // namespace
+
+int read_regularity(const ConfigNode& space, int p) {
+  int r = p - 1;
+  if (auto rn = space.find("regularity")) {
+    r = rn->as_int();
+    if (r < 0 || r > p - 1)
+      rn->fail("regularity must be between 0 and degree-1 = " + std::to_string(p - 1) + " (got " +
+               std::to_string(r) + ")");
+  }
+  return r;
+}
+
 SpacePtr make_bspline_space(const ConfigNode& domain, const ConfigNode& space, int level) {
   // B-splines on a NURBS patch in 3D are a surface space of their own (spaces/surface_patch/).
   if (domain["type"].as_choice({"rectangle", "quarter_annulus", "patch", "mesh_file", "surface_patch"}) ==
@@ -137,13 +141,7 @@ SpacePtr make_bspline_space(const ConfigNode& domain, const ConfigNode& space, i
   const ConfigNode dn = space["degree"];
   const int p = dn.as_int();
   if (p < 1) dn.fail("B-splines need degree >= 1 (got " + std::to_string(p) + ")");
-  int r = p - 1;
-  if (auto rn = space.find("regularity")) {
-    r = rn->as_int();
-    if (r < 0 || r > p - 1)
-      rn->fail("regularity must be between 0 and degree-1 = " + std::to_string(p - 1) + " (got " +
-               std::to_string(r) + ")");
-  }
+  const int r = read_regularity(space, p);
   std::vector<int> elements{2, 2};
   const auto en = space.find("elements");
   if (en) {

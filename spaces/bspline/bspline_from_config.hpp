@@ -20,8 +20,8 @@
 
 namespace iga {
 
-/// The geometry of a rectangle, quarter_annulus or patch domain, validated (det J > 0).
-std::shared_ptr<const PatchGeometry> make_patch_geometry(const ConfigNode& domain);
+/// The `regularity` key of `space` for degree p: 0..p-1, default p-1 (InputError at the key).
+int read_regularity(const ConfigNode& space, int p);
 
 /// B-spline space of degree p, regularity r (0..p-1, default p-1) and `elements` (default [2,2],
 /// counted over the whole patch) refined uniformly `level` times: elements x 2^level per

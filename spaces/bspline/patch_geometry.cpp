@@ -82,61 +82,19 @@ GeometryJet PatchGeometry::evaluate(const Point2& uv, int span_u, int span_v, bo
     g.jacobian = linear_;
     return g;
   }
-  const int pu = knots_u_.degree(), pv = knots_v_.degree();
-  const int nu = knots_u_.num_functions();
-  const int nder = second ? 2 : 1;
-  const SpanDerivatives Nu(knots_u_, span_u, uv.x(), nder);
-  const SpanDerivatives Nv(knots_v_, span_v, uv.y(), nder);
-  // Homogeneous sums A = sum w P N M and W = sum w N M with derivatives d^a/du^a d^b/dv^b.
-  Point2 A[3][3];
-  double W[3][3];
-  for (int a = 0; a < 3; ++a)
-    for (int b = 0; b < 3; ++b) {
-      A[a][b].setZero();
-      W[a][b] = 0.0;
-    }
-  for (int jb = 0; jb <= pv; ++jb) {
-    const int j = span_v - pv + jb;
-    for (int ia = 0; ia <= pu; ++ia) {
-      const int idx = (span_u - pu + ia) + j * nu;
-      const double w = weights_[idx];
-      const Point2 wp = w * control_points_[idx];
-      for (int a = 0; a <= nder; ++a)
-        for (int b = 0; a + b <= nder; ++b) {
-          const double s = Nu(a, ia) * Nv(b, jb);
-          A[a][b] += s * wp;
-          W[a][b] += s * w;
-        }
-    }
-  }
+  const auto d = tensor_map_derivatives(knots_u_, knots_v_, uv.x(), uv.y(), span_u, span_v, second ? 2 : 1,
+                                        control_points_, weights_, rational_);
+  // Without rational_ the sums are x itself: W = 1 and its derivatives vanish, but summed they come
+  // out at round-off (1e-17): through the quotient rule that made ∂x/∂v of the unit square 1e-20
+  // instead of 0, and the closed-form element matrices then kept the mixed terms of half the
+  // elements (twice the work there).
   GeometryJet g;
-  if (!rational_) {
-    // W = 1 and its derivatives vanish, but summed they come out at round-off (1e-17): through the
-    // quotient rule that made ∂x/∂v of the unit square 1e-20 instead of 0, and the closed-form
-    // element matrices then kept the mixed terms of half the elements (twice the work there).
-    g.x = A[0][0];
-    g.jacobian.col(0) = A[1][0];
-    g.jacobian.col(1) = A[0][1];
-    if (second) {
-      g.hessian_x << A[2][0].x(), A[1][1].x(), A[1][1].x(), A[0][2].x();
-      g.hessian_y << A[2][0].y(), A[1][1].y(), A[1][1].y(), A[0][2].y();
-    }
-    return g;
-  }
-  // Quotient rule for x = A / W:
-  //   x_k = (A_k - W_k x) / W,  x_kl = (A_kl - W_kl x - W_k x_l - W_l x_k) / W.
-  const double w0 = W[0][0];
-  g.x = A[0][0] / w0;
-  const Point2 xu = (A[1][0] - W[1][0] * g.x) / w0;
-  const Point2 xv = (A[0][1] - W[0][1] * g.x) / w0;
-  g.jacobian.col(0) = xu;
-  g.jacobian.col(1) = xv;
+  g.x = d[0][0];
+  g.jacobian.col(0) = d[1][0];
+  g.jacobian.col(1) = d[0][1];
   if (second) {
-    const Point2 xuu = (A[2][0] - W[2][0] * g.x - 2.0 * W[1][0] * xu) / w0;
-    const Point2 xuv = (A[1][1] - W[1][1] * g.x - W[1][0] * xv - W[0][1] * xu) / w0;
-    const Point2 xvv = (A[0][2] - W[0][2] * g.x - 2.0 * W[0][1] * xv) / w0;
-    g.hessian_x << xuu.x(), xuv.x(), xuv.x(), xvv.x();
-    g.hessian_y << xuu.y(), xuv.y(), xuv.y(), xvv.y();
+    g.hessian_x << d[2][0].x(), d[1][1].x(), d[1][1].x(), d[0][2].x();
+    g.hessian_y << d[2][0].y(), d[1][1].y(), d[1][1].y(), d[0][2].y();
   }
   return g;
 }

@@ -237,7 +237,7 @@ struct TensorBSplineSpace::Core {
   using Jet = GeometryJet;
   static constexpr bool identity = false;
   const TensorBSplineSpace& space;
-  mutable Eigen::SparseMatrix<double, Eigen::RowMajor> kron;
+  mutable Eigen::SparseMatrix<double> kron;  // local × active
 
   int kind(int /*e*/) const { return 0; }
   int tabulate(int /*kind*/, const std::vector<Point2>& points, int /*order*/, LocalTables& t) const {
@@ -251,17 +251,8 @@ struct TensorBSplineSpace::Core {
   Extraction extraction(int e) const {
     const Eigen::MatrixXd& cu = space.extraction_u_[e % space.num_elements_u()];
     const Eigen::MatrixXd& cv = space.extraction_v_[e / space.num_elements_u()];
-    const Eigen::Index nu = cu.rows(), lu = cu.cols();
-    std::vector<Eigen::Triplet<double>> entries;
-    for (Eigen::Index b = 0; b < cv.rows(); ++b)
-      for (Eigen::Index a = 0; a < nu; ++a)
-        for (Eigen::Index m = 0; m < cv.cols(); ++m)
-          for (Eigen::Index l = 0; l < lu; ++l)
-            if (cu(a, l) * cv(b, m) != 0.0) entries.emplace_back(a + b * nu, l + m * lu, cu(a, l) * cv(b, m));
-    kron.resize(nu * cv.rows(), lu * cv.cols());
-    kron.setFromTriplets(entries.begin(), entries.end());
-    return Extraction(kron.rows(), kron.cols(), kron.nonZeros(), kron.outerIndexPtr(), kron.innerIndexPtr(),
-                      kron.valuePtr());
+    kron = tensor_extraction(cu, cv);
+    return extraction_view(kron);
   }
   void map(int e, const QuadratureRule& rule, const LocalTables& /*t*/, int order, std::vector<Jet>& jets) const {
     space.element_jets(e, rule, order >= 2, jets);
@@ -290,7 +281,6 @@ TensorBSplineSpace::TensorBSplineSpace(std::shared_ptr<const PatchGeometry> geom
     geometry_span_u_.push_back(geometry_->knots_u().find_span(0.5 * (knots_u_[mu] + knots_u_[mu + 1])));
   for (int mu : knots_v_.spans())
     geometry_span_v_.push_back(geometry_->knots_v().find_span(0.5 * (knots_v_[mu] + knots_v_[mu + 1])));
-  mesh_size_ = compute_mesh_size();
   set_facts(make_facts());
 }
 
@@ -410,7 +400,7 @@ SpaceFacts TensorBSplineSpace::make_facts() const {
   f.dimension = n_u_ * n_v_;
   f.num_elements = num_elements_u() * num_elements_v();
   f.cell_shapes = {CellShape::quadrilateral};
-  f.mesh_size = mesh_size_;
+  f.mesh_size = compute_mesh_size();
   f.degree = std::max(pu, pv);
   f.continuity = regularity();
   for (const KnotVector* kv : {&geometry_->knots_u(), &geometry_->knots_v()}) {
@@ -418,15 +408,7 @@ SpaceFacts TensorBSplineSpace::make_facts() const {
     if (m > 0) f.continuity = std::min(f.continuity, kv->degree() - m);
   }
   f.affine_elements = geometry_->is_affine();
-  const int nex = num_elements_u(), ney = num_elements_v();
-  std::vector<BoundaryEdge> bottom, right, top, left;
-  for (int ex = 0; ex < nex; ++ex) bottom.push_back({ex, 0});
-  for (int ey = 0; ey < ney; ++ey) right.push_back({nex - 1 + ey * nex, 1});
-  for (int ex = 0; ex < nex; ++ex) top.push_back({ex + (ney - 1) * nex, 2});
-  for (int ey = 0; ey < ney; ++ey) left.push_back({ey * nex, 3});
-  for (const auto* side : {&bottom, &right, &top, &left})
-    f.all_boundary_edges.insert(f.all_boundary_edges.end(), side->begin(), side->end());
-  f.boundary_parts = {{"left", left}, {"right", right}, {"bottom", bottom}, {"top", top}};
+  add_grid_boundary(f, num_elements_u(), num_elements_v(), true, true);
   return f;
 }
 

@@ -87,7 +87,6 @@ class TensorBSplineSpace final : public Space, public FastEvaluator {
   /// Bézier extraction of each element column (along u) and row (along v), active × local (p+1)².
   std::vector<Eigen::MatrixXd> extraction_u_, extraction_v_;
   std::vector<int> geometry_span_u_, geometry_span_v_;  ///< geometry span of each element column/row
-  double mesh_size_ = 0.0;
   // Span integrals of each element column and row, built on first use of the closed form.
   mutable std::once_flag span_integrals_once_;
   mutable std::vector<SpanIntegrals> span_integrals_u_, span_integrals_v_;

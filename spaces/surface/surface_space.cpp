@@ -38,8 +38,10 @@ Key lattice_key(const std::array<int, 3>& tri, int patch, const std::array<int, 
 
 SurfaceBernsteinSpace::SurfaceBernsteinSpace(std::shared_ptr<const rsd::RsdSurface> surface, int degree,
                                              int subdivisions, std::shared_ptr<const SurfacePatches> patches)
-    : surface_(std::move(surface)), patches_(std::move(patches)), degree_(degree), subdivisions_(subdivisions) {
-  if (!patches_) patches_ = std::make_shared<const SurfacePatches>(surface_patches_of(*surface_));
+    : surface_(std::move(surface)), degree_(degree) {
+  SpaceFacts facts;
+  // The surface's own report (made here unless another space already made it).
+  facts.surface_patches = patches ? std::move(patches) : std::make_shared<const SurfacePatches>(surface_patches_of(*surface_));
   if (degree < 1 || degree > 8) throw std::invalid_argument("SurfaceBernsteinSpace: degree must be in 1..8");
   if (subdivisions < 1) throw std::invalid_argument("SurfaceBernsteinSpace: subdivisions must be >= 1");
   const int m = subdivisions, p = degree;
@@ -73,8 +75,8 @@ SurfaceBernsteinSpace::SurfaceBernsteinSpace(std::shared_ptr<const rsd::RsdSurfa
           const int b3 = p - b1 - b2;
           std::array<int, 3> k;
           for (int a = 0; a < 3; ++a) k[a] = b1 * s[0][a] + b2 * s[1][a] + b3 * s[2][a];
-          const auto [it, inserted] = numbering.try_emplace(lattice_key(tri, n, k), dimension_);
-          if (inserted) ++dimension_;
+          const auto [it, inserted] = numbering.try_emplace(lattice_key(tri, n, k), facts.dimension);
+          if (inserted) ++facts.dimension;
           dofs[bernstein_triangle_index(p, b2, b3)] = it->second;
         }
       // Edges of the reference triangle: 0 = corners (0,1), 1 = (1,2), 2 = (2,0), each running from
@@ -101,29 +103,24 @@ SurfaceBernsteinSpace::SurfaceBernsteinSpace(std::shared_ptr<const rsd::RsdSurfa
         const auto& v = s[(edge + 1) % 3];
         for (int a = 0; a < 3; ++a)
           if (u[a] == 0 && v[a] == 0 && edge_count[std::minmax(tri[(a + 1) % 3], tri[(a + 2) % 3])] == 1)
-            boundary_.push_back({static_cast<int>(elements_.size()), edge});
+            facts.all_boundary_edges.push_back({static_cast<int>(elements_.size()), edge});
       }
       const BezierTriangle& patch = surface_->patches[n];
       for (int c = 0; c < 3; ++c)
-        mesh_size_ = std::max(mesh_size_, (patch.value(el.corner[c]) - patch.value(el.corner[(c + 1) % 3])).norm());
+        facts.mesh_size = std::max(facts.mesh_size, (patch.value(el.corner[c]) - patch.value(el.corner[(c + 1) % 3])).norm());
       elements_.push_back(el);
       dofs_.push_back(std::move(dofs));
     }
   }
-  SpaceFacts facts;
   facts.type = "surface";
   facts.parameters = {{"degree", std::to_string(degree_)},
-                      {"subdivisions", std::to_string(subdivisions_)},
+                      {"subdivisions", std::to_string(subdivisions)},
                       {"elements", std::to_string(elements_.size())},
                       {"surface_triangles", std::to_string(surface_->mesh.num_triangles())}};
-  facts.dimension = dimension_;
   facts.num_elements = static_cast<int>(elements_.size());
   facts.cell_shapes = {CellShape::triangle};
-  facts.mesh_size = mesh_size_;
   facts.degree = degree_;
   facts.ambient_dimension = 3;
-  facts.all_boundary_edges = boundary_;
-  facts.surface_patches = patches_;  // the surface's own report
   set_facts(std::move(facts));
 }
 

@@ -28,12 +28,6 @@ class SurfaceBernsteinSpace : public Space {
   SurfaceBernsteinSpace(std::shared_ptr<const rsd::RsdSurface> surface, int degree, int subdivisions,
                         std::shared_ptr<const SurfacePatches> patches = nullptr);
 
-  /// One element: its patch and the patch barycentrics of its three corners (counterclockwise).
-  struct Element {
-    int patch = 0;
-    std::array<Eigen::Vector3d, 3> corner;
-  };
-
   std::unique_ptr<Evaluator> make_evaluator() const override;
   void element_dofs(int element, std::vector<int>& out) const override { out = dofs_[element]; }
   RulePtr quadrature(int, int degree) const override { return rules_.triangle(degree); }
@@ -42,21 +36,20 @@ class SurfaceBernsteinSpace : public Space {
   /// penalty form of the surface biharmonic integrates over them).
   std::vector<InteriorEdge> interior_edges() const override { return interior_; }
 
-  const rsd::RsdSurface& surface() const { return *surface_; }
   const std::shared_ptr<const rsd::RsdSurface>& shared_surface() const { return surface_; }
-  const Element& element(int e) const { return elements_[e]; }
 
  private:
   struct Core;  // the explicit core of the generic evaluator (surface_space.cpp)
+  /// One element: its patch and the patch barycentrics of its three corners (counterclockwise).
+  struct Element {
+    int patch = 0;
+    std::array<Eigen::Vector3d, 3> corner;
+  };
 
   std::shared_ptr<const rsd::RsdSurface> surface_;
-  std::shared_ptr<const SurfacePatches> patches_;
-  int degree_, subdivisions_;
-  int dimension_ = 0;
-  double mesh_size_ = 0;
+  int degree_;
   std::vector<Element> elements_;
   std::vector<std::vector<int>> dofs_;   ///< per element, local Bernstein order (bezier_index)
-  std::vector<BoundaryEdge> boundary_;   ///< element edges on boundary (single) mesh edges
   std::vector<InteriorEdge> interior_;   ///< element edges shared by two elements
   GaussRuleCache rules_;
 };

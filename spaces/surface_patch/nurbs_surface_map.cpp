@@ -52,7 +52,10 @@ NurbsSurfaceMap::NurbsSurfaceMap(const KnotVector& knots_u, const KnotVector& kn
         for (int b = 0; b <= m; ++b) {
           const Point2 uv(knots_u_[su] + a / double(m) * (knots_u_[su + 1] - knots_u_[su]),
                           knots_v_[sv] + b / double(m) * (knots_v_[sv + 1] - knots_v_[sv]));
-          jet(uv, su, sv, false, j);
+          const auto d = derivatives(uv, su, sv);
+          Eigen::Matrix<double, 3, 2> J;
+          J << d[1][0], d[0][1];
+          fill_surface_jet(j, d[0][0], J);
           if (!(j.area > 1e-10 * size_ * size_))
             throw InputError(description_ + ": the map is degenerate at parameter (" + format_number(uv.x()) + ", " +
                              format_number(uv.y()) + "): |x_u × x_v| = " + format_number(j.area) +
@@ -62,51 +65,7 @@ NurbsSurfaceMap::NurbsSurfaceMap(const KnotVector& knots_u, const KnotVector& kn
 
 std::array<std::array<Eigen::Vector3d, 3>, 3> NurbsSurfaceMap::derivatives(const Point2& uv, int span_u,
                                                                           int span_v) const {
-  const int pu = knots_u_.degree(), pv = knots_v_.degree(), nu = knots_u_.num_functions();
-  const SpanDerivatives Nu(knots_u_, span_u, uv.x(), 2);
-  const SpanDerivatives Nv(knots_v_, span_v, uv.y(), 2);
-  // Homogeneous sums A_ab = Σ w P ∂^a N ∂^b M and W_ab = Σ w ∂^a N ∂^b M.
-  Eigen::Vector3d A[3][3];
-  double W[3][3];
-  for (int a = 0; a < 3; ++a)
-    for (int b = 0; b < 3; ++b) {
-      A[a][b].setZero();
-      W[a][b] = 0.0;
-    }
-  for (int jb = 0; jb <= pv; ++jb)
-    for (int ia = 0; ia <= pu; ++ia) {
-      const int idx = (span_u - pu + ia) + (span_v - pv + jb) * nu;
-      const double w = weights_.empty() ? 1.0 : weights_[idx];
-      const Eigen::Vector3d wp = w * points_[idx];
-      for (int a = 0; a <= 2; ++a)
-        for (int b = 0; a + b <= 2; ++b) {
-          const double s = Nu(a, ia) * Nv(b, jb);
-          A[a][b] += s * wp;
-          W[a][b] += s * w;
-        }
-    }
-  // x = A / W: x_k = (A_k − W_k x) / W, x_kl = (A_kl − W_kl x − W_k x_l − W_l x_k) / W.
-  std::array<std::array<Eigen::Vector3d, 3>, 3> d{};
-  const double w0 = W[0][0];
-  d[0][0] = A[0][0] / w0;
-  d[1][0] = (A[1][0] - W[1][0] * d[0][0]) / w0;
-  d[0][1] = (A[0][1] - W[0][1] * d[0][0]) / w0;
-  d[2][0] = (A[2][0] - W[2][0] * d[0][0] - 2.0 * W[1][0] * d[1][0]) / w0;
-  d[1][1] = (A[1][1] - W[1][1] * d[0][0] - W[1][0] * d[0][1] - W[0][1] * d[1][0]) / w0;
-  d[0][2] = (A[0][2] - W[0][2] * d[0][0] - 2.0 * W[0][1] * d[0][1]) / w0;
-  return d;
-}
-
-void NurbsSurfaceMap::jet(const Point2& uv, int span_u, int span_v, bool second, SurfaceJet& j) const {
-  const auto d = derivatives(uv, span_u, span_v);
-  Eigen::Matrix<double, 3, 2> J;
-  J << d[1][0], d[0][1];
-  if (second) {
-    const std::array<Eigen::Vector3d, 3> xab{d[2][0], d[1][1], d[0][2]};
-    fill_surface_jet(j, d[0][0], J, &xab);
-  } else {
-    fill_surface_jet(j, d[0][0], J);
-  }
+  return tensor_map_derivatives(knots_u_, knots_v_, uv.x(), uv.y(), span_u, span_v, 2, points_, weights_, true);
 }
 
 Eigen::Vector3d NurbsSurfaceMap::point(const Point2& uv) const {

@@ -33,9 +33,6 @@ class NurbsSurfaceMap {
   NurbsSurfaceMap(const KnotVector& knots_u, const KnotVector& knots_v, std::vector<Eigen::Vector3d> control_points,
                   std::vector<double> weights, std::array<bool, 2> periodic, std::string description);
 
-  /// x and its derivatives at uv ∈ [0,1]² from the polynomial pieces of the given nonzero spans,
-  /// written into `jet` (second derivatives when `second`).
-  void jet(const Point2& uv, int span_u, int span_v, bool second, SurfaceJet& jet) const;
   /// x(uv) (the span containing uv).
   Eigen::Vector3d point(const Point2& uv) const;
   /// The raw derivatives at uv from the given spans: d[a][b] = ∂^a_u ∂^b_v x, a + b ≤ 2.
@@ -43,7 +40,6 @@ class NurbsSurfaceMap {
 
   const KnotVector& knots(int direction) const { return direction == 0 ? knots_u_ : knots_v_; }
   bool periodic(int direction) const { return periodic_[direction]; }
-  bool is_rational() const { return !weights_.empty(); }
   const std::string& description() const { return description_; }
   /// Largest extent of the control polygon (the length scale of tolerances).
   double size() const { return size_; }

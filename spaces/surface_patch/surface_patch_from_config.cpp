@@ -1,11 +1,11 @@
 #include "spaces/surface_patch/surface_patch_from_config.hpp"
 
-#include <cctype>
 #include <stdexcept>
 
 #include "config/errors.hpp"
 #include "mesh/gismo_xml.hpp"
 #include "mesh/mesh_file_from_config.hpp"
+#include "spaces/bspline/bspline_from_config.hpp"
 #include "spaces/surface_patch/surface_patch_shapes.hpp"
 #include "spaces/surface_patch/surface_patch_space.hpp"
 
@@ -18,21 +18,9 @@ double number(const ConfigNode& domain, const std::string& key, double fallback)
   return n ? n->as_double() : fallback;
 }
 
-/// A shape's InputError names the domain block; the key at fault is in the message.
-template <class Make>
-std::shared_ptr<const NurbsSurfaceMap> shape(const ConfigNode& domain, Make&& make) {
-  try {
-    return make();
-  } catch (const InputError& e) {
-    domain.fail(e.what());
-  }
-}
-
 std::shared_ptr<const NurbsSurfaceMap> read_file(const ConfigNode& domain) {
   const MeshFileRequest request = mesh_file_request(domain);
-  std::string extension = request.path.extension().string();
-  for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  if (extension != ".xml")
+  if (request.extension != ".xml")
     domain["file"].fail("a surface patch is read from a G+Smo .xml file (got '" + request.path.filename().string() + "')");
   std::array<bool, 2> periodic{false, false};
   if (const auto pn = domain.find("periodic")) {
@@ -48,17 +36,13 @@ std::shared_ptr<const NurbsSurfaceMap> read_file(const ConfigNode& domain) {
     std::vector<Eigen::Vector3d> points;
     for (std::size_t i = 0; i < p.control_points.size(); ++i)
       points.emplace_back(p.control_points[i].x(), p.control_points[i].y(), p.z[i]);
-    try {
+    return build_from_gismo_patch(path, p, [&] {
       return std::make_shared<const NurbsSurfaceMap>(
           KnotVector(p.degree[0], p.knots[0]), KnotVector(p.degree[1], p.knots[1]), std::move(points), p.weights,
           periodic,
           std::string(p.weights.empty() ? "B-spline" : "NURBS") + " surface patch from " +
               request.path.filename().string());
-    } catch (const std::invalid_argument& e) {
-      throw InputError(path + ": " + p.describe() + ": " + e.what());
-    } catch (const InputError& e) {
-      throw InputError(path + ": " + p.describe() + ": " + e.what());
-    }
+    });
   });
 }
 
@@ -73,17 +57,17 @@ std::shared_ptr<const NurbsSurfaceMap> make_map(const ConfigNode& domain) {
     domain.check_keys({"type", "shape", "radius", "length", "half_angle"});
     const double r = number(domain, "radius", 1.0), l = number(domain, "length", 2.0),
                  a = number(domain, "half_angle", 180.0);
-    return shape(domain, [&] { return nurbs_cylinder(r, l, a); });
+    return domain.guard([&] { return nurbs_cylinder(r, l, a); });
   }
   if (s == "torus") {
     domain.check_keys({"type", "shape", "major_radius", "minor_radius"});
     const double R = number(domain, "major_radius", 2.0), r = number(domain, "minor_radius", 1.0);
-    return shape(domain, [&] { return nurbs_torus(R, r); });
+    return domain.guard([&] { return nurbs_torus(R, r); });
   }
   domain.check_keys({"type", "shape", "radius", "hole", "sweep"});
   const double r = number(domain, "radius", 1.0), hole = number(domain, "hole", 18.0),
                sweep = number(domain, "sweep", 360.0);
-  return shape(domain, [&] { return nurbs_sphere_zone(r, hole, sweep); });
+  return domain.guard([&] { return nurbs_sphere_zone(r, hole, sweep); });
 }
 
 }  // namespace
@@ -93,12 +77,7 @@ SpacePtr make_surface_patch_bspline_space(const ConfigNode& domain, const Config
   const ConfigNode dn = space["degree"];
   const int p = dn.as_int();
   if (p < 1 || p > 12) dn.fail("degree must be in 1..12 (got " + std::to_string(p) + ")");
-  int r = p - 1;
-  if (auto rn = space.find("regularity")) {
-    r = rn->as_int();
-    if (r < 0 || r > p - 1)
-      rn->fail("regularity must be between 0 and degree-1 = " + std::to_string(p - 1) + " (got " + std::to_string(r) + ")");
-  }
+  const int r = read_regularity(space, p);
   if (level < 0 || level > 12) space.fail("refinement level must be in 0..12 (got " + std::to_string(level) + ")");
   const std::shared_ptr<const NurbsSurfaceMap> map = make_map(domain);
   std::array<int, 2> elements{map->knots(0).num_spans(), map->knots(1).num_spans()};

@@ -54,15 +54,19 @@ Curve segment(const Eigen::Vector2d& p, const Eigen::Vector2d& q) {
   return c;
 }
 
-/// The profile (ρ_j, z_j) swept about the z axis by the unit arc `around` (u), profile along v.
+/// The profile (ρ_j, z_j) swept about the z axis by the unit arc `around` (u), profile along v;
+/// `axis_x`: then (x, y, z) ← (z, y, x), the axis becomes x.
 NurbsSurfaceMap revolve(const Curve& around, const Curve& profile, std::array<bool, 2> periodic,
-                        const std::string& description) {
+                        const std::string& description, bool axis_x = false) {
   std::vector<Eigen::Vector3d> points;
   std::vector<double> weights;
   for (std::size_t j = 0; j < profile.points.size(); ++j)
     for (std::size_t i = 0; i < around.points.size(); ++i) {
       const double rho = profile.points[j].x(), z = profile.points[j].y();
-      points.emplace_back(rho * around.points[i].x(), rho * around.points[i].y(), z);
+      if (axis_x)
+        points.emplace_back(z, rho * around.points[i].y(), rho * around.points[i].x());
+      else
+        points.emplace_back(rho * around.points[i].x(), rho * around.points[i].y(), z);
       weights.push_back(around.weights[i] * profile.weights[j]);
     }
   return NurbsSurfaceMap(around.knots, profile.knots, std::move(points), std::move(weights), periodic, description);
@@ -85,19 +89,11 @@ std::shared_ptr<const NurbsSurfaceMap> nurbs_cylinder(double radius, double leng
   // x and θ = 0 the crown z = R.
   const Curve around = arc(Eigen::Vector2d::Zero(), 1.0, -half, half);
   const Curve profile = segment({radius, 0.0}, {radius, length});
-  std::vector<Eigen::Vector3d> points;
-  std::vector<double> weights;
-  for (std::size_t j = 0; j < profile.points.size(); ++j)
-    for (std::size_t i = 0; i < around.points.size(); ++i) {
-      const double rho = profile.points[j].x(), z = profile.points[j].y();
-      points.emplace_back(z, rho * around.points[i].y(), rho * around.points[i].x());
-      weights.push_back(around.weights[i] * profile.weights[j]);
-    }
   const std::string what = closed ? "closed cylinder" : "cylinder sector |θ| <= " + format_number(half_angle_degrees) + "°";
-  return std::make_shared<const NurbsSurfaceMap>(around.knots, profile.knots, std::move(points), std::move(weights),
-                                                 std::array<bool, 2>{closed, false},
-                                                 "NURBS " + what + " R = " + format_number(radius) +
-                                                     ", L = " + format_number(length));
+  return std::make_shared<const NurbsSurfaceMap>(revolve(around, profile, {closed, false},
+                                                         "NURBS " + what + " R = " + format_number(radius) +
+                                                             ", L = " + format_number(length),
+                                                         true));
 }
 
 std::shared_ptr<const NurbsSurfaceMap> nurbs_torus(double major_radius, double minor_radius) {

@@ -67,24 +67,12 @@ SurfacePatchSpace::SurfacePatchSpace(std::shared_ptr<const NurbsSurfaceMap> map,
       geometry_span_[d].push_back(g.find_span(0.5 * (dir_[d].element_lo[e] + dir_[d].element_hi[e])));
   }
   const int nex = dir_[0].num_elements(), ney = dir_[1].num_elements(), nu = dir_[0].num_functions;
-  const int lu = p + 1, L = lu * lu;
   for (int ey = 0; ey < ney; ++ey)
     for (int ex = 0; ex < nex; ++ex) {
       std::vector<int> dofs;
       for (int j : dir_[1].active[ey])
         for (int i : dir_[0].active[ex]) dofs.push_back(i + j * nu);
-      const Eigen::MatrixXd& cu = dir_[0].extraction[ex];
-      const Eigen::MatrixXd& cv = dir_[1].extraction[ey];
-      std::vector<Eigen::Triplet<double>> entries;  // (local, active) of the local × active matrix
-      for (int b = 0; b < lu; ++b)
-        for (int a = 0; a < lu; ++a)
-          for (int m = 0; m < lu; ++m)
-            for (int l = 0; l < lu; ++l)
-              if (cu(a, l) * cv(b, m) != 0.0) entries.emplace_back(l + m * lu, a + b * lu, cu(a, l) * cv(b, m));
-      Eigen::SparseMatrix<double> c(L, L);
-      c.setFromTriplets(entries.begin(), entries.end());
-      c.makeCompressed();
-      extraction_.push_back(std::move(c));
+      extraction_.push_back(tensor_extraction(dir_[0].extraction[ex], dir_[1].extraction[ey]));
       dofs_.push_back(std::move(dofs));
     }
   set_facts(make_facts(r));
@@ -160,27 +148,7 @@ SpaceFacts SurfacePatchSpace::make_facts(int r) const {
     for (int i = 0; i < 8; ++i)
       for (int j = i + 1; j < 8; ++j) f.mesh_size = std::max(f.mesh_size, (x[i] - x[j]).norm());
   }
-  std::vector<BoundaryEdge> bottom, right, top, left;
-  if (!dir_[1].periodic)
-    for (int ex = 0; ex < nex; ++ex) {
-      bottom.push_back({ex, 0});
-      top.push_back({ex + (ney - 1) * nex, 2});
-    }
-  if (!dir_[0].periodic)
-    for (int ey = 0; ey < ney; ++ey) {
-      right.push_back({nex - 1 + ey * nex, 1});
-      left.push_back({ey * nex, 3});
-    }
-  for (const auto* side : {&bottom, &right, &top, &left})
-    f.all_boundary_edges.insert(f.all_boundary_edges.end(), side->begin(), side->end());
-  if (!dir_[0].periodic) {
-    f.boundary_parts.emplace_back("left", left);
-    f.boundary_parts.emplace_back("right", right);
-  }
-  if (!dir_[1].periodic) {
-    f.boundary_parts.emplace_back("bottom", bottom);
-    f.boundary_parts.emplace_back("top", top);
-  }
+  add_grid_boundary(f, nex, ney, !dir_[0].periodic, !dir_[1].periodic);
   return f;
 }
 

@@ -37,17 +37,14 @@ HermiteDofs number_hermite_dofs(const TMesh& mesh, int r) {
       vbase[v] = next;
       next += nr * nr;
     }
-  out.num_vertex_dofs = next;
   for (size_t e = 0; e < E.size(); ++e) {
     ebase[e] = next;
     next += nr * (out.last_order(E[e]) - r);  // (k_a - r) per normal order
   }
-  out.num_edge_dofs = next - out.num_vertex_dofs;
   for (int c = 0; c < mesh.num_cells(); ++c) {
     cbase[c] = next;
     next += ni * ni;
   }
-  out.num_cell_dofs = next - out.num_vertex_dofs - out.num_edge_dofs;
   out.dimension = next;
   return out;
 }

@@ -18,7 +18,7 @@ struct HermiteDofs {
   std::vector<int> edge_base;
   /// First DOF of each cell ((n-2r-1)² each).
   std::vector<int> cell_base;
-  int num_vertex_dofs = 0, num_edge_dofs = 0, num_cell_dofs = 0, dimension = 0;
+  int dimension = 0;
   /// Last one-sided tangential order k_a of the DOFs of edge e.
   int last_order(const CompositeEdge& e) const { return n - r - 3 + e.d; }
 };

@@ -110,9 +110,6 @@ HermiteExtraction hermite_extraction(const TMesh& mesh, int r) {
   const int nc = mesh.num_cells();
 
   HermiteExtraction out;
-  out.num_vertex_dofs = dofs.num_vertex_dofs;
-  out.num_edge_dofs = dofs.num_edge_dofs;
-  out.num_cell_dofs = dofs.num_cell_dofs;
   out.dimension = dofs.dimension;
 
   // Jets J_w[a + b nr] = D_s^a D_t^b p(w) (physical derivatives): the unit forms of their DOFs at

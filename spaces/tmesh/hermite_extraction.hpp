@@ -23,7 +23,6 @@ namespace iga {
 /// Result of the extraction.
 struct HermiteExtraction {
   int dimension = 0;
-  int num_vertex_dofs = 0, num_edge_dofs = 0, num_cell_dofs = 0;
   /// Per cell: global indices of the functions active on it (sorted) and the matrix E with
   /// Bernstein coefficient c_loc = sum_a E(a, loc) U[dofs[a]], loc = i + j (n+1); n_active x (n+1)^2.
   std::vector<std::vector<int>> dofs;

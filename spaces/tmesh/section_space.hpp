@@ -54,12 +54,11 @@ class SectionBernstein {
   /// Reference derivatives at t = x/h: out(d, i) = h^d B_i^{(d)}(x); shape (dmax+1) x (n+1).
   /// Divide row d by h^d for physical derivatives.
   Eigen::MatrixXd derivatives(double t, int dmax) const;
-  /// Coefficients in the scaled G-basis: B_i = sum_k coefficients()(i, k) h^{-k} phi_k; (n+1) x (n+1).
-  const Eigen::MatrixXd& coefficients() const { return coef_; }
 
  private:
   SectionSpec spec_;
   double h_;
+  /// Coefficients in the scaled G-basis: B_i = sum_k coef_(i, k) h^{-k} phi_k; (n+1) x (n+1).
   Eigen::MatrixXd coef_;
 };
 

@@ -16,8 +16,7 @@ std::vector<ConfigNode> per_direction(const ConfigNode& node, const std::string&
   return items;
 }
 
-}  // namespace
-
+/// The (x, y) section spaces named by the `section` and `frequency` keys of `node`, with this n.
 std::array<SectionSpec, 2> section_pair_from_config(const ConfigNode& node, int n) {
   std::array<SectionSpec, 2> spec;
   if (auto sn = node.find("section")) {
@@ -39,6 +38,8 @@ std::array<SectionSpec, 2> section_pair_from_config(const ConfigNode& node, int 
   for (SectionSpec& s : spec) s.n = n;
   return spec;
 }
+
+}  // namespace
 
 TMesh with_sections_from_config(const TMesh& mesh, const ConfigNode& space, int n) {
   std::vector<std::array<SectionSpec, 2>> pair(mesh.num_cells(), section_pair_from_config(space, n));

@@ -19,9 +19,6 @@
 
 namespace iga {
 
-/// The (x, y) section spaces named by the `section` and `frequency` keys of `node`, with this n.
-std::array<SectionSpec, 2> section_pair_from_config(const ConfigNode& node, int n);
-
 /// `mesh` (a base mesh, every cell on section 0) with the sections of `space` (its `section`,
 /// `frequency` and `sections_in` keys) assigned to its cells.
 TMesh with_sections_from_config(const TMesh& mesh, const ConfigNode& space, int n);

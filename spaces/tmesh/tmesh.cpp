@@ -57,8 +57,18 @@ bool covers(const std::vector<Side>& sides, std::int64_t a, std::int64_t b) {
 
 bool covers(const Line& line, std::int64_t a, std::int64_t b) { return covers(line.pos, a, b) || covers(line.neg, a, b); }
 
-/// Lines of one direction, sorted by position; `line_of` finds one by binary search.
-std::vector<Line> make_lines(std::vector<std::pair<std::int64_t, Side>>& pos, std::vector<std::pair<std::int64_t, Side>>& neg) {
+/// Lines of one direction, sorted by position; `line_of` finds one by binary search. Horizontal
+/// lines y = c carry bottom (pos) and top (neg) sides, vertical lines x = c left (pos) and right (neg).
+std::vector<Line> make_lines(const std::vector<TCell>& cells, bool horizontal) {
+  std::vector<std::pair<std::int64_t, Side>> pos, neg;
+  pos.reserve(cells.size());
+  neg.reserve(cells.size());
+  for (int k = 0; k < static_cast<int>(cells.size()); ++k) {
+    const TCell& c = cells[k];
+    const Side side = horizontal ? Side{c.x0, c.x1, k} : Side{c.y0, c.y1, k};
+    pos.push_back({horizontal ? c.y0 : c.x0, side});
+    neg.push_back({horizontal ? c.y1 : c.x1, side});
+  }
   auto by_line = [](const auto& a, const auto& b) { return a.first != b.first ? a.first < b.first : a.second.lo < b.second.lo; };
   std::sort(pos.begin(), pos.end(), by_line);
   std::sort(neg.begin(), neg.end(), by_line);
@@ -118,8 +128,7 @@ std::vector<std::complex<double>> roots(const SectionSpec& s) {
   return r;
 }
 
-}  // namespace
-
+/// d_e of the notes: dim of the intersection of the section spaces (root multisets) minus (n-1).
 int common_nonpolynomial_dimension(const std::vector<SectionSpec>& spaces) {
   std::vector<std::complex<double>> common = roots(spaces.front());
   for (size_t k = 1; k < spaces.size(); ++k) {
@@ -135,6 +144,8 @@ int common_nonpolynomial_dimension(const std::vector<SectionSpec>& spaces) {
   }
   return static_cast<int>(common.size()) - (spaces.front().n - 1);
 }
+
+}  // namespace
 
 TMesh::TMesh(std::vector<TCell> cells, std::vector<SectionSpec> sections, Eigen::Vector2d origin, Eigen::Vector2d unit)
     : cells_(std::move(cells)), sections_(std::move(sections)), origin_(origin), unit_(unit) {
@@ -152,22 +163,28 @@ TMesh::TMesh(std::vector<TCell> cells, std::vector<SectionSpec> sections, Eigen:
   build_topology();
 }
 
-TMesh TMesh::rectangle(Eigen::Vector2d lo, Eigen::Vector2d hi, int nx, int ny, const SectionSpec& section) {
+namespace {
+
+/// The (nx x ny) grid of equal cells on [lo, hi], the cells (i, j) that `keep` accepts, one section.
+template <class Keep>
+TMesh grid(Eigen::Vector2d lo, Eigen::Vector2d hi, int nx, int ny, const SectionSpec& section, Keep keep) {
   std::vector<TCell> cells;
   for (int j = 0; j < ny; ++j)
-    for (int i = 0; i < nx; ++i) cells.push_back({i * kBase, (i + 1) * kBase, j * kBase, (j + 1) * kBase, 0, 0});
+    for (int i = 0; i < nx; ++i)
+      if (keep(i, j)) cells.push_back({i * kBase, (i + 1) * kBase, j * kBase, (j + 1) * kBase, 0, 0});
   const Eigen::Vector2d unit((hi.x() - lo.x()) / (nx * double(kBase)), (hi.y() - lo.y()) / (ny * double(kBase)));
   return TMesh(std::move(cells), {section}, lo, unit);
 }
 
+}  // namespace
+
+TMesh TMesh::rectangle(Eigen::Vector2d lo, Eigen::Vector2d hi, int nx, int ny, const SectionSpec& section) {
+  return grid(lo, hi, nx, ny, section, [](int, int) { return true; });
+}
+
 TMesh TMesh::l_shape(Eigen::Vector2d lo, Eigen::Vector2d hi, int nx, int ny, const SectionSpec& section) {
   if (nx % 2 || ny % 2) throw std::invalid_argument("an L-shape grid needs even element counts");
-  std::vector<TCell> cells;
-  for (int j = 0; j < ny; ++j)
-    for (int i = 0; i < nx; ++i)
-      if (i < nx / 2 || j < ny / 2) cells.push_back({i * kBase, (i + 1) * kBase, j * kBase, (j + 1) * kBase, 0, 0});
-  const Eigen::Vector2d unit((hi.x() - lo.x()) / (nx * double(kBase)), (hi.y() - lo.y()) / (ny * double(kBase)));
-  return TMesh(std::move(cells), {section}, lo, unit);
+  return grid(lo, hi, nx, ny, section, [&](int i, int j) { return i < nx / 2 || j < ny / 2; });
 }
 
 std::vector<TCell> TMesh::split_cells(const std::vector<TCell>& cells, const std::vector<int>& which) {
@@ -243,25 +260,8 @@ void TMesh::build_topology() {
     for (std::size_t v = 0; v < vertices_.size(); ++v) vertex_index_[v] = {vertices_[v].x, vertices_[v].y, static_cast<int>(v)};
     std::sort(vertex_index_.begin(), vertex_index_.end());
   }
-  // The sides on each line: horizontal lines y = c carry bottom (pos) and top (neg) sides.
-  std::vector<Line> hlines, vlines;
-  {
-    std::vector<std::pair<std::int64_t, Side>> pos, neg;
-    pos.reserve(nc);
-    neg.reserve(nc);
-    for (int k = 0; k < nc; ++k) {
-      pos.push_back({cells_[k].y0, {cells_[k].x0, cells_[k].x1, k}});
-      neg.push_back({cells_[k].y1, {cells_[k].x0, cells_[k].x1, k}});
-    }
-    hlines = make_lines(pos, neg);
-    pos.clear();
-    neg.clear();
-    for (int k = 0; k < nc; ++k) {
-      pos.push_back({cells_[k].x0, {cells_[k].y0, cells_[k].y1, k}});
-      neg.push_back({cells_[k].x1, {cells_[k].y0, cells_[k].y1, k}});
-    }
-    vlines = make_lines(pos, neg);
-  }
+  // The sides on each line.
+  const std::vector<Line> hlines = make_lines(cells_, true), vlines = make_lines(cells_, false);
 
   // 2. T-junctions (corrected rule), covered quadrants, boundary, regularity.
   for (TVertex& v : vertices_) {

@@ -133,7 +133,4 @@ class TMesh {
   bool partial_boundary_ = false;
 };
 
-/// d_e of the notes: dim of the intersection of the section spaces (root multisets) minus (n-1).
-int common_nonpolynomial_dimension(const std::vector<SectionSpec>& spaces);
-
 }  // namespace iga

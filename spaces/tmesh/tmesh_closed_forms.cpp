@@ -72,7 +72,7 @@ bool TMeshClosedForms::double_double(int element, BilinearForm form, DoubleDoubl
   auto it = cache.matrices.find(key);
   if (it == cache.matrices.end()) {
     it = cache.matrices.emplace(key, DoubleDoubleMatrix()).first;
-    tensor_form_matrix(side_integrals_dd_.at(TMeshSpace::side_x(cell)), side_integrals_dd_.at(TMeshSpace::side_y(cell)),
+    tensor_form_matrix(side_integrals_dd_.at(side_key_x(cell)), side_integrals_dd_.at(side_key_y(cell)),
                        affine_form_terms<DoubleDouble>(form, cell_jacobian(mesh, element)), it->second);
   }
   const DoubleDoubleMatrix& k = it->second;
@@ -110,7 +110,7 @@ bool TMeshClosedForms::extended(int element, BilinearForm form, LongDoubleMatrix
   const TMesh& mesh = space_.mesh();
   const TCell& cell = mesh.cells()[element];
   thread_local LongDoubleMatrix k;  // scratch: no allocation per element
-  tensor_form_matrix(side_integrals_.at(TMeshSpace::side_x(cell)), side_integrals_.at(TMeshSpace::side_y(cell)),
+  tensor_form_matrix(side_integrals_.at(side_key_x(cell)), side_integrals_.at(side_key_y(cell)),
                      affine_form_terms<long double>(form, cell_jacobian(mesh, element)), k);
   symmetric_congruence(space_.extraction().matrix[element].transpose(), k, local);
   return true;

@@ -35,8 +35,8 @@ class TMeshClosedForms final : public ClosedForms {
   const TMeshSpace& space_;
   /// Per (section, side length): moment[a][b](i, k) = ∫_0^1 ∂^a B_i ∂^b B_k in reference
   /// coordinates (a, b <= 2), in long double and in double-double.
-  std::map<TMeshSpace::SideKey, DerivativeMoments<LongDoubleMatrix>> side_integrals_;
-  std::map<TMeshSpace::SideKey, DerivativeMoments<DoubleDoubleMatrix>> side_integrals_dd_;
+  std::map<CellSideKey, DerivativeMoments<LongDoubleMatrix>> side_integrals_;
+  std::map<CellSideKey, DerivativeMoments<DoubleDoubleMatrix>> side_integrals_dd_;
   /// Distinguishes spaces in the per-thread cache of double-double cell matrices.
   std::uint64_t instance_id_ = 0;
 };

@@ -60,8 +60,8 @@ struct TMeshSpace::Core {
   void higher_derivatives(int e, const QuadratureRule& rule, const Eigen::VectorXd& b, unsigned higher,
                           FunctionValues& out) const {
     const TCell& cell = space.mesh().cells()[e];
-    const SectionBernstein& bx = space.bernstein(side_x(cell));
-    const SectionBernstein& by = space.bernstein(side_y(cell));
+    const SectionBernstein& bx = space.bernstein(side_key_x(cell));
+    const SectionBernstein& by = space.bernstein(side_key_y(cell));
     const double hx = bx.h(), hy = by.h();
     const int n = bx.n(), q = rule.size();
     auto derivative = [&](const Eigen::MatrixXd& X, const Eigen::MatrixXd& Y, int ax, int ay) {

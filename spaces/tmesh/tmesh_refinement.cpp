@@ -62,7 +62,7 @@ TMesh refine_admissibly(const TMesh& mesh, const std::vector<int>& marked) {
     for (int c : which) {
       const TCell& cell = mesh.cells()[c];
       if ((cell.x1 - cell.x0) % 2 || (cell.y1 - cell.y0) % 2)
-        throw LatticeExhausted("the T-mesh lattice allows no finer cells (cell " + std::to_string(c) + " is one lattice unit)");
+        throw std::runtime_error("the T-mesh lattice allows no finer cells (cell " + std::to_string(c) + " is one lattice unit)");
     }
     TMesh out = mesh.refined(which);
     if (out.admissibility_problem().empty()) return out;

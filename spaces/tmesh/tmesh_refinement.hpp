@@ -11,17 +11,12 @@
 
 namespace iga {
 
-/// Thrown when a cell to split is already one lattice unit wide (2^-24 of the initial cells).
-struct LatticeExhausted : std::runtime_error {
-  explicit LatticeExhausted(const std::string& what) : std::runtime_error(what) {}
-};
-
 /// Split the `marked` cells into four, and also every cell needed so that
 ///  1. neighbours across a side differ at most by a factor 2 in size (2:1 balance, iterated to a
 ///     fixed point), and
 ///  2. the result is regular and acyclic: if it is not, the side neighbours of every split cell are
 ///     split as well (a one-cell buffer) and the balance closure is repeated, a few times at most.
-/// Throws LatticeExhausted when a cell to split is one lattice unit, std::runtime_error when no admissible mesh is reached. Marked indices out of range throw
+/// Throws std::runtime_error when a cell to split is one lattice unit (2^-24 of the initial cells) or when no admissible mesh is reached. Marked indices out of range throw
 /// std::out_of_range; an empty `marked` returns a copy of the mesh.
 TMesh refine_admissibly(const TMesh& mesh, const std::vector<int>& marked);
 

@@ -20,21 +20,19 @@ TMeshSpace::TMeshSpace(TMesh mesh, int regularity, bool rectangular, std::string
   extraction_ = hermite_extraction(mesh_, r_);
   normalize_basis();
   // Exact lattice lengths as keys: dyadic meshes have a handful of distinct cell sizes.
-  std::map<std::pair<SideKey, SideKey>, int> kind_of;
+  std::map<std::pair<CellSideKey, CellSideKey>, int> kind_of;
+  double mesh_size = 0.0, wh = 0.0;
   for (int c = 0; c < mesh_.num_cells(); ++c) {
     const TCell& cell = mesh_.cells()[c];
-    const SideKey kx = side_x(cell), ky = side_y(cell);
-    if (!bernstein_.count(kx)) bernstein_.emplace(kx, SectionBernstein(mesh_.sections()[cell.section_s], mesh_.width(c)));
-    if (!bernstein_.count(ky)) bernstein_.emplace(ky, SectionBernstein(mesh_.sections()[cell.section_t], mesh_.height(c)));
+    const SectionSpec &sx = mesh_.sections()[cell.section_s], &sy = mesh_.sections()[cell.section_t];
+    const CellSideKey kx = side_key_x(cell), ky = side_key_y(cell);
+    if (!bernstein_.count(kx)) bernstein_.emplace(kx, SectionBernstein(sx, mesh_.width(c)));
+    if (!bernstein_.count(ky)) bernstein_.emplace(ky, SectionBernstein(sy, mesh_.height(c)));
     const auto [it, added] = kind_of.emplace(std::make_pair(kx, ky), static_cast<int>(kinds_.size()));
     if (added) kinds_.push_back(it->first);
     cell_kind_.push_back(it->second);
-  }
-  for (int c = 0; c < mesh_.num_cells(); ++c) mesh_size_ = std::max(mesh_size_, std::hypot(mesh_.width(c), mesh_.height(c)));
-  // Extra degree of every rule for the largest w h of a non-polynomial section.
-  double wh = 0.0;
-  for (int c = 0; c < mesh_.num_cells(); ++c) {
-    const SectionSpec &sx = mesh_.sections()[mesh_.cells()[c].section_s], &sy = mesh_.sections()[mesh_.cells()[c].section_t];
+    mesh_size = std::max(mesh_size, std::hypot(mesh_.width(c), mesh_.height(c)));
+    // Extra degree of every rule for the largest w h of a non-polynomial section.
     if (sx.family != SectionFamily::polynomial) wh = std::max(wh, sx.w * mesh_.width(c));
     if (sy.family != SectionFamily::polynomial) wh = std::max(wh, sy.w * mesh_.height(c));
   }
@@ -54,7 +52,7 @@ TMeshSpace::TMeshSpace(TMesh mesh, int regularity, bool rectangular, std::string
   facts.dimension = extraction_.dimension;
   facts.num_elements = mesh_.num_cells();
   facts.cell_shapes = {CellShape::quadrilateral};
-  facts.mesh_size = mesh_size_;
+  facts.mesh_size = mesh_size;
   facts.degree = section().n;
   facts.continuity = r_;
   facts.affine_elements = true;

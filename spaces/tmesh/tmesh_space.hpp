@@ -72,17 +72,13 @@ class TMeshSpace final : public Space, public LocallyRefinable, public FastEvalu
   const HermiteExtraction& extraction() const { return extraction_; }
   /// The section space of the first cell (all cells share its n).
   const SectionSpec& section() const { return mesh_.sections()[mesh_.cells()[0].section_s]; }
-  int regularity() const { return r_; }
   /// Physical box of a cell.
   void cell_box(int cell, Point2& lo, Point2& hi) const;
   /// A cell side's one-dimensional basis (tmesh.hpp: CellSideKey).
-  using SideKey = CellSideKey;
-  static SideKey side_x(const TCell& c) { return side_key_x(c); }
-  static SideKey side_y(const TCell& c) { return side_key_y(c); }
   /// Bernstein basis of a cell side (shared, immutable after construction).
-  const SectionBernstein& bernstein(const SideKey& side) const { return bernstein_.at(side); }
+  const SectionBernstein& bernstein(const CellSideKey& side) const { return bernstein_.at(side); }
   /// Every cell side kind of the mesh with its Bernstein basis.
-  const std::map<SideKey, SectionBernstein>& bernstein_bases() const { return bernstein_; }
+  const std::map<CellSideKey, SectionBernstein>& bernstein_bases() const { return bernstein_; }
   /// Degree every rule gets beyond the polynomial one (non_polynomial_extra_degree).
   int extra_degree() const { return extra_degree_; }
 
@@ -98,12 +94,11 @@ class TMeshSpace final : public Space, public LocallyRefinable, public FastEvalu
   bool rectangular_;
   std::string domain_;
   HermiteExtraction extraction_;
-  std::map<SideKey, SectionBernstein> bernstein_;
+  std::map<CellSideKey, SectionBernstein> bernstein_;
   /// The local basis of every cell: an index into the distinct pairs (side x, side y) of kinds_.
   std::vector<int> cell_kind_;
-  std::vector<std::pair<SideKey, SideKey>> kinds_;
+  std::vector<std::pair<CellSideKey, CellSideKey>> kinds_;
   std::unique_ptr<const ClosedForms> closed_forms_;
-  double mesh_size_ = 0.0;
   int extra_degree_ = 0;
   GaussRuleCache rules_;
 };

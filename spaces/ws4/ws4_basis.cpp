@@ -106,6 +106,22 @@ class RegionRecurrence {
   std::unordered_map<std::uint64_t, PolyL> memo_;
 };
 
+/// The pieces of the 51 functions on every region (region-major), c_i / 960 times M_{Ξ_i}, in Real.
+template <class Real>
+std::vector<BasicPoly4<Real>> build_pieces(const Ws4Split& split) {
+  const auto& sets = ws4_knot_sets();
+  const int nr = static_cast<int>(split.regions().size());
+  std::vector<BasicPoly4<Real>> pieces(static_cast<size_t>(nr) * Ws4Basis::size);
+  // Regions are independent (a tenth of a second of recurrences in all: worth the threads).
+#pragma omp parallel for schedule(dynamic, 8)
+  for (int r = 0; r < nr; ++r) {
+    RegionRecurrence<Real> rec(split.regions()[r].centroid);
+    for (int i = 0; i < Ws4Basis::size; ++i)
+      pieces[r * Ws4Basis::size + i].add_scaled(Real(sets[i].c) / Real(960), rec.M(sets[i].multiplicity));
+  }
+  return pieces;
+}
+
 }  // namespace
 
 const Ws4Basis& Ws4Basis::reference() {
@@ -113,35 +129,13 @@ const Ws4Basis& Ws4Basis::reference() {
   return basis;
 }
 
-Ws4Basis::Ws4Basis() : split_(Ws4Split::reference()) {
-  const auto& sets = ws4_knot_sets();
-  const int nr = static_cast<int>(split_.regions().size());
-  pieces_.resize(static_cast<size_t>(nr) * size);
-  pieces_extended_.resize(static_cast<size_t>(nr) * size);
-  // Regions are independent (a tenth of a second of recurrences in all: worth the threads).
-#pragma omp parallel for schedule(dynamic, 8)
-  for (int r = 0; r < nr; ++r) {
-    RegionRecurrence<long double> rec(split_.regions()[r].centroid);
-    for (int i = 0; i < size; ++i) {
-      BasicPoly4<long double> scaled;
-      scaled.add_scaled(static_cast<long double>(sets[i].c) / 960, rec.M(sets[i].multiplicity));
-      pieces_[r * size + i] = scaled.cast<double>();
-      pieces_extended_[r * size + i] = scaled;
-    }
-  }
+Ws4Basis::Ws4Basis() : split_(Ws4Split::reference()), pieces_extended_(build_pieces<long double>(split_)) {
+  pieces_.reserve(pieces_extended_.size());
+  for (const BasicPoly4<long double>& p : pieces_extended_) pieces_.push_back(p.cast<double>());
 }
 
 std::vector<BasicPoly4<DoubleDouble>> Ws4Basis::pieces_double_double() const {
-  const auto& sets = ws4_knot_sets();
-  const int nr = static_cast<int>(split_.regions().size());
-  std::vector<BasicPoly4<DoubleDouble>> pieces(static_cast<size_t>(nr) * size);
-#pragma omp parallel for schedule(dynamic, 8)
-  for (int r = 0; r < nr; ++r) {
-    RegionRecurrence<DoubleDouble> rec(split_.regions()[r].centroid);
-    for (int i = 0; i < size; ++i)
-      pieces[r * size + i].add_scaled(DoubleDouble(sets[i].c) / DoubleDouble(960.0), rec.M(sets[i].multiplicity));
-  }
-  return pieces;
+  return build_pieces<DoubleDouble>(split_);
 }
 
 void Ws4Basis::tabulate(const std::vector<Point2>& points, ReferenceDerivatives& out) const {

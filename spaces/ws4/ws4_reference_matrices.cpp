@@ -10,15 +10,25 @@ namespace iga::ws4 {
 
 namespace {
 
-/// Piece `p` and its derivatives ∂x, ∂y, ∂xx, ∂xy, ∂yy as entry k of the six blocks of n in `d`.
-template <class Poly>
-void store_derivatives(const Poly& p, int n, int k, std::vector<Poly>& d) {
-  d[k] = p;
-  d[n + k] = p.derivative(0);
-  d[2 * n + k] = p.derivative(1);
-  d[3 * n + k] = d[n + k].derivative(0);
-  d[4 * n + k] = d[n + k].derivative(1);
-  d[5 * n + k] = d[2 * n + k].derivative(1);
+/// The indices i < n whose piece `piece(i)` is not zero (increasing) into `active`, and each such
+/// piece with its derivatives ∂x, ∂y, ∂xx, ∂xy, ∂yy as entry k (its place in `active`) of the six
+/// blocks of n in `d`. Returns their number.
+template <class Poly, class PieceOf>
+int active_pieces(PieceOf piece, int n, std::vector<int>& active, std::vector<Poly>& d) {
+  active.clear();
+  for (int i = 0; i < n; ++i) {
+    const Poly& p = piece(i);
+    if (p.is_zero()) continue;
+    const int k = static_cast<int>(active.size());
+    active.push_back(i);
+    d[k] = p;
+    d[n + k] = p.derivative(0);
+    d[2 * n + k] = p.derivative(1);
+    d[3 * n + k] = d[n + k].derivative(0);
+    d[4 * n + k] = d[n + k].derivative(1);
+    d[5 * n + k] = d[2 * n + k].derivative(1);
+  }
+  return static_cast<int>(active.size());
 }
 
 using Real = long double;
@@ -114,15 +124,7 @@ const std::vector<MatrixL>& reference_sums() {
   for (size_t f = 0; f < split.fan_triangles().size(); ++f) {
     const int r = split.fan_region()[f];
     if (r != cached_region) {
-      active.clear();
-      for (int i = 0; i < n; ++i) {
-        const BasicPoly4<Real>& p = basis.piece_extended(r, i);
-        if (p.is_zero()) continue;
-        const int k = static_cast<int>(active.size());
-        active.push_back(i);
-        store_derivatives(p, n, k, d);
-      }
-      m = static_cast<int>(active.size());
+      m = active_pieces([&](int i) -> const BasicPoly4<Real>& { return basis.piece_extended(r, i); }, n, active, d);
       for (MatrixL& t : table) t.resize(m, q);
       cached_region = r;
     }
@@ -142,6 +144,31 @@ const std::vector<MatrixL>& reference_sums() {
   return sums;
 }
 
+/// The reference integrals from the integrals pair(p) of kPairs[p], p in [first, last) (a whole
+/// group: the mass matrix 0, the gradient ones 1–3, the Hessian ones 4–9; the other members are
+/// left empty), the transposed blocks through `transpose`.
+template <class Matrix, class Pair, class Transpose>
+ReferenceIntegrals<Matrix> from_pairs(int first, int last, Pair pair, Transpose transpose) {
+  ReferenceIntegrals<Matrix> m;
+  if (first == 0) m.mass = pair(0);
+  if (first <= 1 && last >= 4) {
+    m.grad[0][0] = pair(1);
+    m.grad[0][1] = pair(2);
+    m.grad[1][0] = transpose(m.grad[0][1]);
+    m.grad[1][1] = pair(3);
+  }
+  if (last == 10) {
+    int p = 4;
+    for (int a = 0; a < 3; ++a)
+      for (int b = a; b < 3; ++b) {
+        m.hess[a][b] = pair(p++);
+        // The diagonal blocks are already symmetric; assigning a matrix's own transpose to it aliases.
+        if (b != a) m.hess[b][a] = transpose(m.hess[a][b]);
+      }
+  }
+  return m;
+}
+
 /// The reference matrices from the sums, in double (rounded once) or long double.
 template <class Matrix>
 ReferenceIntegrals<Matrix> build() {
@@ -154,20 +181,7 @@ ReferenceIntegrals<Matrix> build() {
     if (pairs[p][0] == pairs[p][1]) m = m.template triangularView<Eigen::Upper>().toDenseMatrix().template selfadjointView<Eigen::Upper>();
     return m;
   };
-  ReferenceIntegrals<Matrix> m;
-  m.mass = rounded(0);
-  m.grad[0][0] = rounded(1);
-  m.grad[0][1] = rounded(2);
-  m.grad[1][0] = m.grad[0][1].transpose();
-  m.grad[1][1] = rounded(3);
-  int p = 4;
-  for (int a = 0; a < 3; ++a)
-    for (int b = a; b < 3; ++b) {
-      m.hess[a][b] = rounded(p++);
-      // The diagonal blocks are already symmetric; assigning a matrix's own transpose to it aliases.
-      if (b != a) m.hess[b][a] = m.hess[a][b].transpose();
-    }
-  return m;
+  return from_pairs<Matrix>(0, 10, rounded, [](const Matrix& a) { return Matrix(a.transpose()); });
 }
 
 }  // namespace
@@ -184,7 +198,7 @@ const ReferenceIntegrals<LongDoubleMatrix>& ws4_reference_integrals_extended() {
 
 namespace {
 
-/// Total degree of the derivative table j of store_derivatives (value, ∂x, ∂y, ∂xx, ∂xy, ∂yy)
+/// Total degree of the derivative table j of active_pieces (value, ∂x, ∂y, ∂xx, ∂xy, ∂yy)
 /// of a quartic piece.
 int derivative_degree(int j) { return j == 0 ? 4 : j < 3 ? 3 : 2; }
 
@@ -231,15 +245,7 @@ std::vector<DoubleDoubleMatrix> reference_sums_double_double(int first_pair, int
   for (int f = num_fans * chunk / kChunks; f < num_fans * (chunk + 1) / kChunks; ++f) {
     const int r = split.fan_region()[f];
     if (r != cached_region) {
-      active.clear();
-      for (int i = 0; i < n; ++i) {
-        const BasicPoly4<DD>& p = pieces[r * n + i];
-        if (p.is_zero()) continue;
-        const int k = static_cast<int>(active.size());
-        active.push_back(i);
-        store_derivatives(p, n, k, d);
-      }
-      m = static_cast<int>(active.size());
+      m = active_pieces([&](int i) -> const BasicPoly4<DD>& { return pieces[r * n + i]; }, n, active, d);
       cached_region = r;
     }
     DD x[kMaxPoints], y[kMaxPoints];
@@ -317,23 +323,7 @@ const ReferenceIntegrals<DoubleDoubleMatrix>& ws4_reference_integrals_double_dou
   auto build_group = [](int group) {
     const int first[3] = {0, 1, 4}, last[3] = {1, 4, 10};
     const std::vector<DoubleDoubleMatrix> sums = reference_sums_double_double(first[group], last[group]);
-    ReferenceIntegrals<DoubleDoubleMatrix> d;
-    if (group == 0) d.mass = sums[0];
-    if (group == 1) {
-      d.grad[0][0] = sums[1];
-      d.grad[0][1] = sums[2];
-      d.grad[1][0] = transposed(sums[2]);
-      d.grad[1][1] = sums[3];
-    }
-    if (group == 2) {
-      int p = 4;
-      for (int a = 0; a < 3; ++a)
-        for (int b = a; b < 3; ++b) {
-          d.hess[a][b] = sums[p++];
-          if (b != a) d.hess[b][a] = transposed(d.hess[a][b]);
-        }
-    }
-    return d;
+    return from_pairs<DoubleDoubleMatrix>(first[group], last[group], [&](int p) { return sums[p]; }, transposed);
   };
   switch (group) {
     case 0: {

@@ -13,7 +13,7 @@
 #include "spaces/ws4/ws4_evaluator.hpp"
 #include "spaces/ws4/ws4_hermite_transform.hpp"
 #include "spaces/ws4/ws4_reference_matrices.hpp"
-#include "spaces/ws4/ws4_sample_cell.hpp"
+#include "spaces/ws4/ws4_split.hpp"
 
 namespace iga::ws4 {
 
@@ -92,7 +92,6 @@ Ws4Space::Ws4Space(Triangulation triangulation, std::string description, SpaceEx
       const auto& e = mesh.edge(mesh.triangle_edge(t, k));
       mesh_size_ = std::max(mesh_size_, (mesh.vertices()[e[0]] - mesh.vertices()[e[1]]).norm());
     }
-  h_ = mesh_size_;
   compute_vertex_frames();
   std::vector<int> elements;
   if (extent == SpaceExtent::whole) {
@@ -124,7 +123,10 @@ Ws4Space::Ws4Space(Triangulation triangulation, std::string description, SpaceEx
   for (std::size_t part = 0; part < mesh_->part_names().size(); ++part)
     facts.boundary_parts.emplace_back(mesh_->part_names()[part], part_edges(static_cast<int>(part)));
   facts.all_boundary_edges = part_edges(-1);
-  facts.pieces = split_sample_cell(0);  // the 342 fan triangles over the 178 split vertices
+  // The 342 fan triangles over the 178 split vertices: Space::sample_cell subdivides them.
+  const Ws4Split& split = Ws4Split::reference();
+  for (int v = 0; v < static_cast<int>(split.vertices().size()); ++v) facts.pieces.points.push_back(split.vertex_point(v));
+  for (const auto& t : split.fan_triangles()) facts.pieces.cells.push_back({t[0], t[1], t[2]});
   facts.pieces_across = 8;
   set_facts(std::move(facts));
 }
@@ -133,7 +135,6 @@ Ws4Space::Ws4Space(const Ws4Space& skeleton, const std::vector<int>& elements)
     : mesh_(skeleton.mesh_),
       description_(skeleton.description_),
       mesh_size_(skeleton.mesh_size_),
-      h_(skeleton.h_),
       vertex_frame_(skeleton.vertex_frame_) {
   check_element_set(elements, mesh_->num_triangles(), "Ws4Space::build_on");
   build_extractions(elements);
@@ -228,9 +229,9 @@ ElementDofGeometry Ws4Space::dof_geometry(int element) const {
   for (int a = 0; a < 3; ++a) {
     g.corner[a] = mesh_->vertices()[tri[a]];
     g.frame[a] = (*vertex_frame_)[tri[a]];
-    g.vertex_scale[a] = h_;
+    g.vertex_scale[a] = mesh_size_;
     g.edge_reversed[a] = mesh_->edge(mesh_->triangle_edge(element, a))[0] != tri[a];
-    g.edge_scale[a] = h_;
+    g.edge_scale[a] = mesh_size_;
   }
   return g;
 }
@@ -244,7 +245,7 @@ Eigen::MatrixXd Ws4Space::element_functionals(int element) const {
   int m = 0;
   auto put = [&](const Point2& xi, const std::vector<Point2>& dirs) {
     basis.directional_derivatives(xi, dirs, row);
-    const double scale = std::pow(h_, static_cast<int>(dirs.size()));
+    const double scale = std::pow(mesh_size_, static_cast<int>(dirs.size()));
     for (int i = 0; i < Ws4Basis::size; ++i) g(m, i) = scale * row[i];
     ++m;
   };
@@ -279,7 +280,7 @@ Eigen::VectorXd Ws4Space::interpolate(const Jet3& f) const {
     for (int k = 0; k < dofs_per_vertex; ++k) {
       std::vector<Point2> dirs(vertex_dx[k], Point2((*vertex_frame_)[v].col(0)));
       dirs.insert(dirs.end(), vertex_dy[k], Point2((*vertex_frame_)[v].col(1)));
-      u(dofs_per_vertex * v + k) = std::pow(h_, vertex_dx[k] + vertex_dy[k]) * directional_from_jet(d, dirs);
+      u(dofs_per_vertex * v + k) = std::pow(mesh_size_, vertex_dx[k] + vertex_dy[k]) * directional_from_jet(d, dirs);
     }
   }
   const int edge0 = dofs_per_vertex * mesh_->num_vertices();
@@ -295,7 +296,7 @@ Eigen::VectorXd Ws4Space::interpolate(const Jet3& f) const {
         case 2: dn = nx * nx * d[3] + 2 * nx * ny * d[4] + ny * ny * d[5]; break;
         default: dn = nx * nx * nx * d[6] + 3 * nx * nx * ny * d[7] + 3 * nx * ny * ny * d[8] + ny * ny * ny * d[9];
       }
-      u(edge0 + dofs_per_edge * e + k) = std::pow(h_, edge_order[k]) * dn;
+      u(edge0 + dofs_per_edge * e + k) = std::pow(mesh_size_, edge_order[k]) * dn;
     }
   }
   const int tri0 = edge0 + dofs_per_edge * mesh_->num_edges();

@@ -58,7 +58,7 @@ class Ws4Space final : public Space, public FastEvaluator, public BuildsOnElemen
 
   /// Facts: type "ws4"; parameters triangles, vertices, edges, domain; degree 4, C3 across
   /// macro-edges (note §2.3), affine; error rules of degree 2p on each of the 342 pieces (see the
-  /// constructor); drawn on its pieces (ws4_sample_cell.hpp), so that linear cells never straddle
+  /// constructor); drawn on its pieces (Space::sample_cell), so that linear cells never straddle
   /// one; boundary parts of the triangulation (InputError for an unknown name).
   std::unique_ptr<Evaluator> make_evaluator() const override;
   /// The explicit core: the 51 reference simplex splines, C_K, the affine map.
@@ -119,7 +119,7 @@ class Ws4Space final : public Space, public FastEvaluator, public BuildsOnElemen
 
   std::shared_ptr<const Triangulation> mesh_;
   std::string description_;
-  double mesh_size_ = 0.0, h_ = 1.0;
+  double mesh_size_ = 0.0;  ///< longest edge; also the h that scales the derivative DOFs
   ShapeClasses classes_;
   std::vector<Eigen::MatrixXd> class_extraction_;
   std::unique_ptr<const ClosedForms> closed_forms_;

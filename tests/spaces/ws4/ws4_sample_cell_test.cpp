@@ -2,10 +2,9 @@
 /// Ws4Space::sample_cell draws on the split: cells tile the reference triangle, are
 /// counterclockwise and each lies inside one polynomial piece (region) of the split.
 
-#include "spaces/ws4/ws4_sample_cell.hpp"
-
 #include <gtest/gtest.h>
 
+#include "spaces/ws4/ws4_space.hpp"
 #include "spaces/ws4/ws4_split.hpp"
 
 namespace iga::ws4 {
@@ -35,9 +34,16 @@ void check_tiling(const SampleCell& s, int expected_points, int expected_cells) 
   EXPECT_NEAR(area, 0.5, 1e-13);
 }
 
-TEST(Ws4SampleCell, SplitVerticesAndFanTriangles) { check_tiling(split_sample_cell(8), 178, 342); }
+/// One reference triangle.
+Ws4Space one_triangle() {
+  return Ws4Space(Triangulation({{0, 0}, {1, 0}, {0, 1}}, {{0, 1, 2}}, {"boundary"}, [](int, int) { return 0; }));
+}
 
-TEST(Ws4SampleCell, SubdividedFanTriangles) { check_tiling(split_sample_cell(16), 342 * 6, 342 * 4); }
+TEST(Ws4SampleCell, SplitVerticesAndFanTriangles) { check_tiling(one_triangle().sample_cell(0, 8), 178, 342); }
+
+TEST(Ws4SampleCell, SubdividedFanTriangles) {
+  check_tiling(one_triangle().sample_cell(0, 16), 342 * 6, 342 * 4);
+}
 
 }  // namespace
 }  // namespace iga::ws4
