@@ -15,7 +15,7 @@
 
 namespace iga {
 
-/// petsc: the distributed PETSc path (solver/petsc_backend.hpp), chosen before this function.
+/// petsc: the distributed PETSc path (solver/petsc_backend.cpp), chosen before this function.
 enum class SolverKind { cholmod, umfpack, petsc };
 
 struct SolveReport {

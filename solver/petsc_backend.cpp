@@ -1,4 +1,13 @@
-// The distributed linear backend of the PETSc plugin (petsc_backend.hpp says what it does).
+// The distributed linear backend of the PETSc plugin (PetscRuntime::make_linear_backend): the
+// PETSc backend of the one pipeline (pipeline.hpp), distributed over the MPI ranks (one rank
+// without mpirun). Each rank assembles the matrices of its elements (petsc_distribution.hpp: of
+// its part of the space, or of the whole space's partition) with the serial assembler's
+// double-double kernel, the essential conditions eliminated, into a distributed (MPIAIJ) matrix
+// preallocated from the element couplings; keeps them in double-double for the right-hand side and
+// the refinement residuals (petsc_extended_residual.hpp); the KSP of `settings` solves; loads,
+// errors and the sums of surface problems are summed over the ranks. Written against the Space
+// interface only. The KSP's failure is a NumericalError (with PETSc's reason and the last
+// residual norms) on every rank; input errors found on any rank are thrown on every rank.
 #include <dlfcn.h>
 #include <petscksp.h>
 
@@ -221,7 +230,7 @@ int refine_solution(PetscObjects& p, const PetscDistribution& layout, ExtendedRe
   return steps;
 }
 
-/// The backend of petsc_backend.hpp (its file comment says how it works).
+/// The backend of this file (its file comment says how it works).
 class PetscBackend final : public LinearBackend {
  public:
   PetscBackend(const Space& space, const PetscSettings& settings, const ProgressSink& say)

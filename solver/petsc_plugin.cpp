@@ -10,7 +10,6 @@
 
 #include "config/companion_file.hpp"
 #include "config/errors.hpp"
-#include "solver/petsc_backend.hpp"
 #include "solver/petsc_runtime.hpp"
 #include "solver/petsc_session.hpp"
 
@@ -78,13 +77,6 @@ bool slepc_available() {
 #else
   return false;
 #endif
-}
-
-std::unique_ptr<LinearBackend> make_petsc_backend(const Space& space, const PetscSettings& settings,
-                                                  const ProgressSink& progress) {
-  // Without PETSc, petsc_runtime(true) throws the InputError that says so.
-  ensure_petsc_initialised();
-  return petsc_runtime(true)->make_linear_backend(space, settings, progress);
 }
 
 }  // namespace iga

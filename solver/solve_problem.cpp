@@ -5,7 +5,6 @@
 #include "config/errors.hpp"
 #include "config/progress.hpp"
 #include "solver/eigen_pipeline.hpp"
-#include "solver/petsc_backend.hpp"
 #include "solver/petsc_runtime.hpp"
 #include "solver/petsc_session.hpp"
 #include "solver/shell_problem.hpp"
@@ -73,7 +72,8 @@ DiscreteSolution solve_problem(const Space& space, const ProblemSpec& problem, S
     SerialBackend backend(solver);
     return solve_pipeline(*f, backend, progress);
   }
-  const std::unique_ptr<LinearBackend> backend = make_petsc_backend(space, petsc, say);
+  ensure_petsc_initialised();  // without PETSc, petsc_runtime(true) throws the InputError that says so
+  const std::unique_ptr<LinearBackend> backend = petsc_runtime(true)->make_linear_backend(space, petsc, say);
   return solve_pipeline(*f, *backend, say);
 }
 

@@ -2,7 +2,7 @@
 /// @file
 /// Solve one boundary value problem on one space: the pipeline (pipeline.hpp) with the problem's
 /// formulation (planar or surface) and the backend the solver kind asks for (serial CHOLMOD/UMFPACK
-/// here, PETSc in petsc_backend.hpp). Written against the Space interface only.
+/// here, PETSc in petsc_backend.cpp). Written against the Space interface only.
 
 #include <Eigen/Core>
 #include <memory>
@@ -55,7 +55,7 @@ LinearSystem assemble_linear_system(const Space& space, const ProblemSpec& probl
 /// `progress`, when given, is told when each phase starts (assemble, factorize and solve, errors).
 /// With problem.eigen, the eigenproblem instead (eigen_pipeline.hpp): eigenvalues and modes, by
 /// Spectra serially and by SLEPc with SolverKind::petsc (slepc_eigen_backend.cpp).
-/// SolverKind::petsc solves with PETSc as `petsc` says (make_petsc_backend; collective over the ranks).
+/// SolverKind::petsc solves with PETSc as `petsc` says (PetscRuntime::make_linear_backend; collective over the ranks).
 DiscreteSolution solve_problem(const Space& space, const ProblemSpec& problem, SolverKind solver,
                                const ProgressSink& progress = {}, const PetscSettings& petsc = {});
 
