@@ -416,9 +416,7 @@ StudyResult run_study(const StudySettings& settings, const ProgressSink& progres
     if (on_level) on_level(level, work, sol);  // after marking: the outputs show η_K and the marked elements
     result.estimators.push_back(estimator);
     result.rows.push_back(sol.result);
-    result.solver_methods.push_back(sol.solve.method);
-    result.relative_residuals.push_back(sol.solve.relative_residual);
-    result.refinement_steps.push_back(sol.solve.refinement_steps);
+    result.solves.push_back(sol.solve);
     result.space_parameters = space->parameters();
     result.space_type = space->type();
     result.surface = space->surface_patches();

@@ -81,9 +81,7 @@ struct StudyResult {
   /// Spaces on a smooth surface: the surface (the same at every level), for the outputs.
   std::shared_ptr<const SurfacePatches> surface;
   OptimalRates expected;     ///< for the space degree and PDE
-  std::vector<std::string> solver_methods;  ///< per level
-  std::vector<double> relative_residuals;   ///< per level
-  std::vector<int> refinement_steps;        ///< per level (SolveReport::refinement_steps)
+  std::vector<SolveReport> solves;  ///< per level: method, relative residual, refinement steps
   /// Per level, (Σ η_K²)^{1/2} of the residual indicator (adaptive runs; nullopt otherwise).
   std::vector<std::optional<double>> estimators;
   bool adaptive = false;
