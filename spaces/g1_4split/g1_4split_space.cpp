@@ -70,7 +70,7 @@ FaceGeometry fitted_geometry(const G14Basis& basis, const QuadTopology& topology
                                   : project_geometry(basis, bilinear_geometry(mesh, basis.bspline));
 }
 
-/// The smallest certified det J bound over the faces (check_geometry's margin below).
+/// The smallest certified det J bound over the faces (check_face_geometry's margin below).
 constexpr double kCertifiedJacobian = 1e-8;
 double level0_jacobian_bound(const SplitBSpline& b, const FaceGeometry& g) {
   double bound = 1e300;
@@ -182,10 +182,6 @@ G14Space::G14Space(const PatchMesh& coarse, const G14Options& options) : options
         G14Basis counted;
         counted.bspline = basis_.bspline;
         counted.numbering = G14LocalProblems(fine, gluing_, counted.bspline).count_functions();
-        const G14Numbering& n = counted.numbering;
-        counted.vertex_functions = n.vertex_first.back();
-        counted.edge_functions = n.edge_first.back() - n.vertex_first.back();
-        counted.face_functions = fine.num_faces() * n.per_face;
         basis_ = std::move(counted);
       } else {
         basis_ = build_g14_basis(fine, gluing_, options.degree, options.regularity);
@@ -207,7 +203,7 @@ G14Space::G14Space(const PatchMesh& coarse, const G14Options& options) : options
     nested_ = std::make_shared<const NestedGeometry>(basis_.bspline, std::move(geometry_), options.level);
     geometry_ = {};
   }
-  // Every face's map, in order (check_geometry's first failing face), and the mesh size: one
+  // Every face's map, in order (check_face_geometry's first failing face), and the mesh size: one
   // visit of each face (a skeleton subdivides each ancestor once).
   double mesh_size = 0.0;
   {
@@ -285,9 +281,6 @@ G14Space::G14Space(std::shared_ptr<const G14Space> skeleton, const std::vector<i
   const QuadTopology& t = *topology_;
   basis_.bspline = skeleton->basis_.bspline;
   basis_.numbering = skeleton->basis_.numbering;
-  basis_.vertex_functions = skeleton->basis_.vertex_functions;
-  basis_.edge_functions = skeleton->basis_.edge_functions;
-  basis_.face_functions = skeleton->basis_.face_functions;
   const G14Numbering& n = basis_.numbering;
   std::vector<std::vector<int>> dofs(elements.size());
   for (std::size_t s = 0; s < elements.size(); ++s) {
