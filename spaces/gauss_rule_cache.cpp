@@ -8,14 +8,6 @@ namespace iga {
 
 namespace {
 
-/// The rule stored under `key`, made by `make` on first use (caller holds the lock).
-template <class Map, class Key, class Make>
-RulePtr cached(Map& rules, const Key& key, Make&& make) {
-  RulePtr& r = rules[key];
-  if (!r) r = std::make_shared<const QuadratureRule>(make());
-  return r;
-}
-
 /// Gauss rule exact for `degree` on each of `pieces` equal parts of [0,1] (x coordinate).
 QuadratureRule gauss_on_parts(int degree, int pieces) {
   const QuadratureRule g = gauss_legendre_for_degree(degree);
@@ -32,11 +24,17 @@ QuadratureRule gauss_on_parts(int degree, int pieces) {
 
 }  // namespace
 
-RulePtr GaussRuleCache::cell(int degree) const {
+RulePtr GaussRuleCache::get(Kind kind, int edge, int degree, const std::function<QuadratureRule(int)>& make) const {
   degree = std::max(degree, 0);
   std::lock_guard<std::mutex> lock(mutex_);
-  return cached(cells_, degree, [&] {
-    const QuadratureRule ref = tensor_gauss(degree);
+  RulePtr& r = rules_[{kind, edge, degree}];
+  if (!r) r = std::make_shared<const QuadratureRule>(make(degree));
+  return r;
+}
+
+RulePtr GaussRuleCache::cell(int degree) const {
+  return get(kCell, 0, degree, [this](int d) {
+    const QuadratureRule ref = tensor_gauss(d);
     if (pieces_ == 1) return ref;
     std::vector<QuadratureRule> parts;
     for (int j = 0; j < pieces_; ++j)
@@ -47,29 +45,21 @@ RulePtr GaussRuleCache::cell(int degree) const {
 }
 
 RulePtr GaussRuleCache::edge(int edge, int degree) const {
-  degree = std::max(degree, 0);
-  std::lock_guard<std::mutex> lock(mutex_);
-  return cached(edges_, std::make_pair(edge, degree),
-                [&] { return edge_rule(CellShape::quadrilateral, edge, gauss_on_parts(degree, pieces_)); });
+  return get(kEdge, edge, degree,
+             [&](int d) { return edge_rule(CellShape::quadrilateral, edge, gauss_on_parts(d, pieces_)); });
 }
 
 RulePtr GaussRuleCache::triangle(int degree) const {
-  degree = std::max(degree, 0);
-  std::lock_guard<std::mutex> lock(mutex_);
-  return cached(triangles_, degree, [&] { return triangle_rule(degree); });
+  return get(kTriangle, 0, degree, [](int d) { return triangle_rule(d); });
 }
 
 RulePtr GaussRuleCache::triangle_edge(int edge, int degree) const {
-  degree = std::max(degree, 0);
-  std::lock_guard<std::mutex> lock(mutex_);
-  return cached(triangle_edges_, std::make_pair(edge, degree),
-                [&] { return edge_rule(CellShape::triangle, edge, gauss_on_parts(degree, pieces_)); });
+  return get(kTriangleEdge, edge, degree,
+             [&](int d) { return edge_rule(CellShape::triangle, edge, gauss_on_parts(d, pieces_)); });
 }
 
 RulePtr GaussRuleCache::made(int degree, const std::function<QuadratureRule()>& make) const {
-  degree = std::max(degree, 0);
-  std::lock_guard<std::mutex> lock(mutex_);
-  return cached(made_, degree, make);
+  return get(kMade, 0, degree, [&](int) { return make(); });
 }
 
 }  // namespace iga

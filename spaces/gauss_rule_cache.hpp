@@ -9,7 +9,7 @@
 #include <functional>
 #include <map>
 #include <mutex>
-#include <utility>
+#include <tuple>
 
 #include "quadrature/quadrature_rule.hpp"
 
@@ -31,13 +31,13 @@ class GaussRuleCache {
   RulePtr made(int degree, const std::function<QuadratureRule()>& make) const;
 
  private:
+  enum Kind { kCell, kEdge, kTriangle, kTriangleEdge, kMade };
+  /// The rule of (kind, edge, max(degree, 0)), made by `make` (given that degree) on first use.
+  RulePtr get(Kind kind, int edge, int degree, const std::function<QuadratureRule(int)>& make) const;
+
   int pieces_;
   mutable std::mutex mutex_;
-  mutable std::map<int, RulePtr> cells_;
-  mutable std::map<std::pair<int, int>, RulePtr> edges_;
-  mutable std::map<int, RulePtr> triangles_;
-  mutable std::map<std::pair<int, int>, RulePtr> triangle_edges_;
-  mutable std::map<int, RulePtr> made_;
+  mutable std::map<std::tuple<int, int, int>, RulePtr> rules_;
 };
 
 }  // namespace iga

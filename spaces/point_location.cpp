@@ -30,18 +30,21 @@ Point2 clamp_to_cell(CellShape shape, Point2 r) {
 
 }  // namespace
 
+QuadratureRule reference_samples(CellShape shape) {
+  QuadratureRule out;
+  for (int j = 0; j <= 4; ++j)
+    for (int i = 0; i <= 4; ++i)
+      if (shape == CellShape::quadrilateral || i + j <= 4) out.points.emplace_back(i / 4.0, j / 4.0);
+  out.weights.assign(out.points.size(), 0.0);
+  return out;
+}
+
 PointLocator::PointLocator(SpacePtr space) : space_(std::move(space)) {
   if (space_->ambient_dimension() != 2) throw std::invalid_argument("points can be located in planar spaces only");
   const auto evaluator = space_->make_evaluator();
   // A 5 x 5 sample of each element (its triangle part for triangles): two rules for all elements.
-  QuadratureRule square, triangle;
-  for (int j = 0; j <= 4; ++j)
-    for (int i = 0; i <= 4; ++i) {
-      square.points.emplace_back(i / 4.0, j / 4.0);
-      if (i + j <= 4) triangle.points.emplace_back(i / 4.0, j / 4.0);
-    }
-  square.weights.assign(square.points.size(), 0.0);
-  triangle.weights.assign(triangle.points.size(), 0.0);
+  const QuadratureRule square = reference_samples(CellShape::quadrilateral);
+  const QuadratureRule triangle = reference_samples(CellShape::triangle);
   PointValues pv;
   for (int e = 0; e < space_->num_elements(); ++e) {
     evaluator->evaluate_geometry(e, space_->cell_shape(e) == CellShape::quadrilateral ? square : triangle, pv);

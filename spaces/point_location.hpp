@@ -14,6 +14,9 @@
 
 namespace iga {
 
+/// Samples of the reference cell, weights 0: a 5 x 5 grid (square) or its part in the triangle.
+QuadratureRule reference_samples(CellShape shape);
+
 /// A physical point's element and reference coordinates.
 struct PointLocation {
   int element = -1;

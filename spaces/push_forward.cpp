@@ -119,12 +119,6 @@ void contract_local_derivatives(const LocalTables& tables, const Eigen::VectorXd
   }
 }
 
-void integrate_extracted(const Extraction& extraction, const Eigen::MatrixXd& value_table,
-                         const Eigen::VectorXd& weights, Eigen::VectorXd& local) {
-  const Eigen::VectorXd weighted = value_table * weights;
-  local.noalias() = extraction * weighted;
-}
-
 void take_geometry(const std::vector<GeometryJet>& jets, PointValues& out) {
   const auto q = static_cast<Eigen::Index>(jets.size());
   out.x.resize(2, q);

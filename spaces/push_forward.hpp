@@ -37,11 +37,6 @@ void extract_reference_derivatives(const Extraction& extraction, const LocalTabl
 void contract_local_derivatives(const LocalTables& tables, const Eigen::VectorXd& local, unsigned flags,
                                 ReferenceDerivatives& one);
 
-/// Σ_q weights(q) φ_i(x_q) for the active functions: tables' values times weights, then the
-/// extraction (the load vector's transposed evaluation).
-void integrate_extracted(const Extraction& extraction, const Eigen::MatrixXd& value_table,
-                         const Eigen::VectorXd& weights, Eigen::VectorXd& local);
-
 /// out.x and out.jacobian from the geometry jets alone (an evaluator's evaluate_geometry).
 void take_geometry(const std::vector<GeometryJet>& jets, PointValues& out);
 

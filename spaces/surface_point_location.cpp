@@ -22,15 +22,6 @@ Point2 clamp_into_surface_cell(CellShape shape, Point2 r) {
   return r;
 }
 
-/// Samples of the reference cell: a 5 x 5 grid (square) or its part in the triangle.
-std::vector<Point2> samples(CellShape shape) {
-  std::vector<Point2> out;
-  for (int j = 0; j <= 4; ++j)
-    for (int i = 0; i <= 4; ++i)
-      if (shape == CellShape::quadrilateral || i + j <= 4) out.emplace_back(i / 4.0, j / 4.0);
-  return out;
-}
-
 }  // namespace
 
 namespace {
@@ -44,9 +35,7 @@ void surface_candidates(const Space& space, const Eigen::Vector3d& x, Space::Eva
   std::vector<Point2> start(space.num_elements());
   PointValues g;
   for (int e = 0; e < space.num_elements(); ++e) {
-    QuadratureRule rule;
-    rule.points = samples(space.cell_shape(e));
-    rule.weights.assign(rule.points.size(), 0.0);
+    const QuadratureRule rule = reference_samples(space.cell_shape(e));
     evaluator.evaluate_geometry(e, rule, g);
     double best = std::numeric_limits<double>::infinity();
     for (int k = 0; k < rule.size(); ++k)

@@ -3,8 +3,6 @@
 #include <algorithm>
 #include <cmath>
 
-#include "config/errors.hpp"
-
 namespace iga {
 
 namespace {
@@ -45,45 +43,22 @@ std::vector<std::vector<BoundaryEdge>> group(const PatchMesh& mesh) {
 
 }  // namespace
 
-std::vector<std::string> boundary_part_names(const PatchMesh& mesh) {
-  if (!mesh.boundary_groups().empty()) {
-    std::vector<std::string> names;
-    for (const auto& [name, edges] : mesh.boundary_groups()) names.push_back(name);
-    return names;
-  }
-  const auto g = group(mesh);
-  std::vector<std::string> names;
-  for (int s = 0; s < 4; ++s)
-    if (!g[s].empty()) names.push_back(kSides[s]);
-  return names;
-}
-
-std::vector<BoundaryEdge> boundary_part_edges(const PatchMesh& mesh, const std::string& name) {
+void set_boundary_parts(const PatchMesh& mesh, SpaceFacts& facts) {
   auto g = group(mesh);
-  if (name == "all") return g[4];
+  facts.all_boundary_edges = g[4];
   if (!mesh.boundary_groups().empty()) {
-    const auto it = mesh.boundary_groups().find(name);
-    if (it != mesh.boundary_groups().end()) {
-      std::vector<BoundaryEdge> out;
-      for (const auto& [a, b] : it->second) {
+    for (const auto& [name, ends] : mesh.boundary_groups()) {
+      std::vector<BoundaryEdge> edges;
+      for (const auto& [a, b] : ends) {
         const MeshEdge& e = mesh.edge(mesh.find_edge(a, b));
-        out.push_back({e.first.face, e.first.local_edge});
+        edges.push_back({e.first.face, e.first.local_edge});
       }
-      return out;
+      facts.boundary_parts.emplace_back(name, std::move(edges));
     }
   } else {
     for (int s = 0; s < 4; ++s)
-      if (name == kSides[s] && !g[s].empty()) return g[s];
+      if (!g[s].empty()) facts.boundary_parts.emplace_back(kSides[s], std::move(g[s]));
   }
-  std::string valid = "all";
-  for (const std::string& n : boundary_part_names(mesh)) valid += ", " + n;
-  throw InputError("unknown boundary '" + name + "' of multipatch domain '" + mesh.name() + "' (valid: " + valid + ")");
-}
-
-void set_boundary_parts(const PatchMesh& mesh, SpaceFacts& facts) {
-  facts.all_boundary_edges = boundary_part_edges(mesh, "all");
-  for (const std::string& name : boundary_part_names(mesh))
-    facts.boundary_parts.emplace_back(name, boundary_part_edges(mesh, name));
 }
 
 }  // namespace iga

@@ -14,14 +14,8 @@
 
 namespace iga {
 
-/// The group names (in order), or the nonempty sides among left, right, bottom, top, in that order.
-std::vector<std::string> boundary_part_names(const PatchMesh& mesh);
-
-/// Boundary edges of part `name` ("all": every boundary edge). Throws InputError for a name that
-/// is not "all" and not in boundary_part_names (the message lists the valid names).
-std::vector<BoundaryEdge> boundary_part_edges(const PatchMesh& mesh, const std::string& name);
-
-/// Every part of boundary_part_names and "all" into the facts of a space on `mesh`.
+/// The parts into the facts of a space on `mesh`: "all" (every boundary edge), then the group
+/// names (in order), or the nonempty sides among left, right, bottom, top, in that order.
 void set_boundary_parts(const PatchMesh& mesh, SpaceFacts& facts);
 
 }  // namespace iga

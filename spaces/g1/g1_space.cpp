@@ -99,25 +99,17 @@ G1Space::G1Space(std::shared_ptr<const PatchMesh> mesh, int k, SpaceExtent exten
 }
 
 G1Space::G1Space(const G1Space& from, const std::vector<int>& elements)
-    : mesh_(from.mesh_), gluing_(from.gluing_), numbering_(from.numbering_), slot_(mesh_->num_faces(), -1) {
-  if (numbering_) {
-    // The gluing of every edge again (a skeleton does not keep it: 80 bytes per edge), for the
-    // time of this construction only.
-    basis_ = build_g1_basis_on(*mesh_, gluing_from_geometry(*mesh_), *numbering_, elements);
-  } else {  // a whole space's entries: copied
-    basis_.degree = from.basis_.degree;
-    for (int e : elements) {
-      basis_.face_dofs.push_back(from.basis_.face_dofs[e]);
-      basis_.extraction.push_back(from.basis_.extraction[e]);
-    }
-    whole_face_dofs_ = std::make_shared<const std::vector<std::vector<int>>>(from.basis_.face_dofs);
-  }
+    : mesh_(from.mesh_), numbering_(from.numbering_), slot_(mesh_->num_faces(), -1) {
+  // The gluing of every edge again (a skeleton does not keep it: 80 bytes per edge), for the
+  // time of this construction only.
+  basis_ = build_g1_basis_on(*mesh_, gluing_from_geometry(*mesh_), *numbering_, elements);
   for (size_t s = 0; s < elements.size(); ++s) slot_[elements[s]] = static_cast<int>(s);
   set_facts(from.facts());
 }
 
 SpacePtr G1Space::build_on(const std::vector<int>& elements) const {
   check_element_set(elements, mesh_->num_faces(), "G1Space::build_on");
+  if (!numbering_) return shared_from_this();  // a whole space is built on every element
   return std::shared_ptr<const G1Space>(new G1Space(*this, elements));
 }
 
@@ -128,8 +120,7 @@ const std::vector<EdgeGluing>& G1Space::gluing() const {
 
 void G1Space::element_dofs(int element, std::vector<int>& out) const {
   if (slot_[element] >= 0) out = basis_.face_dofs[slot_[element]];
-  else if (numbering_) numbering_->face_dofs(*mesh_, element, out);
-  else out = (*whole_face_dofs_)[element];
+  else numbering_->face_dofs(*mesh_, element, out);
 }
 
 std::vector<InteriorEdge> G1Space::interior_edges() const {

@@ -53,15 +53,15 @@ class G1Space final : public Space, public BuildsOnElements {
   bool built_on(int element) const override { return slot_[element] >= 0; }
 
   const PatchMesh& mesh() const { return *mesh_; }
-  /// The gluing data of every edge: kept by the whole space (and its parts) only, else std::logic_error.
+  /// The gluing data of every edge: kept by the whole space only, else std::logic_error.
   const std::vector<EdgeGluing>& gluing() const;
   /// The whole space's basis, indexed by face (a skeleton's is empty; a space built on some
   /// elements has their entries only, in their order, and no `info`).
   const G1Basis& basis() const { return basis_; }
 
  private:
-  /// `from` built on `elements`: their local problems solved (from a skeleton) or their entries
-  /// copied (from a whole space).
+  /// `from` (a skeleton or a space built on some of its elements) built on `elements`: their local
+  /// problems solved.
   G1Space(const G1Space& from, const std::vector<int>& elements);
 
   std::shared_ptr<const PatchMesh> mesh_;
@@ -69,8 +69,6 @@ class G1Space final : public Space, public BuildsOnElements {
   std::shared_ptr<const G1Numbering> numbering_;  ///< skeletons and their parts; null for the whole
   G1Basis basis_;                                 ///< face_dofs, extraction: per built element
   std::vector<int> slot_;                         ///< per face: its entry in basis_, −1 if not built
-  /// A whole space's face_dofs, kept by a space built on some elements of it (not of a skeleton).
-  std::shared_ptr<const std::vector<std::vector<int>>> whole_face_dofs_;
 
   GaussRuleCache rules_;
 };

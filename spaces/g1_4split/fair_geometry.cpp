@@ -24,7 +24,7 @@ Eigen::MatrixXd derivative_gram_1d(const SplitBSpline& b, int n) {
     for (int j = 0; j < n; ++j) D = ((k - j) * (D.bottomRows(D.rows() - 1) - D.topRows(D.rows() - 1))).eval();
     D *= std::pow(2.0, n);
     for (int q = 0; q < g.size(); ++q) {
-      const Eigen::RowVectorXd N = bernstein_values(k - n, g.points[q].x()).transpose() * D;
+      const Eigen::RowVectorXd N = bernstein_derivatives(k - n, g.points[q].x(), 0).row(0) * D;
       G += 0.5 * g.weights[q] * N.transpose() * N;
     }
   }

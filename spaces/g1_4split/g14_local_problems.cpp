@@ -3,7 +3,6 @@
 #include <Eigen/SVD>
 #include <algorithm>
 #include <cmath>
-#include <set>
 #include <string>
 
 #include "spaces/g1_4split/edge_equations.hpp"
@@ -168,27 +167,6 @@ std::vector<BrokenFunction> G14LocalProblems::vertex_functions(int v, const Syst
   return out;
 }
 
-int G14LocalProblems::vertex_count(int v, const SystemOf& system) const {
-  std::vector<int> vc;
-  const Eigen::MatrixXd H = corner_data(v, vc);
-  if (H.cols() == 0) return 0;
-  // The lifts' rows (every corner index and every strip index of v's interior edges, whatever
-  // the values), and the same solves and residual checks as lifted, without the functions.
-  std::set<int> rows(vc.begin(), vc.end());
-  std::map<int, int> pos;
-  for (std::size_t i = 0; i < vc.size(); ++i) pos[vc[i]] = static_cast<int>(i);
-  for (int h = 0; h < H.cols(); ++h)
-    for (int e : t_.vertex_edges(v)) {
-      if (t_.edge(e).boundary()) continue;
-      const G14EdgeSystem& s = system(e);
-      lift_along(v, e, s, H, h, pos);  // its check only
-      if (h == 0)
-        for (int c : s.strip) rows.insert(s.columns[c]);
-    }
-  // The thin U of the rows x lifts matrix vertex_functions orthonormalises.
-  return std::min(static_cast<int>(rows.size()), static_cast<int>(H.cols()));
-}
-
 std::vector<BrokenFunction> G14LocalProblems::edge_functions(int e, const G14EdgeSystem* s) const {
   std::vector<BrokenFunction> out;
   const QuadEdge& edge = t_.edge(e);
@@ -208,11 +186,6 @@ std::vector<BrokenFunction> G14LocalProblems::edge_functions(int e, const G14Edg
     out.push_back(std::move(fn));
   }
   return out;
-}
-
-int G14LocalProblems::edge_count(int e, const G14EdgeSystem* s) const {
-  if (t_.edge(e).boundary()) return 2 * (b_.last() - 3);
-  return static_cast<int>(numerical_nullspace(s->M_strip).cols());
 }
 
 std::vector<BrokenFunction> G14LocalProblems::face_functions(int f) const {
@@ -236,13 +209,14 @@ G14Numbering G14LocalProblems::count_functions() const {
     systems.clear();
     for (int e : t_.vertex_edges(v))
       if (!t_.edge(e).boundary()) systems.emplace(e, edge_system(e));
-    n.vertex_first[v + 1] = n.vertex_first[v] + vertex_count(v, system);
+    const int count = t_.vertex_corners(v).empty() ? 0 : static_cast<int>(vertex_functions(v, system).size());
+    n.vertex_first[v + 1] = n.vertex_first[v] + count;
     for (const auto& [e, s] : systems)
-      if (t_.edge(e).g0 == v) edge_counts[e] = edge_count(e, &s);
+      if (t_.edge(e).g0 == v) edge_counts[e] = static_cast<int>(edge_functions(e, &s).size());
   }
   n.edge_first.assign(t_.num_edges() + 1, n.vertex_first.back());
   for (int e = 0; e < t_.num_edges(); ++e) {
-    const int count = t_.edge(e).boundary() ? edge_count(e, nullptr) : edge_counts[e];
+    const int count = t_.edge(e).boundary() ? static_cast<int>(edge_functions(e, nullptr).size()) : edge_counts[e];
     n.edge_first[e + 1] = n.edge_first[e] + count;
   }
   n.per_face = face_count();

@@ -79,18 +79,15 @@ class G14LocalProblems {
   /// Vertex v's functions (its admissible corner data lifted along each interior edge at v, then
   /// orthonormalised). Throws NotSeparable when a datum does not lift.
   std::vector<BrokenFunction> vertex_functions(int v, const SystemOf& system) const;
-  /// The number of vertex v's functions, with the same lifts and the same NotSeparable (no
-  /// orthonormalisation).
-  int vertex_count(int v, const SystemOf& system) const;
   /// Edge e's functions: strip solutions with zero corner data (`system` null for a boundary edge).
   std::vector<BrokenFunction> edge_functions(int e, const G14EdgeSystem* system) const;
-  int edge_count(int e, const G14EdgeSystem* system) const;
   /// Face f's functions: its interior coefficients.
   std::vector<BrokenFunction> face_functions(int f) const;
   int face_count() const;
 
   /// Solve every local problem once, for the numbering and the errors only: the count of each
-  /// vertex and edge. Each vertex's edge systems are computed again (never all of them at once).
+  /// vertex's and edge's functions (built and dropped). Each vertex's edge systems are computed
+  /// again (never all of them at once).
   G14Numbering count_functions() const;
 
  private:

@@ -77,10 +77,6 @@ std::vector<SplitGluing> inherited_gluing(const QuadTopology& coarse, const std:
   return out;
 }
 
-int crossing_vertex_with_slope(const QuadTopology& t, const std::vector<SplitGluing>& gluing) {
-  return twist_incompatible_vertex(t, gluing);
-}
-
 Eigen::SparseMatrix<double> global_constraints(const QuadTopology& t, const std::vector<SplitGluing>& gluing,
                                                const SplitBSpline& b) {
   std::vector<Eigen::Triplet<double>> trip;
@@ -148,7 +144,6 @@ G14Basis build_g14_basis(const QuadTopology& t, const std::vector<SplitGluing>& 
     add(local.vertex_functions(v, system));
     n.vertex_first[v + 1] = col;
   }
-  basis.vertex_functions = col;
 
   // Edge functions: strip solutions with zero corner data.
   n.edge_first.assign(t.num_edges() + 1, col);
@@ -156,12 +151,10 @@ G14Basis build_g14_basis(const QuadTopology& t, const std::vector<SplitGluing>& 
     add(local.edge_functions(e, t.edge(e).boundary() ? nullptr : &systems[e]));
     n.edge_first[e + 1] = col;
   }
-  basis.edge_functions = col - basis.vertex_functions;
 
   // Face functions.
   n.per_face = local.face_count();
   for (int f = 0; f < t.num_faces(); ++f) add(local.face_functions(f));
-  basis.face_functions = col - basis.vertex_functions - basis.edge_functions;
 
   basis.functions.resize(t.num_faces() * fs, col);
   basis.functions.setFromTriplets(trip.begin(), trip.end());

@@ -28,7 +28,6 @@ struct G14Basis {
   SplitBSpline bspline{3, 1};
   /// broken size x dimension; columns: vertex functions, then edge functions, then face functions.
   Eigen::SparseMatrix<double> functions;
-  int vertex_functions = 0, edge_functions = 0, face_functions = 0;
   /// Each vertex's and edge's range of columns.
   G14Numbering numbering;
   /// Per face: the functions of its vertices, edges and its own (G14Numbering::face_functions,
@@ -54,11 +53,6 @@ std::vector<SplitGluing> symmetric_gluing(const QuadTopology& t, Blending blendi
 /// edge restrict its a(t), edges inside a coarse face get a ≡ 0. `fine` = coarse.refined().
 std::vector<SplitGluing> inherited_gluing(const QuadTopology& coarse, const std::vector<SplitGluing>& gluing,
                                          const QuadTopology& fine);
-
-/// An interior crossing vertex (a = 0 on all its edges) at which the twist condition fails
-/// (opposite edges with different outward slopes a'(γ)), or -1 (twist_incompatible_vertex). The
-/// blendings q0, q1, c1 have a' = 0 at every vertex, linear and lines do not.
-int crossing_vertex_with_slope(const QuadTopology& t, const std::vector<SplitGluing>& gluing);
 
 /// Build the local basis for degree k, regularity r. Throws NotSeparable when some vertex datum
 /// cannot be lifted along an edge (k below the edge's separability degree).

@@ -12,6 +12,7 @@
 #include "spaces/g1/g1_from_config.hpp"
 #include "spaces/g1/multipatch_domains.hpp"
 #include "spaces/g1_4split/g1_4split_meshes.hpp"
+#include "spaces/g1_4split/line_gluing.hpp"
 #include "spaces/g1_4split/g1_4split_space.hpp"
 #include "spaces/g1_4split/g1_4split_surface_space.hpp"
 #include "spaces/g1_4split/open_quad_surfaces.hpp"
@@ -116,7 +117,7 @@ ExactSurface fit_onto(const ConfigNode& node, const std::vector<Eigen::Vector3d>
 /// The linear blending has a'(γ) ≠ 0: refused where an interior crossing vertex sees different
 /// slopes on opposite edges (the twist compatibility of the gluing fails there).
 void check_linear_blending(const ConfigNode& space, const QuadTopology& topology, const std::vector<SplitGluing>& gluing) {
-  const int v = crossing_vertex_with_slope(topology, gluing);
+  const int v = twist_incompatible_vertex(topology, gluing);
   if (v >= 0)
     space["blending"].fail("blending linear is refused on '" + topology.name() + "': vertex " + std::to_string(v) +
                            " is an interior valence-4 (crossing) vertex between vertices of different gluing values, "

@@ -209,8 +209,4 @@ void check_face_geometry(const SplitBSpline& b, const Eigen::VectorXd& x, const 
                              "edges spread like a regular fan, a valence-4 vertex straight mesh lines)"));
 }
 
-void check_geometry(const SplitBSpline& b, const FaceGeometry& g, const std::string& mesh_name, bool fair) {
-  for (std::size_t f = 0; f < g.x.size(); ++f) check_face_geometry(b, g.x[f], g.y[f], static_cast<int>(f), mesh_name, fair);
-}
-
 }  // namespace iga

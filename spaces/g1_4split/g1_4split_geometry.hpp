@@ -51,11 +51,9 @@ double certified_jacobian_bound(const SplitBSpline& b, const Eigen::VectorXd& x,
 /// away from the mesh's, show here (docs/spaces/g1_4split.md, "Which gluing values").
 double largest_jacobian_ratio(const SplitBSpline& b, const FaceGeometry& g);
 
-/// Throws InputError naming the first face of `mesh_name` whose det J is not certified positive
-/// (bound above 1e-8: a zero of det J leaves coefficients at round-off); `fair`: the map is the
-/// fair one (the message names the other fit).
-void check_geometry(const SplitBSpline& b, const FaceGeometry& g, const std::string& mesh_name, bool fair = false);
-/// The same check of face f's map (x, y).
+/// Throws InputError naming face f of `mesh_name` when the det J of its map (x, y) is not certified
+/// positive (bound above 1e-8: a zero of det J leaves coefficients at round-off); `fair`: the map
+/// is the fair one (the message names the other fit).
 void check_face_geometry(const SplitBSpline& b, const Eigen::VectorXd& x, const Eigen::VectorXd& y, int f,
                          const std::string& mesh_name, bool fair);
 

@@ -27,50 +27,25 @@ namespace {
 struct G14Core {
   using Jet = GeometryJet;
   static constexpr bool identity = false;
-  const G14Basis& basis;
-  /// The faces' maps: every face's (`every`), else the built faces' (`built`, by slot) and the
-  /// others from the level-0 map (`nested`, along `path`).
-  const FaceGeometry* every;
-  const FaceGeometry* built;
-  const NestedGeometry* nested;
-  const QuadTopology& topology;
-  const std::vector<int>& slot;
-  mutable NestedGeometry::Path path{};
-
-  void coefficients(int e, const Eigen::VectorXd*& x, const Eigen::VectorXd*& y) const {
-    if (every) {
-      x = &every->x[e];
-      y = &every->y[e];
-    } else if (built && slot[e] >= 0) {
-      x = &built->x[slot[e]];
-      y = &built->y[slot[e]];
-    } else {
-      nested->face(e, path, x, y);
-    }
-  }
+  const G14Space& space;
+  mutable NestedGeometry::Path path{};  ///< face_geometry's walk down the level-0 map
 
   int kind(int /*e*/) const { return 0; }
   int tabulate(int /*kind*/, const std::vector<Point2>& points, int /*order*/, LocalTables& t) const {
-    tensor_tables(basis.bspline, points, t);
+    tensor_tables(space.basis().bspline, points, t);
     return 2;
   }
   std::vector<int> active(int e) const {
-    if (!basis.face_dofs.empty()) return basis.face_dofs[e];
     std::vector<int> out;
-    basis.numbering.face_functions(topology, e, out);
+    space.element_dofs(e, out);
     return out;
   }
-  Extraction extraction(int e) const {
-    if (slot[e] < 0)
-      throw std::logic_error("G14Space: element " + std::to_string(e) +
-                             " was not built on (a space built on some elements is asked for another)");
-    return extraction_view(basis.extraction[slot[e]]);
-  }
+  Extraction extraction(int e) const { return extraction_view(space.extraction(e)); }
   void map(int e, const QuadratureRule& rule, const LocalTables& t, int /*order*/, std::vector<Jet>& jets) const {
     const int q = rule.size();
     Eigen::Matrix<double, 6, Eigen::Dynamic> X(6, q), Y(6, q);
     const Eigen::VectorXd *x, *y;
-    coefficients(e, x, y);
+    space.face_geometry(e, path, x, y);
     for (int d = 0; d < 6; ++d) {
       X.row(d) = x->transpose() * t[d];
       Y.row(d) = y->transpose() * t[d];
@@ -95,7 +70,7 @@ FaceGeometry fitted_geometry(const G14Basis& basis, const QuadTopology& topology
                                   : project_geometry(basis, bilinear_geometry(mesh, basis.bspline));
 }
 
-/// The smallest certified det J bound over the faces (check_geometry's margin below).
+/// The smallest certified det J bound over the faces (check_face_geometry's margin below).
 constexpr double kCertifiedJacobian = 1e-8;
 double level0_jacobian_bound(const SplitBSpline& b, const FaceGeometry& g) {
   double bound = 1e300;
@@ -207,10 +182,6 @@ G14Space::G14Space(const PatchMesh& coarse, const G14Options& options) : options
         G14Basis counted;
         counted.bspline = basis_.bspline;
         counted.numbering = G14LocalProblems(fine, gluing_, counted.bspline).count_functions();
-        const G14Numbering& n = counted.numbering;
-        counted.vertex_functions = n.vertex_first.back();
-        counted.edge_functions = n.edge_first.back() - n.vertex_first.back();
-        counted.face_functions = fine.num_faces() * n.per_face;
         basis_ = std::move(counted);
       } else {
         basis_ = build_g14_basis(fine, gluing_, options.degree, options.regularity);
@@ -232,7 +203,7 @@ G14Space::G14Space(const PatchMesh& coarse, const G14Options& options) : options
     nested_ = std::make_shared<const NestedGeometry>(basis_.bspline, std::move(geometry_), options.level);
     geometry_ = {};
   }
-  // Every face's map, in order (check_geometry's first failing face), and the mesh size: one
+  // Every face's map, in order (check_face_geometry's first failing face), and the mesh size: one
   // visit of each face (a skeleton subdivides each ancestor once).
   double mesh_size = 0.0;
   {
@@ -310,9 +281,6 @@ G14Space::G14Space(std::shared_ptr<const G14Space> skeleton, const std::vector<i
   const QuadTopology& t = *topology_;
   basis_.bspline = skeleton->basis_.bspline;
   basis_.numbering = skeleton->basis_.numbering;
-  basis_.vertex_functions = skeleton->basis_.vertex_functions;
-  basis_.edge_functions = skeleton->basis_.edge_functions;
-  basis_.face_functions = skeleton->basis_.face_functions;
   const G14Numbering& n = basis_.numbering;
   std::vector<std::vector<int>> dofs(elements.size());
   for (std::size_t s = 0; s < elements.size(); ++s) {
@@ -356,28 +324,24 @@ G14Space::G14Space(std::shared_ptr<const G14Space> skeleton, const std::vector<i
   set_facts(skeleton->facts());
 }
 
-const FaceGeometry* G14Space::every_face_geometry() const {
-  const G14Space& owner = skeleton_ ? *skeleton_ : *this;
-  return owner.nested_ ? nullptr : &owner.geometry_;
-}
-
-void G14Space::face_geometry(int f, Eigen::VectorXd& x, Eigen::VectorXd& y) const {
+void G14Space::face_geometry(int f, NestedGeometry::Path& path, const Eigen::VectorXd*& x,
+                             const Eigen::VectorXd*& y) const {
   const G14Space& owner = skeleton_ ? *skeleton_ : *this;
   if (!owner.nested_) {
-    x = owner.geometry_.x[f];
-    y = owner.geometry_.y[f];
-    return;
+    x = &owner.geometry_.x[f];
+    y = &owner.geometry_.y[f];
+  } else if (slot_[f] >= 0) {  // built on f: its map is kept, by slot
+    x = &geometry_.x[slot_[f]];
+    y = &geometry_.y[slot_[f]];
+  } else {
+    owner.nested_->face(f, path, x, y);
   }
-  NestedGeometry::Path path;
-  const Eigen::VectorXd *px, *py;
-  owner.nested_->face(f, path, px, py);
-  x = *px;
-  y = *py;
 }
 
 const Eigen::SparseMatrix<double>& G14Space::extraction(int element) const {
   if (slot_[element] < 0)
-    throw std::logic_error("G14Space: element " + std::to_string(element) + " was not built on");
+    throw std::logic_error("G14Space: element " + std::to_string(element) +
+                           " was not built on (a space built on some elements is asked for another)");
   return basis_.extraction[slot_[element]];
 }
 
@@ -394,8 +358,7 @@ SpacePtr G14Space::build_on(const std::vector<int>& elements) const {
 }
 
 std::unique_ptr<Space::Evaluator> G14Space::make_evaluator() const {
-  return std::make_unique<ExtractedEvaluator<G14Core>>(*this, G14Core{basis_, every_face_geometry(), skeleton_ && skeleton_->nested_ ? &geometry_ : nullptr,
-                              skeleton_ ? skeleton_->nested_.get() : nested_.get(), *topology_, slot_});
+  return std::make_unique<ExtractedEvaluator<G14Core>>(*this, G14Core{*this});
 }
 
 std::vector<InteriorEdge> quad_interior_edges(const QuadTopology& t) {

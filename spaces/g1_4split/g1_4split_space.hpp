@@ -74,8 +74,9 @@ class G14Space final : public Space, public BuildsOnElements {
   /// Every face's map (a whole space; a space built on some elements shares its skeleton's). A
   /// skeleton of a nested level keeps the level-0 map only: empty (face_geometry).
   const FaceGeometry& geometry() const { return skeleton_ ? skeleton_->geometry_ : geometry_; }
-  /// Face f's map, whatever the space keeps.
-  void face_geometry(int f, Eigen::VectorXd& x, Eigen::VectorXd& y) const;
+  /// Face f's map, whatever the space keeps: every face's, the built faces' (by slot), or
+  /// subdivided from the level-0 map along `path` (then x, y point into `path`).
+  void face_geometry(int f, NestedGeometry::Path& path, const Eigen::VectorXd*& x, const Eigen::VectorXd*& y) const;
   const std::vector<SplitGluing>& gluing() const { return skeleton_ ? skeleton_->gluing_ : gluing_; }
   /// (A space built on some elements holds the skeleton itself, never another built space.)
 
@@ -93,8 +94,6 @@ class G14Space final : public Space, public BuildsOnElements {
   /// empty (its skeleton's), or, when the skeleton has nested_, the built faces' (by slot).
   FaceGeometry geometry_;
   std::shared_ptr<const NestedGeometry> nested_;  ///< a skeleton's level-0 map of a nested level
-  /// geometry_ of the space that has every face's, or null.
-  const FaceGeometry* every_face_geometry() const;
   std::shared_ptr<const G14Space> skeleton_;  ///< the skeleton of a space built on some elements
   /// Per face: its extraction's index in basis_.extraction, or -1 (not built on).
   std::vector<int> slot_;

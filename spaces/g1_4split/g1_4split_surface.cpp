@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <map>
 
 #include "geometry/surface_jet.hpp"
 #include "spaces/g1_4split/face_function.hpp"
@@ -98,25 +97,16 @@ std::vector<Eigen::Vector3d> cube_vertices() {
 }
 
 std::vector<Eigen::Vector3d> split_tetrahedron_vertices() {
-  const Eigen::Vector3d c[4] = {{1, 1, 1}, {1, -1, -1}, {-1, 1, -1}, {-1, -1, 1}};
-  // Same construction order as split_tetrahedron_topology: edge mids numbered on first use.
-  const int tri[4][3] = {{0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {0, 3, 2}};
-  std::vector<Eigen::Vector3d> v(c, c + 4);
-  std::map<std::pair<int, int>, int> mid;
-  auto m = [&](int a, int b) {
-    const auto key = std::make_pair(std::min(a, b), std::max(a, b));
-    if (!mid.count(key)) {
-      mid[key] = static_cast<int>(v.size());
-      v.push_back(0.5 * (c[a] + c[b]));
-    }
-  };
-  for (int t = 0; t < 4; ++t)
-    for (int i = 0; i < 3; ++i) {
-      const int a = tri[t][i], b = tri[t][(i + 1) % 3], p = tri[t][(i + 2) % 3];
-      m(a, b);
-      m(p, a);
-    }
-  for (int t = 0; t < 4; ++t) v.push_back((c[tri[t][0]] + c[tri[t][1]] + c[tri[t][2]]) / 3.0);
+  // The triangle corners; each edge mid and face centre is the mean of corner 0 (a triangle
+  // corner) of the quads at it (split_tetrahedron_topology): the two ends of its edge twice, or
+  // the triangle's three corners in order. Sums of ±1, so exact whatever the order.
+  const QuadTopology t = split_tetrahedron_topology();
+  std::vector<Eigen::Vector3d> v = {{1, 1, 1}, {1, -1, -1}, {-1, 1, -1}, {-1, -1, 1}};
+  for (int w = 4; w < t.num_vertices(); ++w) {
+    Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+    for (const auto& [f, c] : t.vertex_corners(w)) sum += v[t.face(f)[0]];
+    v.push_back(sum / static_cast<double>(t.vertex_corners(w).size()));
+  }
   return v;
 }
 

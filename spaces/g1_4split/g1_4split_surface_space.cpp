@@ -17,13 +17,11 @@ namespace {
 
 /// Lower bound of (x_u × x_v) · c / diameter² on one face, c the unit normal at the centre: the
 /// Jacobian of the face's projection onto its centre tangent plane, certified like a planar map.
-double face_fold_bound(const SplitBSpline& b, const std::array<Eigen::VectorXd, 3>& xyz) {
-  Eigen::Vector3d du, dv;
-  for (int d = 0; d < 3; ++d) {
-    const auto j = face_jet(b, xyz[d], Point2(0.5, 0.5));
-    du(d) = j(1);
-    dv(d) = j(2);
-  }
+double face_fold_bound(const G14Surface& s, int f) {
+  const SplitBSpline& b = s.basis.bspline;
+  const std::array<Eigen::VectorXd, 3>& xyz = s.coefficients[f];
+  const auto jet = face_map_jet(s, f, 0.5, 0.5);
+  const Eigen::Vector3d &du = jet[1], &dv = jet[2];
   if (area_element(du, dv) == 0.0) return 0.0;
   const Eigen::Vector3d e1 = du.normalized(), e2 = unit_normal(du, dv).cross(e1);
   const Eigen::VectorXd p = e1(0) * xyz[0] + e1(1) * xyz[1] + e1(2) * xyz[2];
@@ -107,10 +105,9 @@ G14SurfaceSpace::G14SurfaceSpace(const QuadTopology& coarse, const std::vector<E
   }
   topology_ = std::make_shared<const QuadTopology>(std::move(topology));
 
-  const SplitBSpline& b = surface_.basis.bspline;
   fold_bound_ = 1e300;
   for (int f = 0; f < topology_->num_faces(); ++f) {
-    fold_bound_ = std::min(fold_bound_, face_fold_bound(b, surface_.coefficients[f]));
+    fold_bound_ = std::min(fold_bound_, face_fold_bound(surface_, f));
     std::vector<Eigen::Vector3d> pts;
     for (int j = 0; j < 4; ++j)
       for (int s = 0; s < 4; ++s) {

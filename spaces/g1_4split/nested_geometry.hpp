@@ -20,8 +20,6 @@ class NestedGeometry {
   NestedGeometry(const SplitBSpline& b, FaceGeometry level0, int levels)
       : b_(b), level0_(std::move(level0)), levels_(levels) {}
 
-  int num_faces() const { return static_cast<int>(level0_.x.size()) << (2 * levels_); }
-
   /// The ancestors of the last face asked for, level by level: consecutive faces share most of
   /// them, so visiting the faces in order subdivides each ancestor once. One per thread.
   struct Path {

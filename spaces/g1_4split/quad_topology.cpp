@@ -11,7 +11,6 @@ QuadTopology::QuadTopology(int num_vertices, std::vector<std::array<int, 4>> fac
     : num_vertices_(num_vertices), faces_(std::move(faces)), name_(std::move(name)) {
   std::map<std::pair<int, int>, int> ids;
   face_edges_.resize(faces_.size());
-  vertex_faces_.assign(num_vertices_, 0);
   vertex_boundary_.assign(num_vertices_, false);
   vertex_corners_.resize(num_vertices_);
   vertex_edges_.resize(num_vertices_);
@@ -22,7 +21,6 @@ QuadTopology::QuadTopology(int num_vertices, std::vector<std::array<int, 4>> fac
         throw InputError(name_ + ": face " + std::to_string(f) + " refers to a missing vertex");
       for (int d = 0; d < c; ++d)
         if (q[c] == q[d]) throw InputError(name_ + ": face " + std::to_string(f) + " repeats a corner vertex");
-      ++vertex_faces_[q[c]];
       vertex_corners_[q[c]].push_back({f, c});
     }
     for (int j = 0; j < 4; ++j) {

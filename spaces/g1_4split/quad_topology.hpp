@@ -44,7 +44,7 @@ class QuadTopology {
   const QuadEdge& edge(int e) const { return edges_[e]; }
   int face_edge(int f, int j) const { return face_edges_[f][j]; }
   /// Number of faces at vertex v.
-  int vertex_faces(int v) const { return vertex_faces_[v]; }
+  int vertex_faces(int v) const { return static_cast<int>(vertex_corners_[v].size()); }
   bool vertex_on_boundary(int v) const { return vertex_boundary_[v]; }
   /// (face, corner) pairs of the faces at vertex v.
   const std::vector<std::pair<int, int>>& vertex_corners(int v) const { return vertex_corners_[v]; }
@@ -57,7 +57,6 @@ class QuadTopology {
   std::string name_;
   std::vector<QuadEdge> edges_;
   std::vector<std::array<int, 4>> face_edges_;
-  std::vector<int> vertex_faces_;
   std::vector<bool> vertex_boundary_;
   std::vector<std::vector<std::pair<int, int>>> vertex_corners_;
   std::vector<std::vector<int>> vertex_edges_;

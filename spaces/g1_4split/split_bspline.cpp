@@ -5,16 +5,9 @@
 #include <stdexcept>
 #include <vector>
 
-namespace iga {
+#include "spaces/bspline/bspline_basis_1d.hpp"
 
-Eigen::VectorXd bernstein_values(int k, double s) {
-  Eigen::VectorXd b = Eigen::VectorXd::Zero(k + 1);
-  b(0) = 1.0;
-  // de Casteljau-style raising: B^{d}_i = (1-s) B^{d-1}_i + s B^{d-1}_{i-1}.
-  for (int d = 1; d <= k; ++d)
-    for (int i = d; i >= 0; --i) b(i) = (i < d ? (1 - s) * b(i) : 0.0) + (i > 0 ? s * b(i - 1) : 0.0);
-  return b;
-}
+namespace iga {
 
 SplitBSpline::SplitBSpline(int k, int r) : k_(k), r_(r) {
   if (k < 2 || r < 0 || r > k - 1) throw std::invalid_argument("SplitBSpline: need k >= 2 and 0 <= r <= k-1");
@@ -30,7 +23,7 @@ SplitBSpline::SplitBSpline(int k, int r) : k_(k), r_(r) {
     Eigen::MatrixXd V(k + 1, k + 1), values(k + 1, size());
     for (int q = 0; q <= k; ++q) {
       const double s = double(q) / k;
-      V.row(q) = bernstein_values(k, s).transpose();
+      V.row(q) = bernstein_derivatives(k, s, 0).row(0);
       values.row(q) = derivatives(0.5 * (piece + s), 0, piece).row(0);
     }
     bernstein_[piece] = V.fullPivLu().solve(values);

@@ -41,7 +41,4 @@ class SplitBSpline {
   Eigen::MatrixXd bernstein_[2];
 };
 
-/// Bernstein polynomials of degree k at s in [0,1] (k+1 values).
-Eigen::VectorXd bernstein_values(int k, double s);
-
 }  // namespace iga

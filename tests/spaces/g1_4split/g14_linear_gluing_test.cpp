@@ -9,6 +9,7 @@
 #include "config/errors.hpp"
 #include "spaces/g1_4split/g1_4split_basis.hpp"
 #include "spaces/g1_4split/g1_4split_meshes.hpp"
+#include "spaces/g1_4split/line_gluing.hpp"
 #include "tests/support/test_support.hpp"
 
 using namespace iga;
@@ -73,12 +74,12 @@ TEST(G14LinearGluing, RefusedAtCrossingVerticesWithDifferentSlopes) {
     EXPECT_NE(m.find("space.blending"), std::string::npos) << m;
     EXPECT_NE(m.find("crossing"), std::string::npos) << m;
   }
-  EXPECT_EQ(crossing_vertex_with_slope(cube_topology(), symmetric_gluing(cube_topology(), Blending::linear)), -1);
+  EXPECT_EQ(twist_incompatible_vertex(cube_topology(), symmetric_gluing(cube_topology(), Blending::linear)), -1);
   // The split tetrahedron: its crossing vertices lie between two valence-3 vertices on both lines,
   // so the slopes agree and the twists close: accepted, and the space is the brute-force null space.
   const QuadTopology t = split_tetrahedron_topology();
   const auto g = symmetric_gluing(t, Blending::linear);
-  EXPECT_EQ(crossing_vertex_with_slope(t, g), -1);
+  EXPECT_EQ(twist_incompatible_vertex(t, g), -1);
   EXPECT_EQ(build_g14_basis(t, g, 4, 1).dimension(),
             nullspace_dimension(Eigen::MatrixXd(global_constraints(t, g, SplitBSpline(4, 1)))));
 }

@@ -109,9 +109,10 @@ TEST(G14PaperExample, DimensionAndLocalCounts) {
   EXPECT_EQ(basis.dimension(), 141);
   // Vertices: 6 at the centre, 4 at each of the 6 boundary vertices; edges: 5 per interior edge,
   // 8 per boundary edge; faces: 16 each (notes §12.5).
-  EXPECT_EQ(basis.vertex_functions, 6 + 6 * 4);
-  EXPECT_EQ(basis.edge_functions, 3 * 5 + 6 * 8);
-  EXPECT_EQ(basis.face_functions, 3 * 16);
+  const G14Numbering& n = basis.numbering;
+  EXPECT_EQ(n.vertex_first.back(), 6 + 6 * 4);
+  EXPECT_EQ(n.edge_first.back() - n.vertex_first.back(), 3 * 5 + 6 * 8);
+  EXPECT_EQ(t.num_faces() * n.per_face, 3 * 16);
 }
 
 }  // namespace iga

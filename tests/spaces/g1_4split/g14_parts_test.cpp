@@ -100,9 +100,10 @@ TEST(G14Parts, APartHasTheWholeSpacesFunctionsExtractionsAndValuesOnItsFaces) {
     // The skeleton keeps the level-0 map; each face's, subdivided along its path, is the whole's.
     EXPECT_TRUE(skeleton->geometry().x.empty());
     for (int f = 0; f < n; ++f) {
-      Eigen::VectorXd x, y;
-      skeleton->face_geometry(f, x, y);
-      EXPECT_TRUE(x == whole->geometry().x[f] && y == whole->geometry().y[f]) << name << " face " << f;
+      NestedGeometry::Path path;
+      const Eigen::VectorXd *x, *y;
+      skeleton->face_geometry(f, path, x, y);
+      EXPECT_TRUE(*x == whole->geometry().x[f] && *y == whole->geometry().y[f]) << name << " face " << f;
     }
     // The first third (a rank's block of faces), every fifth face, the last face alone.
     std::vector<int> block, spread, last{n - 1};
