@@ -10,7 +10,7 @@ set(IGA_INSTALL_CMAKEDIR ${CMAKE_INSTALL_LIBDIR}/cmake/iga_run)
 set(iga_layer_targets "")
 foreach(layer IN LISTS IGA_LAYERS)
   list(APPEND iga_layer_targets iga_${layer})
-  file(GLOB_RECURSE layer_headers RELATIVE ${CMAKE_CURRENT_SOURCE_DIR} ${CMAKE_CURRENT_SOURCE_DIR}/${layer}/*.hpp)
+  file(GLOB_RECURSE layer_headers RELATIVE ${CMAKE_CURRENT_SOURCE_DIR} CONFIGURE_DEPENDS ${CMAKE_CURRENT_SOURCE_DIR}/${layer}/*.hpp)
   # Internal to the solver's PETSc files (it includes PETSc's headers): not part of the library's interface.
   list(FILTER layer_headers EXCLUDE REGEX "solver/petsc_distribution\\.hpp$")
   foreach(header IN LISTS layer_headers)
